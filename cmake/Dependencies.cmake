@@ -1,0 +1,36 @@
+# Every third-party dependency of limber, all from Debian 12 packages
+# (scripts/install-deps.sh installs them). Nothing is downloaded here.
+
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(yaml-cpp REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(fmt REQUIRED)
+find_package(HDF5 REQUIRED COMPONENTS C)
+find_package(BLAS REQUIRED)
+find_package(LAPACK REQUIRED)
+
+# arpack-ng and CHOLMOD ship no CMake package on Debian 12: locate them directly.
+find_library(ARPACK_LIBRARY NAMES arpack REQUIRED)
+add_library(limber_arpack INTERFACE)
+target_link_libraries(limber_arpack INTERFACE ${ARPACK_LIBRARY} LAPACK::LAPACK BLAS::BLAS)
+
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY NAMES cholmod REQUIRED)
+find_library(SUITESPARSE_CONFIG_LIBRARY NAMES suitesparseconfig REQUIRED)
+add_library(limber_cholmod INTERFACE)
+target_include_directories(limber_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(limber_cholmod INTERFACE
+  ${CHOLMOD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY} LAPACK::LAPACK BLAS::BLAS)
+
+add_library(limber_hdf5 INTERFACE)
+target_include_directories(limber_hdf5 SYSTEM INTERFACE ${HDF5_C_INCLUDE_DIRS})
+target_link_libraries(limber_hdf5 INTERFACE ${HDF5_C_LIBRARIES})
+target_compile_definitions(limber_hdf5 INTERFACE ${HDF5_C_DEFINITIONS})
+
+if(LIMBER_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  include(GoogleTest)
+endif()
+if(LIMBER_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

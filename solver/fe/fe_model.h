@@ -1,0 +1,102 @@
+// The finite-element model of one flexible component: nodes with 6 DOFs each
+// (ux, uy, uz, rx, ry, rz, in the component frame), beam and shell elements,
+// point masses, named node sets and single-point constraints.
+//
+// Built and checked by FeModelBuilder (fe_model_builder.h); constant afterwards.
+// Units are SI throughout (m, kg, s, N, Pa).
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace limber::fe {
+
+inline constexpr int kDofsPerNode = 6;
+
+// Local DOF index within a node.
+enum class Dof : int { kUx = 0, kUy = 1, kUz = 2, kRx = 3, kRy = 4, kRz = 5 };
+
+// Isotropic linear-elastic material.
+struct Material {
+  std::string name;
+  double youngs_modulus = 0.0;  // E [Pa]
+  double poisson_ratio = 0.0;   // nu [-]
+  double density = 0.0;         // rho [kg/m^3]
+
+  double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
+};
+
+// Cross-section of a beam in its local y-z plane.
+//  Iy: second moment about local y (bending in the x-z plane), Iz: about local z.
+//  shear_factor_y/z: Timoshenko shear coefficients k (shear area = k A) for shear along y/z;
+//  used only when the property asks for Timoshenko beams.
+struct BeamSection {
+  double area = 0.0;            // A [m^2]
+  double inertia_y = 0.0;       // Iy [m^4]
+  double inertia_z = 0.0;       // Iz [m^4]
+  double torsion_constant = 0.0;  // J [m^4] (St-Venant)
+  double shear_factor_y = 5.0 / 6.0;
+  double shear_factor_z = 5.0 / 6.0;
+};
+
+struct BeamProperty {
+  std::string name;
+  Material material;
+  BeamSection section;
+  bool timoshenko = false;  // false: Euler-Bernoulli (no shear deformation)
+};
+
+struct ShellProperty {
+  std::string name;
+  Material material;
+  double thickness = 0.0;  // [m]
+};
+
+// 2-node beam. Local x runs from node 0 to node 1; `orientation` is any vector in
+// the local x-y plane not parallel to x (local z = x × orientation).
+struct BeamElement {
+  std::array<int, 2> nodes{};  // node indices
+  Eigen::Vector3d orientation = Eigen::Vector3d::UnitZ();
+  int property = 0;  // index into FeModel::beam_properties
+};
+
+// 4-node flat shell, nodes counter-clockwise about the element normal.
+struct ShellElement {
+  std::array<int, 4> nodes{};
+  int property = 0;  // index into FeModel::shell_properties
+};
+
+// Concentrated mass and rotary inertia (about the node, component axes) at a node.
+struct PointMass {
+  int node = 0;
+  double mass = 0.0;
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+};
+
+// A DOF held at zero (modal-analysis boundary condition).
+struct FixedDof {
+  int node = 0;
+  Dof dof = Dof::kUx;
+};
+
+struct FeModel {
+  std::vector<Eigen::Vector3d> node_positions;  // undeformed, component frame [m]
+  std::vector<int> node_ids;                    // user labels, same order as positions
+  std::vector<BeamProperty> beam_properties;
+  std::vector<ShellProperty> shell_properties;
+  std::vector<BeamElement> beams;
+  std::vector<ShellElement> shells;
+  std::vector<PointMass> point_masses;
+  std::map<std::string, std::vector<int>> node_sets;  // name -> node indices
+  std::vector<FixedDof> fixed_dofs;
+
+  int node_count() const { return static_cast<int>(node_positions.size()); }
+  int dof_count() const { return kDofsPerNode * node_count(); }
+  static int dof_index(int node, Dof dof) { return kDofsPerNode * node + static_cast<int>(dof); }
+};
+
+}  // namespace limber::fe
