@@ -8,6 +8,8 @@ find_package(fmt REQUIRED)
 find_package(HDF5 REQUIRED COMPONENTS C)
 find_package(BLAS REQUIRED)
 find_package(LAPACK REQUIRED)
+# SUNDIALS 6.4: targets SUNDIALS::ida_shared, nvecserial_shared, sunlinsoldense_shared, ...
+find_package(SUNDIALS 6 REQUIRED CONFIG)
 
 # arpack-ng and CHOLMOD ship no CMake package on Debian 12: locate them directly.
 find_library(ARPACK_LIBRARY NAMES arpack REQUIRED)

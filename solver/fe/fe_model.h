@@ -6,12 +6,11 @@
 // Units are SI throughout (m, kg, s, N, Pa).
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace limber::fe {
 
@@ -35,9 +34,9 @@ struct Material {
 //  shear_factor_y/z: Timoshenko shear coefficients k (shear area = k A) for shear along y/z;
 //  used only when the property asks for Timoshenko beams.
 struct BeamSection {
-  double area = 0.0;            // A [m^2]
-  double inertia_y = 0.0;       // Iy [m^4]
-  double inertia_z = 0.0;       // Iz [m^4]
+  double area = 0.0;              // A [m^2]
+  double inertia_y = 0.0;         // Iy [m^4]
+  double inertia_z = 0.0;         // Iz [m^4]
   double torsion_constant = 0.0;  // J [m^4] (St-Venant)
   double shear_factor_y = 5.0 / 6.0;
   double shear_factor_z = 5.0 / 6.0;
@@ -47,7 +46,9 @@ struct BeamProperty {
   std::string name;
   Material material;
   BeamSection section;
-  bool timoshenko = false;  // false: Euler-Bernoulli (no shear deformation)
+  bool timoshenko = false;     // false: Euler-Bernoulli (no shear deformation)
+  bool rotary_inertia = true;  // false: drop the section's rho I terms of bending (pure
+                               // Euler-Bernoulli theory); torsional inertia is always kept
 };
 
 struct ShellProperty {

@@ -1,7 +1,9 @@
 // Flat 4-node thin-shell element, 6 DOFs per node (ux uy uz rx ry rz, global axes).
-// Membrane and plate bending superposed in the element's local frame, with drilling
-// stabilisation on the in-plane rotation; see shell_element.cpp for the formulation
-// and its references.
+// Membrane (plane stress with incompatible modes, shell_membrane.h) and MITC4 plate bending
+// (Dvorkin & Bathe 1984, shell_plate.h) superposed in the local frame of the quad's mean plane
+// (shell_frame.h), with a Hughes–Brezzi drilling penalty on the in-plane rotation and a
+// consistent mass (shell_element.cpp). Formulation, references and verification:
+// docs/shell-element.md.
 #pragma once
 
 #include <array>
@@ -19,9 +21,10 @@ struct ShellElementMatrices {
   Matrix24d mass;       // consistent mass [kg, kg·m, kg·m^2]
 };
 
-// Element matrices of a quad with corner positions `corners` (counter-clockwise about
-// the normal). Throws InputError when the quad is degenerate (zero area, a non-convex
-// corner, or a warp too large for a flat element).
+// Element matrices of a quad with corner positions `corners` [m] (counter-clockwise about
+// the normal, which the node order defines). Precondition: thickness and E > 0 (the
+// builder checks them). Throws InputError when the quad is degenerate (zero area, a
+// non-convex corner, or a warp beyond kMaxShellWarpRatio, see shell_frame.h).
 ShellElementMatrices shell_element_matrices(const std::array<Eigen::Vector3d, 4>& corners,
                                             const ShellProperty& property);
 

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "fe/assembly.h"
 #include "fe/fe_model.h"
+#include "modal/modal_status.h"
 #include "modal/mode_set.h"
 
 namespace limber::modal {
@@ -25,15 +27,14 @@ struct ModeRequest {
   std::optional<double> max_frequency_hz;
   std::vector<StaticModeSite> constraint_sites;  // eq. 7-9: unit displacement, others held
   std::vector<StaticModeSite> attachment_sites;  // eq. 10-11: unit force
-  // Vectors whose M-norm falls below this fraction of the largest after projection on
-  // the others are dropped as dependent (see orthonormalise_modes).
+  // A candidate vector whose M-norm, after projection on the vectors before it, falls
+  // below this fraction of its own M-norm is dropped as dependent (orthonormalise_modes.h).
   double dependency_tolerance = 1e-8;
 };
 
 // Outcome of a modal computation. `status` is not kOk when the eigen-solver did not
-// converge; `message` then says what and where, and `mode_set` holds nothing.
-enum class ModalStatus { kOk, kNotConverged, kSingular };
-
+// converge or a factorisation failed (modal_status.h); `message` then says what and
+// where, and `mode_set` holds nothing.
 struct ModalResult {
   ModalStatus status = ModalStatus::kOk;
   std::string message;               // failure explanation, or empty
@@ -41,8 +42,19 @@ struct ModalResult {
   ModeSet mode_set;
 };
 
-// Runs the whole reduction. Throws InputError for impossible requests (more modes than
-// DOFs, static-mode sites on fixed DOFs, no modes requested).
+// Runs the whole reduction: assemble K, M (fe::assemble); normal modes on the free DOFs
+// (normal_modes.h, rigid modes set aside for free components); constraint and attachment
+// modes (static_modes.h); orthonormalisation of [normal | constraint | attachment]
+// (orthonormalise_modes.h); invariants (modal_invariants.h).
+// Throws InputError (expected/got) for impossible requests: no modes requested, more
+// normal modes than free DOFs (after the rigid ones), a site on an unknown node, with no
+// DOFs, naming a DOF twice or on a fixed DOF, a dependency tolerance outside (0, 1), a
+// non-positive cut-off frequency.
 ModalResult compute_component_modes(const fe::FeModel& model, const ModeRequest& request);
+
+// The same with K and M already assembled for `model` (fixed DOFs not removed).
+ModalResult compute_component_modes(const fe::FeModel& model,
+                                    const fe::StructuralMatrices& matrices,
+                                    const ModeRequest& request);
 
 }  // namespace limber::modal

@@ -1,0 +1,63 @@
+// Renders frames of a results file offscreen (EGL, no X server) into RGB images.
+// One FrameRenderer owns one OpenGL context: use it from the thread that created it.
+#pragma once
+
+#include "render_options.h"
+#include "results_reader.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace limber::render {
+
+// An 8-bit RGB image, rows from the top.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  // width * height * 3
+
+  // Pixel at column x (from the left) and row y (from the top).
+  std::array<int, 3> pixel(int x, int y) const {
+    const std::size_t k = 3 * (static_cast<std::size_t>(y) * width + x);
+    return {rgb[k], rgb[k + 1], rgb[k + 2]};
+  }
+};
+
+// Wall-clock seconds spent per phase, summed over the frames rendered.
+struct RenderTiming {
+  double scene_update = 0.0;  // poses, deformed meshes, text
+  double draw = 0.0;          // VTK render (llvmpipe rasterisation, FXAA)
+  double readback = 0.0;      // glReadPixels and row flip
+  int frames = 0;
+};
+
+class FrameRenderer {
+ public:
+  // Creates the EGL context, window and scene for results sampled in [t0, t1] [s].
+  // Throws std::runtime_error when no offscreen OpenGL 3.2 context can be created.
+  FrameRenderer(const Results& results, const RenderOptions& options, double t0, double t1);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  // Renders the scene at time t [s] (interpolated between samples).
+  Image render(double t);
+  // Pixel (x from the left, y from the top) where ground point p_W projects with the camera of
+  // the last render.
+  Eigen::Vector2d project(const Eigen::Vector3d& p_W) const;
+  // "EGL surfaceless (Mesa)" / "EGL device", and the OpenGL renderer string.
+  std::string backend() const;
+  const RenderTiming& timing() const;
+  // Upper end of the colour bar (largest |u| in the range) [m].
+  double color_range_max() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace limber::render

@@ -1,0 +1,128 @@
+#include "render_job.h"
+
+#include "core/error.h"
+#include "png_frame_writer.h"
+#include "progress_bar.h"
+#include "video_encoder.h"
+#include "vtk_export.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace limber::render {
+namespace {
+
+// Removes files of an earlier render whose names start with `prefix` and end with `suffix`.
+void remove_stale(const std::filesystem::path& directory, const std::string& prefix,
+                  const std::string& suffix) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(directory, error)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() >= prefix.size() + suffix.size() && name.rfind(prefix, 0) == 0 &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      std::filesystem::remove(entry.path(), error);
+    }
+  }
+}
+
+std::string seconds(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g s", t);
+  return text;
+}
+
+}  // namespace
+
+std::pair<double, double> resolve_time_range(const Results& results, const RenderOptions& options) {
+  const Eigen::Index ns = results.sample_count();
+  if (ns == 0) {
+    throw InputError("results file '" + results.file.string() +
+                     "': expected at least one sample, got none (status '" + results.status +
+                     "')");
+  }
+  const double first = results.time(0);
+  const double last = results.time(ns - 1);
+  const double t0 = std::max(options.t0.value_or(first), first);
+  const double t1 = std::min(options.t1.value_or(last), last);
+  if (t0 > t1) {
+    throw InputError("empty time range: expected [t0, t1] to overlap the results' [" +
+                     seconds(first) + ", " + seconds(last) + "], got [" +
+                     seconds(options.t0.value_or(first)) + ", " +
+                     seconds(options.t1.value_or(last)) + "]");
+  }
+  return {t0, t1};
+}
+
+std::vector<double> frame_times(double t0, double t1, double fps) {
+  const auto count = static_cast<long>(std::floor((t1 - t0) * fps + 1e-9)) + 1;
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(count));
+  for (long k = 0; k < count; ++k) times.push_back(t0 + static_cast<double>(k) / fps);
+  return times;
+}
+
+RenderSummary render_results(const RenderOptions& options) {
+  validate(options);
+  const Results results = read_results(options.directory);
+  RenderSummary summary;
+  std::tie(summary.t0, summary.t1) = resolve_time_range(results, options);
+  const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
+
+  // Frames: render on this thread, encode PNG on the writer thread.
+  const std::filesystem::path frames = options.directory / "frames";
+  if (options.write_png) {
+    std::filesystem::create_directories(frames);
+    remove_stale(frames, "frame_", ".png");
+    const auto start = std::chrono::steady_clock::now();
+    FrameRenderer renderer(results, options, summary.t0, summary.t1);
+    summary.backend = renderer.backend();
+    {
+      PngFrameWriter writer;
+      ProgressBar progress("rendering", static_cast<int>(times.size()), options.progress);
+      for (std::size_t k = 0; k < times.size(); ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05zu.png", k);
+        writer.push(renderer.render(times[k]), frames / name);
+        progress.update(static_cast<int>(k) + 1);
+      }
+      writer.finish();
+      summary.png_seconds = writer.encode_seconds();
+    }
+    summary.frames = static_cast<int>(times.size());
+    summary.timing = renderer.timing();
+    summary.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // ParaView series.
+  if (options.write_vtk) {
+    const std::filesystem::path vtk = options.directory / "vtk";
+    remove_stale(vtk, "", ".vtu");
+    summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
+  }
+
+  // Videos from the frames, when ffmpeg is installed.
+  if (options.write_png && (options.write_video || options.write_gif)) {
+    const auto ffmpeg = find_ffmpeg();
+    if (!ffmpeg) {
+      summary.warnings.push_back(
+          "ffmpeg not found on PATH: no video written (install Debian's ffmpeg package); "
+          "the PNG frames are in " + frames.string());
+    } else {
+      for (const auto& [wanted, name, target] :
+           {std::tuple{options.write_video, "animation.mp4", &summary.video},
+            std::tuple{options.write_gif, "animation.gif", &summary.gif}}) {
+        if (!wanted) continue;
+        const std::filesystem::path output = options.directory / name;
+        const std::string problem = encode_video(*ffmpeg, frames, options.fps, output);
+        if (problem.empty()) *target = output;
+        else summary.warnings.push_back(problem);
+      }
+    }
+  }
+  return summary;
+}
+
+}  // namespace limber::render

@@ -1,0 +1,46 @@
+// Options of `limber render` and their validation (docs/rendering.md).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace limber::render {
+
+// View directions; ground is the z = const plane, +z up.
+enum class CameraPreset { kIso, kFront, kTop, kSide };
+
+struct RenderOptions {
+  std::filesystem::path directory;  // run directory holding results.h5; outputs go there
+  double fps = 30.0;                // frames per second of simulated time [1/s]
+  int width = 1280;                 // frame size [pixels]
+  int height = 720;
+  CameraPreset camera = CameraPreset::kIso;
+  bool follow = false;        // camera focal point follows the bodies' centroid
+  double scale = 1.0;         // deformation scale factor (shown on the frame when != 1)
+  std::optional<double> t0;   // time range [s]; default: the whole run
+  std::optional<double> t1;
+  bool ground = true;         // draw a ground plane under the scene
+  bool write_png = true;      // DIR/frames/frame_00000.png ...
+  bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample
+  bool write_video = true;    // DIR/animation.mp4 through the ffmpeg program
+  bool write_gif = false;     // DIR/animation.gif
+  bool progress = true;       // progress bar, shown only when stderr is a terminal
+};
+
+// Limits on the frame size [pixels]: at least kMinFrameSize, at most kMaxFrameSize per side.
+inline constexpr int kMinFrameSize = 16;
+inline constexpr int kMaxFrameSize = 8192;
+
+// Parses "WxH" (e.g. "1280x720") into width and height; throws InputError (expected/got) on
+// anything else or on sizes outside [kMinFrameSize, kMaxFrameSize].
+void parse_frame_size(const std::string& text, int& width, int& height);
+
+// Parses "iso", "front", "top" or "side"; throws InputError otherwise.
+CameraPreset parse_camera_preset(const std::string& text);
+
+// Checks fps > 0, a valid size, a finite scale and t0 <= t1 when both are given; throws
+// InputError naming the option.
+void validate(const RenderOptions& options);
+
+}  // namespace limber::render

@@ -1,0 +1,68 @@
+// Reads DIR/results.h5 (docs/results-format.md) into plain values for rendering and export.
+// Independent of the solver and of the writer: its own HDF5 C-API reader.
+//
+// A file from a killed run (status "running") is read as it is: ns is the smallest row count
+// of the per-sample datasets read, so every sample returned is complete.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace limber::render {
+
+using RowMatrix3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// A rendering primitive in its body's frame.
+struct Shape {
+  enum class Type { kBox, kCylinder, kSphere };
+  Type type = Type::kBox;
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();  // box edges; cylinder (r, r, length); sphere r [m]
+  Eigen::Vector3d offset_position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond offset_orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d color{0.7, 0.7, 0.7};
+};
+
+// The FE mesh and mode translations of a flexible body (body frame).
+struct FlexibleMesh {
+  RowMatrix3d nodes;                                             // nn x 3 [m]
+  Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> lines;  // 0-based node indices
+  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> quads;
+  double beam_radius = 0.0;                                      // [m]
+  Eigen::MatrixXd mode_translations;  // (3 nn) x nm, column i = mode i, node-major xyz
+  Eigen::VectorXd frequencies_hz;     // nm
+};
+
+struct BodyTrack {
+  std::string name;
+  bool flexible = false;
+  std::vector<Shape> shapes;
+  RowMatrix3d position;                                           // ns x 3 [m]
+  Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> orientation;  // ns x 4, w x y z
+  Eigen::MatrixXd modal_coordinates;                              // ns x nm (flexible)
+  FlexibleMesh mesh;                                              // flexible bodies only
+};
+
+struct JointTrack {
+  std::string name, type, body_i, body_j;
+  RowMatrix3d position;  // ns x 3, joint point in ground [m]
+};
+
+struct Results {
+  std::filesystem::path file;
+  std::string title, case_file, status, message;
+  Eigen::VectorXd time;  // ns sample times [s], non-decreasing
+  std::vector<BodyTrack> bodies;
+  std::vector<JointTrack> joints;
+
+  Eigen::Index sample_count() const { return time.size(); }
+};
+
+// Reads `directory`/results.h5. Throws InputError (expected/got, naming the file) when the file
+// is missing, not HDF5 (e.g. truncated), not a limber results file, or lacks a required dataset.
+Results read_results(const std::filesystem::path& directory);
+
+}  // namespace limber::render

@@ -1,0 +1,466 @@
+#include "scene.h"
+
+#include "body_pose.h"
+#include "core/error.h"
+
+#include <vtkActor.h>
+#include <vtkAlgorithmOutput.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
+#include <vtkDoubleArray.h>
+#include <vtkLightKit.h>
+#include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPlaneSource.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkTubeFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace limber::render {
+namespace {
+
+constexpr double kViewAngleDeg = 30.0;
+
+// 4x4 homogeneous matrix of a pose (position, rotation).
+void set_pose(vtkMatrix4x4* matrix, const Eigen::Vector3d& p, const Eigen::Matrix3d& R) {
+  matrix->Identity();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, R(r, c));
+    matrix->SetElement(r, 3, p(r));
+  }
+}
+
+// A source for a primitive, centred at its own origin; cylinders along local z.
+vtkSmartPointer<vtkPolyDataMapper> primitive_mapper(const Shape& shape) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  switch (shape.type) {
+    case Shape::Type::kBox: {
+      auto source = vtkSmartPointer<vtkCubeSource>::New();
+      source->SetXLength(shape.size.x());
+      source->SetYLength(shape.size.y());
+      source->SetZLength(shape.size.z());
+      mapper->SetInputConnection(source->GetOutputPort());
+      break;
+    }
+    case Shape::Type::kCylinder: {
+      auto source = vtkSmartPointer<vtkCylinderSource>::New();
+      source->SetRadius(shape.size.x());
+      source->SetHeight(shape.size.z());
+      source->SetResolution(32);
+      mapper->SetInputConnection(source->GetOutputPort());
+      break;
+    }
+    case Shape::Type::kSphere: {
+      auto source = vtkSmartPointer<vtkSphereSource>::New();
+      source->SetRadius(shape.size.x());
+      source->SetThetaResolution(32);
+      source->SetPhiResolution(16);
+      mapper->SetInputConnection(source->GetOutputPort());
+      break;
+    }
+  }
+  return mapper;
+}
+
+// Rotation of the primitive's own axes into the shape frame (VTK cylinders lie along y).
+Eigen::Matrix3d primitive_axes(const Shape& shape) {
+  if (shape.type != Shape::Type::kCylinder) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
+}
+
+// Radius of a sphere around the shape's origin that holds it [m].
+double shape_radius(const Shape& shape) {
+  switch (shape.type) {
+    case Shape::Type::kBox: return 0.5 * shape.size.norm();
+    case Shape::Type::kCylinder: return std::hypot(shape.size.x(), 0.5 * shape.size.z());
+    case Shape::Type::kSphere: return shape.size.x();
+  }
+  return 0.0;
+}
+
+Eigen::Vector3d view_direction(CameraPreset preset) {
+  switch (preset) {
+    case CameraPreset::kIso: return Eigen::Vector3d(1.0, -1.0, 0.8).normalized();
+    case CameraPreset::kFront: return -Eigen::Vector3d::UnitY();
+    case CameraPreset::kTop: return Eigen::Vector3d::UnitZ();
+    case CameraPreset::kSide: return Eigen::Vector3d::UnitX();
+  }
+  return Eigen::Vector3d::UnitZ();
+}
+
+// Axis-aligned bounds accumulated from points and spheres.
+struct Bounds {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300);
+  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-1e300);
+  void add(const Eigen::Vector3d& p, double r = 0.0) {
+    lo = lo.cwiseMin((p.array() - r).matrix());
+    hi = hi.cwiseMax((p.array() + r).matrix());
+  }
+  bool empty() const { return lo.x() > hi.x(); }
+  Eigen::Vector3d center() const { return 0.5 * (lo + hi); }
+  double radius() const { return 0.5 * (hi - lo).norm(); }
+};
+
+}  // namespace
+
+// A flexible body: points in ground updated per frame, quads as a surface, lines as tubes.
+struct FlexibleView {
+  const BodyTrack* body = nullptr;
+  vtkSmartPointer<vtkPoints> points;
+  vtkSmartPointer<vtkDoubleArray> magnitude;
+  vtkSmartPointer<vtkPolyData> surface;
+  vtkSmartPointer<vtkPolyData> beams;
+};
+
+struct RigidShapeView {
+  const BodyTrack* body = nullptr;
+  const Shape* shape = nullptr;
+  vtkSmartPointer<vtkActor> actor;
+};
+
+struct Scene::Impl {
+  const Results& results;
+  RenderOptions options;
+  vtkSmartPointer<vtkRenderer> renderer = vtkSmartPointer<vtkRenderer>::New();
+  vtkSmartPointer<vtkLookupTable> lut = vtkSmartPointer<vtkLookupTable>::New();
+  std::vector<FlexibleView> flexible;
+  std::vector<RigidShapeView> shapes;
+  std::vector<vtkSmartPointer<vtkActor>> joints;
+  vtkSmartPointer<vtkTextActor> time_text = vtkSmartPointer<vtkTextActor>::New();
+  double umax = 0.0;
+  double follow_distance = 1.0;
+  Eigen::Vector3d direction;
+
+  Impl(const Results& r, const RenderOptions& o) : results(r), options(o) {}
+
+  // Ground positions of a flexible body's nodes and their displacement magnitudes.
+  void deformed_nodes(const BodyTrack& body, const BodyState& state, RowMatrix3d& x_W,
+                      Eigen::VectorXd& u_norm) const {
+    const RowMatrix3d u = elastic_displacements(body.mesh, state.modal_coordinates);
+    const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
+    x_W = ((body.mesh.nodes + options.scale * u) * R.transpose()).rowwise() +
+          state.position.transpose();
+    u_norm = u.rowwise().norm();
+  }
+
+  // Bounds of everything drawn at one time.
+  Bounds bounds_at(const SampleBracket& at) const {
+    Bounds b;
+    for (const BodyTrack& body : results.bodies) {
+      const BodyState state = body_state(body, at);
+      const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
+      for (const Shape& shape : body.shapes) {
+        b.add(state.position + R * shape.offset_position, shape_radius(shape));
+      }
+      if (body.flexible) {
+        RowMatrix3d x_W;
+        Eigen::VectorXd u_norm;
+        deformed_nodes(body, state, x_W, u_norm);
+        for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
+          b.add(x_W.row(k).transpose(), body.mesh.beam_radius);
+        }
+      }
+      if (body.shapes.empty() && !body.flexible) b.add(state.position);
+    }
+    for (const JointTrack& joint : results.joints) b.add(joint_position(joint, at));
+    return b;
+  }
+
+  void add_flexible(const BodyTrack& body) {
+    FlexibleView view;
+    view.body = &body;
+    const auto nn = static_cast<vtkIdType>(body.mesh.nodes.rows());
+    view.points = vtkSmartPointer<vtkPoints>::New();
+    view.points->SetDataTypeToDouble();
+    view.points->SetNumberOfPoints(nn);
+    view.magnitude = vtkSmartPointer<vtkDoubleArray>::New();
+    view.magnitude->SetName("displacement_magnitude");
+    view.magnitude->SetNumberOfTuples(nn);
+
+    // Shells: one surface of quads, coloured by |u|.
+    if (body.mesh.quads.rows() > 0) {
+      auto quads = vtkSmartPointer<vtkCellArray>::New();
+      for (Eigen::Index e = 0; e < body.mesh.quads.rows(); ++e) {
+        const vtkIdType ids[4] = {body.mesh.quads(e, 0), body.mesh.quads(e, 1),
+                                  body.mesh.quads(e, 2), body.mesh.quads(e, 3)};
+        quads->InsertNextCell(4, ids);
+      }
+      view.surface = vtkSmartPointer<vtkPolyData>::New();
+      view.surface->SetPoints(view.points);
+      view.surface->SetPolys(quads);
+      view.surface->GetPointData()->SetScalars(view.magnitude);
+      add_colored_actor(view.surface, nullptr);
+    }
+
+    // Beams: lines swept into tubes of the mesh's beam radius (plain thick lines without one).
+    if (body.mesh.lines.rows() > 0) {
+      auto lines = vtkSmartPointer<vtkCellArray>::New();
+      for (Eigen::Index e = 0; e < body.mesh.lines.rows(); ++e) {
+        const vtkIdType ids[2] = {body.mesh.lines(e, 0), body.mesh.lines(e, 1)};
+        lines->InsertNextCell(2, ids);
+      }
+      view.beams = vtkSmartPointer<vtkPolyData>::New();
+      view.beams->SetPoints(view.points);
+      view.beams->SetLines(lines);
+      view.beams->GetPointData()->SetScalars(view.magnitude);
+      if (body.mesh.beam_radius > 0.0) {
+        auto tube = vtkSmartPointer<vtkTubeFilter>::New();
+        tube->SetInputData(view.beams);
+        tube->SetRadius(body.mesh.beam_radius);
+        tube->SetNumberOfSides(12);
+        tube->CappingOn();
+        add_colored_actor(nullptr, tube->GetOutputPort());
+      } else {
+        add_colored_actor(view.beams, nullptr)->GetProperty()->SetLineWidth(3.0f);
+      }
+    }
+    flexible.push_back(view);
+  }
+
+  // An actor coloured through the shared lookup table, from data or a pipeline output.
+  vtkSmartPointer<vtkActor> add_colored_actor(vtkPolyData* data, vtkAlgorithmOutput* port) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    if (data != nullptr) mapper->SetInputData(data);
+    if (port != nullptr) mapper->SetInputConnection(port);
+    mapper->SetLookupTable(lut);
+    mapper->SetScalarRange(0.0, umax);
+    mapper->SetScalarModeToUsePointData();
+    mapper->ScalarVisibilityOn();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetSpecular(0.2);
+    renderer->AddActor(actor);
+    return actor;
+  }
+
+  void add_shape(const BodyTrack& body, const Shape& shape) {
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(primitive_mapper(shape));
+    actor->GetProperty()->SetColor(shape.color.x(), shape.color.y(), shape.color.z());
+    actor->GetProperty()->SetSpecular(0.3);
+    actor->SetUserMatrix(vtkSmartPointer<vtkMatrix4x4>::New());
+    renderer->AddActor(actor);
+    shapes.push_back({&body, &shape, actor});
+  }
+
+  void add_text(const std::string& text, int size, double x, double y, bool right) {
+    auto actor = vtkSmartPointer<vtkTextActor>::New();
+    actor->SetInput(text.c_str());
+    actor->GetTextProperty()->SetFontSize(size);
+    actor->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
+    if (right) actor->GetTextProperty()->SetJustificationToRight();
+    actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    actor->GetPositionCoordinate()->SetValue(x, y);
+    renderer->AddViewProp(actor);
+  }
+
+  // Camera at `distance` from `focal` along the preset's direction; the clipping range is
+  // reset by update().
+  void place_camera(const Eigen::Vector3d& focal, double distance) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const Eigen::Vector3d eye = focal + distance * direction;
+    const Eigen::Vector3d up =
+        options.camera == CameraPreset::kTop ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+    camera->SetViewAngle(kViewAngleDeg);
+    camera->SetFocalPoint(focal.x(), focal.y(), focal.z());
+    camera->SetPosition(eye.x(), eye.y(), eye.z());
+    camera->SetViewUp(up.x(), up.y(), up.z());
+  }
+};
+
+Scene::Scene(const Results& results, const RenderOptions& options, double t0, double t1)
+    : impl_(std::make_unique<Impl>(results, options)) {
+  Impl& s = *impl_;
+  LIMBER_DEMAND(results.sample_count() >= 1);
+  s.direction = view_direction(options.camera);
+
+  // Colour range and camera extent from the samples in [t0, t1] (at least one sample).
+  Bounds all;
+  double frame_radius = 0.0;
+  std::vector<SampleBracket> samples;
+  for (Eigen::Index i = 0; i < results.sample_count(); ++i) {
+    if (results.time(i) >= t0 && results.time(i) <= t1) samples.push_back({i, 0.0});
+  }
+  if (samples.empty()) samples.push_back(bracket(results.time, t0));
+  for (const SampleBracket& at : samples) {
+    const Bounds b = s.bounds_at(at);
+    if (b.empty()) continue;
+    all.add(b.lo);
+    all.add(b.hi);
+    frame_radius = std::max(frame_radius, b.radius());
+    for (const BodyTrack& body : results.bodies) {
+      if (!body.flexible) continue;
+      const RowMatrix3d u = elastic_displacements(body.mesh, body_state(body, at).modal_coordinates);
+      if (u.rows() > 0) s.umax = std::max(s.umax, u.rowwise().norm().maxCoeff());
+    }
+  }
+  if (all.empty()) all.add(Eigen::Vector3d::Zero(), 1.0);
+  const double radius = std::max(all.radius(), 1e-6);
+  frame_radius = std::max(frame_radius, 1e-6);
+  const double range_max = s.umax > 0.0 ? s.umax : 1.0;
+
+  // Lookup table: blue (no displacement) to red (largest).
+  s.lut->SetHueRange(0.667, 0.0);
+  s.lut->SetTableRange(0.0, range_max);
+  s.lut->Build();
+  s.umax = range_max;
+
+  // Bodies: meshes, primitives; joints as small spheres.
+  for (const BodyTrack& body : results.bodies) {
+    if (body.flexible) s.add_flexible(body);
+    for (const Shape& shape : body.shapes) s.add_shape(body, shape);
+  }
+  for (std::size_t j = 0; j < results.joints.size(); ++j) {
+    auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+    sphere->SetRadius(0.015 * radius);
+    sphere->SetThetaResolution(16);
+    sphere->SetPhiResolution(8);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(kJointColor[0], kJointColor[1], kJointColor[2]);
+    s.renderer->AddActor(actor);
+    s.joints.push_back(actor);
+  }
+
+  // Ground: a plane under the whole motion, +z up.
+  if (options.ground) {
+    auto plane = vtkSmartPointer<vtkPlaneSource>::New();
+    const Eigen::Vector3d c = all.center();
+    const double half = 1.5 * radius;
+    const double z = all.lo.z() - 0.02 * radius;
+    plane->SetOrigin(c.x() - half, c.y() - half, z);
+    plane->SetPoint1(c.x() + half, c.y() - half, z);
+    plane->SetPoint2(c.x() - half, c.y() + half, z);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(plane->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(kGroundColor[0], kGroundColor[1], kGroundColor[2]);
+    actor->GetProperty()->SetAmbient(0.3);
+    s.renderer->AddActor(actor);
+  }
+
+  // Colour bar with units, only when something is coloured.
+  if (!s.flexible.empty()) {
+    auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+    bar->SetLookupTable(s.lut);
+    bar->SetTitle("|u| [m]");
+    bar->SetLabelFormat("%.2e");
+    bar->SetNumberOfLabels(5);
+    bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    bar->GetPositionCoordinate()->SetValue(kColorBarBox[0], kColorBarBox[1]);
+    bar->SetWidth(kColorBarBox[2]);
+    bar->SetHeight(kColorBarBox[3]);
+    bar->SetBarRatio(0.45);
+    bar->SetTextPositionToPrecedeScalarBar();
+    bar->UnconstrainedFontSizeOn();
+    for (vtkTextProperty* text : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
+      text->SetColor(0.1, 0.1, 0.15);
+      text->SetFontSize(std::max(10, options.height / 50));
+      text->ShadowOff();
+      text->BoldOff();
+      text->ItalicOff();
+    }
+    s.renderer->AddViewProp(bar);
+  }
+
+  // Title, deformation scale note, time stamp.
+  const int font = std::max(10, options.height / 36);
+  s.add_text(results.title, font, 0.02, 0.93, false);
+  if (options.scale != 1.0) {
+    char note[64];
+    std::snprintf(note, sizeof note, "deformation x %g", options.scale);
+    s.add_text(note, font, 0.98, 0.93, true);
+  }
+  s.time_text->GetTextProperty()->SetFontSize(font);
+  s.time_text->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
+  s.time_text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  s.time_text->GetPositionCoordinate()->SetValue(0.02, 0.03);
+  s.renderer->AddViewProp(s.time_text);
+
+  // Background, lighting, anti-aliasing (FXAA: cheap in software, docs/benchmarks.md).
+  s.renderer->SetBackground(kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
+  auto lights = vtkSmartPointer<vtkLightKit>::New();
+  lights->AddLightsToRenderer(s.renderer);
+  s.renderer->UseFXAAOn();
+
+  // Camera: a fixed one fits the whole motion, a follow one fits the largest single frame.
+  // The scene is put at t0 first: clipping ranges read the actors' bounds.
+  const double fit = 1.0 / std::sin(0.5 * kViewAngleDeg * M_PI / 180.0);
+  s.follow_distance = 1.05 * fit * frame_radius;
+  s.place_camera(all.center(), 1.05 * fit * radius);
+  update(t0);
+}
+
+Scene::~Scene() = default;
+
+vtkRenderer* Scene::renderer() const { return impl_->renderer; }
+
+double Scene::color_range_max() const { return impl_->umax; }
+
+void Scene::update(double t) {
+  Impl& s = *impl_;
+  const SampleBracket at = bracket(s.results.time, t);
+
+  // Flexible bodies: deformed nodes in ground and |u| per node.
+  RowMatrix3d x_W;
+  Eigen::VectorXd u_norm;
+  for (FlexibleView& view : s.flexible) {
+    s.deformed_nodes(*view.body, body_state(*view.body, at), x_W, u_norm);
+    for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
+      view.points->SetPoint(k, x_W(k, 0), x_W(k, 1), x_W(k, 2));
+      view.magnitude->SetValue(k, u_norm(k));
+    }
+    view.points->Modified();
+    view.magnitude->Modified();
+    if (view.surface) view.surface->Modified();
+    if (view.beams) view.beams->Modified();
+  }
+
+  // Rigid primitives: body pose times shape offset times primitive axes.
+  for (RigidShapeView& view : s.shapes) {
+    const BodyState state = body_state(*view.body, at);
+    const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
+    const Eigen::Matrix3d R_shape =
+        R * view.shape->offset_orientation.toRotationMatrix() * primitive_axes(*view.shape);
+    set_pose(view.actor->GetUserMatrix(), state.position + R * view.shape->offset_position,
+             R_shape);
+    view.actor->Modified();
+  }
+
+  // Joints.
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    const Eigen::Vector3d p = joint_position(s.results.joints[j], at);
+    s.joints[j]->SetPosition(p.x(), p.y(), p.z());
+  }
+
+  // Time stamp and, for a follow camera, the centroid of the body frames.
+  char stamp[64];
+  std::snprintf(stamp, sizeof stamp, "t = %.4f s", t);
+  s.time_text->SetInput(stamp);
+  if (s.options.follow && !s.results.bodies.empty()) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const BodyTrack& body : s.results.bodies) centroid += body_state(body, at).position;
+    s.place_camera(centroid / static_cast<double>(s.results.bodies.size()), s.follow_distance);
+  }
+  s.renderer->ResetCameraClippingRange();
+}
+
+}  // namespace limber::render

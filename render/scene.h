@@ -1,0 +1,47 @@
+// The VTK scene of a results file: flexible bodies as their deformed FE mesh (shells as
+// surfaces, beams as tubes) coloured by displacement magnitude with a colour bar, rigid-body
+// primitives, joint glyphs, ground, title and time stamp, camera presets (docs/rendering.md).
+// Internal to limber_render (exposes VTK types).
+#pragma once
+
+#include "render_options.h"
+#include "results_reader.h"
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <memory>
+
+class vtkRenderer;
+
+namespace limber::render {
+
+// Scene colours (RGB 0..1); tests look for them in frames.
+inline constexpr std::array<double, 3> kBackgroundColor{0.86, 0.89, 0.93};
+inline constexpr std::array<double, 3> kJointColor{0.25, 0.25, 0.30};
+inline constexpr std::array<double, 3> kGroundColor{0.72, 0.72, 0.68};
+// Colour bar placement in normalised viewport coordinates (x, y, width, height).
+inline constexpr std::array<double, 4> kColorBarBox{0.88, 0.10, 0.08, 0.74};
+
+class Scene {
+ public:
+  // Builds every actor for `results`; the colour range is the largest displacement magnitude
+  // over the samples in [t0, t1] (fixed for the whole animation). Precondition: ns >= 1.
+  Scene(const Results& results, const RenderOptions& options, double t0, double t1);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  vtkRenderer* renderer() const;
+  // Moves bodies and joints to time t [s] (interpolated), deforms meshes, updates the time
+  // stamp and, for a follow camera, the focal point.
+  void update(double t);
+  // Largest displacement magnitude of the colour range [m].
+  double color_range_max() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace limber::render

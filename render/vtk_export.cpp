@@ -1,0 +1,177 @@
+#include "vtk_export.h"
+
+#include "body_pose.h"
+
+#include <vtkAppendFilter.h>
+#include <vtkCellType.h>
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+namespace limber::render {
+namespace {
+
+void add_vector_data(vtkUnstructuredGrid* grid, const RowMatrix3d& u_W) {
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("displacement");
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(u_W.rows());
+  vtkNew<vtkDoubleArray> magnitude;
+  magnitude->SetName("displacement_magnitude");
+  magnitude->SetNumberOfTuples(u_W.rows());
+  for (Eigen::Index k = 0; k < u_W.rows(); ++k) {
+    displacement->SetTuple3(k, u_W(k, 0), u_W(k, 1), u_W(k, 2));
+    magnitude->SetValue(k, u_W.row(k).norm());
+  }
+  grid->GetPointData()->AddArray(displacement);
+  grid->GetPointData()->AddArray(magnitude);
+  grid->GetPointData()->SetActiveVectors("displacement");
+}
+
+// The mesh of a flexible body at one sample (see header).
+vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const BodyState& state) {
+  const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
+  const RowMatrix3d x_W = (body.mesh.nodes * R.transpose()).rowwise() + state.position.transpose();
+  const RowMatrix3d u_W = elastic_displacements(body.mesh, state.modal_coordinates) * R.transpose();
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(x_W.rows());
+  for (Eigen::Index k = 0; k < x_W.rows(); ++k) points->SetPoint(k, x_W(k, 0), x_W(k, 1), x_W(k, 2));
+  grid->SetPoints(points);
+  grid->Allocate(body.mesh.quads.rows() + body.mesh.lines.rows());
+  for (Eigen::Index e = 0; e < body.mesh.quads.rows(); ++e) {
+    const vtkIdType ids[4] = {body.mesh.quads(e, 0), body.mesh.quads(e, 1), body.mesh.quads(e, 2),
+                              body.mesh.quads(e, 3)};
+    grid->InsertNextCell(VTK_QUAD, 4, ids);
+  }
+  for (Eigen::Index e = 0; e < body.mesh.lines.rows(); ++e) {
+    const vtkIdType ids[2] = {body.mesh.lines(e, 0), body.mesh.lines(e, 1)};
+    grid->InsertNextCell(VTK_LINE, 2, ids);
+  }
+  add_vector_data(grid, u_W);
+  return grid;
+}
+
+// The primitives of a rigid body at one sample, merged into one grid.
+vtkSmartPointer<vtkUnstructuredGrid> rigid_grid(const BodyTrack& body, const BodyState& state) {
+  vtkNew<vtkAppendFilter> append;
+  append->MergePointsOff();
+  for (const Shape& shape : body.shapes) {
+    // The primitive's surface in its own frame (cylinders along z).
+    vtkSmartPointer<vtkPolyDataAlgorithm> source;
+    vtkNew<vtkTransform> transform;
+    transform->PostMultiply();
+    if (shape.type == Shape::Type::kBox) {
+      auto box = vtkSmartPointer<vtkCubeSource>::New();
+      box->SetXLength(shape.size.x());
+      box->SetYLength(shape.size.y());
+      box->SetZLength(shape.size.z());
+      source = box;
+    } else if (shape.type == Shape::Type::kCylinder) {
+      auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
+      cylinder->SetRadius(shape.size.x());
+      cylinder->SetHeight(shape.size.z());
+      cylinder->SetResolution(32);
+      source = cylinder;
+      transform->RotateX(90.0);
+    } else {
+      auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+      sphere->SetRadius(shape.size.x());
+      source = sphere;
+    }
+    // Shape offset, then body pose.
+    const Eigen::Vector3d p = state.position + state.orientation * shape.offset_position;
+    const Eigen::AngleAxisd rotation(state.orientation * shape.offset_orientation);
+    transform->RotateWXYZ(rotation.angle() * 180.0 / M_PI, rotation.axis().data());
+    transform->Translate(p.data());
+    vtkNew<vtkTransformPolyDataFilter> placed;
+    placed->SetInputConnection(source->GetOutputPort());
+    placed->SetTransform(transform);
+    append->AddInputConnection(placed->GetOutputPort());
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  if (!body.shapes.empty()) {
+    append->Update();
+    grid->ShallowCopy(append->GetOutput());
+    grid->GetPointData()->Initialize();
+  }
+  add_vector_data(grid, RowMatrix3d::Zero(grid->GetNumberOfPoints(), 3));
+  return grid;
+}
+
+std::string file_name(const std::string& body, Eigen::Index sample) {
+  char index[32];
+  std::snprintf(index, sizeof index, "%05ld", static_cast<long>(sample));
+  return body + "_" + index + ".vtu";
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int write_vtk_series(const Results& results, const std::filesystem::path& vtk_directory,
+                     double t0, double t1) {
+  std::filesystem::create_directories(vtk_directory);
+  std::ofstream pvd(vtk_directory / "scene.pvd");
+  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / "scene.pvd").string() + "'");
+  pvd << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "  <Collection>\n";
+  pvd << std::setprecision(17);
+
+  // One file per body and sample in [t0, t1].
+  int written = 0;
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  for (Eigen::Index i = 0; i < results.sample_count(); ++i) {
+    const double t = results.time(i);
+    if (t < t0 || t > t1) continue;
+    for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+      const BodyTrack& body = results.bodies[b];
+      const BodyState state = body_state(body, {i, 0.0});
+      const auto grid = body.flexible ? flexible_grid(body, state) : rigid_grid(body, state);
+      const std::string name = file_name(body.name, i);
+      writer->SetInputData(grid);
+      writer->SetFileName((vtk_directory / name).c_str());
+      if (writer->Write() != 1) {
+        throw std::runtime_error("cannot write '" + (vtk_directory / name).string() + "'");
+      }
+      ++written;
+      pvd << "    <DataSet timestep=\"" << t << "\" group=\"\" part=\"" << b << "\" name=\""
+          << xml_escape(body.name) << "\" file=\"" << xml_escape(name) << "\"/>\n";
+    }
+  }
+  pvd << "  </Collection>\n</VTKFile>\n";
+  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / "scene.pvd").string() + "'");
+  return written;
+}
+
+}  // namespace limber::render

@@ -1,0 +1,14 @@
+// Pieces of JSON text (RFC 8259) for machine-readable output.
+#pragma once
+
+#include <string>
+
+namespace limber::app {
+
+// `text` as a quoted JSON string (quotes, backslashes and control characters escaped).
+std::string json_string(const std::string& text);
+
+// `value` in the shortest form that reads back exactly; null when not finite.
+std::string json_number(double value);
+
+}  // namespace limber::app

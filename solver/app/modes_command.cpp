@@ -1,0 +1,192 @@
+// `limber modes`: reads a case, computes every flexible body's mode set (normal,
+// constraint and attachment modes, seed paper eq. 4-11), prints the frequency table and
+// writes DIR/modes.h5 (docs/modes-format.md) and DIR/modes_<body>.vtu (ParaView).
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/command.h"
+#include "app/json_text.h"
+#include "core/error.h"
+#include "io/case_reader.h"
+#include "io/modes_file.h"
+#include "io/vtu_writer.h"
+#include "modal/component_modes.h"
+
+namespace limber::app {
+
+namespace {
+
+struct ModesOptions {
+  std::string case_file;
+  std::string output_dir;
+  bool json = false;
+  std::string vtu_format = "binary";
+};
+
+// One body's outcome.
+struct BodyOutcome {
+  const io::FlexibleBodyCase* body = nullptr;
+  modal::ModalResult result;
+};
+
+// Runs the reduction; errors of the request point at the body's `modes` entry.
+modal::ModalResult compute_body_modes(const io::FlexibleBodyCase& body) {
+  try {
+    return modal::compute_component_modes(body.model, body.request);
+  } catch (const InputError& error) {
+    if (error.where().known()) throw;
+    throw InputError("body '" + body.name + "': " + error.message(), body.modes_where);
+  }
+}
+
+// The frequency table of one body, rigid modes found and notices.
+void print_table(std::FILE* out, const BodyOutcome& outcome) {
+  const fe::FeModel& model = outcome.body->model;
+  const modal::ModeSet& set = outcome.result.mode_set;
+  fmt::print(out, "\nbody '{}': {} nodes, {} DOFs ({} fixed), {} beam and {} shell elements\n",
+             outcome.body->name, model.node_count(), model.dof_count(), model.fixed_dofs.size(),
+             model.beams.size(), model.shells.size());
+  fmt::print(out, "  {:>4}  {:<10}  {:>14}  {}\n", "mode", "kind", "frequency [Hz]", "label");
+  for (std::size_t i = 0; i < set.modes.size(); ++i) {
+    const modal::ModeInfo& mode = set.modes[i];
+    fmt::print(out, "  {:>4}  {:<10}  {:>14.4f}  {}\n", i + 1, modal::to_string(mode.kind),
+               mode.frequency_hz, mode.label);
+  }
+  // Rigid-body modes are carried by the floating frame, not by the mode set.
+  if (!set.rigid_modes.empty()) {
+    fmt::print(out, "  rigid-body modes found and set aside: {}\n", set.rigid_modes.size());
+    for (const modal::ModeInfo& mode : set.rigid_modes) {
+      fmt::print(out, "        {:<10}  {:>14.4g}  {}\n", modal::to_string(mode.kind),
+                 mode.frequency_hz, mode.label);
+    }
+  }
+  for (const std::string& notice : outcome.result.notices) {
+    fmt::print(out, "  notice: {}\n", notice);
+  }
+}
+
+// {"bodies": {"<name>": {"dofs": N, "modes": [...]}}}, rigid modes included.
+std::string json_report(const std::vector<BodyOutcome>& outcomes,
+                        const std::vector<std::string>& failures) {
+  std::string text = "{\"bodies\": {";
+  for (std::size_t b = 0; b < outcomes.size(); ++b) {
+    const BodyOutcome& outcome = outcomes[b];
+    text += (b ? ", " : "") + json_string(outcome.body->name) +
+            ": {\"dofs\": " + std::to_string(outcome.body->model.dof_count()) + ", \"modes\": [";
+    bool first = true;
+    auto add_modes = [&](const std::vector<modal::ModeInfo>& modes) {
+      for (const modal::ModeInfo& mode : modes) {
+        text += std::string(first ? "" : ", ") +
+                "{\"kind\": " + json_string(modal::to_string(mode.kind)) +
+                ", \"frequency_hz\": " + json_number(mode.frequency_hz) +
+                ", \"label\": " + json_string(mode.label) + "}";
+        first = false;
+      }
+    };
+    add_modes(outcome.result.mode_set.rigid_modes);
+    add_modes(outcome.result.mode_set.modes);
+    text += "]}";
+  }
+  text += "}";
+  // Bodies whose computation failed (only present after a numerical failure).
+  if (!failures.empty()) {
+    text += ", \"failures\": [";
+    for (std::size_t i = 0; i < failures.size(); ++i)
+      text += (i ? ", " : "") + json_string(failures[i]);
+    text += "]";
+  }
+  return text + "}";
+}
+
+int run_modes(const ModesOptions& options) {
+  const io::Case input = io::read_case_file(options.case_file);
+  if (input.flexible_bodies.empty()) {
+    throw InputError("expected at least one body under 'flexible_bodies', got none",
+                     SourceLocation{options.case_file, 0, 0});
+  }
+  // The table goes to stdout, or to stderr when stdout carries JSON.
+  std::FILE* table = options.json ? stderr : stdout;
+  fmt::print(table, "limber modes: {} ({})\n", input.title, input.file);
+
+  // Every body in turn; a numerical failure is reported and the others still computed.
+  std::vector<BodyOutcome> outcomes;
+  std::vector<std::string> failures;
+  for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
+    BodyOutcome outcome{&body, compute_body_modes(body)};
+    if (outcome.result.status != modal::ModalStatus::kOk) {
+      failures.push_back(fmt::format("body '{}': {}: {}", body.name,
+                                     outcome.result.status == modal::ModalStatus::kSingular
+                                         ? "singular matrix"
+                                         : "eigen-solver did not converge",
+                                     outcome.result.message));
+      continue;
+    }
+    print_table(table, outcome);
+    outcomes.push_back(std::move(outcome));
+  }
+
+  // Files: one HDF5 file for all bodies computed, one VTU per body.
+  const std::filesystem::path directory =
+      options.output_dir.empty()
+          ? std::filesystem::path("out") / std::filesystem::path(options.case_file).stem()
+          : std::filesystem::path(options.output_dir);
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) {
+    throw InputError("cannot create the output directory '" + directory.string() +
+                     "': " + error.message());
+  }
+  std::vector<io::BodyModesRef> written;
+  for (const BodyOutcome& outcome : outcomes) {
+    written.push_back({outcome.body->name, &outcome.body->model, &outcome.result.mode_set});
+  }
+  const std::string h5_path = (directory / "modes.h5").string();
+  io::write_modes_file(h5_path, input.title, input.file, written);
+  fmt::print(table, "\nwrote {}\n", h5_path);
+  const io::VtuEncoding encoding =
+      options.vtu_format == "ascii" ? io::VtuEncoding::kAscii : io::VtuEncoding::kBase64;
+  for (const BodyOutcome& outcome : outcomes) {
+    const std::string vtu_path = (directory / ("modes_" + outcome.body->name + ".vtu")).string();
+    io::write_modes_vtu(vtu_path, outcome.body->model, outcome.result.mode_set, encoding);
+    fmt::print(table, "wrote {}\n", vtu_path);
+  }
+
+  if (options.json) fmt::print(stdout, "{}\n", json_report(outcomes, failures));
+  for (const std::string& failure : failures) fmt::print(stderr, "limber: error: {}\n", failure);
+  return failures.empty() ? kExitOk : kExitNumerical;
+}
+
+}  // namespace
+
+Command add_modes_command(CLI::App& app) {
+  auto options = std::make_shared<ModesOptions>();
+  CLI::App* cli = app.add_subcommand(
+      "modes", "Compute the flexible bodies' mode sets; write modes.h5 and VTU files");
+  cli->footer(
+      "Prints each body's frequency table (mode, kind, label, frequency), the rigid-body modes\n"
+      "found and set aside, and notices (e.g. dropped dependent static modes). Writes\n"
+      "DIR/modes.h5 (every body: mesh, mode shapes, frequencies, invariants; see\n"
+      "docs/modes-format.md) and DIR/modes_<body>.vtu (each mode shape as a point vector\n"
+      "array, for ParaView's Warp By Vector).\n"
+      "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
+      "2 an eigen-solver failed (the bodies computed so far are still written), 3 internal error.");
+  cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
+  cli->add_option("-o,--output", options->output_dir,
+                  "Output directory, created when missing (default: out/<case file stem>)");
+  cli->add_flag("--json", options->json,
+                "Print exactly one JSON object on stdout: {\"bodies\": {<name>: {\"dofs\": N, "
+                "\"modes\": [{\"kind\", \"frequency_hz\", \"label\"}]}}}, rigid modes included; "
+                "the table goes to stderr");
+  cli->add_option("--vtu-format", options->vtu_format,
+                  "Encoding of the VTU files: binary (base64) or ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))
+      ->capture_default_str();
+  return {cli, [options] { return run_modes(*options); }};
+}
+
+}  // namespace limber::app

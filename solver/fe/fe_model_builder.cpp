@@ -1,0 +1,277 @@
+#include "fe/fe_model_builder.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace limber::fe {
+
+namespace {
+
+// Throws unless `value` > 0 and finite.
+void demand_positive(double value, const std::string& what, const SourceLocation& where) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError(fmt::format("{}: expected a positive value, got {}", what, value), where);
+  }
+}
+
+// Checks E, nu and rho of a material.
+void check_material(const Material& material, const std::string& owner,
+                    const SourceLocation& where) {
+  demand_positive(material.youngs_modulus, owner + " Young's modulus E [Pa]", where);
+  demand_positive(material.density, owner + " density rho [kg/m^3]", where);
+  const double nu = material.poisson_ratio;
+  if (!(nu > -1.0 && nu < 0.5)) {
+    throw InputError(fmt::format("{} Poisson ratio: expected -1 < nu < 0.5, got {}", owner, nu),
+                     where);
+  }
+}
+
+std::string vector_text(const Eigen::Vector3d& v) {
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z());
+}
+
+}  // namespace
+
+void FeModelBuilder::demand_node(int node, const char* what, const SourceLocation& where) const {
+  if (node < 0 || node >= model_.node_count()) {
+    throw InputError(fmt::format("{}: expected a node index in [0, {}), got {}", what,
+                                 model_.node_count(), node),
+                     where);
+  }
+}
+
+int FeModelBuilder::add_node(int id, const Eigen::Vector3d& position, const SourceLocation& where) {
+  if (index_of_id_.contains(id)) {
+    throw InputError(fmt::format("node {}: expected a unique node id, got a duplicate", id), where);
+  }
+  if (!position.allFinite()) {
+    throw InputError(
+        fmt::format("node {}: expected a finite position, got {}", id, vector_text(position)),
+        where);
+  }
+  const int index = model_.node_count();
+  model_.node_positions.push_back(position);
+  model_.node_ids.push_back(id);
+  index_of_id_.emplace(id, index);
+  return index;
+}
+
+int FeModelBuilder::add_beam_property(const BeamProperty& property, const SourceLocation& where) {
+  const std::string owner = fmt::format("beam property '{}'", property.name);
+  check_material(property.material, owner, where);
+  const BeamSection& s = property.section;
+  demand_positive(s.area, owner + " area A [m^2]", where);
+  demand_positive(s.inertia_y, owner + " second moment Iy [m^4]", where);
+  demand_positive(s.inertia_z, owner + " second moment Iz [m^4]", where);
+  demand_positive(s.torsion_constant, owner + " torsion constant J [m^4]", where);
+  demand_positive(s.shear_factor_y, owner + " shear factor ky", where);
+  demand_positive(s.shear_factor_z, owner + " shear factor kz", where);
+  model_.beam_properties.push_back(property);
+  return static_cast<int>(model_.beam_properties.size()) - 1;
+}
+
+int FeModelBuilder::add_shell_property(const ShellProperty& property, const SourceLocation& where) {
+  const std::string owner = fmt::format("shell property '{}'", property.name);
+  check_material(property.material, owner, where);
+  demand_positive(property.thickness, owner + " thickness [m]", where);
+  model_.shell_properties.push_back(property);
+  return static_cast<int>(model_.shell_properties.size()) - 1;
+}
+
+void FeModelBuilder::add_beam(const BeamElement& element, const SourceLocation& where) {
+  // Nodes and property exist.
+  demand_node(element.nodes[0], "beam node", where);
+  demand_node(element.nodes[1], "beam node", where);
+  const int properties = static_cast<int>(model_.beam_properties.size());
+  if (element.property < 0 || element.property >= properties) {
+    throw InputError(fmt::format("beam: expected a beam property index in [0, {}), got {}",
+                                 properties, element.property),
+                     where);
+  }
+
+  // Non-zero length.
+  const int id0 = model_.node_ids[element.nodes[0]];
+  const int id1 = model_.node_ids[element.nodes[1]];
+  const Eigen::Vector3d axis =
+      model_.node_positions[element.nodes[1]] - model_.node_positions[element.nodes[0]];
+  const double length = axis.norm();
+  if (!(length > 0.0)) {
+    throw InputError(
+        fmt::format("beam {}-{}: expected a positive length, got {}", id0, id1, length), where);
+  }
+
+  // Orientation not parallel to the axis (same test as beam_local_axes).
+  const Eigen::Vector3d& v = element.orientation;
+  if (!v.allFinite() || !(v.norm() > 0.0) ||
+      !((axis / length).cross(v).norm() >= 1e-6 * v.norm())) {
+    throw InputError(fmt::format("beam {}-{}: expected an orientation vector not parallel to the "
+                                 "axis {}, got {}",
+                                 id0, id1, vector_text(axis / length), vector_text(v)),
+                     where);
+  }
+  model_.beams.push_back(element);
+}
+
+void FeModelBuilder::add_shell(const ShellElement& element, const SourceLocation& where) {
+  // Nodes and property exist.
+  for (int node : element.nodes) demand_node(node, "shell node", where);
+  const int properties = static_cast<int>(model_.shell_properties.size());
+  if (element.property < 0 || element.property >= properties) {
+    throw InputError(fmt::format("shell: expected a shell property index in [0, {}), got {}",
+                                 properties, element.property),
+                     where);
+  }
+  std::array<int, 4> ids{};
+  std::array<Eigen::Vector3d, 4> p;
+  for (int i = 0; i < 4; ++i) {
+    ids[i] = model_.node_ids[element.nodes[i]];
+    p[i] = model_.node_positions[element.nodes[i]];
+  }
+  const std::string name = fmt::format("shell {}-{}-{}-{}", ids[0], ids[1], ids[2], ids[3]);
+
+  // Four distinct nodes.
+  const std::set<int> distinct(element.nodes.begin(), element.nodes.end());
+  if (distinct.size() != 4) {
+    throw InputError(fmt::format("{}: expected 4 distinct nodes, got {}", name, distinct.size()),
+                     where);
+  }
+
+  // Positive area: half the norm of the diagonals' cross product (exact for a flat quad).
+  const Eigen::Vector3d normal = (p[2] - p[0]).cross(p[3] - p[1]);
+  const double area = 0.5 * normal.norm();
+  const double size = std::max((p[2] - p[0]).norm(), (p[3] - p[1]).norm());
+  if (!(area > 1e-12 * size * size)) {
+    throw InputError(fmt::format("{}: expected a positive area, got {:.6g} m^2", name, area),
+                     where);
+  }
+
+  // Convex, counter-clockwise about the mean normal: every corner turns left.
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d in = p[i] - p[(i + 3) % 4];
+    const Eigen::Vector3d out = p[(i + 1) % 4] - p[i];
+    const double turn = in.cross(out).dot(normal) / normal.norm();
+    if (!(turn > 1e-12 * size * size)) {
+      throw InputError(fmt::format("{}: expected a convex quad, got a corner at node {} with "
+                                   "turn {:.6g} m^2 (reflex or straight)",
+                                   name, ids[i], turn),
+                       where);
+    }
+  }
+  model_.shells.push_back(element);
+}
+
+void FeModelBuilder::add_point_mass(const PointMass& point_mass, const SourceLocation& where) {
+  demand_node(point_mass.node, "point mass node", where);
+  const int id = model_.node_ids[point_mass.node];
+  if (!(point_mass.mass >= 0.0) || !std::isfinite(point_mass.mass)) {
+    throw InputError(
+        fmt::format("point mass at node {}: expected a mass >= 0 kg, got {}", id, point_mass.mass),
+        where);
+  }
+
+  // Inertia symmetric positive semi-definite (relative tolerances on its largest entry).
+  const Eigen::Matrix3d& inertia = point_mass.inertia;
+  const double scale = inertia.cwiseAbs().maxCoeff();
+  const double asymmetry = (inertia - inertia.transpose()).cwiseAbs().maxCoeff();
+  if (!inertia.allFinite() || asymmetry > 1e-12 * scale) {
+    throw InputError(fmt::format("point mass at node {}: expected a symmetric inertia, got an "
+                                 "asymmetry of {:.6g} kg m^2",
+                                 id, asymmetry),
+                     where);
+  }
+  const double lowest =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly)
+          .eigenvalues()
+          .minCoeff();
+  if (lowest < -1e-12 * scale) {
+    throw InputError(fmt::format("point mass at node {}: expected a positive semi-definite "
+                                 "inertia, got a principal moment {:.6g} kg m^2",
+                                 id, lowest),
+                     where);
+  }
+  model_.point_masses.push_back(point_mass);
+}
+
+void FeModelBuilder::add_node_set(const std::string& name, const std::vector<int>& nodes,
+                                  const SourceLocation& where) {
+  if (model_.node_sets.contains(name)) {
+    throw InputError(fmt::format("node set '{}': expected a unique name, got a duplicate", name),
+                     where);
+  }
+  if (nodes.empty()) {
+    throw InputError(fmt::format("node set '{}': expected at least 1 node, got 0", name), where);
+  }
+  for (int node : nodes) demand_node(node, "node set member", where);
+  model_.node_sets.emplace(name, nodes);
+}
+
+void FeModelBuilder::fix(int node, Dof dof, const SourceLocation& where) {
+  demand_node(node, "fixed DOF node", where);
+  const bool already =
+      std::any_of(model_.fixed_dofs.begin(), model_.fixed_dofs.end(),
+                  [&](const FixedDof& f) { return f.node == node && f.dof == dof; });
+  if (!already) model_.fixed_dofs.push_back({node, dof});
+}
+
+int FeModelBuilder::node_index(int id, const SourceLocation& where) const {
+  const auto found = index_of_id_.find(id);
+  if (found == index_of_id_.end()) {
+    throw InputError(fmt::format("node id {}: expected an existing node, got an unknown id", id),
+                     where);
+  }
+  return found->second;
+}
+
+const std::vector<int>& FeModelBuilder::node_set(const std::string& name,
+                                                 const SourceLocation& where) const {
+  const auto found = model_.node_sets.find(name);
+  if (found == model_.node_sets.end()) {
+    throw InputError(
+        fmt::format("node set '{}': expected an existing node set, got an unknown name", name),
+        where);
+  }
+  return found->second;
+}
+
+FeModel FeModelBuilder::build(const SourceLocation& where) && {
+  // At least one element.
+  const std::size_t elements = model_.beams.size() + model_.shells.size();
+  if (elements == 0) {
+    throw InputError(
+        fmt::format("FE model: expected at least 1 element, got 0 ({} nodes)", model_.node_count()),
+        where);
+  }
+
+  // Every node carries stiffness or mass.
+  std::vector<bool> used(model_.node_count(), false);
+  for (const BeamElement& b : model_.beams) {
+    for (int n : b.nodes) used[n] = true;
+  }
+  for (const ShellElement& s : model_.shells) {
+    for (int n : s.nodes) used[n] = true;
+  }
+  for (const PointMass& m : model_.point_masses) used[m.node] = true;
+  std::vector<int> unused;
+  for (int n = 0; n < model_.node_count(); ++n) {
+    if (!used[n]) unused.push_back(model_.node_ids[n]);
+  }
+  if (!unused.empty()) {
+    constexpr std::size_t kShown = 10;
+    const std::size_t shown = std::min(unused.size(), kShown);
+    throw InputError(
+        fmt::format("FE model: expected every node to belong to an element or carry a point "
+                    "mass, got {} unused node(s): {}{}",
+                    unused.size(),
+                    fmt::join(unused.begin(), unused.begin() + static_cast<long>(shown), ", "),
+                    unused.size() > kShown ? ", ..." : ""),
+        where);
+  }
+  return std::move(model_);
+}
+
+}  // namespace limber::fe

@@ -1,0 +1,334 @@
+#include "integrate/generalized_alpha.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "integrate/consistent_state.h"
+
+namespace limber::integrate {
+namespace {
+
+// Reciprocal condition number below which the scaled iteration matrix counts as singular.
+constexpr double kSingularRcond = 1e-14;
+// Newton contraction rate above which a reused iteration matrix is rebuilt.
+constexpr double kRefreshRate = 0.1;
+// Accepted steps after which the iteration matrix is rebuilt anyway (IDA uses 20 as well).
+constexpr int kMaxJacobianAge = 20;
+// Contraction rate above which increments at the round-off level count as stalled.
+constexpr double kSlowRate = 0.5;
+// Newton increments below this multiple of ε times the size of what they correct are round-off;
+// the larger bound applies once the increments have stopped shrinking (stalled in the noise).
+constexpr double kRoundoff = 10.0 * std::numeric_limits<double>::epsilon();
+constexpr double kRoundoffStall = 1e3 * std::numeric_limits<double>::epsilon();
+
+// Two times closer than this (relative) are the same output time.
+double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
+
+}  // namespace
+
+GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from_rho_inf(double rho_inf) {
+  // Chung & Hulbert 1993: α_m, α_f from ρ∞, second-order γ and the β that maximises damping.
+  GeneralizedAlphaCoefficients c;
+  c.alpha_m = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
+  c.alpha_f = rho_inf / (rho_inf + 1.0);
+  c.gamma = 0.5 + c.alpha_f - c.alpha_m;
+  c.beta = 0.25 * (c.gamma + 0.5) * (c.gamma + 0.5);
+  return c;
+}
+
+Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState& x0,
+                              const IntegratorOptions& options) {
+  options.validate();
+  LIMBER_DEMAND(options.method == Method::kGeneralizedAlpha);
+  if (x0.q.size() != system.nq() || x0.v.size() != system.nv()) {
+    throw InputError(fmt::format("initial state: expected {} coordinates and {} velocities, got "
+                                 "{} and {}",
+                                 system.nq(), system.nv(), x0.q.size(), x0.v.size()));
+  }
+  system_ = &system;
+  options_ = options;
+  coef_ = GeneralizedAlphaCoefficients::from_rho_inf(options.rho_inf);
+  nv_ = system.nv();
+  nc_ = system.nc();
+  t0_ = x0.t;
+  grid_index_ = 0;
+  h_try_ = options.step;
+  halvings_ = 0;
+  failed_ = false;
+  stats_ = {};
+  jacobian_h_ = 0.0;
+  J_.resize(nv_ + nc_, nv_ + nc_);
+  M_.resize(nv_, nv_);
+  G_.resize(nc_, nv_);
+  Q_.resize(nv_);
+  g_.resize(nc_);
+
+  // Consistent start: projected q, v; v̇ and λ from the saddle-point system; a_0 = v̇_0.
+  curr_.t = x0.t;
+  curr_.q = x0.q;
+  curr_.v = x0.v;
+  Status status = project_initial_state(system, x0.t, curr_.q, curr_.v);
+  if (status.ok()) status = solve_accelerations(system, x0.t, curr_.q, curr_.v, curr_.vdot,
+                                                curr_.lambda);
+  if (!status.ok()) {
+    failed_ = true;
+    failure_ = status;
+    return status;
+  }
+  curr_.a = curr_.vdot;
+  curr_.integrals = Eigen::VectorXd::Zero(options.quadrature.size);
+  evaluate_integrand(curr_);
+  prev_ = curr_;
+  xi_last_ = Eigen::VectorXd::Zero(nv_);
+  return Status::success(x0.t);
+}
+
+Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
+  LIMBER_DEMAND(system_ != nullptr);
+  if (failed_) return failure_;
+  if (t_out < prev_.t - time_tolerance(t_out) || t_out > options_.t_stop + time_tolerance(t_out)) {
+    throw InputError(fmt::format("output time: expected {} ≤ t ≤ {}, got {}", prev_.t,
+                                 options_.t_stop, t_out));
+  }
+  // Step until the last step ends at or after t_out.
+  while (curr_.t < t_out - time_tolerance(t_out)) {
+    const Status status = take_step();
+    if (!status.ok()) return status;
+  }
+  interpolate(t_out, out);
+  return Status::success(t_out);
+}
+
+Status GeneralizedAlpha::take_step() {
+  const double target = std::min(t0_ + static_cast<double>(grid_index_ + 1) * options_.step,
+                                 options_.t_stop);
+  for (;;) {
+    const double h = std::min(h_try_, target - curr_.t);
+    const Attempt attempt = attempt_step(h);
+    if (attempt == Attempt::kAccepted) {
+      prev_ = std::move(curr_);
+      curr_ = next_;
+      ++stats_.steps;
+      stats_.last_step = h;
+      // Back on the nominal grid: snap the time and restore the nominal step.
+      if (target - curr_.t <= time_tolerance(target)) {
+        curr_.t = target;
+        ++grid_index_;
+        h_try_ = options_.step;
+        halvings_ = 0;
+      }
+      if (stats_.steps > options_.max_steps) {
+        return failure(StatusCode::kTooManySteps,
+                       fmt::format("more than {} steps", options_.max_steps));
+      }
+      return Status::success(curr_.t);
+    }
+    if (attempt == Attempt::kStaleJacobian) {
+      ++stats_.rejected_steps;
+      ++stats_.newton_failures;
+      continue;
+    }
+    if (attempt == Attempt::kSingular) {
+      return failure(StatusCode::kSingularJacobian,
+                     fmt::format("the iteration matrix of a step h = {:.4g} s is singular "
+                                 "(dependent constraints or a singular mass matrix)", h));
+    }
+    // A failed Newton iteration rejects the step: retry with h/2 a bounded number of times.
+    ++stats_.rejected_steps;
+    ++stats_.newton_failures;
+    if (halvings_ == options_.max_step_halvings) {
+      if (attempt == Attempt::kNaN) {
+        return failure(StatusCode::kNaN,
+                       fmt::format("the model returned non-finite values in a step h = {:.4g} s "
+                                   "(after {} halvings)", h, halvings_));
+      }
+      return failure(StatusCode::kConvergenceFailures,
+                     fmt::format("Newton did not converge (at most {} iterations) in a step "
+                                 "h = {:.4g} s (after {} halvings)",
+                                 options_.max_newton_iterations, h, halvings_));
+    }
+    h_try_ = 0.5 * h;
+    ++halvings_;
+  }
+}
+
+GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
+  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
+  const double bh2 = beta * h * h;
+  next_.t = curr_.t + h;
+
+  // Predictor: v̇ and λ extrapolated linearly from the last step (held at the first), a from
+  // the α relation, ξ from the Newmark formula.
+  const double previous_h = curr_.t - prev_.t;
+  const double ratio = previous_h > 0.0 ? h / previous_h : 0.0;
+  const Eigen::VectorXd vdot_pred = curr_.vdot + ratio * (curr_.vdot - prev_.vdot);
+  const Eigen::VectorXd a_pred =
+      (alpha_f * curr_.vdot - alpha_m * curr_.a + (1.0 - alpha_f) * vdot_pred) / (1.0 - alpha_m);
+  Eigen::VectorXd xi = h * curr_.v + h * h * (0.5 - beta) * curr_.a + bh2 * a_pred;
+  Eigen::VectorXd lambda_scaled =
+      bh2 * (curr_.lambda + ratio * (curr_.lambda - prev_.lambda));
+  Eigen::VectorXd r(nv_ + nc_), delta(nv_ + nc_);
+  end_of_step_kinematics(h, xi, next_);
+  scaled_residual(h, next_, lambda_scaled, r);
+
+  // Reuse the iteration matrix of the previous step when it was built for this h (up to the
+  // round-off of t_{n+1} − t_n).
+  bool fresh = false;
+  if (!(std::abs(jacobian_h_ - h) <= 1e-9 * h) || jacobian_age_ >= kMaxJacobianAge) {
+    if (!r.allFinite()) return Attempt::kNaN;
+    if (!refresh_jacobian(h, xi, lambda_scaled, r)) return Attempt::kSingular;
+    fresh = true;
+  }
+
+  // Newton iteration on (ξ, βh²λ).
+  double previous_norm = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < options_.max_newton_iterations; ++iteration) {
+    if (!r.allFinite()) return Attempt::kNaN;
+    delta = -lu_.solve(r);
+    xi += delta.head(nv_);
+    lambda_scaled += delta.tail(nc_);
+    ++stats_.newton_iterations;
+    end_of_step_kinematics(h, xi, next_);
+    // Converged when the increment is below the tolerance, or when the increments have
+    // stalled at the round-off level.
+    const double norm = delta.lpNorm<Eigen::Infinity>();
+    const double rate = norm / previous_norm;
+    const bool done = converged(xi, lambda_scaled, delta, kRoundoff) ||
+                      (rate > kSlowRate && converged(xi, lambda_scaled, delta, kRoundoffStall));
+    if (!done || !next_.q.allFinite()) {
+      // Not converged: rebuild a reused matrix when Newton slows down or diverges.
+      previous_norm = norm;
+      scaled_residual(h, next_, lambda_scaled, r);
+      if (!r.allFinite()) return Attempt::kNaN;
+      if (rate >= 1.0 && fresh) return Attempt::kNewtonFailed;
+      if (rate > kRefreshRate && !fresh) {
+        if (!refresh_jacobian(h, xi, lambda_scaled, r)) return Attempt::kSingular;
+        fresh = true;
+        previous_norm = std::numeric_limits<double>::infinity();
+      }
+      continue;
+    }
+
+    // Converged: complete the end-of-step state.
+    next_.lambda = lambda_scaled / bh2;
+    if (!next_.v.allFinite() || !next_.vdot.allFinite() || !next_.lambda.allFinite()) {
+      return Attempt::kNaN;
+    }
+    evaluate_integrand(next_);
+    next_.integrals = curr_.integrals + 0.5 * h * (curr_.integrand + next_.integrand);
+    xi_last_ = xi;
+    ++jacobian_age_;
+    return Attempt::kAccepted;
+  }
+  // Out of iterations: a reused matrix gets one more chance with the same h.
+  if (!fresh) {
+    jacobian_h_ = 0.0;
+    return Attempt::kStaleJacobian;
+  }
+  return Attempt::kNewtonFailed;
+}
+
+bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorXd& lambda_scaled,
+                                 const Eigen::VectorXd& delta, double roundoff) const {
+  // ξ: relative to the step's displacement, with a floor at the round-off of q ⊕ ξ.
+  const double tol = options_.newton_tolerance;
+  const double xi_floor = roundoff * (1.0 + curr_.q.lpNorm<Eigen::Infinity>());
+  const bool xi_converged =
+      delta.head(nv_).lpNorm<Eigen::Infinity>() <= tol * xi.lpNorm<Eigen::Infinity>() + xi_floor;
+  // λ̃ through the force Gᵀλ̃ it applies (M_, G_ from the last evaluation), relative to that
+  // force, with the floor the ξ round-off causes in the O(1)-conditioned scaled system.
+  const double force_change = (G_.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
+  const double force = (G_.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
+  const bool lambda_converged =
+      force_change <= tol * force + M_.lpNorm<Eigen::Infinity>() * xi_floor;
+  return xi_converged && lambda_converged;
+}
+
+void GeneralizedAlpha::end_of_step_kinematics(double h, const Eigen::VectorXd& xi,
+                                              StepState& s) const {
+  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
+  // a from the Newmark position formula, then v, v̇ and q (Arnold & Brüls 2007, eq. (9)).
+  s.a = (xi / (h * h) - curr_.v / h - (0.5 - beta) * curr_.a) / beta;
+  s.v = curr_.v + h * (1.0 - gamma) * curr_.a + h * gamma * s.a;
+  s.vdot = ((1.0 - alpha_m) * s.a + alpha_m * curr_.a - alpha_f * curr_.vdot) / (1.0 - alpha_f);
+  system_->integrate_coordinates(curr_.q, xi, s.q);
+}
+
+void GeneralizedAlpha::scaled_residual(double h, const StepState& s,
+                                       const Eigen::VectorXd& lambda_scaled, Eigen::VectorXd& r) {
+  const double bh2 = coef_.beta * h * h;
+  ++stats_.residual_evaluations;
+  system_->mass_matrix(s.t, s.q, M_);
+  system_->generalized_forces(s.t, s.q, s.v, Q_);
+  system_->constraint_jacobian_v(s.t, s.q, G_);
+  system_->constraints(s.t, s.q, g_);
+  r.head(nv_).noalias() = bh2 * (M_ * s.vdot - Q_);
+  r.head(nv_).noalias() += G_.transpose() * lambda_scaled;
+  r.tail(nc_) = g_;
+}
+
+bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
+                                        const Eigen::VectorXd& lambda_scaled,
+                                        const Eigen::VectorXd& r) {
+  ++stats_.jacobian_evaluations;
+  probe_.t = next_.t;
+  r_perturbed_.resize(nv_ + nc_);
+  // Columns for ξ: forward differences of the scaled residual (the √ε rule).
+  const double epsilon =
+      std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, curr_.q.lpNorm<Eigen::Infinity>());
+  Eigen::VectorXd xi_perturbed = xi;
+  for (int j = 0; j < nv_; ++j) {
+    xi_perturbed(j) = xi(j) + epsilon;
+    end_of_step_kinematics(h, xi_perturbed, probe_);
+    scaled_residual(h, probe_, lambda_scaled, r_perturbed_);
+    J_.col(j) = (r_perturbed_ - r) / epsilon;
+    xi_perturbed(j) = xi(j);
+  }
+  // Columns for λ̃ = βh²λ: [Gᵀ; 0] at the current iterate.
+  end_of_step_kinematics(h, xi, probe_);
+  system_->constraint_jacobian_v(probe_.t, probe_.q, G_);
+  J_.topRightCorner(nv_, nc_) = G_.transpose();
+  J_.bottomRightCorner(nc_, nc_).setZero();
+  if (!J_.allFinite()) return false;
+  lu_.compute(J_);
+  jacobian_h_ = h;
+  jacobian_age_ = 0;
+  return lu_.rcond() > kSingularRcond;
+}
+
+void GeneralizedAlpha::evaluate_integrand(StepState& s) const {
+  s.integrand.resize(options_.quadrature.size);
+  if (options_.quadrature.size > 0) {
+    options_.quadrature.integrand(s.t, s.q, s.v, s.vdot, s.lambda, s.integrand);
+  }
+}
+
+void GeneralizedAlpha::interpolate(double t_out, Sample& out) const {
+  const double h = curr_.t - prev_.t;
+  const double theta = h > 0.0 ? std::clamp((t_out - prev_.t) / h, 0.0, 1.0) : 1.0;
+  // Cubic Hermite tangent displacement: Δ(0) = 0, Δ(1) = ξ, slopes h v_n and h v_{n+1}.
+  const double t2 = theta * theta;
+  const double t3 = t2 * theta;
+  const Eigen::VectorXd displacement = (t3 - 2.0 * t2 + theta) * h * prev_.v +
+                                       (3.0 * t2 - 2.0 * t3) * xi_last_ + (t3 - t2) * h * curr_.v;
+  out.t = t_out;
+  system_->integrate_coordinates(prev_.q, displacement, out.q);
+  // Everything else linearly.
+  out.v = (1.0 - theta) * prev_.v + theta * curr_.v;
+  out.vdot = (1.0 - theta) * prev_.vdot + theta * curr_.vdot;
+  out.lambda = (1.0 - theta) * prev_.lambda + theta * curr_.lambda;
+  out.integrals = (1.0 - theta) * prev_.integrals + theta * curr_.integrals;
+  out.statistics = stats_;
+}
+
+Status GeneralizedAlpha::failure(StatusCode code, const std::string& why) {
+  failed_ = true;
+  failure_ = {code, curr_.t, fmt::format("at t = {:.6g} s: {}", curr_.t, why)};
+  return failure_;
+}
+
+}  // namespace limber::integrate

@@ -1,0 +1,316 @@
+#include "integrate/ida_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "core/error.h"
+#include "integrate/consistent_state.h"
+
+namespace limber::integrate {
+namespace {
+
+double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
+
+// Non-finite residuals IDA may recover from (by cutting the step) within one advance_to.
+constexpr int kMaxNonFiniteRetries = 10;
+
+}  // namespace
+
+struct IdaIntegrator::Impl {
+  // Layout of y = [q, v, λ, μ, z].
+  int nq = 0, nv = 0, nc = 0, nh = 0, nz = 0;
+  int iv = 0, ilambda = 0, imu = 0, iz = 0, n = 0;
+
+  const MechanicalSystem* system = nullptr;
+  IntegratorOptions options;
+  double t0 = 0.0;
+  bool stepped = false;
+  bool failed = false;
+  Status failure;
+  std::string last_message;  // IDA's own text of its last error
+  int nonfinite_residuals = 0;  // in the current advance_to
+
+  SUNContext context = nullptr;
+  N_Vector y = nullptr, yp = nullptr, id = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver solver = nullptr;
+  void* ida = nullptr;
+
+  // Scratch space for the residual.
+  Eigen::VectorXd q, v, vdot, lambda, mu_g, mu_h, Q, g, g_t, h, f;
+  Eigen::MatrixXd N, M, G, g_q, h_q;
+
+  ~Impl() { release(); }
+
+  void release() {
+    if (ida != nullptr) IDAFree(&ida);
+    if (solver != nullptr) SUNLinSolFree(solver);
+    if (A != nullptr) SUNMatDestroy(A);
+    if (y != nullptr) N_VDestroy(y);
+    if (yp != nullptr) N_VDestroy(yp);
+    if (id != nullptr) N_VDestroy(id);
+    if (context != nullptr) SUNContext_Free(&context);
+    ida = nullptr;
+    solver = nullptr;
+    A = nullptr;
+    y = yp = id = nullptr;
+  }
+
+  void unpack(const double* y_data, const double* yp_data) {
+    q = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
+    v = Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv);
+    lambda = Eigen::Map<const Eigen::VectorXd>(y_data + ilambda, nc);
+    mu_g = Eigen::Map<const Eigen::VectorXd>(y_data + imu, nc);
+    mu_h = Eigen::Map<const Eigen::VectorXd>(y_data + imu + nc, nh);
+    vdot = Eigen::Map<const Eigen::VectorXd>(yp_data + iv, nv);
+  }
+
+  // F(t, y, y') of the GGL system; on non-finite values returns 1 (recoverable: IDA cuts the
+  // step) at most kMaxNonFiniteRetries times per advance_to, then −1 (IDA_RES_FAIL).
+  int residual(double t, const double* y_data, const double* yp_data, double* r_data) {
+    unpack(y_data, yp_data);
+    Eigen::Map<Eigen::VectorXd> r(r_data, n);
+    Eigen::Map<const Eigen::VectorXd> qdot(yp_data, nq);
+    system->kinematic_matrix(q, N);
+    system->mass_matrix(t, q, M);
+    system->generalized_forces(t, q, v, Q);
+    system->constraints(t, q, g);
+    system->constraint_jacobian_q(t, q, g_q);
+    system->constraint_jacobian_v(t, q, G);
+    system->constraint_time_derivative(t, q, g_t);
+    system->coordinate_invariants(q, h, h_q);
+
+    // Kinematics with the GGL stabilising term, dynamics, velocity and position constraints.
+    r.head(nq) = qdot - N * v + g_q.transpose() * mu_g + h_q.transpose() * mu_h;
+    r.segment(iv, nv) = M * vdot - Q + G.transpose() * lambda;
+    r.segment(ilambda, nc) = G * v + g_t;
+    r.segment(imu, nc) = g;
+    r.segment(imu + nc, nh) = h;
+    // Quadratures.
+    if (nz > 0) {
+      options.quadrature.integrand(t, q, v, vdot, lambda, f);
+      r.segment(iz, nz) = Eigen::Map<const Eigen::VectorXd>(yp_data + iz, nz) - f;
+    }
+    // Non-finite: let IDA retry with a smaller step a bounded number of times, then stop.
+    if (r.allFinite()) return 0;
+    return ++nonfinite_residuals <= kMaxNonFiniteRetries ? 1 : -1;
+  }
+
+  void read_statistics(Statistics& stats) const {
+    long value = 0;
+    IDAGetNumSteps(ida, &value);
+    stats.steps = value;
+    long error_test_failures = 0;
+    IDAGetNumErrTestFails(ida, &error_test_failures);
+    long convergence_failures = 0;
+    IDAGetNumNonlinSolvConvFails(ida, &convergence_failures);
+    stats.rejected_steps = error_test_failures + convergence_failures;
+    stats.newton_failures = convergence_failures;
+    IDAGetNumNonlinSolvIters(ida, &value);
+    stats.newton_iterations = value;
+    IDAGetNumJacEvals(ida, &value);
+    stats.jacobian_evaluations = value;
+    long linear_solver_residuals = 0;
+    IDAGetNumResEvals(ida, &value);
+    IDAGetNumLinResEvals(ida, &linear_solver_residuals);
+    stats.residual_evaluations = value + linear_solver_residuals;
+    double last_step = 0.0;
+    IDAGetLastStep(ida, &last_step);
+    stats.last_step = last_step;
+  }
+};
+
+namespace {
+
+int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
+  return static_cast<IdaIntegrator::Impl*>(user_data)->residual(t, N_VGetArrayPointer(y),
+                                                                 N_VGetArrayPointer(yp),
+                                                                 N_VGetArrayPointer(r));
+}
+
+// Keeps IDA's message for our status instead of printing it on stderr.
+void ida_error_handler(int, const char* module, const char* function, char* message,
+                       void* user_data) {
+  static_cast<IdaIntegrator::Impl*>(user_data)->last_message =
+      fmt::format("{}:{}: {}", module, function, message);
+}
+
+// Our status for an IDASolve return flag.
+StatusCode status_code(int flag) {
+  switch (flag) {
+    case IDA_ERR_FAIL:
+    case IDA_TOO_MUCH_ACC:
+      return StatusCode::kErrorTestFailures;
+    case IDA_LSETUP_FAIL:
+    case IDA_LSOLVE_FAIL:
+      return StatusCode::kSingularJacobian;
+    case IDA_RES_FAIL:
+    case IDA_REP_RES_ERR:
+    case IDA_FIRST_RES_FAIL:
+      return StatusCode::kNaN;
+    case IDA_TOO_MUCH_WORK:
+      return StatusCode::kTooManySteps;
+    default:
+      return StatusCode::kConvergenceFailures;
+  }
+}
+
+}  // namespace
+
+IdaIntegrator::IdaIntegrator() : impl_(std::make_unique<Impl>()) {}
+IdaIntegrator::~IdaIntegrator() = default;
+
+Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x0,
+                           const IntegratorOptions& options) {
+  options.validate();
+  LIMBER_DEMAND(options.method == Method::kIda);
+  if (x0.q.size() != system.nq() || x0.v.size() != system.nv()) {
+    throw InputError(fmt::format("initial state: expected {} coordinates and {} velocities, got "
+                                 "{} and {}",
+                                 system.nq(), system.nv(), x0.q.size(), x0.v.size()));
+  }
+  Impl& s = *impl_;
+  s.release();
+  s.system = &system;
+  s.options = options;
+  s.t0 = x0.t;
+  s.stepped = false;
+  s.failed = false;
+  stats_ = {};
+
+  // Sizes and layout of y = [q, v, λ, μ, z].
+  s.nq = system.nq();
+  s.nv = system.nv();
+  s.nc = system.nc();
+  s.nh = system.nh();
+  s.nz = options.quadrature.size;
+  s.iv = s.nq;
+  s.ilambda = s.iv + s.nv;
+  s.imu = s.ilambda + s.nc;
+  s.iz = s.imu + s.nc + s.nh;
+  s.n = s.iz + s.nz;
+  s.Q.resize(s.nv);
+  s.g.resize(s.nc);
+  s.g_t.resize(s.nc);
+  s.h.resize(s.nh);
+  s.f.resize(s.nz);
+  s.N.resize(s.nq, s.nv);
+  s.M.resize(s.nv, s.nv);
+  s.G.resize(s.nc, s.nv);
+  s.g_q.resize(s.nc, s.nq);
+  s.h_q.resize(s.nh, s.nq);
+
+  // Consistent initial state: projected q, v; v̇, λ from the saddle-point system.
+  Eigen::VectorXd q = x0.q, v = x0.v, vdot, lambda;
+  Status status = project_initial_state(system, x0.t, q, v);
+  if (status.ok()) status = solve_accelerations(system, x0.t, q, v, vdot, lambda);
+  if (!status.ok()) {
+    s.failed = true;
+    s.failure = status;
+    return status;
+  }
+
+  // y0 = [q, v, λ, 0, 0], y0' = [N v, v̇, 0, 0, f]; id marks q, v, z differential.
+  LIMBER_DEMAND(SUNContext_Create(nullptr, &s.context) == 0);
+  s.y = N_VNew_Serial(s.n, s.context);
+  s.yp = N_VNew_Serial(s.n, s.context);
+  s.id = N_VNew_Serial(s.n, s.context);
+  Eigen::Map<Eigen::VectorXd> y(N_VGetArrayPointer(s.y), s.n);
+  Eigen::Map<Eigen::VectorXd> yp(N_VGetArrayPointer(s.yp), s.n);
+  Eigen::Map<Eigen::VectorXd> id(N_VGetArrayPointer(s.id), s.n);
+  y.setZero();
+  yp.setZero();
+  id.setZero();
+  y.head(s.nq) = q;
+  y.segment(s.iv, s.nv) = v;
+  y.segment(s.ilambda, s.nc) = lambda;
+  system.kinematic_matrix(q, s.N);
+  yp.head(s.nq) = s.N * v;
+  yp.segment(s.iv, s.nv) = vdot;
+  if (s.nz > 0) {
+    options.quadrature.integrand(x0.t, q, v, vdot, lambda, s.f);
+    yp.segment(s.iz, s.nz) = s.f;
+  }
+  id.head(s.iv + s.nv).setOnes();
+  id.segment(s.iz, s.nz).setOnes();
+
+  // IDA with a dense direct linear solver and its difference-quotient Jacobian.
+  s.ida = IDACreate(s.context);
+  s.A = SUNDenseMatrix(s.n, s.n, s.context);
+  s.solver = SUNLinSol_Dense(s.y, s.A, s.context);
+  int flag = IDAInit(s.ida, ida_residual, x0.t, s.y, s.yp);
+  flag = flag < 0 ? flag : IDASetUserData(s.ida, &s);
+  flag = flag < 0 ? flag : IDASetErrHandlerFn(s.ida, ida_error_handler, &s);
+  flag = flag < 0 ? flag : IDASStolerances(s.ida, options.rtol, options.atol);
+  flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
+  flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
+  flag = flag < 0 ? flag : IDASetSuppressAlg(s.ida, SUNTRUE);
+  flag = flag < 0 ? flag : IDASetMaxNumSteps(s.ida, options.max_steps);
+  if (flag >= 0 && options.max_step > 0.0) flag = IDASetMaxStep(s.ida, options.max_step);
+  if (flag >= 0 && options.initial_step > 0.0) flag = IDASetInitStep(s.ida, options.initial_step);
+  if (flag >= 0 && std::isfinite(options.t_stop)) flag = IDASetStopTime(s.ida, options.t_stop);
+  LIMBER_DEMAND(flag >= 0);
+  return Status::success(x0.t);
+}
+
+Status IdaIntegrator::advance_to(double t_out, Sample& out) {
+  Impl& s = *impl_;
+  LIMBER_DEMAND(s.system != nullptr);
+  if (s.failed) return s.failure;
+  if (t_out < s.t0 - time_tolerance(t_out) || t_out > s.options.t_stop + time_tolerance(t_out)) {
+    throw InputError(fmt::format("output time: expected {} ≤ t ≤ {}, got {}", s.t0,
+                                 s.options.t_stop, t_out));
+  }
+
+  // The initial time is served from y0 (IDA cannot return before its first step).
+  double t_reached = t_out;
+  if (s.stepped || t_out > s.t0 + time_tolerance(s.t0)) {
+    s.nonfinite_residuals = 0;
+    const int flag = IDASolve(s.ida, t_out, &t_reached, s.y, s.yp, IDA_NORMAL);
+    s.stepped = true;
+    s.read_statistics(stats_);
+    if (flag < 0) {
+      double t_fail = t_out;
+      IDAGetCurrentTime(s.ida, &t_fail);
+      s.failed = true;
+      s.failure = {status_code(flag), t_fail,
+                   fmt::format("at t = {:.6g} s: IDA failed with flag {} ({})", t_fail, flag,
+                               s.last_message)};
+      return s.failure;
+    }
+    if (stats_.steps > s.options.max_steps) {
+      s.failed = true;
+      s.failure = {StatusCode::kTooManySteps, t_reached,
+                   fmt::format("at t = {:.6g} s: more than {} steps", t_reached,
+                               s.options.max_steps)};
+      return s.failure;
+    }
+  }
+
+  // Unpack y(t_out), y'(t_out).
+  const double* y = N_VGetArrayPointer(s.y);
+  const double* yp = N_VGetArrayPointer(s.yp);
+  out.t = t_out;
+  out.q = Eigen::Map<const Eigen::VectorXd>(y, s.nq);
+  out.v = Eigen::Map<const Eigen::VectorXd>(y + s.iv, s.nv);
+  out.vdot = Eigen::Map<const Eigen::VectorXd>(yp + s.iv, s.nv);
+  out.lambda = Eigen::Map<const Eigen::VectorXd>(y + s.ilambda, s.nc);
+  out.integrals = Eigen::Map<const Eigen::VectorXd>(y + s.iz, s.nz);
+  out.statistics = stats_;
+  if (!out.q.allFinite() || !out.v.allFinite() || !out.lambda.allFinite()) {
+    s.failed = true;
+    s.failure = {StatusCode::kNaN, t_out,
+                 fmt::format("at t = {:.6g} s: the solution is not finite", t_out)};
+    return s.failure;
+  }
+  return Status::success(t_out);
+}
+
+}  // namespace limber::integrate

@@ -1,0 +1,54 @@
+// The constrained mechanical system every time integrator advances (house style §6):
+//
+//   q' = N(q) v                                 kinematics (nq coordinates, nv velocities)
+//   M(t,q) v' + G(t,q)ᵀ λ = Q(t,q,v)            dynamics (λ: nc multipliers)
+//   g(t,q) = 0,   G = ∂g/∂q · N                 holonomic constraints, independent rows
+//   h(q) = 0                                    coordinate invariants (unit quaternions)
+//
+// Rotations are carried as unit quaternions in q and angular velocities in v, so nq ≥ nv;
+// `integrate_coordinates` is the exact group update q ⊕ Δv used by Lie-group integrators.
+// Dense matrices: mechanisms have tens to a few hundred velocities.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace limber::integrate {
+
+class MechanicalSystem {
+ public:
+  virtual ~MechanicalSystem() = default;
+
+  virtual int nq() const = 0;  // coordinates
+  virtual int nv() const = 0;  // velocities
+  virtual int nc() const = 0;  // independent constraint equations
+  virtual int nh() const = 0;  // coordinate invariants (one per quaternion)
+
+  // N(q), nq x nv.
+  virtual void kinematic_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& N) const = 0;
+  // q_out = q ⊕ dv: translations add, rotations compose with exp(dv) (body-fixed increment).
+  virtual void integrate_coordinates(const Eigen::VectorXd& q, const Eigen::VectorXd& dv,
+                                     Eigen::VectorXd& q_out) const = 0;
+  // h(q) (nh) and ∂h/∂q (nh x nq).
+  virtual void coordinate_invariants(const Eigen::VectorXd& q, Eigen::VectorXd& h,
+                                     Eigen::MatrixXd& h_q) const = 0;
+
+  // M(t,q), nv x nv, symmetric positive definite.
+  virtual void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const = 0;
+  // Q(t,q,v), nv: applied, elastic and quadratic-velocity forces.
+  virtual void generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                  Eigen::VectorXd& Q) const = 0;
+
+  // g(t,q) (nc), ∂g/∂q (nc x nq), G = ∂g/∂q N (nc x nv), ∂g/∂t (nc).
+  virtual void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const = 0;
+  virtual void constraint_jacobian_q(double t, const Eigen::VectorXd& q,
+                                     Eigen::MatrixXd& g_q) const = 0;
+  virtual void constraint_jacobian_v(double t, const Eigen::VectorXd& q,
+                                     Eigen::MatrixXd& G) const = 0;
+  virtual void constraint_time_derivative(double t, const Eigen::VectorXd& q,
+                                          Eigen::VectorXd& g_t) const = 0;
+  // γ(t,q,v) with G v' = γ: the acceleration-level right-hand side (nc).
+  virtual void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                Eigen::VectorXd& gamma) const = 0;
+};
+
+}  // namespace limber::integrate

@@ -1,0 +1,45 @@
+// Reads a limber case file (YAML; format in docs/case-format.md) into checked models.
+//
+// Top-level sections, each read by its own reader:
+//   title            text (default: the file's stem)
+//   materials        case_library.h
+//   sections         case_library.h
+//   flexible_bodies  flexible_body_reader.h -> one FeModel + ModeRequest per body
+// Any other top-level key is an error that lists these. Later sections (rigid bodies,
+// joints, analyses) are added to kCaseSections in case_reader.cpp with their reader.
+//
+// Every error is an InputError at file:line:col of the offending value (expected/got),
+// including the errors raised by fe::FeModelBuilder, which receives those locations.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "fe/fe_model.h"
+#include "modal/component_modes.h"
+
+namespace limber::io {
+
+// One flexible body: its finite-element model and the modes wanted for it.
+struct FlexibleBodyCase {
+  std::string name;
+  SourceLocation where;        // the body's entry in the case file
+  SourceLocation modes_where;  // its `modes` entry (for errors of the mode computation)
+  fe::FeModel model;
+  modal::ModeRequest request;  // node indices refer to `model`
+};
+
+struct Case {
+  std::string file;  // path as given
+  std::string title;
+  std::vector<FlexibleBodyCase> flexible_bodies;  // in file order
+};
+
+// Reads and checks the case file at `path`. Throws InputError (with location).
+Case read_case_file(const std::string& path);
+
+// Same from text; `file` names the text in messages (tests, stdin).
+Case read_case_text(const std::string& text, const std::string& file);
+
+}  // namespace limber::io

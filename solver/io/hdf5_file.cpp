@@ -1,0 +1,228 @@
+#include "io/hdf5_file.h"
+
+#include <numeric>
+
+#include "core/error.h"
+
+namespace limber::io {
+
+// An HDF5 identifier closed by its own close function.
+struct H5Group::Handle {
+  hid_t id = -1;
+  herr_t (*close)(hid_t) = nullptr;
+  Handle(hid_t id_, herr_t (*close_)(hid_t)) : id(id_), close(close_) {}
+  ~Handle() {
+    if (id >= 0) close(id);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+};
+
+namespace {
+
+// RAII for the short-lived identifiers of one call (dataspaces, types, datasets).
+class Scoped {
+ public:
+  Scoped(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Scoped() {
+    if (id_ >= 0) close_(id_);
+  }
+  Scoped(const Scoped&) = delete;
+  Scoped& operator=(const Scoped&) = delete;
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+// HDF5 prints its error stack by default; limber reports errors itself.
+void silence_hdf5() {
+  static const bool silenced = [] {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return true;
+  }();
+  (void)silenced;
+}
+
+[[noreturn]] void fail(const std::string& what, const std::string& where) {
+  throw InputError("HDF5: " + what + " '" + where + "'");
+}
+
+hsize_t element_count(const H5Dims& dims) {
+  return std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+}
+
+Scoped make_space(const H5Dims& dims) {
+  if (dims.empty()) return Scoped(H5Screate(H5S_SCALAR), H5Sclose);
+  return Scoped(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+}
+
+// Variable-length UTF-8 string type.
+Scoped string_type() {
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  return Scoped(type, H5Tclose);
+}
+
+// Writes one dataset of `file_type` from memory of `memory_type`.
+void write_dataset(hid_t location, const std::string& name, const std::string& path,
+                   hid_t file_type, hid_t memory_type, const H5Dims& dims, const void* data) {
+  Scoped space = make_space(dims);
+  Scoped dataset(H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT,
+                            H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose);
+  if (!dataset.ok()) fail("cannot create dataset", path + "/" + name);
+  // Empty datasets hold nothing to write.
+  if (element_count(dims) == 0) return;
+  if (H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
+    fail("cannot write dataset", path + "/" + name);
+  }
+}
+
+// Reads a whole numeric dataset converted to `memory_type`.
+template <typename T>
+std::vector<T> read_dataset(hid_t location, const std::string& name, const std::string& path,
+                            hid_t memory_type, H5Dims* dims) {
+  Scoped dataset(H5Dopen2(location, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.ok()) fail("missing dataset", path + "/" + name);
+  Scoped space(H5Dget_space(dataset.get()), H5Sclose);
+  H5Dims shape(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
+  H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
+  std::vector<T> values(element_count(shape));
+  if (!values.empty() &&
+      H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
+    fail("cannot read dataset", path + "/" + name);
+  }
+  if (dims) *dims = shape;
+  return values;
+}
+
+}  // namespace
+
+H5Group::H5Group(std::shared_ptr<Handle> file, std::shared_ptr<Handle> self, std::string path)
+    : file_(std::move(file)), self_(std::move(self)), path_(std::move(path)) {}
+
+H5Group H5Group::create_file(const std::string& path) {
+  silence_hdf5();
+  // 1.8-compatible format: readable by every 1.8+ tool, no SWMR status flag.
+  Scoped access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(access.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18);
+  hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+  if (id < 0) fail("cannot create file", path);
+  auto file = std::make_shared<Handle>(id, H5Fclose);
+  return H5Group(file, file, path + ":");
+}
+
+H5Group H5Group::open_file(const std::string& path) {
+  silence_hdf5();
+  hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) fail("cannot open file", path);
+  auto file = std::make_shared<Handle>(id, H5Fclose);
+  return H5Group(file, file, path + ":");
+}
+
+H5Group H5Group::create_group(const std::string& name) const {
+  hid_t id = H5Gcreate2(self_->id, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (id < 0) fail("cannot create group", path_ + "/" + name);
+  return H5Group(file_, std::make_shared<Handle>(id, H5Gclose), path_ + "/" + name);
+}
+
+H5Group H5Group::open_group(const std::string& name) const {
+  hid_t id = H5Gopen2(self_->id, name.c_str(), H5P_DEFAULT);
+  if (id < 0) fail("missing group", path_ + "/" + name);
+  return H5Group(file_, std::make_shared<Handle>(id, H5Gclose), path_ + "/" + name);
+}
+
+bool H5Group::has(const std::string& name) const {
+  return H5Lexists(self_->id, name.c_str(), H5P_DEFAULT) > 0;
+}
+
+void H5Group::write_doubles(const std::string& name, const H5Dims& dims, const double* data) const {
+  write_dataset(self_->id, name, path_, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data);
+}
+
+void H5Group::write_ints(const std::string& name, const H5Dims& dims, const int* data) const {
+  write_dataset(self_->id, name, path_, H5T_STD_I32LE, H5T_NATIVE_INT, dims, data);
+}
+
+void H5Group::write_strings(const std::string& name, const std::vector<std::string>& values) const {
+  std::vector<const char*> pointers;
+  for (const std::string& value : values) pointers.push_back(value.c_str());
+  Scoped type = string_type();
+  write_dataset(self_->id, name, path_, type.get(), type.get(), {values.size()}, pointers.data());
+}
+
+void H5Group::write_attribute(const std::string& name, const std::string& value) const {
+  Scoped type = string_type();
+  Scoped space(H5Screate(H5S_SCALAR), H5Sclose);
+  Scoped attribute(
+      H5Acreate2(self_->id, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose);
+  const char* text = value.c_str();
+  if (!attribute.ok() || H5Awrite(attribute.get(), type.get(), &text) < 0) {
+    fail("cannot write attribute", path_ + "@" + name);
+  }
+}
+
+void H5Group::write_attribute(const std::string& name, int value) const {
+  Scoped space(H5Screate(H5S_SCALAR), H5Sclose);
+  Scoped attribute(
+      H5Acreate2(self_->id, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose);
+  if (!attribute.ok() || H5Awrite(attribute.get(), H5T_NATIVE_INT, &value) < 0) {
+    fail("cannot write attribute", path_ + "@" + name);
+  }
+}
+
+std::vector<double> H5Group::read_doubles(const std::string& name, H5Dims* dims) const {
+  return read_dataset<double>(self_->id, name, path_, H5T_NATIVE_DOUBLE, dims);
+}
+
+std::vector<int> H5Group::read_ints(const std::string& name, H5Dims* dims) const {
+  return read_dataset<int>(self_->id, name, path_, H5T_NATIVE_INT, dims);
+}
+
+std::vector<std::string> H5Group::read_strings(const std::string& name) const {
+  Scoped dataset(H5Dopen2(self_->id, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.ok()) fail("missing dataset", path_ + "/" + name);
+  Scoped space(H5Dget_space(dataset.get()), H5Sclose);
+  const auto count = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+  std::vector<char*> pointers(count, nullptr);
+  Scoped type = string_type();
+  if (count > 0 &&
+      H5Dread(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0) {
+    fail("cannot read strings", path_ + "/" + name);
+  }
+  // Copy out, then let HDF5 free what it allocated.
+  std::vector<std::string> values;
+  for (char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
+  if (count > 0) H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, pointers.data());
+  return values;
+}
+
+std::string H5Group::read_string_attribute(const std::string& name) const {
+  Scoped attribute(H5Aopen(self_->id, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!attribute.ok()) fail("missing attribute", path_ + "@" + name);
+  Scoped type = string_type();
+  char* text = nullptr;
+  if (H5Aread(attribute.get(), type.get(), &text) < 0) {
+    fail("cannot read attribute", path_ + "@" + name);
+  }
+  std::string value = text ? text : "";
+  H5free_memory(text);
+  return value;
+}
+
+int H5Group::read_int_attribute(const std::string& name) const {
+  Scoped attribute(H5Aopen(self_->id, name.c_str(), H5P_DEFAULT), H5Aclose);
+  int value = 0;
+  if (!attribute.ok() || H5Aread(attribute.get(), H5T_NATIVE_INT, &value) < 0) {
+    fail("missing attribute", path_ + "@" + name);
+  }
+  return value;
+}
+
+}  // namespace limber::io

@@ -1,0 +1,266 @@
+#include "io/modes_file.h"
+
+#include "core/error.h"
+#include "io/hdf5_file.h"
+
+namespace limber::io {
+
+namespace {
+
+constexpr const char* kFormat = "limber-modes";
+constexpr int kVersion = 1;
+
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+void write_matrix(const H5Group& group, const std::string& name, const Eigen::MatrixXd& matrix) {
+  const RowMatrix rows = matrix;
+  group.write_doubles(name,
+                      {static_cast<hsize_t>(matrix.rows()), static_cast<hsize_t>(matrix.cols())},
+                      rows.data());
+}
+
+Eigen::MatrixXd read_matrix(const H5Group& group, const std::string& name) {
+  H5Dims dims;
+  std::vector<double> values = group.read_doubles(name, &dims);
+  if (dims.size() != 2)
+    throw InputError("HDF5: expected a matrix at '" + group.path() + "/" + name + "'");
+  return Eigen::Map<RowMatrix>(values.data(), static_cast<Eigen::Index>(dims[0]),
+                               static_cast<Eigen::Index>(dims[1]));
+}
+
+// A list of equally sized matrices as one [count, rows, cols] dataset.
+template <typename Matrix>
+void write_matrices(const H5Group& group, const std::string& name,
+                    const std::vector<Matrix>& matrices, Eigen::Index rows, Eigen::Index cols) {
+  std::vector<double> values;
+  values.reserve(matrices.size() * rows * cols);
+  for (const Matrix& matrix : matrices) {
+    LIMBER_DEMAND(matrix.rows() == rows && matrix.cols() == cols);
+    const RowMatrix row_major = matrix;
+    values.insert(values.end(), row_major.data(), row_major.data() + row_major.size());
+  }
+  group.write_doubles(name,
+                      {matrices.size(), static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)},
+                      values.data());
+}
+
+template <typename Matrix>
+std::vector<Matrix> read_matrices(const H5Group& group, const std::string& name) {
+  H5Dims dims;
+  std::vector<double> values = group.read_doubles(name, &dims);
+  if (dims.size() != 3)
+    throw InputError("HDF5: expected [count, rows, cols] at '" + group.path() + "/" + name + "'");
+  const auto rows = static_cast<Eigen::Index>(dims[1]);
+  const auto cols = static_cast<Eigen::Index>(dims[2]);
+  std::vector<Matrix> matrices;
+  for (hsize_t k = 0; k < dims[0]; ++k) {
+    matrices.push_back(Eigen::Map<RowMatrix>(values.data() + k * rows * cols, rows, cols));
+  }
+  return matrices;
+}
+
+void write_mode_infos(const H5Group& group, const std::vector<modal::ModeInfo>& modes) {
+  std::vector<double> frequencies;
+  std::vector<std::string> kinds;
+  std::vector<std::string> labels;
+  for (const modal::ModeInfo& mode : modes) {
+    frequencies.push_back(mode.frequency_hz);
+    kinds.emplace_back(modal::to_string(mode.kind));
+    labels.push_back(mode.label);
+  }
+  group.write_doubles("frequencies_hz", {modes.size()}, frequencies.data());
+  group.write_strings("kinds", kinds);
+  group.write_strings("labels", labels);
+}
+
+modal::ModeKind kind_from_string(const std::string& text, const std::string& where) {
+  for (modal::ModeKind kind : {modal::ModeKind::kRigid, modal::ModeKind::kNormal,
+                               modal::ModeKind::kConstraint, modal::ModeKind::kAttachment}) {
+    if (text == modal::to_string(kind)) return kind;
+  }
+  throw InputError("HDF5: expected a mode kind at '" + where + "', got '" + text + "'");
+}
+
+std::vector<modal::ModeInfo> read_mode_infos(const H5Group& group) {
+  const std::vector<double> frequencies = group.read_doubles("frequencies_hz");
+  const std::vector<std::string> kinds = group.read_strings("kinds");
+  const std::vector<std::string> labels = group.read_strings("labels");
+  if (kinds.size() != frequencies.size() || labels.size() != frequencies.size()) {
+    throw InputError("HDF5: expected as many kinds and labels as frequencies in '" + group.path() +
+                     "'");
+  }
+  std::vector<modal::ModeInfo> modes(frequencies.size());
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    modes[i] = {kind_from_string(kinds[i], group.path() + "/kinds"), frequencies[i], labels[i]};
+  }
+  return modes;
+}
+
+void write_mesh(const H5Group& group, const fe::FeModel& model) {
+  const int nn = model.node_count();
+  std::vector<double> nodes;
+  for (const Eigen::Vector3d& p : model.node_positions)
+    nodes.insert(nodes.end(), {p.x(), p.y(), p.z()});
+  group.write_doubles("nodes", {static_cast<hsize_t>(nn), 3}, nodes.data());
+  group.write_ints("node_ids", {static_cast<hsize_t>(nn)}, model.node_ids.data());
+  std::vector<int> lines;
+  for (const fe::BeamElement& beam : model.beams)
+    lines.insert(lines.end(), beam.nodes.begin(), beam.nodes.end());
+  group.write_ints("lines", {model.beams.size(), 2}, lines.data());
+  std::vector<int> quads;
+  for (const fe::ShellElement& shell : model.shells)
+    quads.insert(quads.end(), shell.nodes.begin(), shell.nodes.end());
+  group.write_ints("quads", {model.shells.size(), 4}, quads.data());
+}
+
+void write_dofs(const H5Group& group, const fe::FeModel& model) {
+  group.write_attribute("dofs_per_node", fe::kDofsPerNode);
+  group.write_attribute("dof_index", "6 * node_index + local_dof");
+  group.write_strings("names", {"ux", "uy", "uz", "rx", "ry", "rz"});
+  std::vector<int> fixed;
+  for (const fe::FixedDof& f : model.fixed_dofs)
+    fixed.insert(fixed.end(), {f.node, static_cast<int>(f.dof)});
+  group.write_ints("fixed", {model.fixed_dofs.size(), 2}, fixed.data());
+}
+
+void write_invariants(const H5Group& group, const modal::ModalInvariants& inv, Eigen::Index nm) {
+  group.write_doubles("mass", {}, &inv.mass);
+  group.write_doubles("first_moment", {3}, inv.first_moment.data());
+  write_matrix(group, "inertia", inv.inertia);
+  write_matrix(group, "translation_coupling", inv.translation_coupling);
+  write_matrix(group, "rotation_coupling", inv.rotation_coupling);
+  write_matrices(group, "inertia_first_order", inv.inertia_first_order, 3, 3);
+  write_matrices(group, "inertia_second_order", inv.inertia_second_order, 3, 3);
+  write_matrices(group, "rotation_coupling_first_order", inv.rotation_coupling_first_order, 3, nm);
+}
+
+modal::ModalInvariants read_invariants(const H5Group& group) {
+  modal::ModalInvariants inv;
+  inv.mass = group.read_doubles("mass").at(0);
+  const std::vector<double> first_moment = group.read_doubles("first_moment");
+  inv.first_moment = Eigen::Vector3d(first_moment.at(0), first_moment.at(1), first_moment.at(2));
+  inv.inertia = read_matrix(group, "inertia");
+  inv.translation_coupling = read_matrix(group, "translation_coupling");
+  inv.rotation_coupling = read_matrix(group, "rotation_coupling");
+  inv.inertia_first_order = read_matrices<Eigen::Matrix3d>(group, "inertia_first_order");
+  inv.inertia_second_order = read_matrices<Eigen::Matrix3d>(group, "inertia_second_order");
+  inv.rotation_coupling_first_order =
+      read_matrices<Eigen::MatrixXd>(group, "rotation_coupling_first_order");
+  return inv;
+}
+
+void write_body(const H5Group& bodies, const BodyModesRef& body) {
+  LIMBER_DEMAND(body.model != nullptr && body.mode_set != nullptr);
+  const fe::FeModel& model = *body.model;
+  const modal::ModeSet& set = *body.mode_set;
+  const auto nm = set.shapes.cols();
+  LIMBER_DEMAND(set.shapes.rows() == model.dof_count());
+  LIMBER_DEMAND(static_cast<std::size_t>(nm) == set.modes.size());
+
+  const H5Group group = bodies.create_group(body.name);
+  group.write_attribute("dof_count", model.dof_count());
+  group.write_attribute("mode_count", static_cast<int>(nm));
+  write_mesh(group.create_group("mesh"), model);
+  write_dofs(group.create_group("dofs"), model);
+
+  // Mode shapes in full, then their translations for drawing.
+  const H5Group modes = group.create_group("modes");
+  write_matrix(modes, "shapes", set.shapes);
+  std::vector<double> translations;
+  for (Eigen::Index i = 0; i < nm; ++i) {
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> t =
+        mode_translations(set.shapes, static_cast<int>(i));
+    translations.insert(translations.end(), t.data(), t.data() + t.size());
+  }
+  modes.write_doubles("translations",
+                      {static_cast<hsize_t>(nm), static_cast<hsize_t>(model.node_count()), 3},
+                      translations.data());
+  write_mode_infos(modes, set.modes);
+  modes.write_doubles("modal_stiffness", {static_cast<hsize_t>(set.modal_stiffness.size())},
+                      set.modal_stiffness.data());
+  write_mode_infos(group.create_group("rigid_modes"), set.rigid_modes);
+  write_invariants(group.create_group("invariants"), set.invariants, nm);
+}
+
+BodyModes read_body(const H5Group& group, const std::string& name) {
+  BodyModes body;
+  body.name = name;
+  // Mesh.
+  const H5Group mesh = group.open_group("mesh");
+  const Eigen::MatrixXd nodes = read_matrix(mesh, "nodes");
+  for (Eigen::Index i = 0; i < nodes.rows(); ++i) body.nodes.emplace_back(nodes.row(i).transpose());
+  body.node_ids = mesh.read_ints("node_ids");
+  const std::vector<int> lines = mesh.read_ints("lines");
+  for (std::size_t i = 0; i + 1 < lines.size(); i += 2)
+    body.lines.push_back({lines[i], lines[i + 1]});
+  const std::vector<int> quads = mesh.read_ints("quads");
+  for (std::size_t i = 0; i + 3 < quads.size(); i += 4) {
+    body.quads.push_back({quads[i], quads[i + 1], quads[i + 2], quads[i + 3]});
+  }
+  // DOF layout.
+  const std::vector<int> fixed = group.open_group("dofs").read_ints("fixed");
+  for (std::size_t i = 0; i + 1 < fixed.size(); i += 2) {
+    body.fixed_dofs.push_back({fixed[i], static_cast<fe::Dof>(fixed[i + 1])});
+  }
+  // Modes, rigid modes found, invariants.
+  const H5Group modes = group.open_group("modes");
+  body.mode_set.shapes = read_matrix(modes, "shapes");
+  body.mode_set.modes = read_mode_infos(modes);
+  const std::vector<double> stiffness = modes.read_doubles("modal_stiffness");
+  body.mode_set.modal_stiffness = Eigen::Map<const Eigen::VectorXd>(
+      stiffness.data(), static_cast<Eigen::Index>(stiffness.size()));
+  H5Dims dims;
+  const std::vector<double> translations = modes.read_doubles("translations", &dims);
+  for (hsize_t i = 0; dims.size() == 3 && i < dims[0]; ++i) {
+    body.translations.push_back(
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+            translations.data() + i * dims[1] * 3, static_cast<Eigen::Index>(dims[1]), 3));
+  }
+  body.mode_set.rigid_modes = read_mode_infos(group.open_group("rigid_modes"));
+  body.mode_set.invariants = read_invariants(group.open_group("invariants"));
+  return body;
+}
+
+}  // namespace
+
+Eigen::MatrixX3d mode_translations(const Eigen::MatrixXd& shapes, int mode) {
+  const Eigen::Index nn = shapes.rows() / fe::kDofsPerNode;
+  Eigen::MatrixX3d t(nn, 3);
+  for (Eigen::Index node = 0; node < nn; ++node) {
+    t.row(node) = shapes.col(mode).segment<3>(fe::kDofsPerNode * node).transpose();
+  }
+  return t;
+}
+
+void write_modes_file(const std::string& path, const std::string& title,
+                      const std::string& case_file, const std::vector<BodyModesRef>& bodies) {
+  const H5Group file = H5Group::create_file(path);
+  file.write_attribute("format", kFormat);
+  file.write_attribute("version", kVersion);
+  file.write_attribute("title", title);
+  file.write_attribute("case_file", case_file);
+  // Body names in order (HDF5 lists group members alphabetically).
+  std::vector<std::string> names;
+  for (const BodyModesRef& body : bodies) names.push_back(body.name);
+  file.write_strings("body_names", names);
+  const H5Group group = file.create_group("bodies");
+  for (const BodyModesRef& body : bodies) write_body(group, body);
+}
+
+ModesFile read_modes_file(const std::string& path) {
+  const H5Group file = H5Group::open_file(path);
+  if (!file.has("bodies") || file.read_string_attribute("format") != kFormat) {
+    throw InputError("expected a limber modes file (format '" + std::string(kFormat) + "'), got '" +
+                     path + "'");
+  }
+  ModesFile result;
+  result.title = file.read_string_attribute("title");
+  result.case_file = file.read_string_attribute("case_file");
+  const H5Group bodies = file.open_group("bodies");
+  for (const std::string& name : file.read_strings("body_names")) {
+    result.bodies.push_back(read_body(bodies.open_group(name), name));
+  }
+  return result;
+}
+
+}  // namespace limber::io

@@ -1,0 +1,199 @@
+#include "modal/component_modes.h"
+
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "modal/dof_selection.h"
+#include "modal/modal_invariants.h"
+#include "modal/normal_modes.h"
+#include "modal/orthonormalise_modes.h"
+#include "modal/rigid_body_modes.h"
+#include "modal/static_modes.h"
+
+namespace limber::modal {
+namespace {
+
+const char* dof_name(fe::Dof dof) {
+  static constexpr const char* kNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  return kNames[static_cast<int>(dof)];
+}
+
+struct SiteDofs {
+  std::vector<int> dofs;             // global DOF indices, request order
+  std::vector<std::string> labels;  // "constraint uz at node 101"
+};
+
+// Validates the sites of one kind and lists their DOFs (InputError on bad input).
+SiteDofs site_dofs(const fe::FeModel& model, const std::vector<StaticModeSite>& sites,
+                   const std::vector<int>& free_dofs, const char* kind) {
+  SiteDofs result;
+  std::set<int> seen;
+  for (const StaticModeSite& site : sites) {
+    if (site.node < 0 || site.node >= model.node_count()) {
+      throw InputError(fmt::format("{} mode site: expected a node index in [0, {}), got {}", kind,
+                                   model.node_count(), site.node));
+    }
+    const int id = site.node < static_cast<int>(model.node_ids.size())
+                       ? model.node_ids[static_cast<std::size_t>(site.node)]
+                       : site.node;
+    if (site.dofs.empty()) {
+      throw InputError(fmt::format("{} mode site at node {}: expected at least one DOF, got none",
+                                   kind, id));
+    }
+    for (fe::Dof dof : site.dofs) {
+      const int index = fe::FeModel::dof_index(site.node, dof);
+      if (!std::binary_search(free_dofs.begin(), free_dofs.end(), index)) {
+        throw InputError(fmt::format(
+            "{} mode site: expected a free DOF, got {} at node {}, which is fixed", kind,
+            dof_name(dof), id));
+      }
+      if (!seen.insert(index).second) {
+        throw InputError(fmt::format(
+            "{} mode sites: expected each DOF once, got {} at node {} twice", kind, dof_name(dof),
+            id));
+      }
+      result.dofs.push_back(index);
+      result.labels.push_back(fmt::format("{} {} at node {}", kind, dof_name(dof), id));
+    }
+  }
+  return result;
+}
+
+ModalResult failure(ModalStatus status, const std::string& what, const std::string& message,
+                    std::vector<std::string> notices) {
+  ModalResult result;
+  result.status = status;
+  result.message = fmt::format("{}: {}", what, message);
+  result.notices = std::move(notices);
+  return result;
+}
+
+}  // namespace
+
+ModalResult compute_component_modes(const fe::FeModel& model, const ModeRequest& request) {
+  return compute_component_modes(model, fe::assemble(model), request);
+}
+
+ModalResult compute_component_modes(const fe::FeModel& model,
+                                    const fe::StructuralMatrices& matrices,
+                                    const ModeRequest& request) {
+  const fe::SparseMatrix& k = matrices.stiffness;
+  const fe::SparseMatrix& m = matrices.mass;
+  const std::vector<int> free_dofs = fe::free_dofs(model);
+  const int n_free = static_cast<int>(free_dofs.size());
+
+  // Validate the request.
+  const bool want_normal = request.normal_count > 0 || request.max_frequency_hz.has_value();
+  if (!want_normal && request.constraint_sites.empty() && request.attachment_sites.empty()) {
+    throw InputError(
+        "mode request: expected normal modes (a count or a cut-off frequency) or static-mode "
+        "sites, got none");
+  }
+  if (request.normal_count < 0) {
+    throw InputError(fmt::format("mode request: expected a normal-mode count >= 0, got {}",
+                                 request.normal_count));
+  }
+  if (request.max_frequency_hz && !(*request.max_frequency_hz > 0.0)) {
+    throw InputError(fmt::format("mode request: expected a cut-off frequency > 0 Hz, got {}",
+                                 *request.max_frequency_hz));
+  }
+  if (!(request.dependency_tolerance > 0.0 && request.dependency_tolerance < 1.0)) {
+    throw InputError(fmt::format("mode request: expected a dependency tolerance in (0, 1), got {}",
+                                 request.dependency_tolerance));
+  }
+  const SiteDofs constraint = site_dofs(model, request.constraint_sites, free_dofs, "constraint");
+  const SiteDofs attachment = site_dofs(model, request.attachment_sites, free_dofs, "attachment");
+
+  // Rigid-body modes and the rigid motion the fixed DOFs leave free.
+  const Eigen::MatrixXd psi = rigid_body_modes(model);
+  const std::vector<int> fixed = set_difference(
+      [&] {
+        std::vector<int> all(static_cast<std::size_t>(model.dof_count()));
+        for (int i = 0; i < model.dof_count(); ++i) all[static_cast<std::size_t>(i)] = i;
+        return all;
+      }(),
+      free_dofs);
+  const Eigen::MatrixXd psi_free = unrestrained_rigid_motion(psi, fixed);
+  const int rigid_count = static_cast<int>(psi_free.cols());
+  if (request.normal_count + rigid_count > n_free) {
+    throw InputError(fmt::format(
+        "mode request: expected at most {} normal modes ({} free DOFs, {} rigid-body modes), "
+        "got {}",
+        n_free - rigid_count, n_free, rigid_count, request.normal_count));
+  }
+  const std::size_t static_count = constraint.dofs.size() + attachment.dofs.size();
+  if (static_cast<int>(static_count) > n_free) {
+    throw InputError(fmt::format("mode request: expected at most {} static modes, got {}", n_free,
+                                 static_count));
+  }
+
+  std::vector<std::string> notices;
+  std::vector<Eigen::MatrixXd> blocks;
+  std::vector<ModeInfo> info;
+  std::vector<ModeInfo> rigid_modes;
+
+  // Normal modes (seed paper eq. 4-6).
+  if (want_normal) {
+    NormalModeRequest normal_request;
+    normal_request.count = request.normal_count;
+    normal_request.max_frequency_hz = request.max_frequency_hz;
+    normal_request.rigid_count = rigid_count;
+    NormalModes normal = compute_normal_modes(k, m, free_dofs, normal_request);
+    notices.insert(notices.end(), normal.notices.begin(), normal.notices.end());
+    if (normal.status != ModalStatus::kOk) {
+      return failure(normal.status, "normal modes", normal.message, notices);
+    }
+    for (Eigen::Index i = 0; i < normal.rigid_eigenvalues.size(); ++i) {
+      rigid_modes.push_back({ModeKind::kRigid, frequency_hz(normal.rigid_eigenvalues[i]),
+                             fmt::format("rigid {}", i + 1)});
+    }
+    for (Eigen::Index i = 0; i < normal.eigenvalues.size(); ++i) {
+      info.push_back({ModeKind::kNormal, frequency_hz(normal.eigenvalues[i]),
+                      fmt::format("normal {}", i + 1)});
+    }
+    blocks.push_back(std::move(normal.shapes));
+  }
+
+  // Constraint modes (eq. 7-9) and attachment modes (eq. 10-11).
+  const auto add_static = [&](const SiteDofs& sites, ModeKind kind, auto compute,
+                              const char* what) -> std::optional<ModalResult> {
+    if (sites.dofs.empty()) return std::nullopt;
+    StaticModes modes = compute(k, m, psi, free_dofs, sites.dofs);
+    if (modes.status != ModalStatus::kOk) return failure(modes.status, what, modes.message, notices);
+    for (const std::string& label : sites.labels) info.push_back({kind, 0.0, label});
+    blocks.push_back(std::move(modes.shapes));
+    return std::nullopt;
+  };
+  if (auto failed = add_static(constraint, ModeKind::kConstraint, compute_constraint_modes,
+                               "constraint modes")) {
+    return *failed;
+  }
+  if (auto failed = add_static(attachment, ModeKind::kAttachment, compute_attachment_modes,
+                               "attachment modes")) {
+    return *failed;
+  }
+
+  // Orthonormalise the combined set [normal | constraint | attachment].
+  Eigen::MatrixXd candidates(model.dof_count(), static_cast<Eigen::Index>(info.size()));
+  Eigen::Index column = 0;
+  for (const Eigen::MatrixXd& block : blocks) {
+    candidates.middleCols(column, block.cols()) = block;
+    column += block.cols();
+  }
+  OrthonormalisedModes combined =
+      orthonormalise_modes(k, m, candidates, info, psi_free, request.dependency_tolerance);
+  notices.insert(notices.end(), combined.notices.begin(), combined.notices.end());
+
+  // Invariants of the final set.
+  ModalResult result;
+  result.notices = std::move(notices);
+  result.mode_set = std::move(combined.mode_set);
+  result.mode_set.rigid_modes = std::move(rigid_modes);
+  result.mode_set.invariants = compute_modal_invariants(m, psi, result.mode_set.shapes);
+  return result;
+}
+
+}  // namespace limber::modal

@@ -1,0 +1,29 @@
+// Index bookkeeping between the full FE DOF vector (n = 6 x nodes) and subsets of it
+// (free DOFs, held DOFs, the "v" and "c" sets of constraint modes).
+// DOF lists are ascending, unique global indices in [0, n).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace limber::modal {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// A(rows, cols) as a sparse matrix of size rows.size() x cols.size().
+// Precondition: rows and cols ascending, in range.
+SparseMatrix submatrix(const SparseMatrix& a, const std::vector<int>& rows,
+                       const std::vector<int>& cols);
+
+// The entries of `all` that are not in `removed` (both ascending).
+std::vector<int> set_difference(const std::vector<int>& all, const std::vector<int>& removed);
+
+// Rows `dofs` of x (x has n rows; result has dofs.size() rows).
+Eigen::MatrixXd gather_rows(const Eigen::MatrixXd& x, const std::vector<int>& dofs);
+
+// An n-row matrix that is zero except rows `dofs`, which take the rows of x_sub.
+Eigen::MatrixXd scatter_rows(const Eigen::MatrixXd& x_sub, const std::vector<int>& dofs, int n);
+
+}  // namespace limber::modal

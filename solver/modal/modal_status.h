@@ -1,0 +1,15 @@
+// Outcome of a modal computation (house style §11: numerical failure is a returned
+// status, never an exception).
+#pragma once
+
+namespace limber::modal {
+
+//  kOk            everything requested was computed;
+//  kNotConverged  ARPACK stopped before all requested eigenpairs converged;
+//  kSingular      a sparse Cholesky factorisation failed (matrix not positive definite,
+//                 e.g. a mechanism left unrestrained or a shift above an eigenvalue).
+enum class ModalStatus { kOk, kNotConverged, kSingular };
+
+const char* to_string(ModalStatus status);
+
+}  // namespace limber::modal

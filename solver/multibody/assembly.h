@@ -1,0 +1,58 @@
+// Consistent initial conditions (Haug 1989, §9.4; Nikravesh 1988, §8.5):
+//  1. positions: Newton on g(t, q) = 0 from the approximate poses, each step the
+//     minimum-norm Δv = −G⁺ g with the held velocity directions removed, q ← q ⊕ Δv;
+//  2. velocities: the minimum-norm (Euclidean in v) correction v ← v − G⁺ (G v + g_t),
+//     held directions unchanged;
+//  3. accelerations and multipliers: [M Gᵀ; G 0] [v̇; λ] = [Q; γ] on the independent rows.
+// G⁺ is the pseudo-inverse (complete orthogonal decomposition), so redundant but consistent
+// equations are handled. A failure to converge is a returned status (house style §11).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "multibody/model.h"
+#include "multibody/redundancy.h"
+#include "multibody/state.h"
+
+namespace limber::multibody {
+
+// A velocity direction of a body held fixed during assembly: components 0-2 translate
+// along ground x, y, z; 3-5 rotate about body axes x, y, z.
+struct HeldCoordinate {
+  int body = 0;
+  int component = 0;
+};
+
+struct AssemblyOptions {
+  double tolerance = 1e-10;  // max |g_k| accepted [m or rad]
+  int max_iterations = 50;
+  std::vector<HeldCoordinate> held;
+};
+
+enum class AssemblyStatus { kOk, kNotConverged };
+
+struct AssemblyResult {
+  AssemblyStatus status = AssemblyStatus::kOk;
+  std::string message;      // on failure: which equation does not close and by how much
+  int iterations = 0;
+  double residual = 0.0;    // max |g_k| at the end
+  int worst_equation = -1;  // row of that residual
+};
+
+// Moves state.q onto the constraint manifold at state.t. Throws InputError for a held
+// coordinate on ground or with a component outside 0-5.
+AssemblyResult assemble_positions(const Model& model, State& state, Workspace& ws,
+                                  const AssemblyOptions& options = {});
+
+// Projects state.v onto the velocity constraints; returns max |G v + g_t| afterwards.
+double assemble_velocities(const Model& model, State& state, Workspace& ws,
+                           const AssemblyOptions& options = {});
+
+// Solves for v̇ (nv) and the multipliers of the independent rows (partition.independent.size()).
+// Precondition: the independent rows of G have full rank and M is positive definite.
+void solve_accelerations(const Model& model, const State& state,
+                         const ConstraintPartition& partition, Workspace& ws,
+                         Eigen::VectorXd& v_dot, Eigen::VectorXd& lambda);
+
+}  // namespace limber::multibody

@@ -1,0 +1,110 @@
+#include "multibody/constraints.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "multibody/body.h"
+
+namespace limber::multibody {
+
+double wrap_angle(double x) {
+  const double two_pi = 2.0 * std::numbers::pi;
+  double y = std::fmod(x + std::numbers::pi, two_pi);
+  if (y < 0.0) y += two_pi;
+  return y == 0.0 ? std::numbers::pi : y - std::numbers::pi;
+}
+
+void update_marker_kinematics(const Model& model, const State& state, Stage stage, Workspace& ws) {
+  const Eigen::VectorXd* v = stage == Stage::kVelocity ? &state.v : nullptr;
+  for (size_t k = 0; k < model.markers.size(); ++k) {
+    const Marker& m = model.markers[k];
+    body_frame_kinematics(model, m.body, m.p_BM, m.R_BM, state.q, v, ws.markers[k]);
+  }
+}
+
+RelativeAngle relative_angle(const FrameKinematics& mi, const FrameKinematics& mj, Stage stage) {
+  RelativeAngle out;
+  const Eigen::Vector3d x_i = mi.R_WF.col(0), y_i = mi.R_WF.col(1), x_j = mj.R_WF.col(0);
+  // Position: θ and the rate vector u.
+  const double s = x_j.dot(y_i), c = x_j.dot(x_i), n = s * s + c * c;
+  const Eigen::Vector3d A = x_j.cross(y_i), B = x_j.cross(x_i);
+  out.theta = std::atan2(s, c);
+  out.u = (c * A - s * B) / n;
+  if (stage == Stage::kPosition) return out;
+  // Velocity: θ̇ and u̇·Δω from ṡ = A·Δω, ċ = B·Δω and the axis rates ω × axis.
+  const Eigen::Vector3d dw = mj.w_W - mi.w_W;
+  const double s_dot = A.dot(dw), c_dot = B.dot(dw), n_dot = 2.0 * (c * c_dot + s * s_dot);
+  const Eigen::Vector3d xj_dot = mj.w_W.cross(x_j);
+  const Eigen::Vector3d A_dot = xj_dot.cross(y_i) + x_j.cross(mi.w_W.cross(y_i));
+  const Eigen::Vector3d B_dot = xj_dot.cross(x_i) + x_j.cross(mi.w_W.cross(x_i));
+  const Eigen::Vector3d u_dot = (c_dot * A + c * A_dot - s_dot * B - s * B_dot) / n - out.u * n_dot / n;
+  out.rate = out.u.dot(dw);
+  out.bias = out.u.dot(mj.alpha_bias - mi.alpha_bias) + u_dot.dot(dw);
+  return out;
+}
+
+namespace {
+
+// One row: value, Jacobian row, g_t and γ of a primitive; f is the driver's function value.
+void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const FrameKinematics& mj,
+                  const FunctionValue& f, Stage stage, int row, Workspace& ws) {
+  const bool velocity = stage == Stage::kVelocity;
+  const Eigen::Vector3d a = mi.R_WF.col(e.axis_i);
+  ws.g_t(row) = -f.first;
+  ws.gamma(row) = 0.0;
+  switch (e.kind) {
+    case EquationKind::kDot1: {
+      const Eigen::Vector3d b = mj.R_WF.col(e.axis_j);
+      const Eigen::Vector3d axb = a.cross(b);
+      ws.g(row) = a.dot(b);
+      ws.G.row(row) = axb.transpose() * (mi.J_w - mj.J_w);
+      if (velocity) {
+        const Eigen::Vector3d dw = mi.w_W - mj.w_W;
+        const Eigen::Vector3d axb_dot = mi.w_W.cross(a).cross(b) + a.cross(mj.w_W.cross(b));
+        ws.gamma(row) = -axb.dot(mi.alpha_bias - mj.alpha_bias) - axb_dot.dot(dw);
+      }
+      break;
+    }
+    case EquationKind::kDot2: {
+      const Eigen::Vector3d d = mj.p_W - mi.p_W;
+      const Eigen::Vector3d axd = a.cross(d);
+      ws.g(row) = a.dot(d) - f.value;
+      ws.G.row(row) = axd.transpose() * mi.J_w + a.transpose() * (mj.J_p - mi.J_p);
+      if (velocity) {
+        const Eigen::Vector3d d_dot = mj.v_W - mi.v_W;
+        const Eigen::Vector3d a_dot = mi.w_W.cross(a);
+        ws.gamma(row) = -mi.alpha_bias.dot(axd) - mi.w_W.dot(a_dot.cross(d) + a.cross(d_dot)) -
+                        a_dot.dot(d_dot) - a.dot(mj.a_bias - mi.a_bias) + f.second;
+      }
+      break;
+    }
+    case EquationKind::kAngle: {
+      const RelativeAngle angle = relative_angle(mi, mj, stage);
+      ws.g(row) = wrap_angle(angle.theta - f.value);
+      ws.G.row(row) = angle.u.transpose() * (mj.J_w - mi.J_w);
+      if (velocity) ws.gamma(row) = -angle.bias + f.second;
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+void evaluate_constraints(const Model& model, const State& state, Stage stage, Workspace& ws) {
+  update_marker_kinematics(model, state, stage, ws);
+  for (int row = 0; row < model.num_equations(); ++row) {
+    const ConstraintEquation& e = model.equations[row];
+    // Drivers supply f(t); joint equations have f = 0.
+    const FunctionValue f =
+        e.driver >= 0 ? model.drivers[e.driver].motion.evaluate(state.t) : FunctionValue{};
+    evaluate_row(e, ws.markers[e.marker_i], ws.markers[e.marker_j], f, stage, row, ws);
+  }
+}
+
+ConstraintViolation constraint_violation(const Model& model, const State& state, Workspace& ws) {
+  if (model.num_equations() == 0) return {};
+  evaluate_constraints(model, state, Stage::kPosition, ws);
+  return {ws.g.cwiseAbs().maxCoeff(), (ws.G * state.v + ws.g_t).cwiseAbs().maxCoeff()};
+}
+
+}  // namespace limber::multibody

@@ -1,0 +1,105 @@
+#include "multibody/dynamics.h"
+
+#include "multibody/body.h"
+#include "multibody/constraints.h"
+
+namespace limber::multibody {
+
+namespace {
+
+// θ of an RSDA, unwrapped within ±π of its reference angle.
+double rsda_angle(const Rsda& r, const RelativeAngle& angle) {
+  return r.reference_angle + wrap_angle(angle.theta - r.reference_angle);
+}
+
+struct ForceVisitor {
+  const State& state;
+  Workspace& ws;
+  PowerTerms* powers;
+
+  void operator()(const Rsda& r) const {
+    const FrameKinematics& mi = ws.markers[r.marker_i];
+    const FrameKinematics& mj = ws.markers[r.marker_j];
+    const RelativeAngle angle = relative_angle(mi, mj, Stage::kVelocity);
+    const double theta = rsda_angle(r, angle);
+    // Torque on body j about z_i: spring, damper, actuator of t or θ.
+    const double a = r.actuator.evaluate(r.actuator_of_angle ? theta : state.t).value;
+    const double tau = -r.stiffness * (theta - r.free_angle) - r.damping * angle.rate + a;
+    ws.Q.noalias() += tau * (mj.J_w - mi.J_w).transpose() * angle.u;
+    if (powers) {
+      powers->dissipation += r.damping * angle.rate * angle.rate;
+      powers->actuators += a * angle.rate;
+    }
+  }
+
+  void operator()(const Tsda& s) const {
+    const FrameKinematics& mi = ws.markers[s.marker_i];
+    const FrameKinematics& mj = ws.markers[s.marker_j];
+    const Eigen::Vector3d d = mj.p_W - mi.p_W;
+    const double length = d.norm();
+    // Coincident points: the line of action is undefined and the force has no direction.
+    if (length == 0.0) return;
+    const Eigen::Vector3d e = d / length;
+    const double rate = e.dot(mj.v_W - mi.v_W);
+    const double a = s.actuator.evaluate(state.t).value;
+    const double f = -s.stiffness * (length - s.free_length) - s.damping * rate + a;
+    ws.Q.noalias() += f * (mj.J_p - mi.J_p).transpose() * e;
+    if (powers) {
+      powers->dissipation += s.damping * rate * rate;
+      powers->actuators += a * rate;
+    }
+  }
+
+  void operator()(const PointLoad& p) const {
+    const FrameKinematics& m = ws.markers[p.marker];
+    const double scale = p.scale.evaluate(state.t).value;
+    // Marker-axis loads turn with the marker.
+    const Eigen::Matrix3d R = p.frame == LoadFrame::kMarker ? m.R_WF : Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d f_W = scale * R * p.force, tau_W = scale * R * p.torque;
+    add_frame_load(m, f_W, tau_W, ws.Q);
+    if (powers) powers->loads += f_W.dot(m.v_W) + tau_W.dot(m.w_W);
+  }
+};
+
+}  // namespace
+
+void mass_matrix(const Model& model, const State& state, Workspace& ws) {
+  ws.M.setZero(model.nv, model.nv);
+  for (size_t b = 0; b < model.bodies.size(); ++b) add_body_mass_matrix(model, b, state.q, ws.M);
+}
+
+void generalized_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
+  ws.Q.setZero(model.nv);
+  if (powers) *powers = PowerTerms{};
+  // Bodies: quadratic-velocity forces and gravity.
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    add_body_inertial_and_gravity_forces(model, b, state.q, state.v, ws.Q);
+  }
+  // Force elements through marker kinematics.
+  if (model.forces.empty()) return;
+  update_marker_kinematics(model, state, Stage::kVelocity, ws);
+  const ForceVisitor visitor{state, ws, powers};
+  for (const ForceElement& force : model.forces) std::visit(visitor, force);
+}
+
+EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
+  EnergyTerms e;
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    e.kinetic += body_kinetic_energy(model, b, state.q, state.v);
+    e.gravity += body_gravity_potential(model, b, state.q);
+  }
+  update_marker_kinematics(model, state, Stage::kPosition, ws);
+  for (const ForceElement& force : model.forces) {
+    if (const Rsda* r = std::get_if<Rsda>(&force)) {
+      const double theta =
+          rsda_angle(*r, relative_angle(ws.markers[r->marker_i], ws.markers[r->marker_j], Stage::kPosition));
+      e.spring += 0.5 * r->stiffness * (theta - r->free_angle) * (theta - r->free_angle);
+    } else if (const Tsda* s = std::get_if<Tsda>(&force)) {
+      const double stretch = (ws.markers[s->marker_j].p_W - ws.markers[s->marker_i].p_W).norm() - s->free_length;
+      e.spring += 0.5 * s->stiffness * stretch * stretch;
+    }
+  }
+  return e;
+}
+
+}  // namespace limber::multibody

@@ -1,0 +1,38 @@
+// Mass matrix, generalized forces, energies and powers of a whole model (house style §3):
+//   M(q) v̇ + Gᵀ λ = Q(t, q, v),   Q = Σ_bodies (Q_v + gravity) + Σ force elements.
+// Force elements (model.h for their conventions) give Q by virtual work through marker
+// Jacobians: RSDA τ (J_wj − J_wi)ᵀ u, TSDA f (J_pj − J_pi)ᵀ e, point load J_pᵀ F + J_wᵀ T.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "multibody/model.h"
+#include "multibody/state.h"
+
+namespace limber::multibody {
+
+// ws.M = M(q), nv x nv, symmetric positive definite.
+void mass_matrix(const Model& model, const State& state, Workspace& ws);
+
+// Rates of energy flow into the model at one instant [W].
+struct PowerTerms {
+  double dissipation = 0.0;  // Σ c θ̇² + Σ c l̇² ≥ 0, power removed by dampers
+  double actuators = 0.0;    // Σ a θ̇ (RSDA) + Σ a l̇ (TSDA)
+  double loads = 0.0;        // Σ F·ṗ + T·ω of point loads
+};
+
+// ws.Q = Q(t, q, v). Updates ws.markers (velocity stage). When powers is non-null, also
+// returns the instantaneous powers of the force elements.
+void generalized_forces(const Model& model, const State& state, Workspace& ws,
+                        PowerTerms* powers = nullptr);
+
+struct EnergyTerms {
+  double kinetic = 0.0;  // ½ vᵀ M v [J]
+  double gravity = 0.0;  // −Σ m g·r_c [J] (zero at the ground origin)
+  double spring = 0.0;   // Σ ½ k (θ − θ0)² + Σ ½ k (l − l0)² [J]
+};
+
+// Updates ws.markers (position stage).
+EnergyTerms energies(const Model& model, const State& state, Workspace& ws);
+
+}  // namespace limber::multibody

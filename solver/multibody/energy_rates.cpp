@@ -1,0 +1,33 @@
+#include "multibody/energy_rates.h"
+
+#include <algorithm>
+
+#include "multibody/dynamics.h"
+#include "multibody/reactions.h"
+
+namespace limber::multibody {
+
+EnergyRates energy_rates(const Model& model, const ConstraintPartition& partition, const State& state,
+                         const Eigen::VectorXd& v_dot, const Eigen::VectorXd& lambda, Workspace& ws) {
+  EnergyRates rates;
+  // Force elements: dampers, actuators, loads.
+  PowerTerms powers;
+  generalized_forces(model, state, ws, &powers);
+  rates.dissipation = powers.dissipation;
+  rates.forces = powers.actuators + powers.loads;
+  // Drivers: effort = −λ of their (independent) row; a redundant driver row falls back on
+  // the minimum-norm multipliers.
+  bool all_independent = true;
+  for (const Driver& d : model.drivers) {
+    const auto it = std::lower_bound(partition.independent.begin(), partition.independent.end(), d.row);
+    if (it == partition.independent.end() || *it != d.row) {
+      all_independent = false;
+      break;
+    }
+    rates.driver += -lambda(it - partition.independent.begin()) * d.motion.evaluate(state.t).first;
+  }
+  if (!all_independent) rates.driver = compute_reactions(model, state, v_dot, partition, ws).driver_power;
+  return rates;
+}
+
+}  // namespace limber::multibody

@@ -1,0 +1,156 @@
+// The frozen multibody model (house style §1-2): bodies, markers, joints, drivers and force
+// elements, built and validated by ModelBuilder (model_builder.h), then read-only.
+//
+// Coordinates (house style §8 names: X_WB pose of body B in ground W):
+//   per moving body  q_b = [r_WB (3), p_WB (4, unit quaternion w,x,y,z)],
+//                    v_b = [ṙ_WB in ground (3), ω_WB in body axes (3)];
+//   ground has none. Body b owns q[q_offset, q_offset+nq) and v[v_offset, v_offset+nv).
+//   A flexible body (next issue) appends its modal coordinates η to both blocks.
+// Constraint equations: every joint contributes named scalar equations ("R2.x", "R2.rot_y"),
+// every driver one ("D1"); rows are numbered in that order (joints first, then drivers).
+// See docs/multibody.md for each joint's equations.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "multibody/time_function.h"
+
+namespace limber::multibody {
+
+// A pose X_WB: origin and orientation (unit quaternion w,x,y,z, ground <- body).
+struct Pose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector4d orientation = Eigen::Vector4d(1.0, 0.0, 0.0, 0.0);
+};
+
+// Rendering primitive carried through to the results (docs/results-format.md).
+enum class ShapeType { kBox, kCylinder, kSphere };
+const char* to_string(ShapeType type);
+
+struct Shape {
+  ShapeType type = ShapeType::kBox;
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();  // box: edges; cylinder: r, r, length (z)
+  Pose offset;                                     // in the body frame
+  Eigen::Vector3d color = Eigen::Vector3d(0.7, 0.7, 0.7);
+};
+
+enum class BodyKind { kGround, kRigid };
+
+struct Body {
+  std::string name;
+  BodyKind kind = BodyKind::kRigid;
+  double mass = 0.0;                                              // [kg]
+  Eigen::Vector3d com_B = Eigen::Vector3d::Zero();                // centre of mass, body frame [m]
+  Eigen::Matrix3d inertia_com_B = Eigen::Matrix3d::Zero();        // about the CoM, body axes [kg m²]
+  Pose initial_pose;                                              // X_WB, approximate before assembly
+  Eigen::Vector3d initial_velocity_W = Eigen::Vector3d::Zero();   // ṙ_WB [m/s]
+  Eigen::Vector3d initial_angular_velocity_B = Eigen::Vector3d::Zero();  // ω in body axes [rad/s]
+  std::vector<Shape> shapes;
+  int q_offset = 0, nq = 0;  // coordinate block
+  int v_offset = 0, nv = 0;  // velocity block
+};
+
+// A frame fixed on a body: X_BM = (p_BM, R_BM).
+struct Marker {
+  std::string name;
+  int body = 0;
+  Eigen::Vector3d p_BM = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d R_BM = Eigen::Matrix3d::Identity();
+};
+
+enum class JointType { kRevolute, kTranslational, kSpherical, kBracket, kUniversal, kCylindrical };
+const char* to_string(JointType type);
+
+// A joint between marker i (on body_i) and marker j (on body_j); its equations are rows
+// [first_row, first_row + rows) of the full constraint vector.
+struct Joint {
+  std::string name;
+  JointType type = JointType::kRevolute;
+  int marker_i = 0, marker_j = 0;
+  int first_row = 0, rows = 0;
+};
+
+// What a driver prescribes on its joint: the rotation angle of marker j about z_i (x_j
+// measured from x_i towards y_i) [rad], or the displacement z_i·(p_j − p_i) [m].
+enum class DriverCoordinate { kRotation, kTranslation };
+
+struct Driver {
+  std::string name;
+  int joint = 0;
+  DriverCoordinate coordinate = DriverCoordinate::kRotation;
+  TimeFunction motion;  // prescribed coordinate f(t)
+  int row = 0;
+};
+
+// Scalar equation primitives on markers i and j (Haug 1989, §9.2; a, b marker axes, d = p_j − p_i):
+//   kDot1: a_i·b_j = 0     kDot2: a_i·d − f(t) = 0     kAngle: wrap(θ_ij − f(t)) = 0
+enum class EquationKind { kDot1, kDot2, kAngle };
+
+struct ConstraintEquation {
+  std::string name;  // "<joint>.<component>" or the driver's name
+  EquationKind kind = EquationKind::kDot1;
+  int marker_i = 0, marker_j = 0;
+  int axis_i = 0, axis_j = 0;  // 0, 1, 2 = x, y, z of the marker
+  int joint = -1;              // owning joint, or -1
+  int driver = -1;             // owning driver (supplies f(t)), or -1
+};
+
+// Rotational spring-damper-actuator about z_i of marker i; θ as for a rotation driver,
+// unwrapped within ±π of its value at the initial poses (reference_angle).
+// Torque on body j about z_i: τ = −k (θ − θ0) − c θ̇ + a, with a = actuator(t) or actuator(θ).
+struct Rsda {
+  std::string name;
+  int marker_i = 0, marker_j = 0;
+  double stiffness = 0.0, damping = 0.0, free_angle = 0.0;  // [N·m/rad], [N·m·s/rad], [rad]
+  TimeFunction actuator;
+  bool actuator_of_angle = false;
+  double reference_angle = 0.0;
+};
+
+// Translational spring-damper-actuator between the marker origins, l = |p_j − p_i|.
+// Force on body j along e = (p_j − p_i)/l: f = −k (l − l0) − c l̇ + a(t) (body i gets −f e).
+struct Tsda {
+  std::string name;
+  int marker_i = 0, marker_j = 0;
+  double stiffness = 0.0, damping = 0.0, free_length = 0.0;  // [N/m], [N·s/m], [m]
+  TimeFunction actuator;
+};
+
+// Force and torque at a marker origin: (force, torque) · scale(t), in ground or marker axes.
+enum class LoadFrame { kGround, kMarker };
+struct PointLoad {
+  std::string name;
+  int marker = 0;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // [N]
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // [N·m]
+  TimeFunction scale = TimeFunction::constant(1.0);
+  LoadFrame frame = LoadFrame::kGround;
+};
+
+using ForceElement = std::variant<Rsda, Tsda, PointLoad>;
+
+struct Model {
+  std::vector<Body> bodies;  // bodies[0] is ground
+  std::vector<Marker> markers;
+  std::vector<Joint> joints;
+  std::vector<Driver> drivers;
+  std::vector<ForceElement> forces;
+  std::vector<ConstraintEquation> equations;  // full set, joints then drivers
+  Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // [m/s²]
+  int nq = 0, nv = 0;
+
+  int num_equations() const { return static_cast<int>(equations.size()); }
+  // Index by name, or -1.
+  int find_body(const std::string& name) const;
+  int find_joint(const std::string& name) const;
+  int find_driver(const std::string& name) const;
+  int find_equation(const std::string& name) const;
+};
+
+const std::string& force_name(const ForceElement& force);
+
+}  // namespace limber::multibody

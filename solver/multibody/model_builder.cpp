@@ -1,0 +1,260 @@
+#include "multibody/model_builder.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
+#include "multibody/rotation.h"
+
+namespace limber::multibody {
+
+namespace {
+
+// One scalar equation of a joint: primitive, axes and component name (docs/multibody.md).
+struct EquationTemplate {
+  EquationKind kind;
+  int axis_i, axis_j;
+  const char* component;
+};
+
+std::vector<EquationTemplate> joint_equations(JointType type) {
+  // d = p_j − p_i in marker-i axes; rot_x: y_i·z_j, rot_y: x_i·z_j, rot_z: x_i·y_j.
+  const EquationTemplate x{EquationKind::kDot2, 0, 0, "x"}, y{EquationKind::kDot2, 1, 0, "y"},
+      z{EquationKind::kDot2, 2, 0, "z"};
+  const EquationTemplate rx{EquationKind::kDot1, 1, 2, "rot_x"}, ry{EquationKind::kDot1, 0, 2, "rot_y"},
+      rz{EquationKind::kDot1, 0, 1, "rot_z"};
+  switch (type) {
+    case JointType::kSpherical: return {x, y, z};
+    case JointType::kRevolute: return {x, y, z, rx, ry};
+    case JointType::kBracket: return {x, y, z, rx, ry, rz};
+    case JointType::kUniversal: return {x, y, z, {EquationKind::kDot1, 2, 2, "rot"}};
+    case JointType::kCylindrical: return {x, y, rx, ry};
+    case JointType::kTranslational: return {x, y, rx, ry, rz};
+  }
+  return {};
+}
+
+bool is_rotation(const Eigen::Matrix3d& R) {
+  return (R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-9 && R.determinant() > 0;
+}
+
+// Marker pose in ground at the owning body's initial pose.
+void initial_marker_pose(const Model& model, const Marker& m, Eigen::Vector3d& p_W,
+                         Eigen::Matrix3d& R_W) {
+  const Pose& X = model.bodies[m.body].initial_pose;
+  const Eigen::Matrix3d A = rotation_matrix(X.orientation);
+  p_W = X.position + A * m.p_BM;
+  R_W = A * m.R_BM;
+}
+
+}  // namespace
+
+ModelBuilder::ModelBuilder() {
+  Body ground;
+  ground.name = "ground";
+  ground.kind = BodyKind::kGround;
+  model_.bodies.push_back(ground);
+}
+
+void ModelBuilder::set_gravity(const Eigen::Vector3d& g_W) { model_.gravity_W = g_W; }
+
+int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation& where) {
+  // Name, mass and pose.
+  if (spec.name.empty()) throw InputError("body name: expected a non-empty name, got \"\"", where);
+  if (model_.find_body(spec.name) >= 0) {
+    throw InputError(fmt::format("body \"{}\": expected a unique name, got a duplicate", spec.name), where);
+  }
+  if (!(spec.mass > 0.0) || !std::isfinite(spec.mass)) {
+    throw InputError(fmt::format("body \"{}\" mass: expected > 0 kg, got {}", spec.name, spec.mass), where);
+  }
+  if (!(spec.initial_pose.orientation.norm() > 0.0)) {
+    throw InputError(fmt::format("body \"{}\" orientation: expected a non-zero quaternion, got zero",
+                                 spec.name), where);
+  }
+  // Inertia: symmetric, positive definite, and physically realisable (triangle inequality).
+  const Eigen::Matrix3d& J = spec.inertia_com_B;
+  const double scale = J.norm();
+  if (!((J - J.transpose()).norm() <= 1e-9 * scale)) {
+    throw InputError(fmt::format("body \"{}\" inertia: expected a symmetric tensor, got asymmetry {:.3g}",
+                                 spec.name, (J - J.transpose()).norm()), where);
+  }
+  const Eigen::Vector3d principal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
+  if (!(principal(0) > 0.0) ||
+      principal(0) + principal(1) < principal(2) * (1.0 - 1e-9)) {
+    throw InputError(fmt::format("body \"{}\" inertia: expected positive principal moments with "
+                                 "I1 + I2 ≥ I3, got ({:.6g}, {:.6g}, {:.6g}) kg m²",
+                                 spec.name, principal(0), principal(1), principal(2)), where);
+  }
+  // Number the body's blocks at the end of q and v.
+  Body body;
+  body.name = spec.name;
+  body.kind = BodyKind::kRigid;
+  body.mass = spec.mass;
+  body.com_B = spec.com_B;
+  body.inertia_com_B = 0.5 * (J + J.transpose());
+  body.initial_pose = spec.initial_pose;
+  body.initial_pose.orientation.normalize();
+  body.initial_velocity_W = spec.initial_velocity_W;
+  body.initial_angular_velocity_B = spec.initial_angular_velocity_B;
+  body.shapes = spec.shapes;
+  body.nq = 7;
+  body.nv = 6;
+  body.q_offset = model_.nq;
+  body.v_offset = model_.nv;
+  model_.nq += body.nq;
+  model_.nv += body.nv;
+  model_.bodies.push_back(body);
+  return static_cast<int>(model_.bodies.size()) - 1;
+}
+
+int ModelBuilder::add_marker(const std::string& name, const std::string& body,
+                             const Eigen::Vector3d& p_BM, const Eigen::Matrix3d& R_BM,
+                             const SourceLocation& where) {
+  if (name.empty()) throw InputError("marker name: expected a non-empty name, got \"\"", where);
+  for (const Marker& m : model_.markers) {
+    if (m.name == name) {
+      throw InputError(fmt::format("marker \"{}\": expected a unique name, got a duplicate", name), where);
+    }
+  }
+  const int b = model_.find_body(body);
+  if (b < 0) throw InputError(fmt::format("marker \"{}\": expected an existing body, got \"{}\"", name, body), where);
+  if (!is_rotation(R_BM)) {
+    throw InputError(fmt::format("marker \"{}\" orientation: expected a rotation matrix "
+                                 "(orthonormal, det +1), got det {:.6g}", name, R_BM.determinant()), where);
+  }
+  model_.markers.push_back(Marker{name, b, p_BM, R_BM});
+  return static_cast<int>(model_.markers.size()) - 1;
+}
+
+int ModelBuilder::add_marker_at(const std::string& name, const std::string& body,
+                                const Eigen::Vector3d& p_WM, const Eigen::Matrix3d& R_WM,
+                                const SourceLocation& where) {
+  const int b = model_.find_body(body);
+  if (b < 0) throw InputError(fmt::format("marker \"{}\": expected an existing body, got \"{}\"", name, body), where);
+  // Express the ground pose in the body frame at the body's initial pose.
+  const Pose& X = model_.bodies[b].initial_pose;
+  const Eigen::Matrix3d A = rotation_matrix(X.orientation);
+  return add_marker(name, body, A.transpose() * (p_WM - X.position), A.transpose() * R_WM, where);
+}
+
+int ModelBuilder::marker_index(const std::string& name, const SourceLocation& where) const {
+  for (size_t k = 0; k < model_.markers.size(); ++k) {
+    if (model_.markers[k].name == name) return static_cast<int>(k);
+  }
+  throw InputError(fmt::format("marker: expected an existing marker, got \"{}\"", name), where);
+}
+
+void ModelBuilder::claim_element_name(const std::string& name, const SourceLocation& where) {
+  if (name.empty()) throw InputError("element name: expected a non-empty name, got \"\"", where);
+  if (std::find(element_names_.begin(), element_names_.end(), name) != element_names_.end()) {
+    throw InputError(fmt::format("\"{}\": expected a unique joint/driver/force name, got a duplicate", name),
+                     where);
+  }
+  element_names_.push_back(name);
+}
+
+int ModelBuilder::add_joint(const std::string& name, JointType type, const std::string& marker_i,
+                            const std::string& marker_j, const SourceLocation& where) {
+  const int mi = marker_index(marker_i, where), mj = marker_index(marker_j, where);
+  if (model_.markers[mi].body == model_.markers[mj].body) {
+    throw InputError(fmt::format("joint \"{}\": expected markers on two different bodies, got both on \"{}\"",
+                                 name, model_.bodies[model_.markers[mi].body].name), where);
+  }
+  claim_element_name(name, where);
+  model_.joints.push_back(Joint{name, type, mi, mj, 0, 0});
+  return static_cast<int>(model_.joints.size()) - 1;
+}
+
+int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
+                             DriverCoordinate coordinate, TimeFunction motion,
+                             const SourceLocation& where) {
+  const int j = model_.find_joint(joint);
+  if (j < 0) throw InputError(fmt::format("driver \"{}\": expected an existing joint, got \"{}\"", name, joint), where);
+  // The joint must leave the driven coordinate free.
+  const JointType type = model_.joints[j].type;
+  const bool rotation_ok = type == JointType::kRevolute || type == JointType::kCylindrical;
+  const bool translation_ok = type == JointType::kTranslational || type == JointType::kCylindrical;
+  if (coordinate == DriverCoordinate::kRotation && !rotation_ok) {
+    throw InputError(fmt::format("driver \"{}\": expected a revolute or cylindrical joint for a rotation, "
+                                 "got {} joint \"{}\"", name, to_string(type), joint), where);
+  }
+  if (coordinate == DriverCoordinate::kTranslation && !translation_ok) {
+    throw InputError(fmt::format("driver \"{}\": expected a translational or cylindrical joint for a "
+                                 "translation, got {} joint \"{}\"", name, to_string(type), joint), where);
+  }
+  for (const Driver& d : model_.drivers) {
+    if (d.joint == j && d.coordinate == coordinate) {
+      throw InputError(fmt::format("driver \"{}\": expected one driver per joint coordinate, got a second "
+                                   "on joint \"{}\" (first: \"{}\")", name, joint, d.name), where);
+    }
+  }
+  claim_element_name(name, where);
+  model_.drivers.push_back(Driver{name, j, coordinate, std::move(motion), 0});
+  return static_cast<int>(model_.drivers.size()) - 1;
+}
+
+void ModelBuilder::add_rsda(const RsdaSpec& spec, const SourceLocation& where) {
+  const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
+  if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0)) {
+    throw InputError(fmt::format("RSDA \"{}\": expected stiffness and damping ≥ 0, got k = {}, c = {}",
+                                 spec.name, spec.stiffness, spec.damping), where);
+  }
+  claim_element_name(spec.name, where);
+  // Reference angle for unwrapping: θ of the markers at the initial poses.
+  Eigen::Vector3d p_i, p_j;
+  Eigen::Matrix3d R_i, R_j;
+  initial_marker_pose(model_, model_.markers[mi], p_i, R_i);
+  initial_marker_pose(model_, model_.markers[mj], p_j, R_j);
+  const double theta0 = std::atan2(R_j.col(0).dot(R_i.col(1)), R_j.col(0).dot(R_i.col(0)));
+  model_.forces.push_back(Rsda{spec.name, mi, mj, spec.stiffness, spec.damping, spec.free_angle,
+                               spec.actuator, spec.actuator_of_angle, theta0});
+}
+
+void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
+  const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
+  if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0) || !(spec.free_length >= 0.0)) {
+    throw InputError(fmt::format("TSDA \"{}\": expected stiffness, damping and free length ≥ 0, "
+                                 "got k = {}, c = {}, l0 = {}", spec.name, spec.stiffness, spec.damping,
+                                 spec.free_length), where);
+  }
+  claim_element_name(spec.name, where);
+  model_.forces.push_back(Tsda{spec.name, mi, mj, spec.stiffness, spec.damping, spec.free_length,
+                               spec.actuator});
+}
+
+void ModelBuilder::add_point_load(const PointLoadSpec& spec, const SourceLocation& where) {
+  const int m = marker_index(spec.marker, where);
+  claim_element_name(spec.name, where);
+  model_.forces.push_back(PointLoad{spec.name, m, spec.force, spec.torque, spec.scale, spec.frame});
+}
+
+Model ModelBuilder::build() const {
+  Model model = model_;
+  model.equations.clear();
+  // Joint equations first, named "<joint>.<component>".
+  for (size_t j = 0; j < model.joints.size(); ++j) {
+    Joint& joint = model.joints[j];
+    joint.first_row = model.num_equations();
+    for (const EquationTemplate& e : joint_equations(joint.type)) {
+      model.equations.push_back(ConstraintEquation{joint.name + "." + e.component, e.kind,
+                                                   joint.marker_i, joint.marker_j, e.axis_i,
+                                                   e.axis_j, static_cast<int>(j), -1});
+    }
+    joint.rows = model.num_equations() - joint.first_row;
+  }
+  // Then one equation per driver: rotation about z_i or displacement along z_i.
+  for (size_t d = 0; d < model.drivers.size(); ++d) {
+    Driver& driver = model.drivers[d];
+    const Joint& joint = model.joints[driver.joint];
+    driver.row = model.num_equations();
+    const EquationKind kind =
+        driver.coordinate == DriverCoordinate::kRotation ? EquationKind::kAngle : EquationKind::kDot2;
+    model.equations.push_back(ConstraintEquation{driver.name, kind, joint.marker_i, joint.marker_j,
+                                                 2, 0, -1, static_cast<int>(d)});
+  }
+  return model;
+}
+
+}  // namespace limber::multibody

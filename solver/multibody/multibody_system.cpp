@@ -1,0 +1,102 @@
+#include "multibody/multibody_system.h"
+
+#include "multibody/body.h"
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+
+namespace limber::multibody {
+
+MultibodySystem::MultibodySystem(const Model& model, ConstraintPartition partition)
+    : model_(model), partition_(std::move(partition)), workspace_(model) {
+  for (const Body& b : model_.bodies) {
+    if (b.kind == BodyKind::kRigid) ++num_rigid_bodies_;
+  }
+}
+
+void MultibodySystem::kinematic_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& N) const {
+  N.setZero(model_.nq, model_.nv);
+  for (size_t b = 0; b < model_.bodies.size(); ++b) set_body_kinematic_matrix(model_, b, q, N);
+}
+
+void MultibodySystem::integrate_coordinates(const Eigen::VectorXd& q, const Eigen::VectorXd& dv,
+                                            Eigen::VectorXd& q_out) const {
+  q_out.resize(model_.nq);
+  for (size_t b = 0; b < model_.bodies.size(); ++b) integrate_body_coordinates(model_, b, q, dv, q_out);
+}
+
+void MultibodySystem::coordinate_invariants(const Eigen::VectorXd& q, Eigen::VectorXd& h,
+                                            Eigen::MatrixXd& h_q) const {
+  // h = |p|² − 1 per rigid body, ∂h/∂p = 2 pᵀ.
+  h.setZero(num_rigid_bodies_);
+  h_q.setZero(num_rigid_bodies_, model_.nq);
+  int k = 0;
+  for (const Body& b : model_.bodies) {
+    if (b.kind != BodyKind::kRigid) continue;
+    const Eigen::Vector4d p = q.segment<4>(b.q_offset + 3);
+    h(k) = p.squaredNorm() - 1.0;
+    h_q.block<1, 4>(k, b.q_offset + 3) = 2.0 * p.transpose();
+    ++k;
+  }
+}
+
+void MultibodySystem::mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const {
+  state_.t = t;
+  state_.q = q;
+  multibody::mass_matrix(model_, state_, workspace_);
+  M = workspace_.M;
+}
+
+void MultibodySystem::generalized_forces(double t, const Eigen::VectorXd& q,
+                                         const Eigen::VectorXd& v, Eigen::VectorXd& Q) const {
+  state_.t = t;
+  state_.q = q;
+  state_.v = v;
+  multibody::generalized_forces(model_, state_, workspace_);
+  Q = workspace_.Q;
+}
+
+void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) const {
+  state_.t = t;
+  state_.q = q;
+  if (v) state_.v = *v;
+  evaluate_constraints(model_, state_, v ? Stage::kVelocity : Stage::kPosition, workspace_);
+}
+
+void MultibodySystem::select_rows(const Eigen::VectorXd& full, Eigen::VectorXd& out) const {
+  out.resize(nc());
+  for (int k = 0; k < nc(); ++k) out(k) = full(partition_.independent[k]);
+}
+
+void MultibodySystem::constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const {
+  evaluate(t, q, nullptr);
+  select_rows(workspace_.g, g);
+}
+
+void MultibodySystem::constraint_jacobian_v(double t, const Eigen::VectorXd& q,
+                                            Eigen::MatrixXd& G) const {
+  evaluate(t, q, nullptr);
+  G.resize(nc(), model_.nv);
+  for (int k = 0; k < nc(); ++k) G.row(k) = workspace_.G.row(partition_.independent[k]);
+}
+
+void MultibodySystem::constraint_jacobian_q(double t, const Eigen::VectorXd& q,
+                                            Eigen::MatrixXd& g_q) const {
+  Eigen::MatrixXd G;
+  constraint_jacobian_v(t, q, G);
+  g_q.setZero(nc(), model_.nq);
+  for (size_t b = 0; b < model_.bodies.size(); ++b) map_body_jacobian_to_q(model_, b, q, G, g_q);
+}
+
+void MultibodySystem::constraint_time_derivative(double t, const Eigen::VectorXd& q,
+                                                 Eigen::VectorXd& g_t) const {
+  evaluate(t, q, nullptr);
+  select_rows(workspace_.g_t, g_t);
+}
+
+void MultibodySystem::acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                       Eigen::VectorXd& gamma) const {
+  evaluate(t, q, &v);
+  select_rows(workspace_.gamma, gamma);
+}
+
+}  // namespace limber::multibody

@@ -1,0 +1,58 @@
+// A multibody Model seen by the time integrators: implements
+// limber::integrate::MechanicalSystem (integrate/mechanical_system.h) with only the
+// independent constraint rows of a ConstraintPartition (redundancy.h), so the integrators
+// never see a rank-deficient G.
+// Holds a reference to the model (which must outlive it) and a private Workspace: one
+// MultibodySystem per thread.
+#pragma once
+
+#include "integrate/mechanical_system.h"
+#include "multibody/model.h"
+#include "multibody/redundancy.h"
+#include "multibody/state.h"
+
+namespace limber::multibody {
+
+class MultibodySystem final : public integrate::MechanicalSystem {
+ public:
+  MultibodySystem(const Model& model, ConstraintPartition partition);
+
+  const Model& model() const { return model_; }
+  const ConstraintPartition& partition() const { return partition_; }
+
+  int nq() const override { return model_.nq; }
+  int nv() const override { return model_.nv; }
+  int nc() const override { return static_cast<int>(partition_.independent.size()); }
+  int nh() const override { return num_rigid_bodies_; }
+
+  void kinematic_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& N) const override;
+  void integrate_coordinates(const Eigen::VectorXd& q, const Eigen::VectorXd& dv,
+                             Eigen::VectorXd& q_out) const override;
+  void coordinate_invariants(const Eigen::VectorXd& q, Eigen::VectorXd& h,
+                             Eigen::MatrixXd& h_q) const override;
+  void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const override;
+  void generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                          Eigen::VectorXd& Q) const override;
+  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const override;
+  void constraint_jacobian_q(double t, const Eigen::VectorXd& q,
+                             Eigen::MatrixXd& g_q) const override;
+  void constraint_jacobian_v(double t, const Eigen::VectorXd& q,
+                             Eigen::MatrixXd& G) const override;
+  void constraint_time_derivative(double t, const Eigen::VectorXd& q,
+                                  Eigen::VectorXd& g_t) const override;
+  void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                        Eigen::VectorXd& gamma) const override;
+
+ private:
+  // Evaluates the full constraint set at (t, q[, v]) into workspace_.
+  void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) const;
+  void select_rows(const Eigen::VectorXd& full, Eigen::VectorXd& out) const;
+
+  const Model& model_;
+  ConstraintPartition partition_;
+  int num_rigid_bodies_ = 0;
+  mutable Workspace workspace_;
+  mutable State state_;
+};
+
+}  // namespace limber::multibody

@@ -1,0 +1,72 @@
+#include "multibody/reactions.h"
+
+#include <Eigen/QR>
+
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+
+namespace limber::multibody {
+
+namespace {
+
+// Force and torque at a frame equivalent to a generalized force on one body's velocities.
+void frame_wrench(const Body& body, const FrameKinematics& frame, const Eigen::VectorXd& Q,
+                  Eigen::Vector3d& f_W, Eigen::Vector3d& tau_W) {
+  Eigen::MatrixXd J(body.nv, 6);
+  J.leftCols<3>() = frame.J_p.middleCols(body.v_offset, body.nv).transpose();
+  J.rightCols<3>() = frame.J_w.middleCols(body.v_offset, body.nv).transpose();
+  const Eigen::VectorXd wrench = J.colPivHouseholderQr().solve(Q.segment(body.v_offset, body.nv));
+  f_W = wrench.head<3>();
+  tau_W = wrench.tail<3>();
+}
+
+}  // namespace
+
+Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
+                            const ConstraintPartition& partition, Workspace& ws) {
+  evaluate_constraints(model, state, Stage::kVelocity, ws);
+  mass_matrix(model, state, ws);
+  generalized_forces(model, state, ws);
+  Reactions out;
+  // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇.
+  const Eigen::VectorXd rhs = ws.Q - ws.M * v_dot;
+  out.lambda = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(ws.G.transpose()).solve(rhs);
+  // Joints: generalized constraint force of their rows, turned into a wrench at a marker.
+  for (size_t k = 0; k < model.joints.size(); ++k) {
+    const Joint& joint = model.joints[k];
+    const Eigen::VectorXd Q_k = -ws.G.middleRows(joint.first_row, joint.rows).transpose() *
+                                out.lambda.segment(joint.first_row, joint.rows);
+    const Marker& marker_i = model.markers[joint.marker_i];
+    const Marker& marker_j = model.markers[joint.marker_j];
+    const FrameKinematics& mi = ws.markers[joint.marker_i];
+    const FrameKinematics& mj = ws.markers[joint.marker_j];
+    const Eigen::Vector3d r_ij = mj.p_W - mi.p_W;
+    JointReaction r;
+    r.point_W = mj.p_W;
+    r.indeterminate = partition.joint_indeterminate[k];
+    // Solve on a moving body; the other side by equilibrium of the joint.
+    if (model.bodies[marker_j.body].kind != BodyKind::kGround) {
+      frame_wrench(model.bodies[marker_j.body], mj, Q_k, r.force_j_W, r.torque_j_W);
+      r.force_i_W = -r.force_j_W;
+      r.torque_i_W = -r.torque_j_W - r_ij.cross(r.force_j_W);
+    } else {
+      frame_wrench(model.bodies[marker_i.body], mi, Q_k, r.force_i_W, r.torque_i_W);
+      r.force_j_W = -r.force_i_W;
+      r.torque_j_W = -r.torque_i_W + r_ij.cross(r.force_i_W);
+    }
+    r.force_j_J = mj.R_WF.transpose() * r.force_j_W;
+    r.torque_j_J = mj.R_WF.transpose() * r.torque_j_W;
+    r.force_i_I = mi.R_WF.transpose() * r.force_i_W;
+    r.torque_i_I = mi.R_WF.transpose() * r.torque_i_W;
+    out.joints.push_back(r);
+  }
+  // Drivers: effort = −λ (unit derivative of the driven coordinate), power = effort · ḟ.
+  for (const Driver& d : model.drivers) {
+    const double effort = -out.lambda(d.row);
+    out.driver_efforts.push_back(effort);
+    out.driver_power += effort * d.motion.evaluate(state.t).first;
+  }
+  return out;
+}
+
+}  // namespace limber::multibody

@@ -1,0 +1,91 @@
+#include "multibody/redundancy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/QR>
+
+#include "multibody/constraints.h"
+
+namespace limber::multibody {
+
+namespace {
+
+// Coefficients below this (rows have unit norm) are rounding, not dependence.
+constexpr double kCoefficientTolerance = 1e-8;
+
+void mark_indeterminate(const Model& model, ConstraintPartition& p) {
+  p.row_indeterminate.assign(model.num_equations(), false);
+  p.joint_indeterminate.assign(model.joints.size(), false);
+  for (const RedundantEquation& r : p.redundant) {
+    p.row_indeterminate[r.row] = true;
+    for (int k : r.depends_on) p.row_indeterminate[k] = true;
+  }
+  for (int row = 0; row < model.num_equations(); ++row) {
+    const int joint = model.equations[row].joint;
+    if (p.row_indeterminate[row] && joint >= 0) p.joint_indeterminate[joint] = true;
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> ConstraintPartition::describe(const Model& model) const {
+  std::vector<std::string> lines;
+  for (const RedundantEquation& r : redundant) {
+    std::string line = model.equations[r.row].name + " is redundant";
+    for (size_t k = 0; k < r.depends_on.size(); ++k) {
+      line += (k == 0 ? " with " : ", ") + model.equations[r.depends_on[k]].name;
+    }
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+ConstraintPartition full_partition(const Model& model) {
+  ConstraintPartition p;
+  for (int row = 0; row < model.num_equations(); ++row) p.independent.push_back(row);
+  mark_indeterminate(model, p);
+  return p;
+}
+
+ConstraintPartition analyse_redundancy(const Model& model, const State& state, Workspace& ws,
+                                       double relative_threshold) {
+  evaluate_constraints(model, state, Stage::kPosition, ws);
+  const int m = model.num_equations();
+  ConstraintPartition p;
+  p.relative_threshold = relative_threshold;
+  // Rows scaled to unit norm (zero rows stay zero: they are redundant with nothing).
+  Eigen::MatrixXd S = ws.G;
+  for (int row = 0; row < m; ++row) {
+    const double norm = S.row(row).norm();
+    if (norm > 0.0) S.row(row) /= norm;
+  }
+  // Pivoted QR of Sᵀ: its first `rank` pivot columns are independent rows of G.
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S.transpose());
+  qr.setThreshold(relative_threshold);
+  const int rank = static_cast<int>(qr.rank());
+  const auto& perm = qr.colsPermutation().indices();
+  for (int k = 0; k < rank; ++k) p.independent.push_back(perm(k));
+  std::sort(p.independent.begin(), p.independent.end());
+  // Express each redundant row over the independent ones (least squares, exact up to rounding).
+  Eigen::MatrixXd S_ind(rank, model.nv);
+  for (int k = 0; k < rank; ++k) S_ind.row(k) = S.row(p.independent[k]);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> basis(S_ind.transpose());
+  std::vector<int> redundant_rows;
+  for (int k = rank; k < m; ++k) redundant_rows.push_back(perm(k));
+  std::sort(redundant_rows.begin(), redundant_rows.end());
+  for (int row : redundant_rows) {
+    RedundantEquation r{row, {}};
+    if (rank > 0) {
+      const Eigen::VectorXd c = basis.solve(Eigen::VectorXd(S.row(row).transpose()));
+      for (int k = 0; k < rank; ++k) {
+        if (std::abs(c(k)) > kCoefficientTolerance) r.depends_on.push_back(p.independent[k]);
+      }
+    }
+    p.redundant.push_back(r);
+  }
+  mark_indeterminate(model, p);
+  return p;
+}
+
+}  // namespace limber::multibody

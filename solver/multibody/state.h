@@ -1,0 +1,44 @@
+// State and Workspace of a multibody Model (house style §1).
+//   State: t [s], q (nq: per body r_WB, quaternion), v (nv: per body ṙ_WB ground, ω body axes).
+//   Workspace: scratch sized from the model; one per thread.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "multibody/model.h"
+
+namespace limber::multibody {
+
+struct State {
+  double t = 0.0;
+  Eigen::VectorXd q;
+  Eigen::VectorXd v;
+};
+
+// The builder's initial poses and velocities (not yet consistent with the constraints:
+// see assembly.h).
+State initial_state(const Model& model);
+
+// Kinematics of a frame F fixed on a body, all in ground axes (size nv = model.nv):
+//   ṗ_WF = J_p v,  ω_WF = J_w v,  p̈_WF = J_p v̇ + a_bias,  ω̇_WF = J_w v̇ + alpha_bias.
+struct FrameKinematics {
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d R_WF = Eigen::Matrix3d::Identity();
+  Eigen::MatrixXd J_p, J_w;  // 3 x nv, zero outside the body's columns
+  Eigen::Vector3d v_W = Eigen::Vector3d::Zero(), w_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d a_bias = Eigen::Vector3d::Zero(), alpha_bias = Eigen::Vector3d::Zero();
+};
+
+struct Workspace {
+  explicit Workspace(const Model& model);
+
+  std::vector<FrameKinematics> markers;  // one per model marker
+  Eigen::VectorXd g, g_t, gamma;         // full constraint set (model.num_equations())
+  Eigen::MatrixXd G;                     // full velocity Jacobian, m x nv
+  Eigen::MatrixXd M;                     // nv x nv
+  Eigen::VectorXd Q;                     // nv
+};
+
+}  // namespace limber::multibody

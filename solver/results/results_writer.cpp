@@ -1,0 +1,435 @@
+#include "results/results_writer.h"
+
+#include "core/error.h"
+#include "results/h5_handle.h"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+#include <system_error>
+
+namespace limber::results {
+namespace {
+
+// Silences HDF5's automatic error-stack printing while alive (failures become exceptions).
+class SilentHdf5Errors {
+ public:
+  SilentHdf5Errors() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
+  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
+// Throws when an HDF5 call failed (negative return): the file is unusable from then on.
+herr_t check(herr_t status, const char* what) {
+  if (status < 0) throw std::runtime_error(std::string("results.h5: HDF5 failed to ") + what);
+  return status;
+}
+H5Handle checked(hid_t id, const char* what) {
+  check(static_cast<herr_t>(id < 0 ? -1 : 0), what);
+  return H5Handle(id);
+}
+
+void write_string_attribute(hid_t object, const char* name, const std::string& value) {
+  // Replace an existing attribute of the same name (status is rewritten at finish).
+  if (H5Aexists(object, name) > 0) check(H5Adelete(object, name), "delete an attribute");
+  H5Handle type = checked(H5Tcopy(H5T_C_S1), "copy the string type");
+  check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "size a string");
+  check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "pad a string");
+  H5Handle space = checked(H5Screate(H5S_SCALAR), "create a scalar dataspace");
+  H5Handle attribute =
+      checked(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              "create a string attribute");
+  const std::string padded = value.empty() ? std::string(1, '\0') : value;
+  check(H5Awrite(attribute.get(), type.get(), padded.data()), "write a string attribute");
+}
+
+void write_int_attribute(hid_t object, const char* name, int value) {
+  H5Handle space = checked(H5Screate(H5S_SCALAR), "create a scalar dataspace");
+  H5Handle attribute = checked(
+      H5Acreate2(object, name, H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      "create an integer attribute");
+  check(H5Awrite(attribute.get(), H5T_NATIVE_INT, &value), "write an integer attribute");
+}
+
+void write_doubles_attribute(hid_t object, const char* name, const double* values,
+                             hsize_t count) {
+  H5Handle space = checked(H5Screate_simple(1, &count, nullptr), "create a dataspace");
+  H5Handle attribute = checked(
+      H5Acreate2(object, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      "create a real attribute");
+  check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values), "write a real attribute");
+}
+
+H5Handle create_group(hid_t parent, const std::string& name) {
+  return checked(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                 "create a group");
+}
+
+// Writes a whole fixed-size dataset; rank 0 means a scalar.
+void write_dataset(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
+                   const std::vector<hsize_t>& dims, const void* data) {
+  H5Handle space = checked(dims.empty() ? H5Screate(H5S_SCALAR)
+                                        : H5Screate_simple(static_cast<int>(dims.size()),
+                                                           dims.data(), nullptr),
+                           "create a dataspace");
+  H5Handle dataset = checked(H5Dcreate2(parent, name, file_type, space.get(), H5P_DEFAULT,
+                                        H5P_DEFAULT, H5P_DEFAULT),
+                             "create a dataset");
+  // Empty datasets (e.g. a mesh without quads) hold no data to write.
+  const bool empty = std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
+  if (!empty) {
+    check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+          "write a dataset");
+  }
+}
+
+const char* shape_type_name(ShapeSpec::Type type) {
+  switch (type) {
+    case ShapeSpec::Type::kBox: return "box";
+    case ShapeSpec::Type::kCylinder: return "cylinder";
+    case ShapeSpec::Type::kSphere: return "sphere";
+  }
+  LIMBER_DEMAND(false);
+}
+
+void write_shapes(hid_t body_group, const std::vector<ShapeSpec>& shapes) {
+  if (shapes.empty()) return;
+  H5Handle group = create_group(body_group, "shapes");
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const ShapeSpec& shape = shapes[k];
+    H5Handle shape_group = create_group(group.get(), std::to_string(k));
+    write_string_attribute(shape_group.get(), "type", shape_type_name(shape.type));
+    write_doubles_attribute(shape_group.get(), "size", shape.size.data(), 3);
+    // Offset: position xyz then quaternion wxyz.
+    const Eigen::Quaterniond& q = shape.offset_orientation;
+    const double offset[7] = {shape.offset_position.x(), shape.offset_position.y(),
+                              shape.offset_position.z(), q.w(), q.x(), q.y(), q.z()};
+    write_doubles_attribute(shape_group.get(), "offset", offset, 7);
+    write_doubles_attribute(shape_group.get(), "color", shape.color.data(), 3);
+  }
+}
+
+void demand_new_name(std::set<std::string>& names, const std::string& name) {
+  LIMBER_DEMAND(!name.empty() && name.find('/') == std::string::npos);
+  LIMBER_DEMAND(names.insert(name).second);
+}
+
+// A per-sample dataset: [ns] (width 0) or [ns, width], grown by one row per sample.
+struct Series {
+  H5Handle dataset;
+  hid_t memory_type = H5T_NATIVE_DOUBLE;
+  hsize_t width = 0;
+};
+
+}  // namespace
+
+struct ResultsWriter::Impl {
+  std::filesystem::path path;
+  H5Handle file;
+  H5Handle bodies_group;
+  H5Handle joints_group;
+  H5Handle drivers_group;
+  H5Handle energy_group;
+  std::set<std::string> body_names, joint_names, driver_names, energy_names;
+
+  // Per body: position, orientation, then modal_coordinates (flexible only); nm or -1 (rigid).
+  std::vector<std::vector<Series>> body_series;
+  std::vector<int> body_nmodes;
+  // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate.
+  std::vector<std::vector<Series>> joint_series;
+  std::vector<Series> driver_series;
+  std::vector<Series> energy_series;
+  Series position_violation, velocity_violation, steps, time;
+  std::int64_t ns = 0;
+  bool finished = false;
+
+  // Creates an empty, chunked, unlimited per-sample dataset.
+  Series create_series(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
+                       hsize_t width) {
+    const int rank = width == 0 ? 1 : 2;
+    const hsize_t dims[2] = {0, width};
+    const hsize_t max_dims[2] = {H5S_UNLIMITED, width};
+    // Chunks of about 8k values: few chunks to touch per flush, little waste.
+    const hsize_t chunk_rows = std::clamp<hsize_t>(8192 / std::max<hsize_t>(width, 1), 1, 256);
+    const hsize_t chunk[2] = {chunk_rows, std::max<hsize_t>(width, 1)};
+    H5Handle space = checked(H5Screate_simple(rank, dims, max_dims), "create a dataspace");
+    H5Handle properties = checked(H5Pcreate(H5P_DATASET_CREATE), "create properties");
+    check(H5Pset_chunk(properties.get(), rank, chunk), "set chunking");
+    Series series;
+    series.dataset = checked(H5Dcreate2(parent, name, file_type, space.get(), H5P_DEFAULT,
+                                        properties.get(), H5P_DEFAULT),
+                             "create a per-sample dataset");
+    series.memory_type = memory_type;
+    series.width = width;
+    return series;
+  }
+
+  // Extends a series to ns + 1 rows and writes the new last row.
+  void append_row(Series& series, const void* row) {
+    const hsize_t new_dims[2] = {static_cast<hsize_t>(ns) + 1, series.width};
+    check(H5Dset_extent(series.dataset.get(), new_dims), "extend a dataset");
+    H5Handle file_space = checked(H5Dget_space(series.dataset.get()), "get a dataspace");
+    const int rank = series.width == 0 ? 1 : 2;
+    const hsize_t start[2] = {static_cast<hsize_t>(ns), 0};
+    const hsize_t count[2] = {1, series.width};
+    check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+          "select a row");
+    H5Handle memory_space = checked(H5Screate_simple(rank, count, nullptr), "create a dataspace");
+    check(H5Dwrite(series.dataset.get(), series.memory_type, memory_space.get(), file_space.get(),
+                   H5P_DEFAULT, row),
+          "write a row");
+  }
+
+  void append_vector3(Series& series, const Eigen::Vector3d& v) { append_row(series, v.data()); }
+
+  void demand_declaring() const { LIMBER_DEMAND(ns == 0 && !finished); }
+
+  // Lazily creates an optional top-level group.
+  hid_t group(H5Handle& handle, const char* name) {
+    if (!handle.valid()) handle = create_group(file.get(), name);
+    return handle.get();
+  }
+
+  // Creates a body group with its kind, shapes and pose series.
+  H5Handle begin_body(const std::string& name, const char* kind,
+                      const std::vector<ShapeSpec>& shapes) {
+    demand_declaring();
+    demand_new_name(body_names, name);
+    H5Handle body = create_group(bodies_group.get(), name);
+    write_string_attribute(body.get(), "kind", kind);
+    write_shapes(body.get(), shapes);
+    std::vector<Series> series;
+    series.push_back(create_series(body.get(), "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+    series.push_back(
+        create_series(body.get(), "orientation", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
+    body_series.push_back(std::move(series));
+    return body;
+  }
+};
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::string& title,
+                             const std::string& case_file)
+    : impl_(std::make_unique<Impl>()) {
+  // Create the run directory.
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) {
+    throw InputError("cannot create the results directory '" + directory.string() +
+                     "': " + error.message());
+  }
+  impl_->path = directory / kResultsFileName;
+
+  // Create the file in the 1.8-compatible format: no "open for writing" flag survives a crash.
+  {
+    SilentHdf5Errors silent;
+    H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
+    H5Pset_libver_bounds(access.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18);
+    impl_->file = H5Handle(
+        H5Fcreate(impl_->path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
+  }
+  if (!impl_->file.valid()) {
+    throw InputError("expected a writable results file, got an HDF5 failure creating '" +
+                     impl_->path.string() + "'");
+  }
+
+  // Root attributes and the groups every file has.
+  const hid_t root = impl_->file.get();
+  write_string_attribute(root, "format", "limber-results");
+  write_int_attribute(root, "version", 1);
+  write_string_attribute(root, "title", title);
+  write_string_attribute(root, "case_file", case_file);
+  write_string_attribute(root, "status", "running");
+  write_string_attribute(root, "message", "");
+  impl_->bodies_group = create_group(root, "bodies");
+  H5Handle constraints = create_group(root, "constraints");
+  impl_->position_violation = impl_->create_series(constraints.get(), "position_violation",
+                                                   H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+  impl_->velocity_violation = impl_->create_series(constraints.get(), "velocity_violation",
+                                                   H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+  H5Handle solver = create_group(root, "solver");
+  impl_->steps = impl_->create_series(solver.get(), "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, 0);
+  impl_->time = impl_->create_series(root, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+  check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
+}
+
+ResultsWriter::~ResultsWriter() = default;
+
+int ResultsWriter::add_rigid_body(const RigidBodySpec& body) {
+  impl_->begin_body(body.name, "rigid", body.shapes);
+  impl_->body_nmodes.push_back(-1);
+  return static_cast<int>(impl_->body_series.size()) - 1;
+}
+
+int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
+  // Consistent sizes: modes over all nodes, element indices inside the mesh.
+  const Eigen::Index nn = body.nodes.rows();
+  const Eigen::Index nm = body.mode_translations.cols();
+  LIMBER_DEMAND(body.mode_translations.rows() == 3 * nn || nm == 0);
+  LIMBER_DEMAND(body.frequencies_hz.size() == nm);
+  LIMBER_DEMAND(body.node_ids.empty() || static_cast<Eigen::Index>(body.node_ids.size()) == nn);
+  LIMBER_DEMAND(body.lines.size() == 0 || (body.lines.minCoeff() >= 0 && body.lines.maxCoeff() < nn));
+  LIMBER_DEMAND(body.quads.size() == 0 || (body.quads.minCoeff() >= 0 && body.quads.maxCoeff() < nn));
+
+  H5Handle group = impl_->begin_body(body.name, "flexible", body.shapes);
+
+  // Mesh: nodes, ids, elements, tube radius.
+  H5Handle mesh = create_group(group.get(), "mesh");
+  const auto n = static_cast<hsize_t>(nn);
+  write_dataset(mesh.get(), "nodes", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {n, 3}, body.nodes.data());
+  std::vector<int> ids = body.node_ids;
+  if (ids.empty()) {
+    for (Eigen::Index i = 0; i < nn; ++i) ids.push_back(static_cast<int>(i) + 1);
+  }
+  write_dataset(mesh.get(), "node_ids", H5T_STD_I32LE, H5T_NATIVE_INT, {n}, ids.data());
+  write_dataset(mesh.get(), "lines", H5T_STD_I32LE, H5T_NATIVE_INT,
+                {static_cast<hsize_t>(body.lines.rows()), 2}, body.lines.data());
+  write_dataset(mesh.get(), "quads", H5T_STD_I32LE, H5T_NATIVE_INT,
+                {static_cast<hsize_t>(body.quads.rows()), 4}, body.quads.data());
+  write_dataset(mesh.get(), "beam_radius", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {},
+                &body.beam_radius);
+
+  // Modes: column-major (3 nn) x nm is exactly the row-major [nm, nn, 3] layout.
+  H5Handle modes = create_group(group.get(), "modes");
+  const Eigen::MatrixXd translations =
+      nm == 0 ? Eigen::MatrixXd(3 * nn, 0) : body.mode_translations;
+  write_dataset(modes.get(), "translations", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                {static_cast<hsize_t>(nm), n, 3}, translations.data());
+  write_dataset(modes.get(), "frequencies_hz", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                {static_cast<hsize_t>(nm)}, body.frequencies_hz.data());
+
+  // Modal coordinates; a flexible body without modes keeps a [ns, 0] dataset.
+  impl_->body_series.back().push_back(impl_->create_series(
+      group.get(), "modal_coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+      static_cast<hsize_t>(nm)));
+  impl_->body_nmodes.push_back(static_cast<int>(nm));
+  return static_cast<int>(impl_->body_series.size()) - 1;
+}
+
+int ResultsWriter::add_joint(const JointSpec& joint) {
+  impl_->demand_declaring();
+  demand_new_name(impl_->joint_names, joint.name);
+  H5Handle group =
+      create_group(impl_->group(impl_->joints_group, "joints"), joint.name);
+  write_string_attribute(group.get(), "type", joint.type);
+  write_string_attribute(group.get(), "body_i", joint.body_i);
+  write_string_attribute(group.get(), "body_j", joint.body_j);
+  std::vector<Series> series;
+  for (const char* name :
+       {"position", "force_joint", "torque_joint", "force_ground", "torque_ground"}) {
+    series.push_back(
+        impl_->create_series(group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+  }
+  series.push_back(
+      impl_->create_series(group.get(), "indeterminate", H5T_STD_I8LE, H5T_NATIVE_INT8, 0));
+  impl_->joint_series.push_back(std::move(series));
+  return static_cast<int>(impl_->joint_series.size()) - 1;
+}
+
+int ResultsWriter::add_driver(const std::string& name) {
+  impl_->demand_declaring();
+  demand_new_name(impl_->driver_names, name);
+  H5Handle group = create_group(impl_->group(impl_->drivers_group, "drivers"), name);
+  impl_->driver_series.push_back(
+      impl_->create_series(group.get(), "effort", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
+  return static_cast<int>(impl_->driver_series.size()) - 1;
+}
+
+int ResultsWriter::add_energy(const std::string& name) {
+  impl_->demand_declaring();
+  demand_new_name(impl_->energy_names, name);
+  impl_->energy_series.push_back(impl_->create_series(impl_->group(impl_->energy_group, "energy"),
+                                                      name.c_str(), H5T_IEEE_F64LE,
+                                                      H5T_NATIVE_DOUBLE, 0));
+  return static_cast<int>(impl_->energy_series.size()) - 1;
+}
+
+void ResultsWriter::append_sample(const Sample& sample) {
+  Impl& m = *impl_;
+  LIMBER_DEMAND(!m.finished);
+  LIMBER_DEMAND(sample.bodies.size() == m.body_series.size());
+  LIMBER_DEMAND(sample.joints.size() == m.joint_series.size());
+  LIMBER_DEMAND(sample.driver_efforts.size() == m.driver_series.size());
+  LIMBER_DEMAND(sample.energies.size() == m.energy_series.size());
+
+  // Bodies: pose, then modal coordinates.
+  for (std::size_t b = 0; b < sample.bodies.size(); ++b) {
+    const BodySample& body = sample.bodies[b];
+    std::vector<Series>& series = m.body_series[b];
+    m.append_vector3(series[0], body.position);
+    const Eigen::Quaterniond& q = body.orientation;
+    const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
+    m.append_row(series[1], wxyz);
+    if (m.body_nmodes[b] >= 0) {
+      LIMBER_DEMAND(body.modal_coordinates.size() == m.body_nmodes[b]);
+      m.append_row(series[2], body.modal_coordinates.data());
+    }
+  }
+
+  // Joints: point, reactions in both frames, redundancy flag.
+  for (std::size_t j = 0; j < sample.joints.size(); ++j) {
+    const JointSample& joint = sample.joints[j];
+    std::vector<Series>& series = m.joint_series[j];
+    m.append_vector3(series[0], joint.position);
+    m.append_vector3(series[1], joint.force_joint);
+    m.append_vector3(series[2], joint.torque_joint);
+    m.append_vector3(series[3], joint.force_ground);
+    m.append_vector3(series[4], joint.torque_ground);
+    const std::int8_t flag = joint.indeterminate ? 1 : 0;
+    m.append_row(series[5], &flag);
+  }
+
+  // Drivers, energies, constraint violations, step count.
+  for (std::size_t d = 0; d < sample.driver_efforts.size(); ++d) {
+    m.append_row(m.driver_series[d], &sample.driver_efforts[d]);
+  }
+  for (std::size_t e = 0; e < sample.energies.size(); ++e) {
+    m.append_row(m.energy_series[e], &sample.energies[e]);
+  }
+  m.append_row(m.position_violation, &sample.position_violation);
+  m.append_row(m.velocity_violation, &sample.velocity_violation);
+  m.append_row(m.steps, &sample.steps);
+
+  // Time last, then flush: a reader never sees a time without its data.
+  m.append_row(m.time, &sample.time);
+  ++m.ns;
+  check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
+}
+
+void ResultsWriter::finish(RunStatus status, const std::string& message) {
+  Impl& m = *impl_;
+  LIMBER_DEMAND(!m.finished);
+  const hid_t root = m.file.get();
+  write_string_attribute(root, "status", status == RunStatus::kOk ? "ok" : "failed");
+  write_string_attribute(root, "message", message);
+  check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
+
+  // Close every dataset and group before the file.
+  m.body_series.clear();
+  m.joint_series.clear();
+  m.driver_series.clear();
+  m.energy_series.clear();
+  m.position_violation = {};
+  m.velocity_violation = {};
+  m.steps = {};
+  m.time = {};
+  m.bodies_group.reset();
+  m.joints_group.reset();
+  m.drivers_group.reset();
+  m.energy_group.reset();
+  m.file.reset();
+  m.finished = true;
+}
+
+std::int64_t ResultsWriter::sample_count() const { return impl_->ns; }
+
+const std::filesystem::path& ResultsWriter::path() const { return impl_->path; }
+
+}  // namespace limber::results

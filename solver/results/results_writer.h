@@ -1,0 +1,139 @@
+// Writer of DIR/results.h5, the results file of a limber run (layout: docs/results-format.md).
+//
+// Use: construct (creates the file, root attributes, status "running"), declare every body,
+// joint, driver and energy, then call append_sample() once per output sample and finish() at the
+// end. Each append extends every per-sample dataset by one row and flushes the file, so a run
+// killed at any moment (even by SIGKILL) leaves a file that opens and holds every sample
+// appended before. The file uses the HDF5 1.8-compatible format (libver bounds "earliest"):
+// no "file open for writing" flag stays behind after a crash (see design/PITFALLS.md).
+//
+// Units are SI; orientations are unit quaternions (w, x, y, z) rotating body axes into ground.
+// Nothing here depends on solver classes: callers hand plain Eigen values.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace limber::results {
+
+// A rendering primitive attached to a body, placed in the body frame.
+struct ShapeSpec {
+  enum class Type { kBox, kCylinder, kSphere };
+  Type type = Type::kBox;
+  // box: edge lengths; cylinder: (radius, radius, length along local z); sphere: (r, r, r) [m].
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();
+  // Pose of the shape in the body frame.
+  Eigen::Vector3d offset_position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond offset_orientation = Eigen::Quaterniond::Identity();
+  // RGB in 0..1.
+  Eigen::Vector3d color{0.7, 0.7, 0.7};
+};
+
+struct RigidBodySpec {
+  std::string name;
+  std::vector<ShapeSpec> shapes;
+};
+
+// A flexible body: its undeformed FE mesh (body frame) and the translational part of its modes.
+struct FlexibleBodySpec {
+  std::string name;
+  // nn x 3 undeformed node positions in the body frame [m].
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> nodes;
+  // nn user node numbers (empty: 1..nn).
+  std::vector<int> node_ids;
+  // Beam elements (pairs of node indices, 0-based) and shell elements (quads, 0-based).
+  Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> lines;
+  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> quads;
+  // Radius used to draw beams as tubes [m].
+  double beam_radius = 0.0;
+  // (3 nn) x nm: column i is mode i's nodal translations, node-major (x0 y0 z0 x1 ...).
+  Eigen::MatrixXd mode_translations;
+  // nm natural frequencies [Hz].
+  Eigen::VectorXd frequencies_hz;
+  std::vector<ShapeSpec> shapes;
+};
+
+struct JointSpec {
+  std::string name;
+  std::string type;
+  std::string body_i;
+  std::string body_j;
+};
+
+// One body's state at a sample.
+struct BodySample {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();                   // frame origin [m]
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();      // ground <- body
+  Eigen::VectorXd modal_coordinates;  // nm values (flexible bodies), empty for rigid bodies
+};
+
+// One joint's reaction on body_j at a sample.
+struct JointSample {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();      // joint point in ground [m]
+  Eigen::Vector3d force_joint = Eigen::Vector3d::Zero();   // joint frame [N]
+  Eigen::Vector3d torque_joint = Eigen::Vector3d::Zero();  // joint frame [N m]
+  Eigen::Vector3d force_ground = Eigen::Vector3d::Zero();  // ground axes [N]
+  Eigen::Vector3d torque_ground = Eigen::Vector3d::Zero(); // ground axes, about the joint [N m]
+  bool indeterminate = false;  // minimum-norm reaction of a redundant joint
+};
+
+// Everything written for one output time; vectors follow declaration order.
+struct Sample {
+  double time = 0.0;  // [s]
+  std::vector<BodySample> bodies;
+  std::vector<JointSample> joints;
+  std::vector<double> driver_efforts;  // [N or N m]
+  std::vector<double> energies;        // [J]
+  double position_violation = 0.0;
+  double velocity_violation = 0.0;
+  std::int64_t steps = 0;  // cumulative accepted steps
+};
+
+enum class RunStatus { kOk, kFailed };
+
+class ResultsWriter {
+ public:
+  // Creates directory/results.h5 (the directory too, if missing), replacing an existing file.
+  // Throws InputError when the file cannot be created (message names the path).
+  ResultsWriter(const std::filesystem::path& directory, const std::string& title,
+                const std::string& case_file);
+  ~ResultsWriter();
+  ResultsWriter(const ResultsWriter&) = delete;
+  ResultsWriter& operator=(const ResultsWriter&) = delete;
+
+  // Declarations, allowed only before the first sample (else aborts: a caller bug).
+  // Names must be unique within their kind and must not contain '/'. Returns the index the
+  // body/joint/driver/energy takes in Sample's vectors.
+  int add_rigid_body(const RigidBodySpec& body);
+  int add_flexible_body(const FlexibleBodySpec& body);
+  int add_joint(const JointSpec& joint);
+  int add_driver(const std::string& name);
+  int add_energy(const std::string& name);
+
+  // Appends one row to every per-sample dataset and flushes the file to disk. Precondition:
+  // sample vectors sized as declared, modal_coordinates sized nm for flexible bodies (aborts
+  // otherwise).
+  void append_sample(const Sample& sample);
+
+  // Sets the root attributes status ("ok" / "failed") and message, flushes and closes the file.
+  void finish(RunStatus status, const std::string& message = "");
+
+  std::int64_t sample_count() const;
+  const std::filesystem::path& path() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Name of the results file inside a run directory.
+inline constexpr const char* kResultsFileName = "results.h5";
+
+}  // namespace limber::results

@@ -1,0 +1,52 @@
+// Test helpers: where a piece of text sits in an inline case, and checks that reading a
+// case fails with an InputError at that place with the expected words.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "io/case_reader.h"
+
+namespace limber::test {
+
+inline constexpr const char* kCaseName = "test.yaml";
+
+// "test.yaml:L:C" of the `occurrence`-th (0-based) appearance of `marker` in `text`.
+inline std::string location_of(const std::string& text, const std::string& marker,
+                               int occurrence = 0) {
+  std::size_t at = text.find(marker);
+  for (int k = 0; k < occurrence && at != std::string::npos; ++k) at = text.find(marker, at + 1);
+  if (at == std::string::npos) return "marker '" + marker + "' not in the case text";
+  int line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < at; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return std::string(kCaseName) + ":" + std::to_string(line) + ":" +
+         std::to_string(at - line_start + 1);
+}
+
+// Reads `text`; expects an InputError located at `where` whose message holds `words`.
+inline ::testing::AssertionResult fails_at(const std::string& text, const std::string& where,
+                                           const std::string& words) {
+  try {
+    io::read_case_text(text, kCaseName);
+  } catch (const InputError& error) {
+    const std::string got = error.what();
+    if (got.rfind(where + ": ", 0) != 0) {
+      return ::testing::AssertionFailure() << "expected the location " << where << ", got: " << got;
+    }
+    if (got.find(words) == std::string::npos) {
+      return ::testing::AssertionFailure() << "expected the words '" << words << "', got: " << got;
+    }
+    return ::testing::AssertionSuccess() << got;
+  }
+  return ::testing::AssertionFailure() << "expected an InputError, got none";
+}
+
+}  // namespace limber::test

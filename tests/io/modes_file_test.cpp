@@ -1,0 +1,155 @@
+// modes.h5: everything written reads back bit for bit.
+#include "io/modes_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "core/error.h"
+#include "io/case_reader.h"
+#include "io/hdf5_file.h"
+
+namespace limber::io {
+namespace {
+
+// A file name in the test scratch directory, unique to this process.
+std::string scratch_path(const std::string& name) {
+  return ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
+}
+
+// A body with beams, a plate and a fixed node (the mode data below is synthetic).
+fe::FeModel small_model() {
+  const std::string text = R"(materials: {steel: {E: 2e11, nu: 0.3, rho: 7800}}
+sections: {s: {shape: circle, diameter: 0.01}}
+flexible_bodies:
+  b:
+    beams: [{from: [0, 0, 0], to: [1, 0, 0], elements: 2, section: s, material: steel}]
+    plates: [{origin: [0, 0, 1], edge_x: [1, 0, 0], edge_y: [0, 1, 0], nx: 2, ny: 1,
+              thickness: 0.01, material: steel}]
+    fixed: [{nodes: 1, dofs: [ux, rz]}]
+    modes: {normal: 3}
+)";
+  return read_case_text(text, "small.yaml").flexible_bodies.at(0).model;
+}
+
+modal::ModeSet synthetic_modes(int n_dof, int nm) {
+  std::srand(7);
+  modal::ModeSet set;
+  set.shapes = Eigen::MatrixXd::Random(n_dof, nm);
+  set.modes = {{modal::ModeKind::kNormal, 12.5, "normal 1"},
+               {modal::ModeKind::kConstraint, 340.25, "constraint uz at node 3"},
+               {modal::ModeKind::kAttachment, 1e4 / 3.0, "attachment \"rx\" at node 5 (µ)"}};
+  set.modal_stiffness = Eigen::VectorXd::Random(nm);
+  set.rigid_modes = {{modal::ModeKind::kRigid, 1e-9, "rigid 1"},
+                     {modal::ModeKind::kRigid, -2e-9, "rigid 2"}};
+  modal::ModalInvariants& inv = set.invariants;
+  inv.mass = 12.345;
+  inv.first_moment = Eigen::Vector3d::Random();
+  inv.inertia = Eigen::Matrix3d::Random();
+  inv.translation_coupling = Eigen::MatrixXd::Random(3, nm);
+  inv.rotation_coupling = Eigen::MatrixXd::Random(3, nm);
+  for (int i = 0; i < nm; ++i) {
+    inv.inertia_first_order.push_back(Eigen::Matrix3d::Random());
+    inv.rotation_coupling_first_order.push_back(Eigen::MatrixXd::Random(3, nm));
+    for (int j = 0; j < nm; ++j) inv.inertia_second_order.push_back(Eigen::Matrix3d::Random());
+  }
+  return set;
+}
+
+void expect_same_infos(const std::vector<modal::ModeInfo>& got,
+                       const std::vector<modal::ModeInfo>& want) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].kind, want[i].kind);
+    EXPECT_EQ(got[i].frequency_hz, want[i].frequency_hz);
+    EXPECT_EQ(got[i].label, want[i].label);
+  }
+}
+
+TEST(ModesFile, RoundTripIsExact) {
+  const fe::FeModel model = small_model();
+  const modal::ModeSet set = synthetic_modes(model.dof_count(), 3);
+  const std::string path = scratch_path("modes_round_trip.h5");
+  write_modes_file(path, "round trip", "small.yaml",
+                   {{"first", &model, &set}, {"a_second", &model, &set}});
+
+  const ModesFile file = read_modes_file(path);
+  EXPECT_EQ(file.title, "round trip");
+  EXPECT_EQ(file.case_file, "small.yaml");
+  // Bodies keep their written order, not HDF5's alphabetical one.
+  ASSERT_EQ(file.bodies.size(), 2u);
+  EXPECT_EQ(file.bodies[0].name, "first");
+  EXPECT_EQ(file.bodies[1].name, "a_second");
+
+  // Doubles are stored as IEEE float64: every value must come back identical.
+  const BodyModes& body = file.bodies[0];
+  EXPECT_EQ(body.nodes, model.node_positions);
+  EXPECT_EQ(body.node_ids, model.node_ids);
+  ASSERT_EQ(body.lines.size(), model.beams.size());
+  EXPECT_EQ(body.lines[1], model.beams[1].nodes);
+  ASSERT_EQ(body.quads.size(), model.shells.size());
+  EXPECT_EQ(body.quads[1], model.shells[1].nodes);
+  ASSERT_EQ(body.fixed_dofs.size(), 2u);
+  EXPECT_EQ(body.fixed_dofs[1].dof, fe::Dof::kRz);
+
+  EXPECT_EQ(body.mode_set.shapes, set.shapes);
+  EXPECT_EQ(body.mode_set.modal_stiffness, set.modal_stiffness);
+  expect_same_infos(body.mode_set.modes, set.modes);
+  expect_same_infos(body.mode_set.rigid_modes, set.rigid_modes);
+
+  const modal::ModalInvariants& got = body.mode_set.invariants;
+  const modal::ModalInvariants& want = set.invariants;
+  EXPECT_EQ(got.mass, want.mass);
+  EXPECT_EQ(got.first_moment, want.first_moment);
+  EXPECT_EQ(got.inertia, want.inertia);
+  EXPECT_EQ(got.translation_coupling, want.translation_coupling);
+  EXPECT_EQ(got.rotation_coupling, want.rotation_coupling);
+  ASSERT_EQ(got.inertia_first_order.size(), 3u);
+  ASSERT_EQ(got.inertia_second_order.size(), 9u);
+  ASSERT_EQ(got.rotation_coupling_first_order.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(got.inertia_first_order[i], want.inertia_first_order[i]);
+    EXPECT_EQ(got.rotation_coupling_first_order[i], want.rotation_coupling_first_order[i]);
+  }
+  EXPECT_EQ(got.inertia_second_order[7], want.inertia_second_order[7]);
+
+  // Translations are the first three DOFs of every node of every shape.
+  ASSERT_EQ(body.translations.size(), 3u);
+  EXPECT_EQ(body.translations[2].rows(), model.node_count());
+  EXPECT_EQ(body.translations[2](4, 1), set.shapes(6 * 4 + 1, 2));
+  EXPECT_EQ(body.translations[0](0, 2), set.shapes(2, 0));
+  std::filesystem::remove(path);
+}
+
+TEST(ModesFile, LayoutHoldsTheDocumentedAttributes) {
+  const fe::FeModel model = small_model();
+  const modal::ModeSet set = synthetic_modes(model.dof_count(), 3);
+  const std::string path = scratch_path("modes_layout.h5");
+  write_modes_file(path, "layout", "small.yaml", {{"b", &model, &set}});
+  const H5Group file = H5Group::open_file(path);
+  EXPECT_EQ(file.read_string_attribute("format"), "limber-modes");
+  EXPECT_EQ(file.read_int_attribute("version"), 1);
+  const H5Group body = file.open_group("bodies").open_group("b");
+  EXPECT_EQ(body.read_int_attribute("dof_count"), model.dof_count());
+  EXPECT_EQ(body.read_int_attribute("mode_count"), 3);
+  H5Dims dims;
+  body.open_group("modes").read_doubles("translations", &dims);
+  EXPECT_EQ(dims, (H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
+  body.open_group("modes").read_doubles("shapes", &dims);
+  EXPECT_EQ(dims, (H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
+  EXPECT_EQ(body.open_group("dofs").read_strings("names"),
+            (std::vector<std::string>{"ux", "uy", "uz", "rx", "ry", "rz"}));
+  std::filesystem::remove(path);
+}
+
+TEST(ModesFile, ReadingSomethingElseIsAnInputError) {
+  EXPECT_THROW(read_modes_file(scratch_path("does_not_exist.h5")), InputError);
+  const std::string path = scratch_path("not_modes.h5");
+  H5Group::create_file(path).write_attribute("format", "something-else");
+  EXPECT_THROW(read_modes_file(path), InputError);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace limber::io

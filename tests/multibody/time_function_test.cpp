@@ -1,0 +1,70 @@
+// Driver and actuator functions: closed-form values and derivatives, and derivatives
+// against central differences.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "multibody/time_function.h"
+
+namespace limber::multibody {
+namespace {
+
+// Central differences of smooth functions with h = 1e-5: truncation ~ h² f''' ≈ 1e-10 ·
+// |f'''| (≤ 1e3 here), rounding ~ 1e-16 |f| / h ≈ 1e-11: bound 1e-6.
+void expect_derivatives_match(const TimeFunction& f, double x) {
+  const double h = 1e-5;
+  const FunctionValue v = f.evaluate(x), plus = f.evaluate(x + h), minus = f.evaluate(x - h);
+  EXPECT_NEAR(v.first, (plus.value - minus.value) / (2 * h), 1e-6) << "x = " << x;
+  EXPECT_NEAR(v.second, (plus.first - minus.first) / (2 * h), 1e-6) << "x = " << x;
+}
+
+TEST(TimeFunction, ConstantSpeed) {
+  const FunctionValue v = TimeFunction::constant_speed(0.5, 125.0).evaluate(0.02);
+  EXPECT_DOUBLE_EQ(v.value, 0.5 + 125.0 * 0.02);
+  EXPECT_DOUBLE_EQ(v.first, 125.0);
+  EXPECT_DOUBLE_EQ(v.second, 0.0);
+}
+
+TEST(TimeFunction, RampsReachSpeedWithHalfTheDistance) {
+  // ∫₀¹ s = ½ for both shapes: f(T) = f0 + ω T / 2, then f grows at ω.
+  for (RampShape shape : {RampShape::kCubic, RampShape::kQuintic}) {
+    const TimeFunction f = TimeFunction::ramp(1.0, 40.0, 0.5, shape);
+    EXPECT_NEAR(f.evaluate(0.5).value, 1.0 + 40.0 * 0.25, 1e-12);
+    EXPECT_NEAR(f.evaluate(0.7).value, 1.0 + 40.0 * 0.25 + 40.0 * 0.2, 1e-12);
+    EXPECT_NEAR(f.evaluate(0.25).first, 20.0, 1e-12);  // s(½) = ½ by symmetry
+    EXPECT_DOUBLE_EQ(f.evaluate(0.0).first, 0.0);
+    for (double t : {0.05, 0.17, 0.33, 0.49}) expect_derivatives_match(f, t);
+  }
+  // The quintic also starts and ends with zero acceleration.
+  const TimeFunction q = TimeFunction::ramp(0.0, 40.0, 0.5, RampShape::kQuintic);
+  EXPECT_NEAR(q.evaluate(1e-9).second, 0.0, 1e-9);
+  EXPECT_NEAR(q.evaluate(0.5 - 1e-9).second, 0.0, 1e-6);
+}
+
+TEST(TimeFunction, TablesInterpolate) {
+  // Linear: exact on each segment. Natural cubic spline: exact for linear data, passes
+  // through the knots, and its derivatives match differences between knots.
+  const TimeFunction linear = TimeFunction::table({0, 1, 3}, {0, 2, 1}, TableInterpolation::kLinear);
+  EXPECT_DOUBLE_EQ(linear.evaluate(0.25).value, 0.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(2.0).value, 1.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(2.0).first, -0.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(5.0).value, 1.0);
+  const TimeFunction line = TimeFunction::table({0, 0.5, 2, 3}, {1, 2, 5, 7}, TableInterpolation::kCubic);
+  EXPECT_NEAR(line.evaluate(1.3).value, 1 + 2 * 1.3, 1e-14);
+  EXPECT_NEAR(line.evaluate(1.3).second, 0.0, 1e-13);
+  const TimeFunction spline = TimeFunction::table({0, 1, 2, 4}, {0, 1, 0, 2}, TableInterpolation::kCubic);
+  EXPECT_NEAR(spline.evaluate(2.0).value, 0.0, 1e-14);
+  for (double x : {0.3, 1.5, 2.7, 3.9}) expect_derivatives_match(spline, x);
+  // Continuity of the slope across a knot.
+  EXPECT_NEAR(spline.evaluate(1.0 - 1e-9).first, spline.evaluate(1.0 + 1e-9).first, 1e-7);
+}
+
+TEST(TimeFunction, BadInputIsRejected) {
+  EXPECT_THROW(TimeFunction::ramp(0, 1, 0.0, RampShape::kCubic), InputError);
+  EXPECT_THROW(TimeFunction::table({0, 1, 1}, {0, 1, 2}, TableInterpolation::kLinear), InputError);
+  EXPECT_THROW(TimeFunction::table({0}, {0}, TableInterpolation::kLinear), InputError);
+}
+
+}  // namespace
+}  // namespace limber::multibody

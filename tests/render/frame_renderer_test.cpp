@@ -1,0 +1,188 @@
+// Pixels of a known scene rendered offscreen with DISPLAY unset: background colour, the red box
+// where the camera projects its centre, the colour bar, the plate moving between frames, and
+// no VTK warning (in particular no "GLEW could not be initialized").
+#include "frame_renderer.h"
+
+#include "scene.h"
+#include "test_dir.h"
+#include "test_results.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkNew.h>
+#include <vtkOutputWindow.h>
+#include <vtkStringOutputWindow.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace limber::render {
+namespace {
+
+using testing::TestScene;
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+
+// Frames are 8-bit: a flat colour comes back within 1 of round(255 c) (rounding of the blend).
+constexpr int kColorTolerance = 1;
+
+bool is_background(const std::array<int, 3>& p) {
+  for (int c = 0; c < 3; ++c) {
+    if (std::abs(p[c] - static_cast<int>(std::lround(255 * kBackgroundColor[c]))) > kColorTolerance)
+      return false;
+  }
+  return true;
+}
+
+class FrameRendererTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // Headless: no X display may be needed.
+    unsetenv("DISPLAY");
+    vtkOutputWindow::SetInstance(messages_);
+  }
+  void TearDown() override { vtkOutputWindow::SetInstance(nullptr); }
+
+  Results scene_results(const TestScene& scene, const std::string& name) {
+    const auto dir = testing::fresh_directory(name);
+    testing::write_test_results(dir, scene);
+    return read_results(dir);
+  }
+
+  RenderOptions options(CameraPreset camera) const {
+    RenderOptions o;
+    o.width = kWidth;
+    o.height = kHeight;
+    o.camera = camera;
+    return o;
+  }
+
+  vtkNew<vtkStringOutputWindow> messages_;
+};
+
+TEST_F(FrameRendererTest, BackgroundBoxAndColorBar) {
+  const Results results = scene_results(TestScene{}, "pixels");
+  FrameRenderer renderer(results, options(CameraPreset::kIso), 0.0, 1.0);
+  const Image image = renderer.render(0.5);
+  ASSERT_EQ(image.width, kWidth);
+  ASSERT_EQ(image.height, kHeight);
+
+  // Background in the top corners (nothing drawn there).
+  EXPECT_TRUE(is_background(image.pixel(kWidth - 2, 1)));
+  EXPECT_TRUE(is_background(image.pixel(1, 1)));
+
+  // The red box (0.85, 0.1, 0.1) where its centre projects: red dominates after shading.
+  const Eigen::Vector2d box = renderer.project(testing::box_position(0.5));
+  const auto p = image.pixel(static_cast<int>(box.x()), static_cast<int>(box.y()));
+  EXPECT_GT(p[0], 80) << p[0] << " " << p[1] << " " << p[2];
+  EXPECT_GT(p[0], 3 * p[1]);
+  EXPECT_GT(p[0], 3 * p[2]);
+
+  // Colour bar: both ends of the blue-to-red table appear in its box.
+  int blue = 0, red = 0;
+  for (int y = static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * kHeight);
+       y < static_cast<int>((1.0 - kColorBarBox[1]) * kHeight); ++y) {
+    for (int x = static_cast<int>(kColorBarBox[0] * kWidth); x < kWidth; ++x) {
+      const auto c = image.pixel(x, y);
+      if (c[2] > 200 && c[0] < 40 && c[1] < 40) ++blue;
+      if (c[0] > 200 && c[1] < 40 && c[2] < 40) ++red;
+    }
+  }
+  EXPECT_GT(blue, 10);
+  EXPECT_GT(red, 10);
+
+  // No VTK message at all (GLEW, shaders, framebuffers).
+  EXPECT_EQ(std::string(messages_->GetOutput()), "");
+  // Colour range = largest |u| over the run: the beam tip, B sqrt(sin^2 + cos^2) = B = 0.05 m,
+  // or the plate centre, sqrt(A^2 + (A/2 * 0.5)^2) at the samples' peak; the larger one.
+  const TestScene scene;
+  double umax = 0.0;
+  for (int k = 0; k < scene.samples; ++k) {
+    const double t = scene.duration * k / (scene.samples - 1);
+    umax = std::max(umax, testing::beam_displacement(scene, 1.0, t).norm());
+    for (int i = 0; i <= scene.nx; ++i) {
+      for (int j = 0; j <= scene.ny; ++j) {
+        umax = std::max(umax, testing::plate_displacement(scene, scene.lx * i / scene.nx,
+                                                          scene.ly * j / scene.ny, t)
+                                  .norm());
+      }
+    }
+  }
+  // Same arithmetic up to summation order: 1e-12 relative.
+  EXPECT_NEAR(renderer.color_range_max(), umax, 1e-12 * umax);
+}
+
+TEST_F(FrameRendererTest, NoColorBarWithoutFlexibleBodies) {
+  TestScene scene;
+  scene.plates = 0;
+  scene.with_beam = false;
+  const Results results = scene_results(scene, "no_bar");
+  FrameRenderer renderer(results, options(CameraPreset::kIso), 0.0, 1.0);
+  const Image image = renderer.render(0.5);
+  // The colour bar's box holds neither end of the colour table (same criterion as above).
+  int saturated = 0;
+  for (int y = static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * kHeight);
+       y < static_cast<int>((1.0 - kColorBarBox[1]) * kHeight); ++y) {
+    for (int x = static_cast<int>(kColorBarBox[0] * kWidth); x < kWidth; ++x) {
+      const auto c = image.pixel(x, y);
+      if (c[2] > 200 && c[0] < 40 && c[1] < 40) ++saturated;
+      if (c[0] > 200 && c[1] < 40 && c[2] < 40) ++saturated;
+    }
+  }
+  EXPECT_EQ(saturated, 0);
+}
+
+TEST_F(FrameRendererTest, DeformedPlateMovesBetweenFrames) {
+  // Front view (looking along +y): the plate is seen edge-on; its centre line rises to
+  // z = 0.3 + A at t = 0.25 s and sinks to z = 0.3 - A at t = 0.75 s (A = 0.1 m).
+  TestScene scene;
+  scene.with_box = false;
+  scene.samples = 41;  // the peaks are samples: t = 0.25 and 0.75 s
+  const Results results = scene_results(scene, "moving");
+  FrameRenderer renderer(results, options(CameraPreset::kFront), 0.0, 1.0);
+  const Image up = renderer.render(0.25);
+  const Eigen::Vector2d above = renderer.project({0.5, 0.3, 0.36});
+  const Eigen::Vector2d below = renderer.project({0.5, 0.3, 0.24});
+  const Image down = renderer.render(0.75);
+  const auto pixel = [](const Image& image, const Eigen::Vector2d& at) {
+    return image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y()));
+  };
+  // The fixed camera projects both points to the same pixels in both frames.
+  EXPECT_FALSE(is_background(pixel(up, above)));
+  EXPECT_TRUE(is_background(pixel(up, below)));
+  EXPECT_TRUE(is_background(pixel(down, above)));
+  EXPECT_FALSE(is_background(pixel(down, below)));
+  EXPECT_EQ(std::string(messages_->GetOutput()), "");
+}
+
+TEST_F(FrameRendererTest, ScaleFactorAmplifiesTheDeformation) {
+  // With scale 2 the plate centre reaches z = 0.3 + 2A = 0.5 m at t = 0.25 s.
+  TestScene scene;
+  scene.with_box = false;
+  scene.with_beam = false;
+  scene.samples = 41;
+  const Results results = scene_results(scene, "scaled");
+  RenderOptions o = options(CameraPreset::kFront);
+  // Unscaled: nothing at z = 0.46 m above the centre.
+  {
+    FrameRenderer plain(results, o, 0.0, 1.0);
+    const Image image = plain.render(0.25);
+    const Eigen::Vector2d high = plain.project({0.5, 0.3, 0.46});
+    EXPECT_TRUE(is_background(image.pixel(static_cast<int>(high.x()), static_cast<int>(high.y()))));
+  }
+  // Scaled by 2: the plate covers that point; the note "deformation x 2" is drawn top right.
+  o.scale = 2.0;
+  FrameRenderer scaled(results, o, 0.0, 1.0);
+  const Image image = scaled.render(0.25);
+  const Eigen::Vector2d high = scaled.project({0.5, 0.3, 0.46});
+  EXPECT_FALSE(is_background(image.pixel(static_cast<int>(high.x()), static_cast<int>(high.y()))));
+  int note = 0;
+  for (int y = 0; y < kHeight / 10; ++y) {
+    for (int x = kWidth / 2; x < kWidth; ++x) note += is_background(image.pixel(x, y)) ? 0 : 1;
+  }
+  EXPECT_GT(note, 20);
+}
+
+}  // namespace
+}  // namespace limber::render
