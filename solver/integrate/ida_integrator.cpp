@@ -21,6 +21,41 @@ double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 // Non-finite residuals IDA may recover from (by cutting the step) within one advance_to.
 constexpr int kMaxNonFiniteRetries = 10;
 
+// Weighted RMS norm of x with IDA's weights 1/(rtol |y| + atol).
+double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double rtol, double atol) {
+  if (x.size() == 0) return 0.0;
+  const Eigen::ArrayXd weight = 1.0 / (rtol * y.array().abs() + atol);
+  return std::sqrt((x.array() * weight).square().mean());
+}
+
+// First step from the second derivative (Hairer, Nørsett & Wanner, Solving ODEs I, §II.4):
+// ‖y'‖ and ‖y''‖ of [q, v] in IDA's weights, y'' by a difference of accelerations over an
+// explicit Euler step. IDA's own choice, 0.5/‖y'‖, is first-order: a body at rest with an
+// acceleration a and atol = 1e-10 gets h0 ~ 1e-10/a, where the multipliers, which carry
+// round-off divided by h, cannot converge in Newton.
+double initial_step(const MechanicalSystem& system, const InitialState& x0,
+                    const Eigen::VectorXd& vdot, const IntegratorOptions& options) {
+  const int nq = system.nq(), nv = system.nv();
+  Eigen::MatrixXd N(nq, nv), N1(nq, nv);
+  system.kinematic_matrix(x0.q, N);
+  Eigen::VectorXd y(nq + nv), yp(nq + nv);
+  y << x0.q, x0.v;
+  yp << N * x0.v, vdot;
+  const double d0 = weighted_rms(y, y, options.rtol, options.atol);
+  const double d1 = weighted_rms(yp, y, options.rtol, options.atol);
+  const double h_trial = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+  Eigen::VectorXd q1, v1 = x0.v + h_trial * vdot, vdot1, lambda1;
+  system.integrate_coordinates(x0.q, h_trial * x0.v, q1);
+  if (!solve_accelerations(system, x0.t + h_trial, q1, v1, vdot1, lambda1).ok()) return h_trial;
+  system.kinematic_matrix(q1, N1);
+  Eigen::VectorXd ypp(nq + nv);
+  ypp << (N1 * v1 - N * x0.v) / h_trial, (vdot1 - vdot) / h_trial;
+  const double d2 = weighted_rms(ypp, y, options.rtol, options.atol);
+  const double h_second = std::max(d1, d2) <= 1e-15 ? std::max(1e-6, 1e-3 * h_trial)
+                                                   : std::sqrt(0.01 / std::max(d1, d2));
+  return std::min(100.0 * h_trial, h_second);
+}
+
 }  // namespace
 
 struct IdaIntegrator::Impl {
@@ -38,7 +73,7 @@ struct IdaIntegrator::Impl {
   int nonfinite_residuals = 0;  // in the current advance_to
 
   SUNContext context = nullptr;
-  N_Vector y = nullptr, yp = nullptr, id = nullptr;
+  N_Vector y = nullptr, yp = nullptr, id = nullptr, atol_vec = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver solver = nullptr;
   void* ida = nullptr;
@@ -56,11 +91,12 @@ struct IdaIntegrator::Impl {
     if (y != nullptr) N_VDestroy(y);
     if (yp != nullptr) N_VDestroy(yp);
     if (id != nullptr) N_VDestroy(id);
+    if (atol_vec != nullptr) N_VDestroy(atol_vec);
     if (context != nullptr) SUNContext_Free(&context);
     ida = nullptr;
     solver = nullptr;
     A = nullptr;
-    y = yp = id = nullptr;
+    y = yp = id = atol_vec = nullptr;
   }
 
   void unpack(const double* y_data, const double* yp_data) {
@@ -248,13 +284,22 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   int flag = IDAInit(s.ida, ida_residual, x0.t, s.y, s.yp);
   flag = flag < 0 ? flag : IDASetUserData(s.ida, &s);
   flag = flag < 0 ? flag : IDASetErrHandlerFn(s.ida, ida_error_handler, &s);
-  flag = flag < 0 ? flag : IDASStolerances(s.ida, options.rtol, options.atol);
+  // μ vanishes on the exact solution; its Newton iterates carry position round-off divided by
+  // the step (1e-16/h), which atol = 1e-10 would reject at small h. Its weight is therefore
+  // loose (atol 1): the positions it corrects are tested with their own weights.
+  s.atol_vec = N_VNew_Serial(s.n, s.context);
+  Eigen::Map<Eigen::VectorXd> atol(N_VGetArrayPointer(s.atol_vec), s.n);
+  atol.setConstant(options.atol);
+  atol.segment(s.imu, s.nc + s.nh).setConstant(1.0);
+  flag = flag < 0 ? flag : IDASVtolerances(s.ida, options.rtol, s.atol_vec);
   flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
   flag = flag < 0 ? flag : IDASetSuppressAlg(s.ida, SUNTRUE);
   flag = flag < 0 ? flag : IDASetMaxNumSteps(s.ida, options.max_steps);
   if (flag >= 0 && options.max_step > 0.0) flag = IDASetMaxStep(s.ida, options.max_step);
-  if (flag >= 0 && options.initial_step > 0.0) flag = IDASetInitStep(s.ida, options.initial_step);
+  const double h0 = options.initial_step > 0.0 ? options.initial_step
+                                               : initial_step(system, {x0.t, q, v}, vdot, options);
+  flag = flag < 0 ? flag : IDASetInitStep(s.ida, h0);
   if (flag >= 0 && std::isfinite(options.t_stop)) flag = IDASetStopTime(s.ida, options.t_stop);
   LIMBER_DEMAND(flag >= 0);
   return Status::success(x0.t);
