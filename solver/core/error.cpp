@@ -7,9 +7,10 @@ namespace limber {
 
 std::string SourceLocation::to_string() const {
   if (!known()) return {};
+  // Appended piecewise: `":" + std::to_string(n)` trips GCC 12's false -Wrestrict alarm.
   std::string text = file;
-  if (line > 0) text += ":" + std::to_string(line);
-  if (line > 0 && column > 0) text += ":" + std::to_string(column);
+  if (line > 0) text.append(":").append(std::to_string(line));
+  if (line > 0 && column > 0) text.append(":").append(std::to_string(column));
   return text;
 }
 

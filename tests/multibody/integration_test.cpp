@@ -197,7 +197,9 @@ void check_slider_crank(integrate::IntegratorOptions options, double x_tolerance
   EXPECT_LT(max_balance_error, balance_tolerance * max_kinetic) << max_balance_error << " J of " << max_kinetic;
   // Both ways to the driver effort agree (the driver row is determinate) up to the
   // consistency of the integrator's (v̇, λ).
-  if (work_tolerance > 0.0) EXPECT_LT(max_work_difference, work_tolerance * max_kinetic);
+  if (work_tolerance > 0.0) {
+    EXPECT_LT(max_work_difference, work_tolerance * max_kinetic);
+  }
 }
 
 TEST(Integration, SliderCrankIda) {
