@@ -35,10 +35,11 @@ Model pendulum_chain(int n, double m, double L, double J, double theta0) {
     const std::string name = "bob" + std::to_string(k);
     const Eigen::Vector3d pivot = (k - 1) * L * e, position = k * L * e;
     builder.add_rigid_body(body_spec(name, m, Eigen::Vector3d(J, J, J), position));
-    builder.add_marker_at("J" + std::to_string(k) + ".i", previous, pivot, R_axis);
-    builder.add_marker_at("J" + std::to_string(k) + ".j", name, pivot, R_axis);
-    builder.add_joint("J" + std::to_string(k), JointType::kRevolute, "J" + std::to_string(k) + ".i",
-                      "J" + std::to_string(k) + ".j");
+    std::string joint = "J";  // built by appending: GCC 12 warns falsely on "J" + to_string(k)
+    joint += std::to_string(k);
+    builder.add_marker_at(joint + ".i", previous, pivot, R_axis);
+    builder.add_marker_at(joint + ".j", name, pivot, R_axis);
+    builder.add_joint(joint, JointType::kRevolute, joint + ".i", joint + ".j");
     previous = name;
   }
   return builder.build();
