@@ -24,6 +24,21 @@ target_include_directories(limber_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR
 target_link_libraries(limber_cholmod INTERFACE
   ${CHOLMOD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY} LAPACK::LAPACK BLAS::BLAS)
 
+# Rendering (render/ only; the solver links nothing graphical). VTK 9.1's named modules, each
+# linked by name where it is used, never ${VTK_LIBRARIES}. OpenGL::EGL: the headless context
+# (docs/rendering.md). PNG (libpng) and Threads: the PNG writer thread.
+# render/ and its tests, then report/'s charts. Debian's ChartsCore pulls VTK::mpi, whose link
+# interface names MPI::MPI_C, so MPI must be found first.
+find_package(MPI REQUIRED COMPONENTS C)
+find_package(VTK REQUIRED COMPONENTS
+  CommonCore CommonDataModel CommonExecutionModel FiltersCore FiltersSources FiltersGeneral
+  IOImage IOXML IOXMLParser RenderingCore RenderingOpenGL2 RenderingAnnotation
+  RenderingFreeType InteractionStyle glew
+  ChartsCore ViewsContext2D RenderingContext2D RenderingContextOpenGL2)
+find_package(OpenGL REQUIRED COMPONENTS EGL)
+find_package(PNG REQUIRED)
+find_package(Threads REQUIRED)
+
 add_library(limber_hdf5 INTERFACE)
 target_include_directories(limber_hdf5 SYSTEM INTERFACE ${HDF5_C_INCLUDE_DIRS})
 target_link_libraries(limber_hdf5 INTERFACE ${HDF5_C_LIBRARIES})

@@ -1,10 +1,6 @@
 #include "png_frame_writer.h"
 
-#include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPNGWriter.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkPointData.h>
+#include <png.h>
 
 #include <chrono>
 #include <cstring>
@@ -13,24 +9,23 @@
 namespace limber::render {
 namespace {
 
-// Writes one RGB image as PNG (compression level 1: fast, files ~2x level 6).
+// Writes one RGB image as PNG through libpng's simplified API. PNG_IMAGE_FLAG_FAST (no row
+// filtering, fast deflate) encodes a 1280 x 720 frame in about 6 ms where vtkPNGWriter at
+// compression level 1 took about 26 ms (libpng's adaptive filtering tries five filters per
+// row); the files are about a third larger (docs/benchmarks.md).
 void write_png(const Image& image, const std::filesystem::path& path) {
-  // VTK images are stored bottom-up: flip rows while copying.
-  vtkNew<vtkImageData> data;
-  data->SetDimensions(image.width, image.height, 1);
-  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* target = static_cast<std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t row = static_cast<std::size_t>(image.width) * 3;
-  for (int y = 0; y < image.height; ++y) {
-    std::memcpy(target + row * (image.height - 1 - y), image.rgb.data() + row * y, row);
-  }
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetCompressionLevel(1);
-  writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  if (writer->GetErrorCode() != 0) {
-    throw std::runtime_error("cannot write frame '" + path.string() + "'");
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width);
+  png.height = static_cast<png_uint_32>(image.height);
+  png.format = PNG_FORMAT_RGB;
+  png.flags = PNG_IMAGE_FLAG_FAST;
+  // Rows from the top, tightly packed (row stride 0: width * 3).
+  if (png_image_write_to_file(&png, path.c_str(), 0, image.rgb.data(), 0, nullptr) == 0) {
+    const std::string reason = png.message;
+    png_image_free(&png);
+    throw std::runtime_error("cannot write frame '" + path.string() + "': " + reason);
   }
 }
 

@@ -1,6 +1,6 @@
 // Encodes and writes PNG frames on a worker thread, beside rendering: the renderer hands over
-// an image and goes on drawing the next frame (PNG at compression level 1 costs about as much
-// as drawing a frame in software; docs/benchmarks.md).
+// an image and goes on drawing the next frame (libpng, fast mode: about 6 ms for 1280 x 720,
+// a fraction of a software-drawn frame; docs/benchmarks.md).
 #pragma once
 
 #include "frame_renderer.h"

@@ -21,6 +21,8 @@ struct RenderOptions {
   std::optional<double> t0;   // time range [s]; default: the whole run
   std::optional<double> t1;
   bool ground = true;         // draw a ground plane under the scene
+  bool time_stamp = true;     // "t = ... s" bottom left (off for mode shapes)
+  bool fxaa = true;           // anti-aliasing pass: smooth edges, about half the draw time in llvmpipe
   bool write_png = true;      // DIR/frames/frame_00000.png ...
   bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample
   bool write_video = true;    // DIR/animation.mp4 through the ffmpeg program

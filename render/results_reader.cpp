@@ -1,8 +1,6 @@
 #include "results_reader.h"
 
-#include "core/error.h"
-
-#include <hdf5.h>
+#include "h5_reader.h"
 
 #include <algorithm>
 #include <utility>
@@ -10,164 +8,7 @@
 namespace limber::render {
 namespace {
 
-// Owns an HDF5 identifier; closes it with the call matching its kind.
-class Id {
- public:
-  explicit Id(hid_t id = -1) : id_(id) {}
-  Id(Id&& other) noexcept : id_(std::exchange(other.id_, -1)) {}
-  Id& operator=(Id&&) = delete;
-  Id(const Id&) = delete;
-  ~Id() {
-    if (id_ < 0) return;
-    switch (H5Iget_type(id_)) {
-      case H5I_FILE: H5Fclose(id_); break;
-      case H5I_GROUP: H5Gclose(id_); break;
-      case H5I_DATASET: H5Dclose(id_); break;
-      case H5I_DATASPACE: H5Sclose(id_); break;
-      case H5I_DATATYPE: H5Tclose(id_); break;
-      case H5I_ATTR: H5Aclose(id_); break;
-      default: break;
-    }
-  }
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-};
-
-// Silences HDF5's error-stack printing; failures become InputErrors below.
-class SilentHdf5Errors {
- public:
-  SilentHdf5Errors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
-class Reader {
- public:
-  Reader(hid_t file, std::filesystem::path path) : file_(file), path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& expected, const std::string& got) const {
-    throw InputError("results file '" + path_.string() + "': expected " + expected + ", got " +
-                     got);
-  }
-
-  bool exists(const std::string& object) const {
-    return H5Lexists(file_, object.c_str(), H5P_DEFAULT) > 0;
-  }
-
-  // A string attribute (fixed or variable length); `fallback` when absent and optional.
-  std::string string_attribute(const std::string& object, const char* name, bool required = true,
-                               const std::string& fallback = "") const {
-    if (H5Aexists_by_name(file_, object.c_str(), name, H5P_DEFAULT) <= 0) {
-      if (required) fail(std::string("attribute '") + name + "' on " + object, "none");
-      return fallback;
-    }
-    Id attribute(H5Aopen_by_name(file_, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
-    Id type(H5Aget_type(attribute.get()));
-    if (H5Tget_class(type.get()) != H5T_STRING) fail(std::string("a string ") + name, "another type");
-    if (H5Tis_variable_str(type.get()) > 0) {
-      Id memory_type(H5Tcopy(H5T_C_S1));
-      H5Tset_size(memory_type.get(), H5T_VARIABLE);
-      char* text = nullptr;
-      if (H5Aread(attribute.get(), memory_type.get(), &text) < 0) fail(name, "an unreadable value");
-      std::string value = text != nullptr ? text : "";
-      H5free_memory(text);
-      return value;
-    }
-    std::string value(H5Tget_size(type.get()), '\0');
-    if (H5Aread(attribute.get(), type.get(), value.data()) < 0) fail(name, "an unreadable value");
-    return value.substr(0, value.find('\0'));
-  }
-
-  // A real attribute of exactly n values.
-  std::vector<double> doubles_attribute(const std::string& object, const char* name,
-                                        std::size_t n) const {
-    if (H5Aexists_by_name(file_, object.c_str(), name, H5P_DEFAULT) <= 0) {
-      fail(std::string("attribute '") + name + "' on " + object, "none");
-    }
-    Id attribute(H5Aopen_by_name(file_, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
-    Id space(H5Aget_space(attribute.get()));
-    if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != n) {
-      fail(std::to_string(n) + " values in " + object + "@" + name, "another count");
-    }
-    std::vector<double> values(n);
-    H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, values.data());
-    return values;
-  }
-
-  // Dimensions of a dataset; fails when absent.
-  std::vector<hsize_t> dims(const std::string& dataset) const {
-    if (!exists(dataset)) fail("dataset " + dataset, "none");
-    Id id(H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT));
-    Id space(H5Dget_space(id.get()));
-    std::vector<hsize_t> d(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
-    H5Sget_simple_extent_dims(space.get(), d.data(), nullptr);
-    return d;
-  }
-
-  // The first `rows` rows of a dataset, row-major, converted to T.
-  template <typename T>
-  std::vector<T> read(const std::string& dataset, hid_t memory_type, hsize_t rows) const {
-    std::vector<hsize_t> d = dims(dataset);
-    std::size_t per_row = 1;
-    for (std::size_t k = 1; k < d.size(); ++k) per_row *= d[k];
-    std::vector<T> values(static_cast<std::size_t>(rows) * per_row);
-    if (values.empty()) return values;
-    Id id(H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT));
-    Id file_space(H5Dget_space(id.get()));
-    // Select the leading rows only (a killed run may have longer datasets).
-    std::vector<hsize_t> start(d.size(), 0), count = d;
-    if (!count.empty()) count[0] = rows;
-    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
-                        nullptr);
-    Id memory_space(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr));
-    if (H5Dread(id.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT,
-                values.data()) < 0) {
-      fail("readable data in " + dataset, "a read failure (damaged file?)");
-    }
-    return values;
-  }
-
-  // Rows of a per-sample dataset with `width` columns, checked against the expected shape.
-  hsize_t rows(const std::string& dataset, hsize_t width) const {
-    std::vector<hsize_t> d = dims(dataset);
-    const bool ok = width == 0 ? d.size() == 1 : (d.size() == 2 && d[1] == width);
-    if (!ok) fail(dataset + " with " + std::to_string(width) + " columns", "another shape");
-    return d[0];
-  }
-
-  // Names of the members of a group (empty when the group is absent).
-  std::vector<std::string> members(const std::string& group) const {
-    std::vector<std::string> names;
-    if (!exists(group)) return names;
-    Id id(H5Gopen2(file_, group.c_str(), H5P_DEFAULT));
-    H5G_info_t info;
-    H5Gget_info(id.get(), &info);
-    for (hsize_t k = 0; k < info.nlinks; ++k) {
-      const ssize_t n = H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr,
-                                           0, H5P_DEFAULT);
-      std::string name(static_cast<std::size_t>(n), '\0');
-      H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(),
-                         static_cast<std::size_t>(n) + 1, H5P_DEFAULT);
-      names.push_back(name);
-    }
-    return names;
-  }
-
- private:
-  hid_t file_;
-  std::filesystem::path path_;
-};
-
-Shape read_shape(const Reader& r, const std::string& group) {
+Shape read_shape(const H5Reader& r, const std::string& group) {
   Shape shape;
   const std::string type = r.string_attribute(group, "type");
   if (type == "box") shape.type = Shape::Type::kBox;
@@ -185,7 +26,10 @@ Shape read_shape(const Reader& r, const std::string& group) {
   return shape;
 }
 
-void read_mesh(const Reader& r, const std::string& body, FlexibleMesh& mesh) {
+}  // namespace
+
+FlexibleMesh read_flexible_mesh(const H5Reader& r, const std::string& body) {
+  FlexibleMesh mesh;
   // Nodes and elements.
   const std::string m = body + "/mesh/";
   const hsize_t nn = r.rows(m + "nodes", 3);
@@ -223,30 +67,14 @@ void read_mesh(const Reader& r, const std::string& body, FlexibleMesh& mesh) {
         r.read<double>(body + "/modes/frequencies_hz", H5T_NATIVE_DOUBLE, d[0]);
     mesh.frequencies_hz = Eigen::Map<const Eigen::VectorXd>(f.data(), static_cast<Eigen::Index>(f.size()));
   }
+  return mesh;
 }
-
-}  // namespace
 
 Results read_results(const std::filesystem::path& directory) {
   Results results;
   results.file = directory / "results.h5";
-  const std::string name = results.file.string();
 
-  // The file must exist and be an HDF5 file (a truncated file is not).
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(results.file, error)) {
-    throw InputError("expected a results file '" + name + "', got no such file (run `limber run` first)");
-  }
-  SilentHdf5Errors silent;
-  if (H5Fis_hdf5(name.c_str()) <= 0) {
-    throw InputError("expected an HDF5 results file '" + name +
-                     "', got a file HDF5 cannot open (truncated or not HDF5)");
-  }
-  Id file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-  if (!file.valid()) {
-    throw InputError("expected a readable results file '" + name + "', got an HDF5 open failure");
-  }
-  Reader r(file.get(), results.file);
+  const H5Reader r(results.file, "results file", " (run `limber run` first)");
 
   // Root attributes.
   const std::string format = r.string_attribute("/", "format");
@@ -293,7 +121,7 @@ Results read_results(const std::filesystem::path& directory) {
     track.orientation.resize(n, 4);
     std::copy(q.begin(), q.end(), track.orientation.data());
     if (track.flexible) {
-      read_mesh(r, g, track.mesh);
+      track.mesh = read_flexible_mesh(r, g);
       // Modal coordinates [ns, nm], row-major, into a column-major matrix.
       const Eigen::Index nm = track.mesh.mode_translations.cols();
       track.modal_coordinates.setZero(n, nm);

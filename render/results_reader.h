@@ -65,4 +65,10 @@ struct Results {
 // is missing, not HDF5 (e.g. truncated), not a limber results file, or lacks a required dataset.
 Results read_results(const std::filesystem::path& directory);
 
+class H5Reader;
+// The mesh and mode translations of the group `body` (e.g. "/bodies/plate": mesh/nodes, lines,
+// quads, beam_radius; modes/translations [nm, nn, 3], frequencies_hz): the same layout in
+// results.h5 and modes.h5. Throws InputError when a dataset is missing or malformed.
+FlexibleMesh read_flexible_mesh(const H5Reader& file, const std::string& body);
+
 }  // namespace limber::render

@@ -393,13 +393,14 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   s.time_text->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
   s.time_text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   s.time_text->GetPositionCoordinate()->SetValue(0.02, 0.03);
-  s.renderer->AddViewProp(s.time_text);
+  if (options.time_stamp) s.renderer->AddViewProp(s.time_text);
 
-  // Background, lighting, anti-aliasing (FXAA: cheap in software, docs/benchmarks.md).
+  // Background, lighting, anti-aliasing (FXAA: far cheaper than multisampling in software,
+  // yet the largest part of a frame there; docs/benchmarks.md).
   s.renderer->SetBackground(kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
   auto lights = vtkSmartPointer<vtkLightKit>::New();
   lights->AddLightsToRenderer(s.renderer);
-  s.renderer->UseFXAAOn();
+  s.renderer->SetUseFXAA(options.fxaa);
 
   // Camera: a fixed one fits the whole motion, a follow one fits the largest single frame.
   // The scene is put at t0 first: clipping ranges read the actors' bounds.

@@ -22,4 +22,8 @@ struct Command {
 // `limber modes CASE [-o DIR] [--json] [--vtu-format ascii|binary]`.
 Command add_modes_command(CLI::App& app);
 
+// `limber run CASE [-o DIR] [--integrator ida|galpha] [--rtol R] [--atol A] [--step H]
+// [--t-end T] [--json]`.
+Command add_run_command(CLI::App& app);
+
 }  // namespace limber::app

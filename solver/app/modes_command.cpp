@@ -1,11 +1,13 @@
 // `limber modes`: reads a case, computes every flexible body's mode set (normal,
 // constraint and attachment modes, seed paper eq. 4-11), prints the frequency table and
-// writes DIR/modes.h5 (docs/modes-format.md) and DIR/modes_<body>.vtu (ParaView).
+// writes DIR/modes.h5 (docs/modes-format.md), DIR/modes_<body>.vtu (ParaView) and, from
+// modes.h5 through render/, animated mode shapes in DIR/modes/ (docs/rendering.md).
 #include <fmt/format.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,8 @@
 #include "io/modes_file.h"
 #include "io/vtu_writer.h"
 #include "modal/component_modes.h"
+#include "mode_animation.h"
+#include "render_options.h"
 
 namespace limber::app {
 
@@ -26,6 +30,9 @@ struct ModesOptions {
   std::string output_dir;
   bool json = false;
   std::string vtu_format = "binary";
+  bool animate = true;
+  std::string animation_size = "640x480";
+  double animation_amplitude = 0.1;  // largest drawn displacement / body size
 };
 
 // One body's outcome.
@@ -103,7 +110,32 @@ std::string json_report(const std::vector<BodyOutcome>& outcomes,
   return text + "}";
 }
 
+// One PNG loop (and GIF) per body and mode. A machine without an offscreen OpenGL context
+// (std::runtime_error) keeps modes.h5 and the VTU files: a warning, not a failure.
+void animate(const render::ModeAnimationOptions& animation, const std::string& h5_path,
+             const std::filesystem::path& directory, std::FILE* table) {
+  try {
+    const render::ModeAnimationSummary summary =
+        render::animate_modes(h5_path, directory, animation);
+    fmt::print(table, "wrote {} mode-shape animations ({} frames{}) in {}\n", summary.animations,
+               summary.frames, summary.gifs.empty() ? "" : " and GIFs",
+               (directory / "modes").string());
+    for (const std::string& warning : summary.warnings) {
+      fmt::print(stderr, "limber modes: warning: {}\n", warning);
+    }
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& error) {
+    fmt::print(stderr, "limber modes: warning: no mode-shape animations: {}\n", error.what());
+  }
+}
+
 int run_modes(const ModesOptions& options) {
+  // Animation options are checked before any work.
+  render::ModeAnimationOptions animation;
+  render::parse_frame_size(options.animation_size, animation.width, animation.height);
+  animation.amplitude_fraction = options.animation_amplitude;
+
   const io::Case input = io::read_case_file(options.case_file);
   if (input.flexible_bodies.empty()) {
     throw InputError("expected at least one body under 'flexible_bodies', got none",
@@ -156,6 +188,9 @@ int run_modes(const ModesOptions& options) {
     fmt::print(table, "wrote {}\n", vtu_path);
   }
 
+  // Mode-shape animations, drawn from the modes.h5 just written (render/ reads files only).
+  if (options.animate && !outcomes.empty()) animate(animation, h5_path, directory, table);
+
   if (options.json) fmt::print(stdout, "{}\n", json_report(outcomes, failures));
   for (const std::string& failure : failures) fmt::print(stderr, "limber: error: {}\n", failure);
   return failures.empty() ? kExitOk : kExitNumerical;
@@ -172,7 +207,8 @@ Command add_modes_command(CLI::App& app) {
       "found and set aside, and notices (e.g. dropped dependent static modes). Writes\n"
       "DIR/modes.h5 (every body: mesh, mode shapes, frequencies, invariants; see\n"
       "docs/modes-format.md) and DIR/modes_<body>.vtu (each mode shape as a point vector\n"
-      "array, for ParaView's Warp By Vector).\n"
+      "array, for ParaView's Warp By Vector) and DIR/modes/<body>/mode_<k>/frame_*.png: one\n"
+      "period of each mode shape, offscreen (and mode_<k>.gif with ffmpeg; docs/rendering.md).\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
       "2 an eigen-solver failed (the bodies computed so far are still written), 3 internal error.");
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
@@ -185,6 +221,15 @@ Command add_modes_command(CLI::App& app) {
   cli->add_option("--vtu-format", options->vtu_format,
                   "Encoding of the VTU files: binary (base64) or ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))
+      ->capture_default_str();
+  cli->add_flag("!--no-animation", options->animate,
+                "Do not render the mode-shape animations (DIR/modes/<body>/mode_<k>/*.png)");
+  cli->add_option("--animation-size", options->animation_size,
+                  "Frame size WIDTHxHEIGHT of the mode-shape animations [pixels]")
+      ->capture_default_str();
+  cli->add_option("--animation-amplitude", options->animation_amplitude,
+                  "Largest drawn displacement of a mode, as a fraction of the body's size "
+                  "(diagonal of its bounding box)")
       ->capture_default_str();
   return {cli, [options] { return run_modes(*options); }};
 }

@@ -291,6 +291,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   Eigen::Map<Eigen::VectorXd> atol(N_VGetArrayPointer(s.atol_vec), s.n);
   atol.setConstant(options.atol);
   atol.segment(s.imu, s.nc + s.nh).setConstant(1.0);
+  if (options.quadrature.atol > 0.0) atol.segment(s.iz, s.nz).setConstant(options.quadrature.atol);
   flag = flag < 0 ? flag : IDASVtolerances(s.ida, options.rtol, s.atol_vec);
   flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);

@@ -63,6 +63,7 @@ void IntegratorOptions::validate() const {
   demand_input(max_steps >= 1, "integrator max_steps", "at least 1",
                static_cast<double>(max_steps));
   demand_input(quadrature.size >= 0, "quadrature size", "≥ 0", quadrature.size);
+  demand_input(quadrature.atol >= 0.0, "quadrature atol", "≥ 0", quadrature.atol);
   if (quadrature.size > 0 && !quadrature.integrand) {
     throw InputError(fmt::format("quadrature: expected an integrand for {} integrals, got none",
                                  quadrature.size));

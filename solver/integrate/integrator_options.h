@@ -25,6 +25,11 @@ struct Quadrature {
                      const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda,
                      Eigen::VectorXd& f)>
       integrand;
+  // IDA: absolute tolerance of the integrals, in their units (e.g. J for a work); 0 uses the
+  // options' atol. Integrals start at 0, so their weight is 1/atol at first: an atol of 1e-11
+  // on a work growing at 1e4 W stalls the first steps, and an integral scaled to the system
+  // (rtol times its energy) does not. Gen-α ignores it.
+  double atol = 0.0;
 };
 
 struct IntegratorOptions {

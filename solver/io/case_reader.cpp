@@ -5,6 +5,7 @@
 
 #include "io/case_library.h"
 #include "io/flexible_body_reader.h"
+#include "io/mechanism_reader.h"
 #include "io/yaml_reader.h"
 
 namespace limber::io {
@@ -12,8 +13,10 @@ namespace limber::io {
 namespace {
 
 // The top-level sections a case file may hold (extend here, with a reader below).
-const std::initializer_list<std::string_view> kCaseSections = {"title", "materials", "sections",
-                                                               "flexible_bodies"};
+// The mechanism sections are those of kMechanismSections (mechanism_reader.h).
+const std::initializer_list<std::string_view> kCaseSections = {
+    "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
+    "markers", "joints",   "drivers",  "forces",          "assembly", "run"};
 
 Case read_case(const YamlDocument& document) {
   const YamlValue root = document.root();
@@ -32,6 +35,7 @@ Case read_case(const YamlDocument& document) {
       result.flexible_bodies.push_back(read_flexible_body(name, entry, library));
     }
   }
+  if (has_mechanism(root)) result.mechanism = read_mechanism(root);
   return result;
 }
 

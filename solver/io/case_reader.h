@@ -5,18 +5,21 @@
 //   materials        case_library.h
 //   sections         case_library.h
 //   flexible_bodies  flexible_body_reader.h -> one FeModel + ModeRequest per body
-// Any other top-level key is an error that lists these. Later sections (rigid bodies,
-// joints, analyses) are added to kCaseSections in case_reader.cpp with their reader.
+//   gravity, bodies, markers, joints, drivers, forces, assembly, run
+//                    mechanism_reader.h -> one multibody::Model with its run settings
+// Any other top-level key is an error that lists these.
 //
 // Every error is an InputError at file:line:col of the offending value (expected/got),
 // including the errors raised by fe::FeModelBuilder, which receives those locations.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
 #include "fe/fe_model.h"
+#include "io/mechanism_reader.h"
 #include "modal/component_modes.h"
 
 namespace limber::io {
@@ -34,6 +37,7 @@ struct Case {
   std::string file;  // path as given
   std::string title;
   std::vector<FlexibleBodyCase> flexible_bodies;  // in file order
+  std::optional<MechanismCase> mechanism;         // when the case has mechanism sections
 };
 
 // Reads and checks the case file at `path`. Throws InputError (with location).

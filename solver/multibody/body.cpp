@@ -1,6 +1,8 @@
 #include "multibody/body.h"
 
 #include "core/error.h"
+#include "multibody/flexible_dynamics.h"
+#include "multibody/flexible_marker.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -16,6 +18,16 @@ Eigen::Vector4d body_quaternion(const Body& b, const Eigen::VectorXd& q) {
 }
 
 }  // namespace
+
+void marker_kinematics(const Model& model, int marker, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd* v, FrameKinematics& out) {
+  const Marker& m = model.markers[marker];
+  if (m.node >= 0) {
+    node_frame_kinematics(model, m.body, m.node, m.R_BM, q, v, out);
+  } else {
+    body_frame_kinematics(model, m.body, m.p_BM, m.R_BM, q, v, out);
+  }
+}
 
 void body_frame_kinematics(const Model& model, int body, const Eigen::Vector3d& p_BF,
                            const Eigen::Matrix3d& R_BF, const Eigen::VectorXd& q,
@@ -56,6 +68,7 @@ void add_body_mass_matrix(const Model& model, int body, const Eigen::VectorXd& q
                           Eigen::MatrixXd& M) {
   const Body& b = model.bodies[body];
   if (b.kind == BodyKind::kGround) return;
+  if (b.kind == BodyKind::kFlexible) return add_flexible_mass_matrix(b, q, M);
   const Eigen::Matrix3d A = rotation_matrix(body_quaternion(b, q));
   const Eigen::Matrix3d c_x = skew(b.com_B);
   const Eigen::Matrix3d J_o = b.inertia_com_B - b.mass * c_x * c_x;
@@ -70,6 +83,7 @@ void add_body_inertial_and_gravity_forces(const Model& model, int body, const Ei
                                           const Eigen::VectorXd& v, Eigen::VectorXd& Q) {
   const Body& b = model.bodies[body];
   if (b.kind == BodyKind::kGround) return;
+  if (b.kind == BodyKind::kFlexible) return add_flexible_forces(b, model.gravity_W, q, v, Q);
   const Eigen::Matrix3d A = rotation_matrix(body_quaternion(b, q));
   const Eigen::Vector3d w_B = v.segment<3>(b.v_offset + 3);
   const Eigen::Matrix3d c_x = skew(b.com_B);
@@ -94,6 +108,7 @@ double body_kinetic_energy(const Model& model, int body, const Eigen::VectorXd& 
                            const Eigen::VectorXd& v) {
   const Body& b = model.bodies[body];
   if (b.kind == BodyKind::kGround) return 0.0;
+  if (b.kind == BodyKind::kFlexible) return flexible_kinetic_energy(b, q, v);
   // ½ m |v_c|² + ½ ω'ᵀ J_c ω' with v_c = ṙ + A (ω' × c).
   const Eigen::Matrix3d A = rotation_matrix(body_quaternion(b, q));
   const Eigen::Vector3d w_B = v.segment<3>(b.v_offset + 3);
@@ -104,6 +119,7 @@ double body_kinetic_energy(const Model& model, int body, const Eigen::VectorXd& 
 double body_gravity_potential(const Model& model, int body, const Eigen::VectorXd& q) {
   const Body& b = model.bodies[body];
   if (b.kind == BodyKind::kGround) return 0.0;
+  if (b.kind == BodyKind::kFlexible) return flexible_gravity_potential(b, model.gravity_W, q);
   const Eigen::Matrix3d A = rotation_matrix(body_quaternion(b, q));
   return -b.mass * model.gravity_W.dot(body_position(b, q) + A * b.com_B);
 }
@@ -114,6 +130,9 @@ void set_body_kinematic_matrix(const Model& model, int body, const Eigen::Vector
   if (b.kind == BodyKind::kGround) return;
   N.block<3, 3>(b.q_offset, b.v_offset).setIdentity();
   N.block<4, 3>(b.q_offset + 3, b.v_offset + 3) = 0.5 * l_matrix(body_quaternion(b, q)).transpose();
+  // Modal coordinates: η̇ is a velocity.
+  const int nm = b.nv - 6;
+  N.block(b.q_offset + 7, b.v_offset + 6, nm, nm).setIdentity();
 }
 
 void map_body_jacobian_to_q(const Model& model, int body, const Eigen::VectorXd& q,
@@ -125,6 +144,8 @@ void map_body_jacobian_to_q(const Model& model, int body, const Eigen::VectorXd&
   f_q.middleCols<3>(b.q_offset) = f_v.middleCols<3>(b.v_offset);
   f_q.middleCols<4>(b.q_offset + 3) =
       f_v.middleCols<3>(b.v_offset + 3) * (2.0 / norm) * l_matrix(p / norm);
+  const int nm = b.nv - 6;
+  f_q.middleCols(b.q_offset + 7, nm) = f_v.middleCols(b.v_offset + 6, nm);
 }
 
 void integrate_body_coordinates(const Model& model, int body, const Eigen::VectorXd& q,
@@ -134,6 +155,8 @@ void integrate_body_coordinates(const Model& model, int body, const Eigen::Vecto
   q_out.segment<3>(b.q_offset) = q.segment<3>(b.q_offset) + dv.segment<3>(b.v_offset);
   q_out.segment<4>(b.q_offset + 3) =
       quaternion_product(body_quaternion(b, q), quaternion_exp(dv.segment<3>(b.v_offset + 3)));
+  const int nm = b.nv - 6;
+  q_out.segment(b.q_offset + 7, nm) = q.segment(b.q_offset + 7, nm) + dv.segment(b.v_offset + 6, nm);
 }
 
 }  // namespace limber::multibody

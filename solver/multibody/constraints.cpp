@@ -16,10 +16,7 @@ double wrap_angle(double x) {
 
 void update_marker_kinematics(const Model& model, const State& state, Stage stage, Workspace& ws) {
   const Eigen::VectorXd* v = stage == Stage::kVelocity ? &state.v : nullptr;
-  for (size_t k = 0; k < model.markers.size(); ++k) {
-    const Marker& m = model.markers[k];
-    body_frame_kinematics(model, m.body, m.p_BM, m.R_BM, state.q, v, ws.markers[k]);
-  }
+  for (size_t k = 0; k < model.markers.size(); ++k) marker_kinematics(model, k, state.q, v, ws.markers[k]);
 }
 
 RelativeAngle relative_angle(const FrameKinematics& mi, const FrameKinematics& mj, Stage stage) {

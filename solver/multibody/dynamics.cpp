@@ -2,6 +2,7 @@
 
 #include "multibody/body.h"
 #include "multibody/constraints.h"
+#include "multibody/flexible_dynamics.h"
 
 namespace limber::multibody {
 
@@ -87,6 +88,7 @@ EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     e.kinetic += body_kinetic_energy(model, b, state.q, state.v);
     e.gravity += body_gravity_potential(model, b, state.q);
+    if (model.bodies[b].kind == BodyKind::kFlexible) e.strain += flexible_strain_energy(model.bodies[b], state.q);
   }
   update_marker_kinematics(model, state, Stage::kPosition, ws);
   for (const ForceElement& force : model.forces) {

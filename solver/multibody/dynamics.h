@@ -30,6 +30,7 @@ struct EnergyTerms {
   double kinetic = 0.0;  // ½ vᵀ M v [J]
   double gravity = 0.0;  // −Σ m g·r_c [J] (zero at the ground origin)
   double spring = 0.0;   // Σ ½ k (θ − θ0)² + Σ ½ k (l − l0)² [J]
+  double strain = 0.0;   // Σ ½ ηᵀ diag(ω²) η of the flexible bodies [J]
 };
 
 // Updates ws.markers (position stage).

@@ -5,18 +5,21 @@
 //   per moving body  q_b = [r_WB (3), p_WB (4, unit quaternion w,x,y,z)],
 //                    v_b = [ṙ_WB in ground (3), ω_WB in body axes (3)];
 //   ground has none. Body b owns q[q_offset, q_offset+nq) and v[v_offset, v_offset+nv).
-//   A flexible body (next issue) appends its modal coordinates η to both blocks.
+//   A flexible body appends its modal coordinates η (nm) to both blocks:
+//                    q_b = [r_WB, p_WB, η],  v_b = [ṙ_WB, ω_WB, η̇]  (flexible_body.h).
 // Constraint equations: every joint contributes named scalar equations ("R2.x", "R2.rot_y"),
 // every driver one ("D1"); rows are numbered in that order (joints first, then drivers).
 // See docs/multibody.md for each joint's equations.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "multibody/flexible_body.h"
 #include "multibody/time_function.h"
 
 namespace limber::multibody {
@@ -38,7 +41,7 @@ struct Shape {
   Eigen::Vector3d color = Eigen::Vector3d(0.7, 0.7, 0.7);
 };
 
-enum class BodyKind { kGround, kRigid };
+enum class BodyKind { kGround, kRigid, kFlexible };
 
 struct Body {
   std::string name;
@@ -50,16 +53,22 @@ struct Body {
   Eigen::Vector3d initial_velocity_W = Eigen::Vector3d::Zero();   // ṙ_WB [m/s]
   Eigen::Vector3d initial_angular_velocity_B = Eigen::Vector3d::Zero();  // ω in body axes [rad/s]
   std::vector<Shape> shapes;
+  // Flexible bodies only: modes, invariants, nodes (mass, com_B and inertia_com_B then
+  // hold the undeformed values, for information).
+  std::shared_ptr<const FlexibleBody> flexible;
   int q_offset = 0, nq = 0;  // coordinate block
   int v_offset = 0, nv = 0;  // velocity block
 };
 
-// A frame fixed on a body: X_BM = (p_BM, R_BM).
+// A frame fixed on a body: X_BM = (p_BM, R_BM). On a flexible body the marker sits on FE
+// node `node` (p_BM = its undeformed position) and follows the node's elastic translation
+// and small rotation (flexible_marker.h); node = −1 on rigid bodies and ground.
 struct Marker {
   std::string name;
   int body = 0;
   Eigen::Vector3d p_BM = Eigen::Vector3d::Zero();
   Eigen::Matrix3d R_BM = Eigen::Matrix3d::Identity();
+  int node = -1;
 };
 
 enum class JointType { kRevolute, kTranslational, kSpherical, kBracket, kUniversal, kCylindrical };

@@ -62,16 +62,9 @@ void ModelBuilder::set_gravity(const Eigen::Vector3d& g_W) { model_.gravity_W = 
 
 int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation& where) {
   // Name, mass and pose.
-  if (spec.name.empty()) throw InputError("body name: expected a non-empty name, got \"\"", where);
-  if (model_.find_body(spec.name) >= 0) {
-    throw InputError(fmt::format("body \"{}\": expected a unique name, got a duplicate", spec.name), where);
-  }
+  check_new_body(spec.name, spec.initial_pose, where);
   if (!(spec.mass > 0.0) || !std::isfinite(spec.mass)) {
     throw InputError(fmt::format("body \"{}\" mass: expected > 0 kg, got {}", spec.name, spec.mass), where);
-  }
-  if (!(spec.initial_pose.orientation.norm() > 0.0)) {
-    throw InputError(fmt::format("body \"{}\" orientation: expected a non-zero quaternion, got zero",
-                                 spec.name), where);
   }
   // Inertia: symmetric, positive definite, and physically realisable (triangle inequality).
   const Eigen::Matrix3d& J = spec.inertia_com_B;
@@ -87,7 +80,6 @@ int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation
                                  "I1 + I2 ≥ I3, got ({:.6g}, {:.6g}, {:.6g}) kg m²",
                                  spec.name, principal(0), principal(1), principal(2)), where);
   }
-  // Number the body's blocks at the end of q and v.
   Body body;
   body.name = spec.name;
   body.kind = BodyKind::kRigid;
@@ -101,17 +93,44 @@ int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation
   body.shapes = spec.shapes;
   body.nq = 7;
   body.nv = 6;
+  return append_body(std::move(body));
+}
+
+void ModelBuilder::check_new_body(const std::string& name, const Pose& pose, const SourceLocation& where) const {
+  if (name.empty()) throw InputError("body name: expected a non-empty name, got \"\"", where);
+  if (model_.find_body(name) >= 0) {
+    throw InputError(fmt::format("body \"{}\": expected a unique name, got a duplicate", name), where);
+  }
+  if (!(pose.orientation.norm() > 0.0)) {
+    throw InputError(fmt::format("body \"{}\" orientation: expected a non-zero quaternion, got zero", name),
+                     where);
+  }
+}
+
+int ModelBuilder::append_body(Body body) {
+  // Number the body's blocks at the end of q and v.
   body.q_offset = model_.nq;
   body.v_offset = model_.nv;
   model_.nq += body.nq;
   model_.nv += body.nv;
-  model_.bodies.push_back(body);
+  model_.bodies.push_back(std::move(body));
   return static_cast<int>(model_.bodies.size()) - 1;
 }
 
 int ModelBuilder::add_marker(const std::string& name, const std::string& body,
                              const Eigen::Vector3d& p_BM, const Eigen::Matrix3d& R_BM,
                              const SourceLocation& where) {
+  const int b = check_new_marker(name, body, R_BM, where);
+  if (model_.bodies[b].kind == BodyKind::kFlexible) {
+    throw InputError(fmt::format("marker \"{}\": expected a node marker on flexible body \"{}\" "
+                                 "(add_node_marker), got a point of its frame", name, body), where);
+  }
+  model_.markers.push_back(Marker{name, b, p_BM, R_BM});
+  return static_cast<int>(model_.markers.size()) - 1;
+}
+
+int ModelBuilder::check_new_marker(const std::string& name, const std::string& body,
+                                   const Eigen::Matrix3d& R_BM, const SourceLocation& where) const {
   if (name.empty()) throw InputError("marker name: expected a non-empty name, got \"\"", where);
   for (const Marker& m : model_.markers) {
     if (m.name == name) {
@@ -124,8 +143,7 @@ int ModelBuilder::add_marker(const std::string& name, const std::string& body,
     throw InputError(fmt::format("marker \"{}\" orientation: expected a rotation matrix "
                                  "(orthonormal, det +1), got det {:.6g}", name, R_BM.determinant()), where);
   }
-  model_.markers.push_back(Marker{name, b, p_BM, R_BM});
-  return static_cast<int>(model_.markers.size()) - 1;
+  return b;
 }
 
 int ModelBuilder::add_marker_at(const std::string& name, const std::string& body,

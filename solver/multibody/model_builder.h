@@ -25,6 +25,25 @@ struct RigidBodySpec {
   std::vector<Shape> shapes;
 };
 
+// A flexible body from a component's mode set (modal/component_modes.h): mass-normalised
+// mode shapes over the FE nodes (6 DOFs per node, rotations included), their modal
+// stiffness and the floating-frame invariants, all in the FE component frame, which
+// becomes the body frame. The mode set fixes the reference-frame condition
+// (docs/multibody.md, "Flexible bodies"): free-free modes → a linearised mean-axis frame,
+// modes clamped at a node → the frame attached to that node.
+struct FlexibleBodySpec {
+  std::string name;
+  modal::ModeSet modes;                           // shapes (6 nodes x nm), modal_stiffness, invariants
+  std::vector<Eigen::Vector3d> node_positions_B;  // fe::FeModel::node_positions [m]
+  ModalDamping damping;                           // default: kDefaultModalDampingRatio in every mode
+  Pose initial_pose;                              // quaternion normalised here
+  Eigen::Vector3d initial_velocity_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d initial_angular_velocity_B = Eigen::Vector3d::Zero();
+  Eigen::VectorXd initial_modal_coordinates;      // nm, or empty for 0 [kg^½ m]
+  Eigen::VectorXd initial_modal_velocities;       // nm, or empty for 0 [kg^½ m/s]
+  std::vector<Shape> shapes;
+};
+
 struct RsdaSpec {
   std::string name, marker_i, marker_j;
   double stiffness = 0.0, damping = 0.0, free_angle = 0.0;  // k ≥ 0, c ≥ 0
@@ -53,7 +72,13 @@ class ModelBuilder {
   void set_gravity(const Eigen::Vector3d& g_W);
   // Returns the body index (ground is 0).
   int add_rigid_body(const RigidBodySpec& spec, const SourceLocation& where = {});
-  // Marker given in the body frame; R_BM must be a rotation (orthonormal, det +1).
+  // Throws InputError unless the shapes, stiffness and invariants agree in size (nm ≥ 1),
+  // the mass is positive, damping values are ≥ 0, and the undeformed mass matrix of frame
+  // plus modes is positive definite (modes holding rigid motion the frame already carries
+  // make it singular).
+  int add_flexible_body(const FlexibleBodySpec& spec, const SourceLocation& where = {});
+  // Marker given in the body frame; R_BM must be a rotation (orthonormal, det +1). Not on
+  // flexible bodies (their markers sit on nodes: add_node_marker).
   int add_marker(const std::string& name, const std::string& body, const Eigen::Vector3d& p_BM,
                  const Eigen::Matrix3d& R_BM = Eigen::Matrix3d::Identity(),
                  const SourceLocation& where = {});
@@ -61,6 +86,12 @@ class ModelBuilder {
   int add_marker_at(const std::string& name, const std::string& body, const Eigen::Vector3d& p_WM,
                     const Eigen::Matrix3d& R_WM = Eigen::Matrix3d::Identity(),
                     const SourceLocation& where = {});
+  // Marker on FE node `node` (0-based index into the body's node_positions_B) of flexible
+  // body `body`, axes R_BM in body axes of the undeformed body; it follows the node's
+  // elastic translation and rotation.
+  int add_node_marker(const std::string& name, const std::string& body, int node,
+                      const Eigen::Matrix3d& R_BM = Eigen::Matrix3d::Identity(),
+                      const SourceLocation& where = {});
   // The markers must lie on different bodies.
   int add_joint(const std::string& name, JointType type, const std::string& marker_i,
                 const std::string& marker_j, const SourceLocation& where = {});
@@ -77,6 +108,11 @@ class ModelBuilder {
 
  private:
   int marker_index(const std::string& name, const SourceLocation& where) const;
+  void check_new_body(const std::string& name, const Pose& pose, const SourceLocation& where) const;
+  // Checks name, body and axes of a new marker; returns the body index.
+  int check_new_marker(const std::string& name, const std::string& body, const Eigen::Matrix3d& R_BM,
+                       const SourceLocation& where) const;
+  int append_body(Body body);
   void claim_element_name(const std::string& name, const SourceLocation& where);
 
   Model model_;

@@ -9,7 +9,7 @@ namespace limber::multibody {
 MultibodySystem::MultibodySystem(const Model& model, ConstraintPartition partition)
     : model_(model), partition_(std::move(partition)), workspace_(model) {
   for (const Body& b : model_.bodies) {
-    if (b.kind == BodyKind::kRigid) ++num_rigid_bodies_;
+    if (b.kind != BodyKind::kGround) ++num_moving_bodies_;
   }
 }
 
@@ -26,12 +26,12 @@ void MultibodySystem::integrate_coordinates(const Eigen::VectorXd& q, const Eige
 
 void MultibodySystem::coordinate_invariants(const Eigen::VectorXd& q, Eigen::VectorXd& h,
                                             Eigen::MatrixXd& h_q) const {
-  // h = |p|² − 1 per rigid body, ∂h/∂p = 2 pᵀ.
-  h.setZero(num_rigid_bodies_);
-  h_q.setZero(num_rigid_bodies_, model_.nq);
+  // h = |p|² − 1 per moving body (rigid or flexible frame), ∂h/∂p = 2 pᵀ.
+  h.setZero(num_moving_bodies_);
+  h_q.setZero(num_moving_bodies_, model_.nq);
   int k = 0;
   for (const Body& b : model_.bodies) {
-    if (b.kind != BodyKind::kRigid) continue;
+    if (b.kind == BodyKind::kGround) continue;
     const Eigen::Vector4d p = q.segment<4>(b.q_offset + 3);
     h(k) = p.squaredNorm() - 1.0;
     h_q.block<1, 4>(k, b.q_offset + 3) = 2.0 * p.transpose();

@@ -23,7 +23,7 @@ class MultibodySystem final : public integrate::MechanicalSystem {
   int nq() const override { return model_.nq; }
   int nv() const override { return model_.nv; }
   int nc() const override { return static_cast<int>(partition_.independent.size()); }
-  int nh() const override { return num_rigid_bodies_; }
+  int nh() const override { return num_moving_bodies_; }
 
   void kinematic_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& N) const override;
   void integrate_coordinates(const Eigen::VectorXd& q, const Eigen::VectorXd& dv,
@@ -50,7 +50,7 @@ class MultibodySystem final : public integrate::MechanicalSystem {
 
   const Model& model_;
   ConstraintPartition partition_;
-  int num_rigid_bodies_ = 0;
+  int num_moving_bodies_ = 0;
   mutable Workspace workspace_;
   mutable State state_;
 };

@@ -54,6 +54,11 @@ ConstraintPartition analyse_redundancy(const Model& model, const State& state, W
   const int m = model.num_equations();
   ConstraintPartition p;
   p.relative_threshold = relative_threshold;
+  // No equations (free bodies only): nothing to factorise (Eigen's QR of a 0-column matrix fails).
+  if (m == 0) {
+    mark_indeterminate(model, p);
+    return p;
+  }
   // Rows scaled to unit norm (zero rows stay zero: they are redundant with nothing).
   Eigen::MatrixXd S = ws.G;
   for (int row = 0; row < m; ++row) {

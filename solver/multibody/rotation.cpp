@@ -75,6 +75,47 @@ Eigen::Matrix3d axis_angle_matrix(const Eigen::Vector3d& axis, double angle) {
   return rotation_matrix(quaternion_exp(axis.normalized() * angle));
 }
 
+Eigen::Matrix3d rotation_vector_matrix(const Eigen::Vector3d& theta) {
+  return rotation_matrix(quaternion_exp(theta));
+}
+
+namespace {
+
+// Coefficients of J_l and their derivatives divided by t: a, b, a'(t)/t, b'(t)/t. Below
+// t = 1e-2 the Taylor series (next terms ~ t⁶/10⁵ < 1e-16) avoid the cancellation of the
+// closed forms.
+struct LeftJacobianCoefficients {
+  double a, b, a_rate, b_rate;
+};
+
+LeftJacobianCoefficients left_jacobian_coefficients(double t) {
+  const double t2 = t * t;
+  if (t < 1e-2) {
+    const double t4 = t2 * t2;
+    return {0.5 - t2 / 24.0 + t4 / 720.0, 1.0 / 6.0 - t2 / 120.0 + t4 / 5040.0,
+            -1.0 / 12.0 + t2 / 180.0 - t4 / 6720.0, -1.0 / 60.0 + t2 / 1260.0 - t4 / 60480.0};
+  }
+  const double c = std::cos(t), s = std::sin(t);
+  return {(1.0 - c) / t2, (t - s) / (t2 * t), (t * s - 2.0 * (1.0 - c)) / (t2 * t2),
+          (t * (1.0 - c) - 3.0 * (t - s)) / (t2 * t2 * t)};
+}
+
+}  // namespace
+
+Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& theta) {
+  const LeftJacobianCoefficients k = left_jacobian_coefficients(theta.norm());
+  const Eigen::Matrix3d S = skew(theta);
+  return Eigen::Matrix3d::Identity() + k.a * S + k.b * S * S;
+}
+
+Eigen::Vector3d so3_left_jacobian_rate(const Eigen::Vector3d& theta, const Eigen::Vector3d& theta_dot) {
+  // J̇_l θ̇ = ȧ θ×θ̇ + ḃ θ×(θ×θ̇) + b θ̇×(θ×θ̇), with ṫ = θ·θ̇/t.
+  const LeftJacobianCoefficients k = left_jacobian_coefficients(theta.norm());
+  const double projection = theta.dot(theta_dot);
+  const Eigen::Vector3d c = theta.cross(theta_dot);
+  return k.a_rate * projection * c + k.b_rate * projection * theta.cross(c) + k.b * theta_dot.cross(c);
+}
+
 Eigen::Matrix3d frame_from_axes(const Eigen::Vector3d& z, const Eigen::Vector3d& x_hint) {
   if (!(z.norm() > 0.0)) throw InputError("frame z axis: expected a non-zero vector, got zero");
   const Eigen::Vector3d ez = z.normalized();

@@ -31,6 +31,19 @@ Eigen::Vector4d quaternion_from_matrix(const Eigen::Matrix3d& R);
 // Rotation of `angle` rad about the unit `axis`, as a matrix.
 Eigen::Matrix3d axis_angle_matrix(const Eigen::Vector3d& axis, double angle);
 
+// exp([θ]×), the rotation matrix of a rotation vector θ [rad] (θ = 0 gives I).
+Eigen::Matrix3d rotation_vector_matrix(const Eigen::Vector3d& theta);
+
+// Left Jacobian of SO(3): d/dt exp([θ]×) = [J_l(θ) θ̇]× exp([θ]×), so J_l θ̇ is the
+// angular velocity (in the axes of the parent frame) of a frame turned by θ(t):
+//   J_l = I + a(t) [θ]× + b(t) [θ]×²,  a = (1 − cos t)/t²,  b = (t − sin t)/t³,  t = |θ|
+// (Chirikjian, Stochastic Models, Information Theory and Lie Groups, vol. 2, 2012, §10.2).
+Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& theta);
+
+// (d/dt J_l(θ)) θ̇ for the motion θ(t) with rate θ̇: the bias term of the angular
+// acceleration J_l θ̈ + J̇_l θ̇.
+Eigen::Vector3d so3_left_jacobian_rate(const Eigen::Vector3d& theta, const Eigen::Vector3d& theta_dot);
+
 }  // namespace limber::multibody
 
 namespace limber::multibody {

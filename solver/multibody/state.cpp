@@ -12,6 +12,10 @@ State initial_state(const Model& model) {
     state.q.segment<4>(b.q_offset + 3) = b.initial_pose.orientation;
     state.v.segment<3>(b.v_offset) = b.initial_velocity_W;
     state.v.segment<3>(b.v_offset + 3) = b.initial_angular_velocity_B;
+    if (b.kind == BodyKind::kFlexible) {
+      state.q.segment(b.q_offset + 7, b.nq - 7) = b.flexible->initial_modal_coordinates;
+      state.v.segment(b.v_offset + 6, b.nv - 6) = b.flexible->initial_modal_velocities;
+    }
   }
   return state;
 }

@@ -1,5 +1,6 @@
 // State and Workspace of a multibody Model (house style §1).
-//   State: t [s], q (nq: per body r_WB, quaternion), v (nv: per body ṙ_WB ground, ω body axes).
+//   State: t [s], q (nq: per body r_WB, quaternion[, η]), v (nv: per body ṙ_WB ground,
+//          ω body axes[, η̇]); η only on flexible bodies.
 //   Workspace: scratch sized from the model; one per thread.
 #pragma once
 

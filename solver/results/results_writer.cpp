@@ -117,6 +117,18 @@ void write_shapes(hid_t body_group, const std::vector<ShapeSpec>& shapes) {
   }
 }
 
+// A one-dimensional dataset of fixed-length, null-padded strings.
+void write_string_dataset(hid_t parent, const char* name, const std::vector<std::string>& values) {
+  std::size_t width = 1;
+  for (const std::string& value : values) width = std::max(width, value.size());
+  std::string packed(width * values.size(), '\0');
+  for (std::size_t k = 0; k < values.size(); ++k) packed.replace(k * width, values[k].size(), values[k]);
+  H5Handle type = checked(H5Tcopy(H5T_C_S1), "copy the string type");
+  check(H5Tset_size(type.get(), width), "size a string");
+  check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "pad a string");
+  write_dataset(parent, name, type.get(), type.get(), {values.size()}, packed.data());
+}
+
 void demand_new_name(std::set<std::string>& names, const std::string& name) {
   LIMBER_DEMAND(!name.empty() && name.find('/') == std::string::npos);
   LIMBER_DEMAND(names.insert(name).second);
@@ -349,6 +361,22 @@ int ResultsWriter::add_energy(const std::string& name) {
                                                       name.c_str(), H5T_IEEE_F64LE,
                                                       H5T_NATIVE_DOUBLE, 0));
   return static_cast<int>(impl_->energy_series.size()) - 1;
+}
+
+void ResultsWriter::set_redundant_equations(const std::vector<std::string>& names,
+                                            const std::vector<std::string>& depends_on) {
+  impl_->demand_declaring();
+  LIMBER_DEMAND(names.size() == depends_on.size());
+  H5Handle constraints =
+      checked(H5Gopen2(impl_->file.get(), "constraints", H5P_DEFAULT), "open /constraints");
+  LIMBER_DEMAND(H5Lexists(constraints.get(), "redundant", H5P_DEFAULT) == 0);
+  write_string_dataset(constraints.get(), "redundant", names);
+  write_string_dataset(constraints.get(), "redundant_with", depends_on);
+}
+
+void ResultsWriter::set_integrator(const std::string& name) {
+  impl_->demand_declaring();
+  write_string_attribute(impl_->file.get(), "integrator", name);
 }
 
 void ResultsWriter::append_sample(const Sample& sample) {

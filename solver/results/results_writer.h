@@ -116,6 +116,13 @@ class ResultsWriter {
   int add_joint(const JointSpec& joint);
   int add_driver(const std::string& name);
   int add_energy(const std::string& name);
+  // The redundant constraint equations found at the start (at most once, before the first
+  // sample): /constraints/redundant [nr] holds their names ("R2.z"), /constraints/redundant_with
+  // [nr] the independent equations each is a combination of ("R1.z, R3.z"). Sizes must match.
+  void set_redundant_equations(const std::vector<std::string>& names,
+                               const std::vector<std::string>& depends_on);
+  // Root attribute `integrator` ("ida", "galpha"): which method produced the samples.
+  void set_integrator(const std::string& name);
 
   // Appends one row to every per-sample dataset and flushes the file to disk. Precondition:
   // sample vectors sized as declared, modal_coordinates sized nm for flexible bodies (aborts

@@ -1,11 +1,13 @@
 // Constraint Jacobians and acceleration right-hand sides of every joint type and driver
 // against central finite differences, at generic (not assembled) configurations so the
-// derivatives are checked off the constraint manifold too.
+// derivatives are checked off the constraint manifold too; on rigid bodies and on the FE
+// nodes of a deformed flexible body.
 #include <gtest/gtest.h>
 
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/multibody_system.h"
+#include "flexible_test_models.h"
 #include "test_models.h"
 
 namespace limber::multibody {
@@ -38,6 +40,34 @@ Model two_body_model(JointType type, bool rotation_driver, bool translation_driv
   if (rotation_driver) {
     builder.add_driver("DR", "J", DriverCoordinate::kRotation,
                        TimeFunction::ramp(0.2, 3.0, 2.0, RampShape::kQuintic));
+  }
+  if (translation_driver) {
+    builder.add_driver("DT", "J", DriverCoordinate::kTranslation,
+                       TimeFunction::table({0, 1, 2, 3}, {0.1, 0.3, 0.2, 0.5}, TableInterpolation::kCubic));
+  }
+  return builder.build();
+}
+
+// As two_body_model with b1 a flexible space frame (4 free-free modes, deformed: elastic
+// rotations up to ~0.1 rad) whose markers sit on its tip node and on an inner node.
+Model flexible_two_body_model(JointType type, bool rotation_driver, bool translation_driver) {
+  ModelBuilder builder;
+  const fe::FeModel frame = testing::space_frame(3);
+  FlexibleBodySpec spec = testing::flexible_spec("b1", frame, testing::normal_modes(frame, 4), ModalDamping::ratio(0.0));
+  spec.initial_pose.position = Eigen::Vector3d(0.3, -0.2, 0.5);
+  spec.initial_pose.orientation = quaternion_from_matrix(axis_angle_matrix(Eigen::Vector3d(1, 2, 3), 0.4));
+  spec.initial_modal_coordinates = Eigen::Vector4d(0.02, -0.015, 0.01, 0.012);
+  builder.add_flexible_body(spec);
+  builder.add_rigid_body(body_spec("b2", 1.5, Eigen::Vector3d(0.3, 0.2, 0.15), Eigen::Vector3d(-0.4, 0.6, 0.1),
+                                   axis_angle_matrix(Eigen::Vector3d(-2, 1, 0.5), 1.1)));
+  builder.add_node_marker("m1", "b1", frame.node_count() - 1, axis_angle_matrix(Eigen::Vector3d(0, 1, 1), 0.3));
+  builder.add_marker("m2", "b2", Eigen::Vector3d(-0.1, 0.4, 0.2), axis_angle_matrix(Eigen::Vector3d(1, 0, 1), -0.7));
+  builder.add_marker("g", "ground", Eigen::Vector3d(0.1, 0.2, 0.3), axis_angle_matrix(Eigen::Vector3d(1, 1, 0), 0.2));
+  builder.add_node_marker("m3", "b1", 4, axis_angle_matrix(Eigen::Vector3d(0, 0, 1), 0.5));
+  builder.add_joint("J", type, "m1", "m2");
+  builder.add_joint("K", type, "g", "m3");
+  if (rotation_driver) {
+    builder.add_driver("DR", "J", DriverCoordinate::kRotation, TimeFunction::ramp(0.2, 3.0, 2.0, RampShape::kQuintic));
   }
   if (translation_driver) {
     builder.add_driver("DT", "J", DriverCoordinate::kTranslation,
@@ -121,6 +151,17 @@ TEST(ConstraintJacobian, Bracket) { check_model(two_body_model(JointType::kBrack
 TEST(ConstraintJacobian, Universal) { check_model(two_body_model(JointType::kUniversal, false, false)); }
 TEST(ConstraintJacobian, CylindricalWithBothDrivers) {
   check_model(two_body_model(JointType::kCylindrical, true, true));
+}
+
+TEST(ConstraintJacobian, FlexibleNodeMarkersEveryJointType) {
+  // Same bounds as the rigid models: the node kinematics (exp of the elastic rotation and
+  // its left Jacobian) must be exact, not first-order in η.
+  for (JointType type : {JointType::kRevolute, JointType::kTranslational, JointType::kSpherical,
+                         JointType::kBracket, JointType::kUniversal}) {
+    SCOPED_TRACE(to_string(type));
+    check_model(flexible_two_body_model(type, false, false));
+  }
+  check_model(flexible_two_body_model(JointType::kCylindrical, true, true));
 }
 
 TEST(ConstraintJacobian, EquationNamesAndCounts) {

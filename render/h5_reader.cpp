@@ -1,0 +1,177 @@
+#include "h5_reader.h"
+
+#include "core/error.h"
+
+namespace limber::render {
+
+H5Id::~H5Id() {
+  if (id_ < 0) return;
+  switch (H5Iget_type(id_)) {
+    case H5I_FILE: H5Fclose(id_); break;
+    case H5I_GROUP: H5Gclose(id_); break;
+    case H5I_DATASET: H5Dclose(id_); break;
+    case H5I_DATASPACE: H5Sclose(id_); break;
+    case H5I_DATATYPE: H5Tclose(id_); break;
+    case H5I_ATTR: H5Aclose(id_); break;
+    default: break;
+  }
+}
+
+SilentHdf5Errors::SilentHdf5Errors() {
+  H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+SilentHdf5Errors::~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+
+namespace {
+
+// Checks that `path` is an HDF5 file (a truncated file is not) and opens it read-only.
+hid_t open_checked(const std::filesystem::path& path, const std::string& kind,
+                   const std::string& missing_hint) {
+  const std::string name = path.string();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw InputError("expected a " + kind + " '" + name + "', got no such file" + missing_hint);
+  }
+  if (H5Fis_hdf5(name.c_str()) <= 0) {
+    throw InputError("expected an HDF5 " + kind + " '" + name +
+                     "', got a file HDF5 cannot open (truncated or not HDF5)");
+  }
+  const hid_t file = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    throw InputError("expected a readable " + kind + " '" + name + "', got an HDF5 open failure");
+  }
+  return file;
+}
+
+}  // namespace
+
+H5Reader::H5Reader(std::filesystem::path path, std::string kind, const std::string& missing_hint)
+    : path_(std::move(path)),
+      kind_(std::move(kind)),
+      file_(open_checked(path_, kind_, missing_hint)) {}
+
+void H5Reader::fail(const std::string& expected, const std::string& got) const {
+  throw InputError(kind_ + " '" + path_.string() + "': expected " + expected + ", got " + got);
+}
+
+bool H5Reader::exists(const std::string& object) const {
+  return H5Lexists(file_.get(), object.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::string H5Reader::string_attribute(const std::string& object, const char* name,
+                                       bool required, const std::string& fallback) const {
+  if (H5Aexists_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT) <= 0) {
+    if (required) fail(std::string("attribute '") + name + "' on " + object, "none");
+    return fallback;
+  }
+  H5Id attribute(H5Aopen_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
+  H5Id type(H5Aget_type(attribute.get()));
+  if (H5Tget_class(type.get()) != H5T_STRING) fail(std::string("a string ") + name, "another type");
+  if (H5Tis_variable_str(type.get()) > 0) {
+    // The memory type takes the file's character set (HDF5 does not convert ASCII <-> UTF-8).
+    H5Id memory_type(H5Tcopy(H5T_C_S1));
+    H5Tset_size(memory_type.get(), H5T_VARIABLE);
+    H5Tset_cset(memory_type.get(), H5Tget_cset(type.get()));
+    char* text = nullptr;
+    if (H5Aread(attribute.get(), memory_type.get(), &text) < 0) fail(name, "an unreadable value");
+    std::string value = text != nullptr ? text : "";
+    H5free_memory(text);
+    return value;
+  }
+  std::string value(H5Tget_size(type.get()), '\0');
+  if (H5Aread(attribute.get(), type.get(), value.data()) < 0) fail(name, "an unreadable value");
+  return value.substr(0, value.find('\0'));
+}
+
+std::vector<double> H5Reader::doubles_attribute(const std::string& object, const char* name,
+                                                std::size_t n) const {
+  if (H5Aexists_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT) <= 0) {
+    fail(std::string("attribute '") + name + "' on " + object, "none");
+  }
+  H5Id attribute(H5Aopen_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
+  H5Id space(H5Aget_space(attribute.get()));
+  if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != n) {
+    fail(std::to_string(n) + " values in " + object + "@" + name, "another count");
+  }
+  std::vector<double> values(n);
+  H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, values.data());
+  return values;
+}
+
+std::vector<hsize_t> H5Reader::dims(const std::string& dataset) const {
+  if (!exists(dataset)) fail("dataset " + dataset, "none");
+  H5Id id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  H5Id space(H5Dget_space(id.get()));
+  std::vector<hsize_t> d(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
+  H5Sget_simple_extent_dims(space.get(), d.data(), nullptr);
+  return d;
+}
+
+hsize_t H5Reader::rows(const std::string& dataset, hsize_t width) const {
+  const std::vector<hsize_t> d = dims(dataset);
+  const bool ok = width == 0 ? d.size() == 1 : (d.size() == 2 && d[1] == width);
+  if (!ok) fail(dataset + " with " + std::to_string(width) + " columns", "another shape");
+  return d[0];
+}
+
+void H5Reader::read_rows(const std::string& dataset, hid_t memory_type, hsize_t rows,
+                         void* values) const {
+  const std::vector<hsize_t> d = dims(dataset);
+  H5Id id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  H5Id file_space(H5Dget_space(id.get()));
+  // Select the leading rows only (a killed run may have longer datasets).
+  std::vector<hsize_t> start(d.size(), 0), count = d;
+  if (!count.empty()) count[0] = rows;
+  H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
+                      nullptr);
+  H5Id memory_space(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr));
+  if (H5Dread(id.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT,
+              values) < 0) {
+    fail("readable data in " + dataset, "a read failure (damaged file?)");
+  }
+}
+
+std::vector<std::string> H5Reader::strings(const std::string& dataset) const {
+  const hsize_t n = rows(dataset, 0);
+  H5Id id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  H5Id file_type(H5Dget_type(id.get()));
+  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) <= 0) {
+    fail("variable-length strings in " + dataset, "another type");
+  }
+  // Read as C strings in the file's character set, copy, then let HDF5 free its buffers.
+  H5Id memory_type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(memory_type.get(), H5T_VARIABLE);
+  H5Tset_cset(memory_type.get(), H5Tget_cset(file_type.get()));
+  std::vector<char*> pointers(static_cast<std::size_t>(n), nullptr);
+  if (n > 0 && H5Dread(id.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                       pointers.data()) < 0) {
+    fail("readable strings in " + dataset, "a read failure (damaged file?)");
+  }
+  std::vector<std::string> values;
+  for (char* text : pointers) {
+    values.emplace_back(text != nullptr ? text : "");
+    H5free_memory(text);
+  }
+  return values;
+}
+
+std::vector<std::string> H5Reader::members(const std::string& group) const {
+  std::vector<std::string> names;
+  if (!exists(group)) return names;
+  H5Id id(H5Gopen2(file_.get(), group.c_str(), H5P_DEFAULT));
+  H5G_info_t info;
+  H5Gget_info(id.get(), &info);
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t n = H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0,
+                                         H5P_DEFAULT);
+    std::string name(static_cast<std::size_t>(n), '\0');
+    H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(),
+                       static_cast<std::size_t>(n) + 1, H5P_DEFAULT);
+    names.push_back(name);
+  }
+  return names;
+}
+
+}  // namespace limber::render

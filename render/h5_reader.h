@@ -1,0 +1,92 @@
+// Read-only access to limber's HDF5 files for render/ (results.h5, modes.h5) through the HDF5
+// C API, independent of the solver's writers. Every failure is an InputError naming the file:
+// "<kind> '<path>': expected ..., got ...". Internal to limber_render (exposes HDF5 types).
+#pragma once
+
+#include <hdf5.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace limber::render {
+
+// Owns an HDF5 identifier; closes it with the call matching its kind.
+class H5Id {
+ public:
+  explicit H5Id(hid_t id = -1) : id_(id) {}
+  H5Id(H5Id&& other) noexcept : id_(std::exchange(other.id_, -1)) {}
+  H5Id& operator=(H5Id&&) = delete;
+  H5Id(const H5Id&) = delete;
+  ~H5Id();
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+};
+
+// Silences HDF5's error-stack printing while alive; failures become InputErrors instead.
+class SilentHdf5Errors {
+ public:
+  SilentHdf5Errors();
+  ~SilentHdf5Errors();
+  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
+  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
+class H5Reader {
+ public:
+  // Opens `path` read-only; `kind` names the file in messages ("results file"), `missing_hint`
+  // ends the message for a missing file. Throws InputError when the file is missing, is not
+  // HDF5 (e.g. truncated) or cannot be opened.
+  H5Reader(std::filesystem::path path, std::string kind, const std::string& missing_hint);
+
+  const std::filesystem::path& path() const { return path_; }
+  [[noreturn]] void fail(const std::string& expected, const std::string& got) const;
+  bool exists(const std::string& object) const;
+
+  // A string attribute (fixed or variable length); `fallback` when absent and optional.
+  std::string string_attribute(const std::string& object, const char* name, bool required = true,
+                               const std::string& fallback = "") const;
+  // A real attribute of exactly n values.
+  std::vector<double> doubles_attribute(const std::string& object, const char* name,
+                                        std::size_t n) const;
+  // Dimensions of a dataset; fails when absent.
+  std::vector<hsize_t> dims(const std::string& dataset) const;
+  // Rows of a dataset with `width` columns (width 0: one-dimensional), checked.
+  hsize_t rows(const std::string& dataset, hsize_t width) const;
+  // The first `rows` rows of a dataset, row-major, converted to T (`memory_type`).
+  template <typename T>
+  std::vector<T> read(const std::string& dataset, hid_t memory_type, hsize_t rows) const;
+  // A one-dimensional dataset of strings (variable-length).
+  std::vector<std::string> strings(const std::string& dataset) const;
+  // Names of the members of a group, alphabetical (empty when the group is absent).
+  std::vector<std::string> members(const std::string& group) const;
+
+ private:
+  // Reads `count` rows selected in the dataset into `values`.
+  void read_rows(const std::string& dataset, hid_t memory_type, hsize_t rows, void* values) const;
+
+  std::filesystem::path path_;
+  std::string kind_;
+  SilentHdf5Errors silent_;
+  H5Id file_;
+};
+
+template <typename T>
+std::vector<T> H5Reader::read(const std::string& dataset, hid_t memory_type, hsize_t rows) const {
+  const std::vector<hsize_t> d = dims(dataset);
+  std::size_t per_row = 1;
+  for (std::size_t k = 1; k < d.size(); ++k) per_row *= d[k];
+  std::vector<T> values(static_cast<std::size_t>(rows) * per_row);
+  if (!values.empty()) read_rows(dataset, memory_type, rows, values.data());
+  return values;
+}
+
+}  // namespace limber::render

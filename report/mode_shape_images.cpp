@@ -1,0 +1,67 @@
+#include "mode_shape_images.h"
+
+#include "frame_renderer.h"
+#include "html.h"
+#include "png_frame_writer.h"
+
+#include <cstdio>
+
+namespace limber::report {
+namespace {
+
+// The run reduced to one body at its first pose with eta = scale e_mode.
+render::Results single_mode(const render::Results& results, const render::BodyTrack& body,
+                            Eigen::Index mode, double scale) {
+  render::Results one;
+  one.file = results.file;
+  char title[160];
+  std::snprintf(title, sizeof title, "mode %d: %.4g Hz", static_cast<int>(mode) + 1,
+                mode < body.mesh.frequencies_hz.size() ? body.mesh.frequencies_hz(mode) : 0.0);
+  one.title = body.name + " " + title;
+  one.status = "ok";
+  one.time = Eigen::VectorXd::Zero(1);
+  render::BodyTrack shape = body;
+  shape.position = body.position.topRows(1);
+  shape.orientation = body.orientation.topRows(1);
+  shape.modal_coordinates = Eigen::MatrixXd::Zero(1, body.mesh.mode_translations.cols());
+  shape.modal_coordinates(0, mode) = scale;
+  one.bodies.push_back(std::move(shape));
+  return one;
+}
+
+}  // namespace
+
+std::vector<ModeImage> draw_mode_shapes(const RunData& run, const std::filesystem::path& images,
+                                        const std::string& prefix, int width, int height) {
+  std::vector<ModeImage> drawn;
+  if (run.sample_count() == 0) return drawn;
+  render::RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.ground = false;
+  render::PngFrameWriter writer;
+  for (const render::BodyTrack& body : run.results.bodies) {
+    const Eigen::MatrixXd& phi = body.mesh.mode_translations;
+    if (!body.flexible || phi.cols() == 0 || body.mesh.nodes.rows() == 0) continue;
+    const double size =
+        (body.mesh.nodes.colwise().maxCoeff() - body.mesh.nodes.colwise().minCoeff()).norm();
+    for (Eigen::Index i = 0; i < std::min<Eigen::Index>(phi.cols(), kMaxModeImages); ++i) {
+      // Scale: the largest nodal translation becomes kModeShapeFraction of the body's size.
+      const Eigen::Map<const Eigen::Matrix3Xd> nodes(phi.col(i).data(), 3, phi.rows() / 3);
+      const double largest = nodes.colwise().norm().maxCoeff();
+      const double scale = largest > 0.0 ? kModeShapeFraction * size / largest : 0.0;
+      // The renderer keeps a reference to the results it draws: they must outlive it.
+      const render::Results shape = single_mode(run.results, body, i, scale);
+      render::FrameRenderer renderer(shape, options, 0.0, 0.0);
+      ModeImage image{body.name, static_cast<int>(i),
+                      i < body.mesh.frequencies_hz.size() ? body.mesh.frequencies_hz(i) : 0.0,
+                      prefix + "mode_" + file_stem(body.name) + "_" + std::to_string(i) + ".png"};
+      writer.push(renderer.render(0.0), images / image.file);
+      drawn.push_back(std::move(image));
+    }
+  }
+  writer.finish();
+  return drawn;
+}
+
+}  // namespace limber::report

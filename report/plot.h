@@ -1,0 +1,76 @@
+// Line plots drawn offscreen with VTK's chart classes (vtkChartXY in a vtkContextView) in
+// render's headless EGL context, written as PNG. One ChartCanvas owns one OpenGL context: use it
+// from the thread that created it.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace limber::report {
+
+// One curve: y(x) drawn as a line; x and y have the same length.
+struct Curve {
+  std::string label;  // legend entry
+  Eigen::VectorXd x;
+  Eigen::VectorXd y;
+};
+
+struct PlotSpec {
+  std::string title;
+  std::string x_label;  // with units, e.g. "time [s]"
+  std::string y_label;  // with units, e.g. "force [N]"
+  std::vector<Curve> curves;
+  bool log_y = false;   // logarithmic y axis; needs every y > 0 (else drawn linear)
+};
+
+// Where the plot area landed in the PNG: data ranges and their pixel positions, so a data point
+// can be located in the image (rows counted from the top).
+struct PlotFrame {
+  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // axis ranges (data units; log_y: values)
+  double left_px = 0, right_px = 0;                    // columns of x_min and x_max
+  double bottom_px = 0, top_px = 0;                    // rows of y_min and y_max
+  bool log_y = false;
+
+  // Pixel (column, row from the top) of the data point (x, y).
+  Eigen::Vector2d to_pixel(double x, double y) const;
+};
+
+// Line colours in curve order (RGB 0..255), repeated past the end.
+inline constexpr std::array<std::array<unsigned char, 3>, 8> kCurveColors{{
+    {31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
+    {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}}};
+// The page colour behind the chart (white, as printed).
+inline constexpr std::array<unsigned char, 3> kPlotBackground{255, 255, 255};
+
+class ChartCanvas {
+ public:
+  // Creates the EGL context and a width x height [pixels] chart view.
+  // Throws std::runtime_error when no offscreen OpenGL 3.2 context can be created.
+  ChartCanvas(int width, int height);
+  ~ChartCanvas();
+  ChartCanvas(const ChartCanvas&) = delete;
+  ChartCanvas& operator=(const ChartCanvas&) = delete;
+
+  // Draws `plot` and writes it to `png`. Axis ranges are padded "nice" bounds of the data;
+  // a plot without points gets the unit square. Throws std::runtime_error when the file
+  // cannot be written.
+  PlotFrame draw(const PlotSpec& plot, const std::filesystem::path& png);
+
+  int width() const;
+  int height() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Rounds [lo, hi] outwards to multiples of a 1-2-5 step giving about `ticks` intervals;
+// an empty or degenerate range is widened around its value.
+std::array<double, 2> nice_range(double lo, double hi, int ticks = 6);
+
+}  // namespace limber::report

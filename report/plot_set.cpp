@@ -1,0 +1,142 @@
+#include "plot_set.h"
+
+#include "html.h"
+
+#include <map>
+
+namespace limber::report {
+namespace {
+
+constexpr const char* kTimeLabel = "time [s]";
+constexpr std::array<const char*, 3> kAxes{"x", "y", "z"};
+
+// The name of body_j of a joint (the body the reaction acts on), "" when unknown.
+std::string reaction_body(const RunData& run, const std::string& joint) {
+  for (const render::JointTrack& track : run.results.joints) {
+    if (track.name == joint) return track.body_j;
+  }
+  return "";
+}
+
+// Curves "<symbol>x", "<symbol>y", "<symbol>z" of the columns of `values`.
+std::vector<Curve> component_curves(const Eigen::VectorXd& time, const RowMatrix3d& values,
+                                    const std::string& symbol) {
+  std::vector<Curve> curves;
+  for (int c = 0; c < 3; ++c) curves.push_back({symbol + kAxes[c], time, values.col(c)});
+  return curves;
+}
+
+std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<Series>& series) {
+  std::vector<Curve> curves;
+  for (const Series& s : series) curves.push_back({s.name, time, s.values});
+  return curves;
+}
+
+}  // namespace
+
+std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) {
+  std::vector<NamedPlot> plots;
+  const Eigen::VectorXd& t = run.results.time;
+
+  // Reactions: forces always, torques when the joint transmits any.
+  for (const JointReactions& joint : run.joints) {
+    const std::string body = reaction_body(run, joint.name);
+    const std::string on = body.empty() ? "" : " on " + body;
+    plots.push_back({PlotSection::kReactions, prefix + "reaction_" + file_stem(joint.name) + "_force.png",
+                     "Reaction force at joint " + joint.name + on + ", components in the joint frame.",
+                     {"Joint " + joint.name + ": reaction force (joint frame)", kTimeLabel,
+                      "force [N]", component_curves(t, joint.force_joint, "F"), false}});
+    if (joint.torque_joint.size() > 0 && joint.torque_joint.cwiseAbs().maxCoeff() > 0.0) {
+      plots.push_back({PlotSection::kReactions, prefix + "reaction_" + file_stem(joint.name) + "_torque.png",
+                       "Reaction torque at joint " + joint.name + on + ", components in the joint frame.",
+                       {"Joint " + joint.name + ": reaction torque (joint frame)", kTimeLabel,
+                        "torque [N m]", component_curves(t, joint.torque_joint, "T"), false}});
+    }
+  }
+
+  // Driver efforts and energies.
+  if (!run.drivers.empty()) {
+    plots.push_back({PlotSection::kDrivers, prefix + "driver_efforts.png",
+                     "Driving force or torque of each driver.",
+                     {"Driver efforts", kTimeLabel, "effort [N or N m]",
+                      series_curves(t, run.drivers), false}});
+  }
+  if (!run.energies.empty()) {
+    plots.push_back({PlotSection::kEnergy, prefix + "energy.png",
+                     "Energies and work: kinetic, potential (gravity, spring, strain), dissipated, "
+                     "work of drivers and forces.",
+                     {"Energy", kTimeLabel, "energy [J]", series_curves(t, run.energies), false}});
+  }
+
+  // Deflections: the largest elastic displacement of each flexible body, then its modal
+  // coordinates.
+  std::vector<Curve> deflections;
+  for (const render::BodyTrack& body : run.results.bodies) {
+    if (body.flexible) deflections.push_back({body.name, t, max_deflection(body)});
+  }
+  if (!deflections.empty()) {
+    plots.push_back({PlotSection::kDeflection, prefix + "deflection.png",
+                     "Largest elastic displacement |u| over the nodes of each flexible body "
+                     "(u = sum of mode shapes times modal coordinates).",
+                     {"Elastic deflection (largest over nodes)", kTimeLabel, "max |u| [m]",
+                      deflections, false}});
+  }
+  for (const render::BodyTrack& body : run.results.bodies) {
+    if (!body.flexible || body.modal_coordinates.cols() == 0) continue;
+    std::vector<Curve> eta;
+    for (Eigen::Index i = 0; i < body.modal_coordinates.cols(); ++i) {
+      eta.push_back({"eta" + std::to_string(i + 1), t, body.modal_coordinates.col(i)});
+    }
+    plots.push_back({PlotSection::kDeflection, prefix + "modal_" + file_stem(body.name) + ".png",
+                     "Modal coordinates of " + body.name + " (mode numbers as in the mode table).",
+                     {"Modal coordinates of " + body.name, kTimeLabel, "modal coordinate eta [-]",
+                      eta, false}});
+  }
+
+  // Constraint violations on a logarithmic scale (they span decades) when all are positive.
+  std::vector<Curve> violations;
+  if (run.position_violation) violations.push_back({"position", t, run.position_violation->values});
+  if (run.velocity_violation) violations.push_back({"velocity", t, run.velocity_violation->values});
+  if (!violations.empty()) {
+    plots.push_back({PlotSection::kViolation, prefix + "constraint_violation.png",
+                     "Largest norm of the position constraints [m, rad] and of the velocity "
+                     "constraints [m/s, rad/s]; logarithmic axis when every value is positive.",
+                     {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
+  }
+  return plots;
+}
+
+std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
+                                        const std::vector<std::string>& labels) {
+  // Joint name -> runs holding its reactions, in first-seen order.
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<std::pair<std::size_t, const JointReactions*>>> holders;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    for (const JointReactions& joint : runs[r].joints) {
+      if (holders.count(joint.name) == 0) order.push_back(joint.name);
+      holders[joint.name].emplace_back(r, &joint);
+    }
+  }
+
+  std::vector<NamedPlot> plots;
+  for (const std::string& name : order) {
+    const auto& held = holders[name];
+    if (held.size() < 2) continue;
+    for (int c = 0; c < 3; ++c) {
+      std::vector<Curve> curves;
+      for (const auto& [r, joint] : held) {
+        curves.push_back({labels[r], runs[r].results.time, joint->force_joint.col(c)});
+      }
+      const std::string component = std::string("F") + kAxes[c];
+      plots.push_back({PlotSection::kComparison,
+                       "compare_" + file_stem(name) + "_" + component + ".png",
+                       "Reaction " + component + " at joint " + name + " (joint frame) in " +
+                           std::to_string(held.size()) + " runs.",
+                       {"Joint " + name + ": " + component + " (joint frame)", kTimeLabel,
+                        "force [N]", curves, false}});
+    }
+  }
+  return plots;
+}
+
+}  // namespace limber::report

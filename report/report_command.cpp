@@ -1,0 +1,38 @@
+#include "report_command.h"
+
+#include "report_job.h"
+
+#include <fmt/core.h>
+
+#include <memory>
+
+namespace limber::report {
+
+ReportCommand add_report_command(CLI::App& app) {
+  // Options live as long as the app (run() is called after parsing).
+  auto options = std::make_shared<ReportOptions>();
+  auto no_modes = std::make_shared<bool>(false);
+
+  CLI::App* command = app.add_subcommand(
+      "report", "Write an HTML report with plots (reactions, energy, deflection, violation) of "
+                "one or more run directories");
+  command->add_option("DIR", options->directories,
+                      "run directories holding results.h5; several: plots compare them")
+      ->required();
+  command->add_option("-o,--output", options->output, "report folder (default: DIR/report)");
+  command->add_option("--title", options->title, "page title (default: the case title)");
+  command->add_flag("--no-mode-shapes", *no_modes, "do not draw the mode shapes");
+
+  return {command, [options, no_modes] {
+            options->mode_shapes = !*no_modes;
+            const ReportSummary summary = generate_report(*options);
+            for (const std::string& run : summary.runs_not_ok) {
+              fmt::print(stderr, "limber report: warning: run did not finish ok ({})\n", run);
+            }
+            fmt::print("{} plots, {} mode-shape images\n{}\n", summary.plots, summary.mode_images,
+                       summary.index.string());
+            return 0;
+          }};
+}
+
+}  // namespace limber::report

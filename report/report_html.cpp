@@ -1,0 +1,252 @@
+#include "report_html.h"
+
+#include "html.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace limber::report {
+namespace {
+
+// Print-friendly, system fonts only (nothing fetched).
+constexpr const char* kStyle = R"(
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto;
+       max-width: 1250px; padding: 0 1em; color: #1a1a1a; line-height: 1.4; }
+h1 { border-bottom: 3px solid #1f77b4; padding-bottom: .2em; }
+h2 { border-bottom: 1px solid #bbb; margin-top: 2em; }
+nav ul { columns: 2; }
+table { border-collapse: collapse; margin: .5em 0 1em; }
+th, td { border: 1px solid #ccc; padding: .2em .6em; text-align: left; }
+th { background: #eef2f7; }
+td.number { text-align: right; font-variant-numeric: tabular-nums; }
+figure { margin: 1em 0 2em; page-break-inside: avoid; }
+figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
+figcaption { font-size: .95em; color: #444; }
+.banner { padding: .8em 1em; margin: 1em 0; border-radius: 4px; font-weight: bold; }
+.banner.failed { background: #fde2e1; border: 2px solid #c62828; color: #8e0000; }
+.banner.running { background: #fff4d6; border: 2px solid #e09b00; color: #6d4c00; }
+.note { color: #555; font-style: italic; }
+.strip { display: flex; gap: 6px; flex-wrap: wrap; }
+.strip figure { margin: 0; flex: 1 1 180px; }
+.modes { display: grid; grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); gap: 8px; }
+.modes figure { margin: 0; }
+@media print { nav { display: none; } h2 { page-break-before: always; } }
+)";
+
+std::string number(double value) { return fmt::format("{:.6g}", value); }
+
+std::string figure(const NamedPlot& plot) {
+  const std::string caption = html_escape(plot.caption);
+  return fmt::format(
+      "<figure><img src=\"{}/{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
+      kImageFolder, plot.file, caption, caption);
+}
+
+std::string plots_of(const RunSection& section, PlotSection kind) {
+  std::string out;
+  for (const NamedPlot& plot : section.plots) {
+    if (plot.section == kind) out += figure(plot);
+  }
+  return out;
+}
+
+// A red (failed) or amber (did not finish) banner; nothing for a finished run.
+std::string status_banner(const RunData& run) {
+  const render::Results& r = run.results;
+  if (r.status == "ok") return "";
+  const std::string shown =
+      r.sample_count() > 0
+          ? fmt::format("The report shows the {} samples written, up to t = {} s.", r.sample_count(),
+                        number(r.time(r.sample_count() - 1)))
+          : std::string("No sample was written.");
+  if (r.status == "failed") {
+    return fmt::format("<div class=\"banner failed\" role=\"alert\">This run failed: {} {}</div>\n",
+                       html_escape(r.message.empty() ? "(no message)" : r.message), shown);
+  }
+  return fmt::format(
+      "<div class=\"banner running\" role=\"alert\">This run did not finish (status \"{}\": "
+      "killed, crashed or still running). {}</div>\n",
+      html_escape(r.status), shown);
+}
+
+std::string summary_table(const RunData& run) {
+  const render::Results& r = run.results;
+  std::string rows;
+  auto row = [&rows](const std::string& key, const std::string& value) {
+    rows += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", key, value);
+  };
+  row("directory", html_escape(run.directory.string()));
+  row("case title", html_escape(r.title));
+  row("case file", html_escape(r.case_file));
+  row("status", html_escape(r.status) + (r.message.empty() ? "" : ": " + html_escape(r.message)));
+  row("samples", std::to_string(r.sample_count()));
+  if (r.sample_count() > 0) {
+    row("time span", fmt::format("{} … {} s", number(r.time(0)), number(r.time(r.sample_count() - 1))));
+  }
+  if (run.steps) row("accepted steps", std::to_string(*run.steps));
+  if (run.position_violation && run.sample_count() > 0) {
+    row("largest position violation", number(run.position_violation->values.cwiseAbs().maxCoeff()));
+  }
+  if (run.velocity_violation && run.sample_count() > 0) {
+    row("largest velocity violation", number(run.velocity_violation->values.cwiseAbs().maxCoeff()));
+  }
+  for (const auto& [key, value] : run.solver_attributes) row(html_escape(key), html_escape(value));
+  return "<table class=\"summary\">\n" + rows + "</table>\n";
+}
+
+std::string bodies_table(const RunData& run) {
+  std::string out =
+      "<table><tr><th>body</th><th>kind</th><th>nodes</th><th>beam elements</th>"
+      "<th>shell elements</th><th>modes</th></tr>\n";
+  for (const render::BodyTrack& b : run.results.bodies) {
+    if (b.flexible) {
+      out += fmt::format(
+          "<tr><td>{}</td><td>flexible</td><td class=\"number\">{}</td><td class=\"number\">{}</td>"
+          "<td class=\"number\">{}</td><td class=\"number\">{}</td></tr>\n",
+          html_escape(b.name), b.mesh.nodes.rows(), b.mesh.lines.rows(), b.mesh.quads.rows(),
+          b.mesh.mode_translations.cols());
+    } else {
+      out += fmt::format("<tr><td>{}</td><td>rigid</td><td></td><td></td><td></td><td></td></tr>\n",
+                         html_escape(b.name));
+    }
+  }
+  return out + "</table>\n";
+}
+
+std::string joints_table(const RunData& run) {
+  if (run.results.joints.empty()) return "<p class=\"note\">No joints in the results.</p>\n";
+  std::string out = "<table><tr><th>joint</th><th>type</th><th>body i</th><th>body j</th></tr>\n";
+  for (const render::JointTrack& j : run.results.joints) {
+    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", html_escape(j.name),
+                       html_escape(j.type), html_escape(j.body_i), html_escape(j.body_j));
+  }
+  return out + "</table>\n";
+}
+
+std::string redundancy_table(const RunData& run) {
+  if (run.redundant_equations.empty()) return "";
+  std::string out =
+      "<h4>Redundant constraints</h4>\n<table><tr><th>equation</th><th>combination of</th></tr>\n";
+  for (const auto& [name, with] : run.redundant_equations) {
+    out += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", html_escape(name), html_escape(with));
+  }
+  return out + "</table>\n";
+}
+
+std::string notes(const RunData& run) {
+  std::string out;
+  for (const std::string& note : run.notes) out += "<p class=\"note\">" + html_escape(note) + "</p>\n";
+  return out;
+}
+
+std::string mode_tables(const RunData& run) {
+  std::string out;
+  for (const ModeTable& table : run.mode_tables) {
+    out += fmt::format("<h4>Modes of {} <span class=\"note\">(from {})</span></h4>\n",
+                       html_escape(table.body), html_escape(table.source));
+    if (table.modes.empty()) {
+      out += "<p class=\"note\">No modes.</p>\n";
+      continue;
+    }
+    out += "<table><tr><th>#</th><th>frequency [Hz]</th><th>kind</th><th>label</th></tr>\n";
+    for (std::size_t i = 0; i < table.modes.size(); ++i) {
+      const ModeRow& m = table.modes[i];
+      out += fmt::format(
+          "<tr><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td><td>{}</td></tr>\n",
+          i + 1, number(m.frequency_hz), html_escape(m.kind), html_escape(m.label));
+    }
+    out += "</table>\n";
+  }
+  return out;
+}
+
+std::string media(const RunSection& section) {
+  std::string out;
+  if (!section.stills.empty()) {
+    out += "<div class=\"strip\">\n";
+    for (std::size_t k = 0; k < section.stills.size(); ++k) {
+      out += fmt::format("<figure><img src=\"{}/{}\" alt=\"animation still {}\"></figure>\n",
+                         kImageFolder, section.stills[k], k + 1);
+    }
+    out += "</div>\n";
+  }
+  if (!section.video_url.empty()) {
+    out += fmt::format(
+        "<p><video controls preload=\"none\" width=\"640\" src=\"{0}\"></video><br>"
+        "<a href=\"{0}\">animation.mp4</a></p>\n",
+        section.video_url);
+  }
+  if (out.empty()) {
+    out = "<p class=\"note\">No frames or video: run <code>limber render</code> on this directory "
+          "to add them.</p>\n";
+  }
+  return out;
+}
+
+std::string mode_images(const RunSection& section) {
+  std::string out = "<div class=\"modes\">\n";
+  for (const ModeImage& m : section.mode_images) {
+    const std::string caption =
+        html_escape(fmt::format("{} mode {}: {} Hz", m.body, m.mode + 1, number(m.frequency_hz)));
+    out += fmt::format("<figure><img src=\"{}/{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
+                       kImageFolder, m.file, caption, caption);
+  }
+  return out + "</div>\n";
+}
+
+// One <h3> subsection when it has content.
+std::string subsection(const RunSection& s, const std::string& id, const std::string& heading,
+                       const std::string& body) {
+  if (body.empty()) return "";
+  return fmt::format("<h3 id=\"{}-{}\">{}</h3>\n{}", s.anchor, id, heading, body);
+}
+
+std::string run_section(const RunSection& s) {
+  const RunData& run = *s.run;
+  std::string out = fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n", s.anchor, html_escape(s.label));
+  out += status_banner(run);
+  out += subsection(s, "summary", "Case summary",
+                    summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) +
+                        "<h4>Joints</h4>\n" + joints_table(run) + redundancy_table(run) +
+                        mode_tables(run) + notes(run));
+  out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
+  out += subsection(s, "drivers", "Drivers", plots_of(s, PlotSection::kDrivers));
+  out += subsection(s, "energy", "Energy", plots_of(s, PlotSection::kEnergy));
+  out += subsection(s, "deflection", "Deflection", plots_of(s, PlotSection::kDeflection));
+  out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
+  out += subsection(s, "animation", "Animation", media(s));
+  if (!s.mode_images.empty()) out += subsection(s, "mode-shapes", "Mode shapes", mode_images(s));
+  return out + "</section>\n";
+}
+
+}  // namespace
+
+std::string report_html(const ReportContent& content) {
+  std::string out = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<title>{0}</title>\n<style>{1}</style>\n</head>\n<body>\n<h1>{0}</h1>\n",
+      html_escape(content.title), kStyle);
+
+  // Contents.
+  out += "<nav><ul>\n";
+  for (const RunSection& s : content.runs) {
+    out += fmt::format("<li><a href=\"#{}\">{}</a>{}</li>\n", s.anchor, html_escape(s.label),
+                       s.run->finished_ok() ? "" : " (" + html_escape(s.run->results.status) + ")");
+  }
+  if (!content.comparisons.empty()) out += "<li><a href=\"#comparison\">Comparison</a></li>\n";
+  out += "</ul></nav>\n";
+
+  for (const RunSection& s : content.runs) out += run_section(s);
+
+  // Several runs: one reaction component overlaid (seed paper Figs. 6 and 10).
+  if (!content.comparisons.empty()) {
+    out += "<section id=\"comparison\">\n<h2>Comparison of runs</h2>\n";
+    for (const NamedPlot& plot : content.comparisons) out += figure(plot);
+    out += "</section>\n";
+  }
+  return out + "<footer class=\"note\">Generated by limber report.</footer>\n</body>\n</html>\n";
+}
+
+}  // namespace limber::report

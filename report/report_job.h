@@ -1,0 +1,34 @@
+// `limber report`: one or more run directories -> OUT/index.html and OUT/images/*.png
+// (docs/report.md).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace limber::report {
+
+struct ReportOptions {
+  std::vector<std::filesystem::path> directories;  // run directories holding results.h5
+  std::filesystem::path output;  // report folder; empty: <first directory>/report
+  std::string title;             // page title; empty: the first run's case title
+  int plot_width = 1200;         // plot size [pixels]: ~17 cm wide at 180 dpi when printed
+  int plot_height = 600;
+  int mode_image_width = 480;    // mode-shape pictures [pixels]
+  int mode_image_height = 320;
+  bool mode_shapes = true;       // draw the mode shapes of flexible bodies
+};
+
+struct ReportSummary {
+  std::filesystem::path index;    // OUT/index.html
+  int plots = 0;                  // PNG plots written
+  int mode_images = 0;
+  std::vector<std::string> runs_not_ok;  // "<dir>: <status>" of failed or unfinished runs
+};
+
+// Writes the report. Throws InputError (expected/got, naming the file) when no directory is
+// given or one has no readable results.h5 — before anything is written; std::runtime_error when
+// the offscreen context cannot be created or a file cannot be written.
+ReportSummary generate_report(const ReportOptions& options);
+
+}  // namespace limber::report

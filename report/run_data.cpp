@@ -1,0 +1,362 @@
+#include "run_data.h"
+
+#include "core/error.h"
+#include "modes_reader.h"
+#include "results/h5_handle.h"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
+namespace limber::report {
+namespace {
+
+using results::H5Handle;
+
+// Root attributes shown elsewhere in the report (not as solver settings).
+const std::set<std::string> kKnownRootAttributes = {"format", "version", "title",
+                                                    "case_file", "status", "message"};
+
+// Silences HDF5's error-stack printing while reading; failures are reported by the reader.
+class SilentHdf5Errors {
+ public:
+  SilentHdf5Errors() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
+  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
+bool exists(hid_t file, const std::string& path) {
+  // Check each link on the way: H5Lexists fails on a path through a missing group.
+  std::size_t at = 1;
+  while (at <= path.size()) {
+    const std::size_t next = std::min(path.find('/', at), path.size());
+    if (H5Lexists(file, path.substr(0, next).c_str(), H5P_DEFAULT) <= 0) return false;
+    at = next + 1;
+  }
+  return true;
+}
+
+std::vector<std::string> members(hid_t file, const std::string& group) {
+  std::vector<std::string> names;
+  if (!exists(file, group)) return names;
+  H5Handle id(H5Gopen2(file, group.c_str(), H5P_DEFAULT));
+  H5G_info_t info;
+  if (!id.valid() || H5Gget_info(id.get(), &info) < 0) return names;
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t n = H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0,
+                                         H5P_DEFAULT);
+    std::string name(static_cast<std::size_t>(n), '\0');
+    H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(),
+                       static_cast<std::size_t>(n) + 1, H5P_DEFAULT);
+    names.push_back(name);
+  }
+  return names;
+}
+
+// A float64 dataset of `width` columns (0: one-dimensional), all rows, row-major; empty when
+// absent or of another shape.
+std::vector<double> read_doubles(hid_t file, const std::string& path, hsize_t width,
+                                 hsize_t& rows) {
+  rows = 0;
+  if (!exists(file, path)) return {};
+  H5Handle dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
+  H5Handle space(H5Dget_space(dataset.get()));
+  hsize_t dims[2] = {0, 0};
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank != (width == 0 ? 1 : 2) || rank > 2) return {};
+  H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (width != 0 && dims[1] != width) return {};
+  std::vector<double> values(dims[0] * std::max<hsize_t>(width, 1));
+  if (!values.empty() && H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                 values.data()) < 0) {
+    return {};
+  }
+  rows = dims[0];
+  return values;
+}
+
+// A string dataset (variable or fixed length), one string per element; empty when absent.
+std::vector<std::string> read_strings(hid_t file, const std::string& path) {
+  std::vector<std::string> out;
+  if (!exists(file, path)) return out;
+  H5Handle dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
+  H5Handle type(H5Dget_type(dataset.get()));
+  H5Handle space(H5Dget_space(dataset.get()));
+  if (H5Tget_class(type.get()) != H5T_STRING) return out;
+  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+  if (H5Tis_variable_str(type.get()) > 0) {
+    H5Handle memory(H5Tcopy(H5T_C_S1));
+    H5Tset_size(memory.get(), H5T_VARIABLE);
+    std::vector<char*> text(n, nullptr);
+    if (H5Dread(dataset.get(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0) {
+      return out;
+    }
+    for (char* s : text) out.emplace_back(s != nullptr ? s : "");
+    H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, text.data());
+    return out;
+  }
+  const std::size_t size = H5Tget_size(type.get());
+  std::vector<char> buffer(n * size);
+  if (H5Dread(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) {
+    return out;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::string s(buffer.data() + k * size, size);
+    out.push_back(s.substr(0, s.find('\0')));
+  }
+  return out;
+}
+
+// An attribute's value as text: strings as they are, numbers "%g", arrays comma-separated.
+std::string attribute_text(hid_t attribute) {
+  H5Handle type(H5Aget_type(attribute));
+  H5Handle space(H5Aget_space(attribute));
+  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+  switch (H5Tget_class(type.get())) {
+    case H5T_STRING: {
+      if (H5Tis_variable_str(type.get()) > 0) {
+        H5Handle memory(H5Tcopy(H5T_C_S1));
+        H5Tset_size(memory.get(), H5T_VARIABLE);
+        char* text = nullptr;
+        if (n != 1 || H5Aread(attribute, memory.get(), &text) < 0) return "(unreadable)";
+        std::string value = text != nullptr ? text : "";
+        H5free_memory(text);
+        return value;
+      }
+      std::string value(H5Tget_size(type.get()) * n, '\0');
+      if (H5Aread(attribute, type.get(), value.data()) < 0) return "(unreadable)";
+      return value.substr(0, value.find('\0'));
+    }
+    case H5T_INTEGER:
+    case H5T_FLOAT: {
+      std::vector<double> values(n);
+      if (H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()) < 0) return "(unreadable)";
+      std::string text;
+      for (std::size_t k = 0; k < n; ++k) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.6g", values[k]);
+        text += (k > 0 ? ", " : "") + std::string(number);
+      }
+      return text;
+    }
+    default:
+      return "(not shown)";
+  }
+}
+
+// Every attribute of `object` except `skip`, in creation (else name) order.
+std::vector<std::pair<std::string, std::string>> attributes(hid_t file, const std::string& object,
+                                                            const std::set<std::string>& skip) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (object != "/" && !exists(file, object)) return out;
+  H5O_info_t info;
+  if (H5Oget_info_by_name2(file, object.c_str(), &info, H5O_INFO_NUM_ATTRS, H5P_DEFAULT) < 0) {
+    return out;
+  }
+  for (hsize_t k = 0; k < info.num_attrs; ++k) {
+    H5Handle attribute(H5Aopen_by_idx(file, object.c_str(), H5_INDEX_NAME, H5_ITER_INC, k,
+                                      H5P_DEFAULT, H5P_DEFAULT));
+    if (!attribute.valid()) continue;
+    const ssize_t length = H5Aget_name(attribute.get(), 0, nullptr);
+    std::string name(static_cast<std::size_t>(length), '\0');
+    H5Aget_name(attribute.get(), static_cast<std::size_t>(length) + 1, name.data());
+    if (skip.count(name) == 0) out.emplace_back(name, attribute_text(attribute.get()));
+  }
+  return out;
+}
+
+RowMatrix3d as_rows3(const std::vector<double>& values, hsize_t rows) {
+  return Eigen::Map<const RowMatrix3d>(values.data(), static_cast<Eigen::Index>(rows), 3);
+}
+
+Eigen::VectorXd as_vector(const std::vector<double>& values) {
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+}
+
+// Cuts every per-sample array to its first n rows.
+void truncate(RunData& run, Eigen::Index n) {
+  render::Results& r = run.results;
+  r.time.conservativeResize(n);
+  for (render::BodyTrack& body : r.bodies) {
+    body.position.conservativeResize(n, 3);
+    body.orientation.conservativeResize(n, 4);
+    if (body.modal_coordinates.rows() > n) {
+      body.modal_coordinates.conservativeResize(n, body.modal_coordinates.cols());
+    }
+  }
+  for (render::JointTrack& joint : r.joints) joint.position.conservativeResize(n, 3);
+  for (JointReactions& joint : run.joints) {
+    joint.force_joint.conservativeResize(n, 3);
+    joint.torque_joint.conservativeResize(n, 3);
+  }
+  for (Series& s : run.drivers) s.values.conservativeResize(n);
+  for (Series& s : run.energies) s.values.conservativeResize(n);
+  if (run.position_violation) run.position_violation->values.conservativeResize(n);
+  if (run.velocity_violation) run.velocity_violation->values.conservativeResize(n);
+}
+
+// Reads the series render's reader leaves out; returns the smallest row count met.
+hsize_t read_series(hid_t file, RunData& run) {
+  hsize_t ns = static_cast<hsize_t>(run.sample_count());
+  hsize_t rows = 0;
+
+  // Joint reactions (joint frame); a joint without them has no plot.
+  for (const render::JointTrack& joint : run.results.joints) {
+    const std::string g = "/joints/" + joint.name + "/";
+    hsize_t torque_rows = 0;
+    const std::vector<double> force = read_doubles(file, g + "force_joint", 3, rows);
+    const std::vector<double> torque = read_doubles(file, g + "torque_joint", 3, torque_rows);
+    if (force.empty()) continue;
+    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3)};
+    if (!torque.empty()) reactions.torque_joint = as_rows3(torque, torque_rows);
+    ns = std::min({ns, rows, torque.empty() ? rows : torque_rows});
+    run.joints.push_back(std::move(reactions));
+  }
+
+  // Driver efforts and energies.
+  for (const std::string& driver : members(file, "/drivers")) {
+    const std::vector<double> v = read_doubles(file, "/drivers/" + driver + "/effort", 0, rows);
+    if (v.empty()) continue;
+    run.drivers.push_back({driver, as_vector(v)});
+    ns = std::min(ns, rows);
+  }
+  for (const std::string& energy : members(file, "/energy")) {
+    const std::vector<double> v = read_doubles(file, "/energy/" + energy, 0, rows);
+    if (v.empty()) continue;
+    run.energies.push_back({energy, as_vector(v)});
+    ns = std::min(ns, rows);
+  }
+
+  // Constraint violations and the step counter.
+  for (auto [name, target] : {std::pair{"position_violation", &run.position_violation},
+                              std::pair{"velocity_violation", &run.velocity_violation}}) {
+    const std::vector<double> v = read_doubles(file, std::string("/constraints/") + name, 0, rows);
+    if (v.empty()) continue;
+    *target = Series{name, as_vector(v)};
+    ns = std::min(ns, rows);
+  }
+  if (exists(file, "/solver/steps")) {
+    H5Handle dataset(H5Dopen2(file, "/solver/steps", H5P_DEFAULT));
+    H5Handle space(H5Dget_space(dataset.get()));
+    hsize_t n = 0;
+    if (H5Sget_simple_extent_ndims(space.get()) == 1) H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+    std::vector<long long> steps(n);
+    if (n > 0 && H5Dread(dataset.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                         steps.data()) >= 0) {
+      ns = std::min(ns, n);
+      if (ns > 0) run.steps = steps[ns - 1];
+    }
+  }
+
+  // Redundant constraint equations found at the start (names and what they depend on).
+  const std::vector<std::string> redundant = read_strings(file, "/constraints/redundant");
+  const std::vector<std::string> with = read_strings(file, "/constraints/redundant_with");
+  for (std::size_t k = 0; k < redundant.size(); ++k) {
+    run.redundant_equations.emplace_back(redundant[k], k < with.size() ? with[k] : "");
+  }
+  return ns;
+}
+
+// Mode tables: modes.h5 beside the results when it holds the body (kinds and labels), else the
+// frequencies in results.h5. A damaged modes.h5 is noted, not fatal: the results still report.
+void read_mode_tables(RunData& run) {
+  const std::filesystem::path modes_file = run.directory / "modes.h5";
+  render::ModeShapes modes;
+  std::error_code error;
+  if (std::filesystem::is_regular_file(modes_file, error)) {
+    try {
+      modes = render::read_mode_shapes(modes_file);
+    } catch (const InputError& e) {
+      run.notes.push_back(std::string("modes.h5 not used: ") + e.what());
+    }
+  }
+  for (const render::BodyTrack& body : run.results.bodies) {
+    if (!body.flexible) continue;
+    ModeTable table{body.name, "results.h5", {}};
+    const auto in_modes = std::find_if(modes.bodies.begin(), modes.bodies.end(),
+                                       [&](const render::BodyModeShapes& b) { return b.name == body.name; });
+    if (in_modes != modes.bodies.end()) {
+      table.source = "modes.h5";
+      const Eigen::VectorXd& f = in_modes->mesh.frequencies_hz;
+      for (Eigen::Index i = 0; i < f.size(); ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        table.modes.push_back({f(i), k < in_modes->kinds.size() ? in_modes->kinds[k] : "",
+                               k < in_modes->labels.size() ? in_modes->labels[k] : ""});
+      }
+    } else {
+      for (Eigen::Index i = 0; i < body.mesh.frequencies_hz.size(); ++i) {
+        table.modes.push_back({body.mesh.frequencies_hz(i), "", ""});
+      }
+    }
+    run.mode_tables.push_back(std::move(table));
+  }
+}
+
+// Media left by `limber render`.
+void find_media(RunData& run) {
+  std::error_code error;
+  const std::filesystem::path frames = run.directory / "frames";
+  if (std::filesystem::is_directory(frames, error)) {
+    for (const auto& entry : std::filesystem::directory_iterator(frames, error)) {
+      if (entry.is_regular_file() && entry.path().extension() == ".png") {
+        run.frames.push_back(entry.path());
+      }
+    }
+    std::sort(run.frames.begin(), run.frames.end());
+  }
+  const std::filesystem::path video = run.directory / "animation.mp4";
+  if (std::filesystem::is_regular_file(video, error)) run.video = video;
+}
+
+}  // namespace
+
+RunData read_run_data(const std::filesystem::path& directory) {
+  RunData run;
+  run.directory = directory;
+  // Structure, bodies, joints and time: render's reader (throws InputError on a bad file).
+  run.results = render::read_results(directory);
+
+  // The series it leaves out, the solver settings, mode tables and media.
+  SilentHdf5Errors silent;
+  {
+    H5Handle file(H5Fopen(run.results.file.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+    if (!file.valid()) {
+      throw InputError("expected a readable results file '" + run.results.file.string() +
+                       "', got an HDF5 open failure");
+    }
+    const hsize_t ns = read_series(file.get(), run);
+    truncate(run, static_cast<Eigen::Index>(ns));
+    run.solver_attributes = attributes(file.get(), "/", kKnownRootAttributes);
+    for (auto& attribute : attributes(file.get(), "/solver", {})) {
+      run.solver_attributes.push_back(std::move(attribute));
+    }
+  }
+  read_mode_tables(run);
+  find_media(run);
+  return run;
+}
+
+Eigen::VectorXd max_deflection(const render::BodyTrack& body) {
+  const Eigen::Index ns = body.modal_coordinates.rows();
+  Eigen::VectorXd largest = Eigen::VectorXd::Zero(ns);
+  if (body.mesh.mode_translations.cols() == 0 || body.mesh.nodes.rows() == 0) return largest;
+  for (Eigen::Index s = 0; s < ns; ++s) {
+    // u = Phi eta, node-major xyz: one column of a 3 x nn map per node.
+    const Eigen::VectorXd u = body.mesh.mode_translations * body.modal_coordinates.row(s).transpose();
+    const Eigen::Map<const Eigen::Matrix3Xd> nodes(u.data(), 3, u.size() / 3);
+    largest(s) = nodes.colwise().norm().maxCoeff();
+  }
+  return largest;
+}
+
+}  // namespace limber::report

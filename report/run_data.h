@@ -1,0 +1,78 @@
+// Everything the report shows about one run directory, read from its files only:
+// DIR/results.h5 (docs/results-format.md) through render's reader plus the per-sample series
+// render does not need (reactions, drivers, energies, violations, steps), DIR/modes.h5
+// (docs/modes-format.md) for mode kinds and labels, and the media `limber render` left in DIR.
+#pragma once
+
+#include "results_reader.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace limber::report {
+
+using RowMatrix3d = render::RowMatrix3d;
+
+// Reactions on body_j of one joint, ns x 3 each.
+struct JointReactions {
+  std::string name;
+  RowMatrix3d force_joint;   // joint frame [N]
+  RowMatrix3d torque_joint;  // joint frame [N m]
+};
+
+// A named per-sample series (driver effort, energy, violation).
+struct Series {
+  std::string name;
+  Eigen::VectorXd values;  // ns
+};
+
+// One row of a flexible body's mode table.
+struct ModeRow {
+  double frequency_hz = 0.0;
+  std::string kind;   // normal | constraint | attachment; "" when only results.h5 was read
+  std::string label;  // e.g. "constraint uz at node 101"; "" when unknown
+};
+
+struct ModeTable {
+  std::string body;
+  std::string source;  // "modes.h5" or "results.h5"
+  std::vector<ModeRow> modes;
+};
+
+struct RunData {
+  std::filesystem::path directory;
+  render::Results results;              // title, status, bodies, meshes, joints, time (ns)
+  std::vector<JointReactions> joints;   // in the order of results.joints
+  std::vector<Series> drivers;          // efforts [N or N m]
+  std::vector<Series> energies;         // [J]
+  std::optional<Series> position_violation;
+  std::optional<Series> velocity_violation;
+  std::optional<std::int64_t> steps;    // cumulative accepted steps at the last sample
+  // Attributes of /solver and unknown root attributes (integrator, tolerances, wall time...),
+  // as text, in the file's order.
+  std::vector<std::pair<std::string, std::string>> solver_attributes;
+  // Redundant constraint equations ("R2.z") and the equations each combines ("R1.z, R3.z").
+  std::vector<std::pair<std::string, std::string>> redundant_equations;
+  std::vector<ModeTable> mode_tables;   // flexible bodies only
+  std::vector<std::filesystem::path> frames;  // DIR/frames/*.png, sorted
+  std::optional<std::filesystem::path> video; // DIR/animation.mp4
+  std::vector<std::string> notes;       // what was found but could not be used, and why
+
+  Eigen::Index sample_count() const { return results.sample_count(); }
+  bool finished_ok() const { return results.status == "ok"; }
+};
+
+// Reads `directory`. Throws InputError (expected/got, naming the file) when results.h5 is
+// missing, damaged or not a limber results file. A run that failed or was killed is read as it
+// is: every series is cut to the samples complete in all datasets read.
+RunData read_run_data(const std::filesystem::path& directory);
+
+// Largest elastic displacement max_n |u_n| of a flexible body per sample [m], u = Phi eta.
+Eigen::VectorXd max_deflection(const render::BodyTrack& body);
+
+}  // namespace limber::report

@@ -1,0 +1,202 @@
+// `limber run`: reads a mechanism case, assembles it, reports its redundant constraint
+// equations, integrates it (IDA or generalized-α) and writes DIR/results.h5 sample by sample
+// (docs/results-format.md). A numerical failure ends the run with a message saying when and
+// why; the samples before it stay in the file (status "failed").
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/command.h"
+#include "app/json_text.h"
+#include "app/run_progress.h"
+#include "core/error.h"
+#include "io/case_reader.h"
+#include "results/results_writer.h"
+#include "run/run_driver.h"
+
+namespace limber::app {
+
+namespace {
+
+struct RunOptions {
+  std::string case_file;
+  std::string output_dir;
+  std::string integrator;  // "" = the case's
+  std::optional<double> rtol, atol, step, t_end;
+  bool json = false;
+};
+
+// The case's run settings with the command-line overrides.
+io::RunSettings settings_with_overrides(io::RunSettings settings, const RunOptions& options) {
+  integrate::IntegratorOptions& integrator = settings.integrator;
+  if (options.integrator == "ida") integrator.method = integrate::Method::kIda;
+  if (options.integrator == "galpha") integrator.method = integrate::Method::kGeneralizedAlpha;
+  if (options.rtol) integrator.rtol = *options.rtol;
+  if (options.atol) integrator.atol = *options.atol;
+  if (options.step) integrator.step = *options.step;
+  if (options.t_end) settings.t_end = *options.t_end;
+  return settings;
+}
+
+std::string describe_integrator(const integrate::IntegratorOptions& options) {
+  if (options.method == integrate::Method::kIda) {
+    return fmt::format("ida (BDF, GGL index 2), rtol {:g}, atol {:g}", options.rtol, options.atol);
+  }
+  return fmt::format("galpha (Lie-group generalized-alpha, index 3), step {:g} s, rho_inf {:g}",
+                     options.step, options.rho_inf);
+}
+
+void print_model(std::FILE* out, const multibody::Model& model) {
+  const int joint_rows = model.num_equations() - static_cast<int>(model.drivers.size());
+  fmt::print(out, "model: moving bodies {}, joints {}, drivers {}, force elements {}; "
+                  "velocities {}, equations {} (joints) + {} (drivers)\n",
+             model.bodies.size() - 1, model.joints.size(), model.drivers.size(),
+             model.forces.size(), model.nv, joint_rows, model.drivers.size());
+}
+
+void print_start(std::FILE* out, const multibody::Model& model, const run::PreparedStart& start) {
+  fmt::print(out,
+             "assembly: closed in {} Newton iterations, max residual {:.3g}; velocity "
+             "constraints {:.3g} after projection\n",
+             start.assembly.iterations, start.assembly.residual, start.velocity_residual);
+  const std::size_t independent = start.partition.independent.size();
+  if (start.redundant.empty()) {
+    fmt::print(out, "redundancy: none ({} independent equations)\n", independent);
+    return;
+  }
+  fmt::print(out,
+             "redundancy: {} of {} equations are redundant (rank {}); their reactions are "
+             "minimum-norm and flagged indeterminate:\n",
+             start.redundant.size(), model.num_equations(), independent);
+  for (const run::RedundantEquationReport& r : start.redundant) {
+    fmt::print(out, "  {}\n", r.description);
+  }
+}
+
+std::string json_string_list(const std::vector<std::string>& values) {
+  std::string text = "[";
+  for (std::size_t k = 0; k < values.size(); ++k) text += (k ? ", " : "") + json_string(values[k]);
+  return text + "]";
+}
+
+std::string json_report(const run::RunSummary& summary, const std::string& results_path) {
+  std::vector<std::string> names, details;
+  for (const run::RedundantEquationReport& r : summary.redundant) {
+    names.push_back(r.name);
+    details.push_back(r.description);
+  }
+  const integrate::Statistics& s = summary.statistics;
+  return fmt::format(
+      "{{\"status\": {}, \"message\": {}, \"integrator\": {}, \"t_end\": {}, \"t_reached\": {}, "
+      "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_iterations\": {}, "
+      "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
+      "\"redundant\": {}, \"redundant_details\": {}, \"results\": {}}}",
+      json_string(summary.ok ? "ok" : "failed"), json_string(summary.message),
+      json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
+      summary.samples, s.steps, s.rejected_steps, s.newton_iterations,
+      json_number(summary.wall_seconds), json_number(summary.max_position_violation),
+      json_number(summary.max_velocity_violation), json_string_list(names),
+      json_string_list(details), json_string(results_path));
+}
+
+int run_case(const RunOptions& options) {
+  const io::Case input = io::read_case_file(options.case_file);
+  if (!input.mechanism) {
+    throw InputError("expected a mechanism (a 'bodies' section), got none",
+                     SourceLocation{options.case_file, 0, 0});
+  }
+  const multibody::Model& model = input.mechanism->model;
+  const io::RunSettings settings = settings_with_overrides(input.mechanism->run, options);
+  run::check_settings(settings);
+
+  // Human-readable text on stdout, or on stderr when stdout carries JSON.
+  std::FILE* text = options.json ? stderr : stdout;
+  fmt::print(text, "limber run: {} ({})\n", input.title, input.file);
+  print_model(text, model);
+
+  // Results file, written while the run goes.
+  const std::filesystem::path directory =
+      options.output_dir.empty()
+          ? std::filesystem::path("out") / std::filesystem::path(options.case_file).stem()
+          : std::filesystem::path(options.output_dir);
+  results::ResultsWriter writer(directory, input.title, input.file);
+  const std::string results_path = writer.path().string();
+
+  // The run, with a progress line on a terminal.
+  std::optional<RunProgress> progress;
+  run::RunHooks hooks;
+  hooks.writer = &writer;
+  hooks.on_start = [&](const run::PreparedStart& start) {
+    print_start(text, model, start);
+    fmt::print(text, "integrator: {}; t_end {:g} s, output every {:g} s\n",
+               describe_integrator(settings.integrator), settings.t_end, settings.sample_interval);
+    std::fflush(text);
+    progress.emplace(settings.t_end, true);
+  };
+  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
+    if (progress) progress->update(sample.t, sample.statistics.steps);
+  };
+  const run::RunSummary summary =
+      run::run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  progress.reset();
+
+  // Summary, JSON, and the failure (exit code 2) if any.
+  const integrate::Statistics& s = summary.statistics;
+  if (summary.failure != "assembly") {
+    fmt::print(text,
+               "{}: t = {:g} s, {} samples, {} steps ({} rejected, {} Newton iterations), "
+               "{:.3f} s wall\n",
+               summary.ok ? "finished" : "stopped", summary.t_reached, summary.samples, s.steps,
+               s.rejected_steps, s.newton_iterations, summary.wall_seconds);
+    fmt::print(text, "max constraint violation: position {:.3g}, velocity {:.3g}\n",
+               summary.max_position_violation, summary.max_velocity_violation);
+  }
+  fmt::print(text, "wrote {}\n", results_path);
+  if (options.json) fmt::print(stdout, "{}\n", json_report(summary, results_path));
+  if (!summary.ok) {
+    fmt::print(stderr, "limber: error: run failed: {} ({} samples kept in {})\n", summary.message,
+               summary.samples, results_path);
+    return kExitNumerical;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_run_command(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cli = app.add_subcommand(
+      "run", "Simulate a mechanism: assembly, redundancy, time integration; write results.h5");
+  cli->footer(
+      "Prints the model size, the assembly, every redundant constraint equation with the\n"
+      "equations it depends on, and a summary; a progress line on a terminal. Writes\n"
+      "DIR/results.h5 one sample at a time (docs/results-format.md): poses, joint reactions,\n"
+      "driver efforts, energies, constraint violations, steps. Settings come from the case's\n"
+      "'run' section (docs/case-format.md); the options below override them.\n"
+      "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
+      "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
+      "are kept and the file's status is \"failed\"), 3 internal error.");
+  cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
+  cli->add_option("-o,--output", options->output_dir,
+                  "Output directory, created when missing (default: out/<case file stem>)");
+  cli->add_option("--integrator", options->integrator,
+                  "ida (variable-step BDF, error control) or galpha (fixed-step generalized-alpha)")
+      ->check(CLI::IsMember({"ida", "galpha"}));
+  cli->add_option("--rtol", options->rtol, "IDA relative tolerance (> 0)");
+  cli->add_option("--atol", options->atol, "IDA absolute tolerance (> 0)");
+  cli->add_option("--step", options->step, "generalized-alpha step [s] (> 0)");
+  cli->add_option("--t-end", options->t_end, "End time [s] (>= 0)");
+  cli->add_flag("--json", options->json,
+                "Print exactly one JSON object on stdout: {\"status\", \"message\", \"integrator\", "
+                "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", "
+                "\"newton_iterations\", \"wall_s\", \"max_constraint_violation\", "
+                "\"max_velocity_violation\", \"redundant\": [equation names], "
+                "\"redundant_details\", \"results\"}; the text goes to stderr");
+  return {cli, [options] { return run_case(*options); }};
+}
+
+}  // namespace limber::app

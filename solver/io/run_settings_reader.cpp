@@ -1,0 +1,37 @@
+#include "io/run_settings_reader.h"
+
+#include <string>
+
+namespace limber::io {
+
+RunSettings read_run_settings(const YamlValue& entry) {
+  entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "rho_inf", "max_steps",
+                    "t_end", "sample_interval"});
+  RunSettings settings;
+  integrate::IntegratorOptions& options = settings.integrator;
+  // Integrator and its settings (those of the other integrator are allowed and kept).
+  if (const auto method = entry.find("integrator")) {
+    options.method = method->as_choice({"ida", "galpha"}) == "galpha"
+                         ? integrate::Method::kGeneralizedAlpha
+                         : integrate::Method::kIda;
+  }
+  if (const auto rtol = entry.find("rtol")) options.rtol = rtol->as_positive();
+  if (const auto atol = entry.find("atol")) options.atol = atol->as_positive();
+  if (const auto max_step = entry.find("max_step")) options.max_step = max_step->as_non_negative();
+  if (const auto step = entry.find("step")) options.step = step->as_positive();
+  if (const auto rho = entry.find("rho_inf")) {
+    options.rho_inf = rho->as_non_negative();
+    if (options.rho_inf > 1.0) {
+      rho->fail("expected 0 <= rho_inf <= 1 for 'rho_inf', got '" + rho->node().Scalar() + "'");
+    }
+  }
+  if (const auto budget = entry.find("max_steps")) options.max_steps = budget->as_positive_integer();
+  // Time span and output.
+  if (const auto t_end = entry.find("t_end")) settings.t_end = t_end->as_non_negative();
+  if (const auto interval = entry.find("sample_interval")) {
+    settings.sample_interval = interval->as_positive();
+  }
+  return settings;
+}
+
+}  // namespace limber::io

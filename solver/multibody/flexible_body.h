@@ -1,0 +1,61 @@
+// The constant data of a flexible body in the floating frame of reference (seed paper
+// eq. 1-2: r_P = r + A (s0_P + u), u = Σ φ_i η_i), shared read-only by every copy of the
+// Model. Formulation, kept invariant terms and the reference-frame conditions:
+// docs/multibody.md, "Flexible bodies"; the dynamics are in flexible_dynamics.h, the node
+// kinematics in flexible_marker.h.
+//
+// Coordinates of a flexible body: q_b = [r_WB (3), p (4), η (nm)], v_b = [ṙ_WB (3),
+// ω in body axes (3), η̇ (nm)]; η are the modal coordinates of mass-normalised modes
+// (φᵀ M φ = 1, so η is in kg^½ m and the modal mass matrix is I).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "modal/mode_set.h"
+
+namespace limber::multibody {
+
+// Modal damping ratio used when none is given: 1 % of critical in every mode, a usual
+// value for bolted or welded steel structures (and the default of Adams Flex below 100 Hz).
+inline constexpr double kDefaultModalDampingRatio = 0.01;
+
+// Viscous damping of the modal coordinates, Q_η,i = −c_i η̇_i, either as a ratio of
+// critical per mode (c_i = 2 ζ_i ω_i) or Rayleigh's α M + β K (c_i = α + β ω_i², acting
+// on the elastic modes only: the frame's rigid motion is never damped).
+struct ModalDamping {
+  enum class Kind { kRatio, kRayleigh };
+  Kind kind = Kind::kRatio;
+  Eigen::VectorXd ratios = Eigen::VectorXd::Constant(1, kDefaultModalDampingRatio);  // 1 or nm values, ≥ 0
+  double alpha = 0.0;  // [1/s], ≥ 0
+  double beta = 0.0;   // [s], ≥ 0
+
+  static ModalDamping ratio(double zeta);                    // the same ζ in every mode
+  static ModalDamping per_mode(const Eigen::VectorXd& zeta);  // ζ_i, one per mode
+  static ModalDamping rayleigh(double alpha, double beta);
+};
+
+struct FlexibleBody {
+  Eigen::MatrixXd node_positions;  // 3 x nodes: undeformed FE nodes, body frame [m]
+  Eigen::MatrixXd shapes;          // 6 nodes x nm: mode shapes (ux uy uz rx ry rz per node)
+  Eigen::VectorXd stiffness;       // nm: ω_i² = φ_iᵀ K φ_i [1/s²]
+  Eigen::VectorXd damping;         // nm: c_i [1/s] (ModalDamping)
+  modal::ModalInvariants invariants;
+  double size = 0.0;               // diagonal of the nodes' bounding box [m]
+  Eigen::VectorXd initial_modal_coordinates;  // nm [kg^½ m]
+  Eigen::VectorXd initial_modal_velocities;   // nm [kg^½ m/s]
+
+  int mode_count() const { return static_cast<int>(shapes.cols()); }
+  int node_count() const { return static_cast<int>(node_positions.cols()); }
+  // Rows of the mode shapes at one node: elastic translation (3 x nm) and small rotation
+  // (3 x nm, rotation vector) per unit η.
+  auto translation_shapes(int node) const { return shapes.middleRows(6 * node, 3); }
+  auto rotation_shapes(int node) const { return shapes.middleRows(6 * node + 3, 3); }
+};
+
+// c_i of `damping` for modes with ω_i² = stiffness(i). Precondition (DEMAND): 1 or nm
+// ratios for kRatio.
+Eigen::VectorXd modal_damping_coefficients(const ModalDamping& damping, const Eigen::VectorXd& stiffness);
+
+}  // namespace limber::multibody

@@ -1,0 +1,30 @@
+#include "run/prepared_start.h"
+
+namespace limber::run {
+
+PreparedStart prepare_start(const multibody::Model& model,
+                            const multibody::AssemblyOptions& options) {
+  multibody::Workspace ws(model);
+  PreparedStart start;
+  start.state = multibody::initial_state(model);
+  start.state.t = 0.0;
+  start.partition = multibody::full_partition(model);
+
+  // Positions, then velocities: nothing else is meaningful on an open loop.
+  start.assembly = multibody::assemble_positions(model, start.state, ws, options);
+  if (start.assembly.status != multibody::AssemblyStatus::kOk) return start;
+  start.velocity_residual = multibody::assemble_velocities(model, start.state, ws, options);
+
+  // Redundancy is a property of the assembled configuration.
+  start.partition = multibody::analyse_redundancy(model, start.state, ws);
+  const std::vector<std::string> lines = start.partition.describe(model);
+  for (std::size_t k = 0; k < start.partition.redundant.size(); ++k) {
+    const multibody::RedundantEquation& equation = start.partition.redundant[k];
+    RedundantEquationReport report{model.equations[equation.row].name, {}, lines[k]};
+    for (int row : equation.depends_on) report.depends_on.push_back(model.equations[row].name);
+    start.redundant.push_back(std::move(report));
+  }
+  return start;
+}
+
+}  // namespace limber::run

@@ -1,0 +1,90 @@
+#include "run/run_driver.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "integrate/simulate.h"
+#include "multibody/multibody_system.h"
+#include "run/sample_record.h"
+
+namespace limber::run {
+
+void check_settings(const io::RunSettings& settings) {
+  settings.integrator.validate();
+  integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval);
+}
+
+RunSummary run_mechanism(const multibody::Model& model,
+                         const multibody::AssemblyOptions& assembly,
+                         const io::RunSettings& settings, const RunHooks& hooks) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  check_settings(settings);
+  RunSummary summary;
+  summary.integrator = integrate::to_string(settings.integrator.method);
+  summary.t_end = settings.t_end;
+  const auto finish = [&](results::RunStatus status) {
+    if (hooks.writer) hooks.writer->finish(status, summary.message);
+    summary.ok = status == results::RunStatus::kOk;
+    summary.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    return summary;
+  };
+
+  // Declarations come first so that even a failed assembly leaves a readable file.
+  if (hooks.writer) {
+    declare_model(model, *hooks.writer);
+    hooks.writer->set_integrator(summary.integrator);
+  }
+
+  // Assembly and redundancy analysis.
+  const PreparedStart start = prepare_start(model, assembly);
+  if (start.assembly.status != multibody::AssemblyStatus::kOk) {
+    summary.failure = "assembly";
+    summary.message = "assembly failed: " + start.assembly.message;
+    return finish(results::RunStatus::kFailed);
+  }
+  summary.redundant = start.redundant;
+  if (hooks.writer) {
+    std::vector<std::string> names, depends_on;
+    for (const RedundantEquationReport& r : start.redundant) {
+      names.push_back(r.name);
+      std::string list;
+      for (const std::string& name : r.depends_on) list += (list.empty() ? "" : ", ") + name;
+      depends_on.push_back(list);
+    }
+    hooks.writer->set_redundant_equations(names, depends_on);
+  }
+  if (hooks.on_start) hooks.on_start(start);
+
+  // Integration on the independent rows, energies accumulated by the integrator.
+  const multibody::MultibodySystem system(model, start.partition);
+  integrate::IntegratorOptions options = settings.integrator;
+  options.quadrature =
+      energy_quadrature(model, start.partition, start.state, settings.integrator.rtol);
+  SampleRecorder recorder(model, start.partition);
+  const auto on_sample = [&](const integrate::Sample& sample) {
+    const results::Sample record = recorder.record(sample);
+    if (hooks.writer) hooks.writer->append_sample(record);
+    summary.t_reached = sample.t;
+    summary.max_position_violation =
+        std::max(summary.max_position_violation, record.position_violation);
+    summary.max_velocity_violation =
+        std::max(summary.max_velocity_violation, record.velocity_violation);
+    if (hooks.on_sample) hooks.on_sample(sample, record);
+  };
+  const integrate::SimulationResult result = integrate::simulate(
+      system, options, {0.0, start.state.q, start.state.v},
+      integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval), on_sample);
+
+  // Outcome: a failure keeps every sample written before it.
+  summary.samples = result.samples;
+  summary.statistics = result.statistics;
+  if (!result.status.ok()) {
+    summary.failure = integrate::to_string(result.status.code);
+    summary.message = result.status.message;
+    return finish(results::RunStatus::kFailed);
+  }
+  return finish(results::RunStatus::kOk);
+}
+
+}  // namespace limber::run

@@ -1,0 +1,56 @@
+// The run of a mechanism (`limber run`, issue 3): assemble, analyse redundancy, integrate with
+// output at a fixed sample interval, and hand every sample to the results file as it comes
+// (flushed per sample: everything before a failure or a kill stays readable).
+//
+// Failures are returned, never thrown (house style §11): an assembly that does not close, or an
+// integrator failure ("at t = … s: why"), ends the run with status "failed" and that message in
+// the summary and in results.h5. Bad settings throw InputError before anything is written.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "integrate/integrator.h"
+#include "io/mechanism_reader.h"
+#include "multibody/model.h"
+#include "results/results_writer.h"
+#include "run/prepared_start.h"
+
+namespace limber::run {
+
+struct RunSummary {
+  bool ok = false;
+  std::string message;          // why the run failed ("" when ok)
+  std::string failure;          // "assembly", an integrate::StatusCode name, or ""
+  std::string integrator;       // "ida" / "galpha"
+  double t_end = 0.0;           // requested end time [s]
+  double t_reached = 0.0;       // time of the last sample written [s]
+  int samples = 0;
+  integrate::Statistics statistics;
+  double wall_seconds = 0.0;    // assembly, analysis, integration and output
+  double max_position_violation = 0.0;  // max over samples of max |g| [m or rad]
+  double max_velocity_violation = 0.0;  // max over samples of max |G v + g_t|
+  std::vector<RedundantEquationReport> redundant;
+};
+
+// Optional observers; all may be empty.
+struct RunHooks {
+  results::ResultsWriter* writer = nullptr;  // declared, filled and finished by the run
+  // After assembly and redundancy analysis, before integration (e.g. to print the redundancy).
+  std::function<void(const PreparedStart&)> on_start;
+  // Every sample, after it is written.
+  std::function<void(const integrate::Sample&, const results::Sample&)> on_sample;
+};
+
+// Throws InputError when the settings cannot run (integrator options out of range, sample
+// interval not positive).
+void check_settings(const io::RunSettings& settings);
+
+// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings or held
+// coordinates (before writing any sample).
+RunSummary run_mechanism(const multibody::Model& model,
+                         const multibody::AssemblyOptions& assembly,
+                         const io::RunSettings& settings, const RunHooks& hooks = {});
+
+}  // namespace limber::run

@@ -1,0 +1,124 @@
+#include "run/sample_record.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "core/error.h"
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+#include "multibody/energy_rates.h"
+#include "multibody/reactions.h"
+#include "multibody/rotation.h"
+
+namespace limber::run {
+
+namespace {
+
+results::ShapeSpec to_shape_spec(const multibody::Shape& shape) {
+  results::ShapeSpec spec;
+  spec.type = shape.type == multibody::ShapeType::kBox        ? results::ShapeSpec::Type::kBox
+              : shape.type == multibody::ShapeType::kCylinder ? results::ShapeSpec::Type::kCylinder
+                                                              : results::ShapeSpec::Type::kSphere;
+  spec.size = shape.size;
+  spec.offset_position = shape.offset.position;
+  const Eigen::Vector4d& p = shape.offset.orientation;
+  spec.offset_orientation = Eigen::Quaterniond(p(0), p(1), p(2), p(3)).normalized();
+  spec.color = shape.color;
+  return spec;
+}
+
+}  // namespace
+
+void declare_model(const multibody::Model& model, results::ResultsWriter& writer) {
+  // Moving bodies (ground has no pose to record).
+  for (std::size_t b = 1; b < model.bodies.size(); ++b) {
+    results::RigidBodySpec spec{model.bodies[b].name, {}};
+    for (const multibody::Shape& shape : model.bodies[b].shapes) {
+      spec.shapes.push_back(to_shape_spec(shape));
+    }
+    writer.add_rigid_body(spec);
+  }
+  for (const multibody::Joint& joint : model.joints) {
+    writer.add_joint({joint.name, multibody::to_string(joint.type),
+                      model.bodies[model.markers[joint.marker_i].body].name,
+                      model.bodies[model.markers[joint.marker_j].body].name});
+  }
+  for (const multibody::Driver& driver : model.drivers) writer.add_driver(driver.name);
+  for (const char* name : kEnergyNames) writer.add_energy(name);
+}
+
+integrate::Quadrature energy_quadrature(const multibody::Model& model,
+                                        const multibody::ConstraintPartition& partition,
+                                        const multibody::State& start, double rtol) {
+  // The integrand runs inside the integrator: it gets its own workspace.
+  auto ws = std::make_shared<multibody::Workspace>(model);
+  integrate::Quadrature quadrature;
+  quadrature.size = kEnergyIntegrals;
+  quadrature.integrand = [&model, &partition, ws](double t, const Eigen::VectorXd& q,
+                                                  const Eigen::VectorXd& v,
+                                                  const Eigen::VectorXd& v_dot,
+                                                  const Eigen::VectorXd& lambda,
+                                                  Eigen::VectorXd& f) {
+    const multibody::EnergyRates rates =
+        multibody::energy_rates(model, partition, multibody::State{t, q, v}, v_dot, lambda, *ws);
+    f << rates.dissipation, rates.driver, rates.forces;
+  };
+  // Energy scale at the start, for the integrals' absolute tolerance.
+  const multibody::EnergyTerms energy = multibody::energies(model, start, *ws);
+  const double scale =
+      std::max(1.0, energy.kinetic + std::abs(energy.gravity) + std::abs(energy.spring));
+  quadrature.atol = rtol * scale;
+  return quadrature;
+}
+
+SampleRecorder::SampleRecorder(const multibody::Model& model,
+                               const multibody::ConstraintPartition& partition)
+    : model_(model), partition_(partition), workspace_(model) {}
+
+results::Sample SampleRecorder::record(const integrate::Sample& sample) {
+  LIMBER_DEMAND(sample.integrals.size() == kEnergyIntegrals);
+  const multibody::State state{sample.t, sample.q, sample.v};
+  results::Sample out;
+  out.time = sample.t;
+  out.steps = sample.statistics.steps;
+
+  // Body poses: frame origin and quaternion (w, x, y, z), ground <- body.
+  for (std::size_t b = 1; b < model_.bodies.size(); ++b) {
+    const multibody::Body& body = model_.bodies[b];
+    const Eigen::Vector4d p = sample.q.segment<4>(body.q_offset + 3).normalized();
+    results::BodySample pose;
+    pose.position = sample.q.segment<3>(body.q_offset);
+    pose.orientation = Eigen::Quaterniond(p(0), p(1), p(2), p(3));
+    out.bodies.push_back(pose);
+  }
+
+  // Reactions on body j (joint frame = marker j's axes) and driver efforts.
+  const multibody::Reactions reactions =
+      multibody::compute_reactions(model_, state, sample.vdot, partition_, workspace_);
+  for (const multibody::JointReaction& r : reactions.joints) {
+    results::JointSample joint;
+    joint.position = r.point_W;
+    joint.force_joint = r.force_j_J;
+    joint.torque_joint = r.torque_j_J;
+    joint.force_ground = r.force_j_W;
+    joint.torque_ground = r.torque_j_W;
+    joint.indeterminate = r.indeterminate;
+    out.joints.push_back(joint);
+  }
+  out.driver_efforts = reactions.driver_efforts;
+
+  // Energies: stored ones from the state, flows from the integrals.
+  const multibody::EnergyTerms energy = multibody::energies(model_, state, workspace_);
+  out.energies = {energy.kinetic,      energy.gravity,      energy.spring,
+                  sample.integrals(0), sample.integrals(1), sample.integrals(2)};
+
+  // Constraint violations over all rows (redundant ones included).
+  const multibody::ConstraintViolation violation =
+      multibody::constraint_violation(model_, state, workspace_);
+  out.position_violation = violation.position;
+  out.velocity_violation = violation.velocity;
+  return out;
+}
+
+}  // namespace limber::run

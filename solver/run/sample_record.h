@@ -1,0 +1,52 @@
+// What `limber run` writes for one output sample (docs/results-format.md): body poses, joint
+// reactions on body j in the joint frame and in ground axes with the indeterminate flags,
+// driver efforts, energies, constraint violations and the step count, computed from the
+// integrator's sample (q, v, v̇, λ and the energy integrals).
+#pragma once
+
+#include <array>
+
+#include "integrate/integrator.h"
+#include "multibody/model.h"
+#include "multibody/redundancy.h"
+#include "multibody/state.h"
+#include "results/results_writer.h"
+
+namespace limber::run {
+
+// Energy datasets, in the order of results::Sample::energies [J]. The last three are integrals
+// of powers accumulated by the integrator's quadrature (multibody/energy_rates.h), in the
+// order of kEnergyIntegrals.
+inline constexpr std::array<const char*, 6> kEnergyNames = {
+    "kinetic", "gravity", "spring", "dissipated", "driver_work", "force_work"};
+inline constexpr int kEnergyIntegrals = 3;
+
+// Declares every body (with its shapes), joint, driver and energy of `model` in `writer`,
+// in model order (the indices of results::Sample follow the model's).
+void declare_model(const multibody::Model& model, results::ResultsWriter& writer);
+
+// The quadrature the integrator accumulates for the energies: ∫ dissipation, ∫ driver power,
+// ∫ power of force actuators and point loads [J], with IDA's absolute tolerance on them
+// rtol · E, E the mechanism's energy scale at the start (kinetic + |gravity| + spring, at least
+// 1 J): energies are held to the same relative accuracy as q and v. References must outlive
+// the run.
+integrate::Quadrature energy_quadrature(const multibody::Model& model,
+                                        const multibody::ConstraintPartition& partition,
+                                        const multibody::State& start, double rtol);
+
+// Turns integrator samples into results samples; one per run (holds a Workspace).
+class SampleRecorder {
+ public:
+  // References must outlive the recorder.
+  SampleRecorder(const multibody::Model& model, const multibody::ConstraintPartition& partition);
+
+  // Precondition: sample.integrals holds kEnergyIntegrals values (energy_quadrature).
+  results::Sample record(const integrate::Sample& sample);
+
+ private:
+  const multibody::Model& model_;
+  const multibody::ConstraintPartition& partition_;
+  multibody::Workspace workspace_;
+};
+
+}  // namespace limber::run

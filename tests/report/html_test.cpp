@@ -1,0 +1,28 @@
+// Escaping of text from files and the relative links of the page.
+#include "html.h"
+
+#include <gtest/gtest.h>
+
+namespace limber::report {
+namespace {
+
+TEST(HtmlEscape, EscapesMarkupAndQuotes) {
+  EXPECT_EQ(html_escape("<script>alert(\"x\") & 'y'</script>"),
+            "&lt;script&gt;alert(&quot;x&quot;) &amp; &#39;y&#39;&lt;/script&gt;");
+  EXPECT_EQ(html_escape("plain R3 joint"), "plain R3 joint");
+}
+
+TEST(RelativeUrl, PercentEncodesAndWalksUp) {
+  EXPECT_EQ(relative_url("/tmp/run a/report", "/tmp/run a/animation.mp4"), "../animation.mp4");
+  EXPECT_EQ(relative_url("/tmp/out", "/tmp/run a/animation.mp4"), "../run%20a/animation.mp4");
+  EXPECT_EQ(relative_url("/tmp/out", "/tmp/out/x\"<.png"), "x%22%3C.png");
+}
+
+TEST(FileStem, KeepsOnlySafeCharacters) {
+  EXPECT_EQ(file_stem("R3"), "R3");
+  EXPECT_EQ(file_stem("../a b<c>"), "___a_b_c_");
+  EXPECT_EQ(file_stem(""), "_");
+}
+
+}  // namespace
+}  // namespace limber::report

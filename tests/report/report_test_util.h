@@ -1,0 +1,65 @@
+// Helpers of the report tests: fresh directories, PNG pixels, links of a page.
+#pragma once
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace limber::report::testing {
+
+inline std::filesystem::path fresh_directory(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("limber_report_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// An RGB(A) PNG read back; pixel(x, y) with y counted from the top.
+struct Png {
+  int width = 0, height = 0, components = 0;
+  vtkNew<vtkImageData> image;
+
+  explicit Png(const std::filesystem::path& file) {
+    vtkNew<vtkPNGReader> reader;
+    reader->SetFileName(file.string().c_str());
+    reader->Update();
+    image->DeepCopy(reader->GetOutput());
+    const int* d = image->GetDimensions();
+    width = d[0];
+    height = d[1];
+    components = image->GetNumberOfScalarComponents();
+  }
+  std::array<int, 3> pixel(int x, int y) const {
+    const auto* p = static_cast<const unsigned char*>(
+        const_cast<vtkImageData*>(image.Get())->GetScalarPointer(x, height - 1 - y, 0));
+    return {p[0], p[1], p[2]};
+  }
+};
+
+// Every src="..." and href="..." value of a page.
+inline std::vector<std::string> links(const std::string& html) {
+  std::vector<std::string> out;
+  const std::regex attribute(R"((?:src|href)="([^"]*)\")");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), attribute);
+       it != std::sregex_iterator(); ++it) {
+    out.push_back((*it)[1].str());
+  }
+  return out;
+}
+
+}  // namespace limber::report::testing

@@ -1,0 +1,191 @@
+// `limber run` as a user runs it (popen): the seed slider-crank lists its redundant equations
+// by joint and direction on stdout, in --json and in results.h5; the results file holds every
+// documented dataset with one row per sample; bad case files give file:line:col (exit 1); a
+// failed run exits with 2 and leaves a readable file with status "failed".
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "../results/h5_test_read.h"
+#include "mini_json.h"
+#include "run_test_support.h"
+
+namespace limber {
+namespace {
+
+using results::testing::dataset_dims;
+using results::testing::read_doubles;
+using results::testing::read_string_attribute;
+
+test::CommandRun run_limber(const std::string& args) { return test::run_command(LIMBER_EXE, args); }
+
+const std::string kCase = std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml";
+
+// Equations out of the plane of motion (x-z): revolute axes (marker z) are along ground y, so
+// R*.z (position along y), R*.rot_x and R*.rot_y (tilts of the axis) leave the plane; the
+// translational's marker z is along ground x and its marker x along ground y, so T.x (along
+// y), T.rot_y and T.rot_z (about ground z and x) do too. T.rot_x is the in-plane rotation.
+bool out_of_plane(const std::string& name) {
+  static const std::set<std::string> names = {"R1.z", "R1.rot_x", "R1.rot_y", "R2.z", "R2.rot_x",
+                                              "R2.rot_y", "R3.z", "R3.rot_x", "R3.rot_y", "T.x",
+                                              "T.rot_y", "T.rot_z"};
+  return names.contains(name);
+}
+
+TEST(RunCli, SliderCrankListsItsRedundantEquationsEverywhere) {
+  const auto dir = test::fresh_directory("cli_redundant");
+  const test::CommandRun run = run_limber("run " + kCase + " -o " + dir.string() + " --t-end 0.05 --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+
+  // --json: exactly one object with the documented fields.
+  const test::JsonValue json = test::parse_json(run.out);
+  EXPECT_EQ(json["status"].string(), "ok");
+  EXPECT_EQ(json["integrator"].string(), "ida");
+  EXPECT_EQ(json["t_end"].number(), 0.05);
+  EXPECT_EQ(json["samples"].number(), 51.0);  // every 1 ms from 0 to 50 ms
+  EXPECT_GT(json["steps"].number(), 10.0);
+  EXPECT_GE(json["wall_s"].number(), 0.0);
+  // Positions at IDA's interpolated samples, rtol 1e-6 of the case: well below 1e-5 m.
+  EXPECT_LT(json["max_constraint_violation"].number(), 1e-5);
+
+  // 18 velocities, 21 equations, rank 18: 3 redundant, every one out of the plane and named
+  // "<joint>.<direction>" of a revolute (the 3D model's surplus is at the crank pins).
+  const test::JsonValue::Array& redundant = json["redundant"].array();
+  ASSERT_EQ(redundant.size(), 3u);
+  std::vector<std::string> names;
+  for (const test::JsonValue& name : redundant) {
+    names.push_back(name.string());
+    EXPECT_TRUE(out_of_plane(name.string())) << name.string();
+    // Listed on stdout's text (stderr under --json) with what it depends on.
+    EXPECT_NE(run.err.find("  " + name.string() + " is redundant with "), std::string::npos) << run.err;
+  }
+  EXPECT_NE(run.err.find("3 of 21 equations are redundant (rank 18)"), std::string::npos) << run.err;
+
+  // results.h5: the same names, and the equations each depends on, all out of plane too.
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(test::read_fixed_strings(file, "/constraints/redundant"), names);
+  const std::vector<std::string> depends = test::read_fixed_strings(file, "/constraints/redundant_with");
+  ASSERT_EQ(depends.size(), 3u);
+  for (const std::string& list : depends) {
+    std::size_t start = 0;
+    while (start < list.size()) {
+      const std::size_t end = std::min(list.find(", ", start), list.size());
+      EXPECT_TRUE(out_of_plane(list.substr(start, end - start))) << list;
+      start = end + 2;
+    }
+  }
+  H5Fclose(file);
+}
+
+TEST(RunCli, ResultsHoldEveryDocumentedDataset) {
+  const auto dir = test::fresh_directory("cli_layout");
+  const test::CommandRun run =
+      run_limber("run " + kCase + " -o " + dir.string() + " --integrator galpha --step 1e-4 --t-end 0.02");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("finished: t = 0.02 s, 21 samples, 200 steps"), std::string::npos) << run.out;
+
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "format"), "limber-results");
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "ok");
+  EXPECT_EQ(read_string_attribute(file, "/", "integrator"), "galpha");
+  EXPECT_EQ(read_string_attribute(file, "/", "title"), "Slider-crank, rigid rod, crank at 20 rev/s");
+  const hsize_t ns = 21;
+  using Dims = std::vector<hsize_t>;
+  EXPECT_EQ(dataset_dims(file, "/time"), Dims{ns});
+  for (const char* body : {"crank", "rod", "slider"}) {
+    const std::string group = std::string("/bodies/") + body;
+    EXPECT_EQ(read_string_attribute(file, group, "kind"), "rigid");
+    EXPECT_EQ(dataset_dims(file, group + "/position"), (Dims{ns, 3}));
+    EXPECT_EQ(dataset_dims(file, group + "/orientation"), (Dims{ns, 4}));
+    EXPECT_EQ(read_string_attribute(file, group + "/shapes/0", "type"), "box");
+  }
+  for (const char* joint : {"R1", "R2", "R3", "T"}) {
+    const std::string group = std::string("/joints/") + joint;
+    for (const char* name : {"position", "force_joint", "torque_joint", "force_ground", "torque_ground"}) {
+      EXPECT_EQ(dataset_dims(file, group + "/" + name), (Dims{ns, 3})) << group << "/" << name;
+    }
+    EXPECT_EQ(dataset_dims(file, group + "/indeterminate"), Dims{ns});
+  }
+  EXPECT_EQ(read_string_attribute(file, "/joints/T", "type"), "translational");
+  EXPECT_EQ(read_string_attribute(file, "/joints/R2", "body_i"), "crank");
+  EXPECT_EQ(dataset_dims(file, "/drivers/D1/effort"), Dims{ns});
+  for (const char* energy : {"kinetic", "gravity", "spring", "dissipated", "driver_work", "force_work"}) {
+    EXPECT_EQ(dataset_dims(file, std::string("/energy/") + energy), Dims{ns}) << energy;
+  }
+  EXPECT_EQ(dataset_dims(file, "/constraints/position_violation"), Dims{ns});
+  EXPECT_EQ(dataset_dims(file, "/constraints/velocity_violation"), Dims{ns});
+  EXPECT_EQ(dataset_dims(file, "/constraints/redundant"), Dims{3});
+  EXPECT_EQ(dataset_dims(file, "/solver/steps"), Dims{ns});
+
+  // Values: the slider on the closed form (gen-α h = 0.1 ms, O(h²) with (ωh)² = 1.6e-4: error
+  // ~1e-5 m; bound 1e-4 m); the R1 joint point stays at the origin; gen-α holds g = 0 at its
+  // steps to the Newton tolerance (sample values are Hermite interpolants: bound 1e-6).
+  const std::vector<double> time = read_doubles(file, "/time");
+  const std::vector<double> slider = read_doubles(file, "/bodies/slider/position");
+  const double a = 0.15, b = 1.0, omega = 2 * std::numbers::pi * 20;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    const double s = std::sin(omega * time[k]);
+    EXPECT_NEAR(slider[3 * k], a * std::cos(omega * time[k]) + std::sqrt(b * b - a * a * s * s), 1e-4);
+  }
+  for (double x : read_doubles(file, "/joints/R1/position")) EXPECT_NEAR(x, 0.0, 1e-12);
+  for (double g : read_doubles(file, "/constraints/position_violation")) EXPECT_LT(g, 1e-6);
+  const std::vector<double> steps = read_doubles(file, "/solver/steps");
+  EXPECT_EQ(steps.back(), 200.0);  // 0.02 s at h = 0.1 ms
+  H5Fclose(file);
+}
+
+TEST(RunCli, BadCaseFileGivesFileLineAndExitOne) {
+  const std::string path = test::write_case(
+      "bad_joint", test::edited_case(kCase, "R2: {type: revolute,", "R2: {type: hinge,"));
+  const test::CommandRun run = run_limber("run " + path + " -o " + test::fresh_directory("bad").string());
+  EXPECT_EQ(run.exit_code, 1);
+  // "R2: {type: hinge," sits on the line of R2; 'hinge' at the column after "type: ".
+  const std::string text = test::read_text(path);
+  const std::size_t at = text.find("hinge");
+  const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  const std::size_t column = at - text.rfind('\n', at);
+  EXPECT_EQ(run.err, "limber: error: " + path + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                         ": expected one of revolute, translational, spherical, bracket, universal, "
+                         "cylindrical for 'type', got 'hinge'\n");
+  // A case without a mechanism.
+  const test::CommandRun modes_only = run_limber("run " + std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml -o " +
+                                                 test::fresh_directory("no_mechanism").string());
+  EXPECT_EQ(modes_only.exit_code, 1);
+  EXPECT_NE(modes_only.err.find("expected a mechanism (a 'bodies' section), got none"), std::string::npos);
+  // Options out of range.
+  EXPECT_EQ(run_limber("run " + kCase + " --rtol -1").exit_code, 1);
+  EXPECT_EQ(run_limber("run " + kCase + " --integrator euler").exit_code, 1);
+}
+
+TEST(RunCli, FailedRunExitsWithTwoAndKeepsAReadableFile) {
+  // A step budget of 50 stops IDA after a few ms of the 0.1 s.
+  const std::string path =
+      test::write_case("cli_budget", test::edited_case(kCase, "  t_end: 1.0 ", "  max_steps: 50\n  t_end: 0.1 "));
+  const auto dir = test::fresh_directory("cli_budget");
+  const test::CommandRun run = run_limber("run " + path + " -o " + dir.string() + " --json");
+  EXPECT_EQ(run.exit_code, 2);
+  const test::JsonValue json = test::parse_json(run.out);
+  EXPECT_EQ(json["status"].string(), "failed");
+  EXPECT_NE(json["message"].string().find("at t = "), std::string::npos);
+  EXPECT_NE(run.err.find("limber: error: run failed: at t = "), std::string::npos) << run.err;
+
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "failed");
+  EXPECT_EQ(read_string_attribute(file, "/", "message"), json["message"].string());
+  const std::vector<double> time = read_doubles(file, "/time");
+  EXPECT_EQ(static_cast<double>(time.size()), json["samples"].number());
+  EXPECT_GT(time.size(), 1u);
+  EXPECT_EQ(dataset_dims(file, "/joints/R3/force_ground"), (std::vector<hsize_t>{time.size(), 3}));
+  H5Fclose(file);
+}
+
+}  // namespace
+}  // namespace limber
