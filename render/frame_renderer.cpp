@@ -1,5 +1,6 @@
 #include "frame_renderer.h"
 
+#include "edge_smoothing.h"
 #include "egl_context.h"
 #include "egl_render_window.h"
 #include "scene.h"
@@ -12,6 +13,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <cstdlib>
 
 namespace limber::render {
 namespace {
@@ -75,6 +77,11 @@ Image FrameRenderer::render(double t) {
     std::memcpy(image.rgb.data() + row * y, source + row * (h - 1 - y), row);
   }
   m.timing.readback += seconds_since(start);
+  if (std::getenv("LX_AA")) {
+    start = std::chrono::steady_clock::now();
+    smooth_edges(image);
+    m.timing.smoothing += seconds_since(start);
+  }
   ++m.timing.frames;
   return image;
 }

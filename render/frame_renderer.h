@@ -2,36 +2,23 @@
 // One FrameRenderer owns one OpenGL context: use it from the thread that created it.
 #pragma once
 
+#include "image.h"
 #include "render_options.h"
 #include "results_reader.h"
 
 #include <Eigen/Core>
 
-#include <array>
-#include <cstdint>
 #include <memory>
 #include <vector>
 
 namespace limber::render {
-
-// An 8-bit RGB image, rows from the top.
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgb;  // width * height * 3
-
-  // Pixel at column x (from the left) and row y (from the top).
-  std::array<int, 3> pixel(int x, int y) const {
-    const std::size_t k = 3 * (static_cast<std::size_t>(y) * width + x);
-    return {rgb[k], rgb[k + 1], rgb[k + 2]};
-  }
-};
 
 // Wall-clock seconds spent per phase, summed over the frames rendered.
 struct RenderTiming {
   double scene_update = 0.0;  // poses, deformed meshes, text
   double draw = 0.0;          // VTK render (llvmpipe rasterisation, FXAA)
   double readback = 0.0;      // glReadPixels and row flip
+  double smoothing = 0.0;
   int frames = 0;
 };
 

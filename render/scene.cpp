@@ -11,6 +11,10 @@
 #include <vtkCylinderSource.h>
 #include <vtkDoubleArray.h>
 #include <vtkLightKit.h>
+#include <vtkFXAAOptions.h>
+#include <vtkLight.h>
+#include <vtkActorCollection.h>
+#include <cstdlib>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPlaneSource.h>
@@ -398,9 +402,35 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // Background, lighting, anti-aliasing (FXAA: far cheaper than multisampling in software,
   // yet the largest part of a frame there; docs/benchmarks.md).
   s.renderer->SetBackground(kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
-  auto lights = vtkSmartPointer<vtkLightKit>::New();
-  lights->AddLightsToRenderer(s.renderer);
-  s.renderer->SetUseFXAA(options.fxaa);
+  // EXPERIMENT knobs (temporary)
+  const char* lx = std::getenv("LX_LIGHTS");
+  std::string lmode = lx ? lx : "kit";
+  if (lmode == "kit") {
+    auto lights = vtkSmartPointer<vtkLightKit>::New();
+    lights->AddLightsToRenderer(s.renderer);
+  } else if (lmode == "head") {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToHeadlight();
+    s.renderer->AddLight(light);
+  } else if (lmode == "kit2") {
+    auto lights = vtkSmartPointer<vtkLightKit>::New();
+    lights->SetBackLightWarmth(0.5);
+    lights->AddLightsToRenderer(s.renderer);
+  }
+  s.renderer->SetUseFXAA(options.fxaa && !std::getenv("LX_AA"));
+  auto envf = [](const char* n, double d) { const char* v = std::getenv(n); return v ? std::atof(v) : d; };
+  vtkFXAAOptions* fx = s.renderer->GetFXAAOptions();
+  fx->SetEndpointSearchIterations(static_cast<int>(envf("LX_FXAA_ITER", 12)));
+  fx->SetUseHighQualityEndpoints(envf("LX_FXAA_HQ", 1) != 0);
+  fx->SetRelativeContrastThreshold(envf("LX_FXAA_REL", 1.0/8));
+  fx->SetHardContrastThreshold(envf("LX_FXAA_HARD", 1.0/16));
+  fx->SetSubpixelBlendLimit(envf("LX_FXAA_SUBLIM", 0.75));
+  fx->SetSubpixelContrastThreshold(envf("LX_FXAA_SUBTHR", 0.25));
+  if (envf("LX_SPEC", 1) == 0) {
+    for (auto& v : s.shapes) v.actor->GetProperty()->SetSpecular(0.0);
+    vtkActorCollection* ac = s.renderer->GetActors(); ac->InitTraversal();
+    while (vtkActor* a = ac->GetNextActor()) a->GetProperty()->SetSpecular(0.0);
+  }
 
   // Camera: a fixed one fits the whole motion, a follow one fits the largest single frame.
   // The scene is put at t0 first: clipping ranges read the actors' bounds.

@@ -57,6 +57,9 @@ int main(int argc, char** argv) {
   } catch (const limber::InputError& error) {
     std::fprintf(stderr, "limber: error: %s\n", error.what());
     return kExitBadInput;
+  } catch (const limber::NumericalError& error) {
+    std::fprintf(stderr, "limber: error: %s\n", error.what());
+    return kExitNumerical;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "limber: internal error: %s\n", error.what());
     return kExitInternal;

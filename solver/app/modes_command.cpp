@@ -15,6 +15,7 @@
 #include "app/json_text.h"
 #include "core/error.h"
 #include "io/case_reader.h"
+#include "io/flexible_body_modes.h"
 #include "io/modes_file.h"
 #include "io/vtu_writer.h"
 #include "modal/component_modes.h"
@@ -40,16 +41,6 @@ struct BodyOutcome {
   const io::FlexibleBodyCase* body = nullptr;
   modal::ModalResult result;
 };
-
-// Runs the reduction; errors of the request point at the body's `modes` entry.
-modal::ModalResult compute_body_modes(const io::FlexibleBodyCase& body) {
-  try {
-    return modal::compute_component_modes(body.model, body.request);
-  } catch (const InputError& error) {
-    if (error.where().known()) throw;
-    throw InputError("body '" + body.name + "': " + error.message(), body.modes_where);
-  }
-}
 
 // The frequency table of one body, rigid modes found and notices.
 void print_table(std::FILE* out, const BodyOutcome& outcome) {
@@ -149,7 +140,8 @@ int run_modes(const ModesOptions& options) {
   std::vector<BodyOutcome> outcomes;
   std::vector<std::string> failures;
   for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
-    BodyOutcome outcome{&body, compute_body_modes(body)};
+    // Reading a mechanism that uses the body has computed its modes already.
+    BodyOutcome outcome{&body, body.modes ? *body.modes : io::compute_body_modes(body)};
     if (outcome.result.status != modal::ModalStatus::kOk) {
       failures.push_back(fmt::format("body '{}': {}: {}", body.name,
                                      outcome.result.status == modal::ModalStatus::kSingular

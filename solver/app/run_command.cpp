@@ -92,12 +92,13 @@ std::string json_report(const run::RunSummary& summary, const std::string& resul
   const integrate::Statistics& s = summary.statistics;
   return fmt::format(
       "{{\"status\": {}, \"message\": {}, \"integrator\": {}, \"t_end\": {}, \"t_reached\": {}, "
-      "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_iterations\": {}, "
+      "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_failures\": {}, "
+      "\"newton_iterations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
       "\"redundant\": {}, \"redundant_details\": {}, \"results\": {}}}",
       json_string(summary.ok ? "ok" : "failed"), json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
-      summary.samples, s.steps, s.rejected_steps, s.newton_iterations,
+      summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
       json_number(summary.wall_seconds), json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
       json_string_list(details), json_string(results_path));
@@ -139,6 +140,10 @@ int run_case(const RunOptions& options) {
   };
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
     if (progress) progress->update(sample.t, sample.statistics.steps);
+  };
+  hooks.on_warning = [&](const std::string& warning) {
+    if (progress) progress->clear();
+    fmt::print(stderr, "limber: warning: {}\n", warning);
   };
   const run::RunSummary summary =
       run::run_mechanism(model, input.mechanism->assembly, settings, hooks);
@@ -192,7 +197,7 @@ Command add_run_command(CLI::App& app) {
   cli->add_option("--t-end", options->t_end, "End time [s] (>= 0)");
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"message\", \"integrator\", "
-                "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", "
+                "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", \"newton_failures\", "
                 "\"newton_iterations\", \"wall_s\", \"max_constraint_violation\", "
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
                 "\"redundant_details\", \"results\"}; the text goes to stderr");

@@ -27,4 +27,10 @@ void RunProgress::update(double t, long steps) {
   std::fflush(stderr);
 }
 
+void RunProgress::clear() {
+  if (!active_ || last_percent_ < 0) return;
+  std::fputs("\r\033[K", stderr);
+  last_percent_ = -1;
+}
+
 }  // namespace limber::app

@@ -15,6 +15,8 @@ class RunProgress {
   RunProgress& operator=(const RunProgress&) = delete;
 
   void update(double t, long steps);
+  // Erases the line so a message can be printed; the next update redraws it.
+  void clear();
 
  private:
   double t_end_;

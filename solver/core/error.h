@@ -33,6 +33,14 @@ class InputError : public std::runtime_error {
   SourceLocation where_;
 };
 
+// A numerical method failed on valid input where the command cannot go on and has no status to
+// return (e.g. the eigen-solver of a flexible body a mechanism needs). Commands map it to their
+// "numerical failure" exit code; the message says what failed and where.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 [[noreturn]] void demand_failed(const char* condition, const char* file, int line);
 
 }  // namespace limber

@@ -297,6 +297,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
   flag = flag < 0 ? flag : IDASetSuppressAlg(s.ida, SUNTRUE);
   flag = flag < 0 ? flag : IDASetMaxNumSteps(s.ida, options.max_steps);
+  if (flag >= 0 && options.max_order > 0) flag = IDASetMaxOrd(s.ida, options.max_order);
   if (flag >= 0 && options.max_step > 0.0) flag = IDASetMaxStep(s.ida, options.max_step);
   const double h0 = options.initial_step > 0.0 ? options.initial_step
                                                : initial_step(system, {x0.t, q, v}, vdot, options);

@@ -40,6 +40,11 @@ struct IntegratorOptions {
   double atol = 1e-8;
   double max_step = 0.0;      // upper bound on IDA's step [s]; 0 = none
   double initial_step = 0.0;  // IDA's first step [s]; 0 = IDA's own estimate
+  // Highest BDF order IDA may use, 1..5; 0 = 5 (IDA's own). BDF3-5 are not A-stable (stability
+  // angles 86°, 73°, 51°: Hairer & Wanner, Solving ODEs II, §V.2): lightly damped structural
+  // modes, whose eigenvalues lie near the imaginary axis, make them fail the error test step
+  // after step. `limber run` picks 2 for mechanisms with flexible bodies (docs/integrators.md).
+  int max_order = 0;
 
   // Generalized-α: fixed step h [s] and spectral radius at infinity ρ∞ ∈ [0, 1]
   // (Chung & Hulbert 1993: ρ∞ = 1 no numerical damping, ρ∞ = 0 asymptotic annihilation).

@@ -35,7 +35,7 @@ Case read_case(const YamlDocument& document) {
       result.flexible_bodies.push_back(read_flexible_body(name, entry, library));
     }
   }
-  if (has_mechanism(root)) result.mechanism = read_mechanism(root);
+  if (has_mechanism(root)) result.mechanism = read_mechanism(root, result.flexible_bodies);
   return result;
 }
 

@@ -13,6 +13,7 @@
 // including the errors raised by fe::FeModelBuilder, which receives those locations.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,8 @@ struct FlexibleBodyCase {
   SourceLocation modes_where;  // its `modes` entry (for errors of the mode computation)
   fe::FeModel model;
   modal::ModeRequest request;  // node indices refer to `model`
+  // Computed while reading a mechanism that uses this body (flexible_body_modes.h), else null.
+  std::shared_ptr<const modal::ModalResult> modes;
 };
 
 struct Case {

@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 
+#include "io/flexible_mechanism_body.h"
 #include "io/mechanism_values.h"
 #include "io/run_settings_reader.h"
 #include "multibody/model_builder.h"
@@ -82,10 +83,32 @@ void read_body(const std::string& name, const YamlValue& entry, ModelBuilder& bu
   builder.add_rigid_body(spec, entry.where());
 }
 
+// The flexible bodies of the mechanism, by name.
+using FlexibleBodies = std::map<std::string, PlacedFlexibleBody>;
+
+// A marker on an FE node of a flexible body: axes in body axes, or in ground at the initial pose.
+void read_node_marker(const std::string& name, const YamlValue& entry,
+                      const PlacedFlexibleBody& body, ModelBuilder& builder) {
+  entry.allow_only({"body", "node", "orientation", "frame"});
+  const std::string body_name = entry.at("body").as_string();
+  const int node = read_node(entry.at("node"), *body.component);
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  if (const auto orientation = entry.find("orientation")) rotation = read_rotation(*orientation);
+  if (entry.find("frame") && entry.at("frame").as_choice({"body", "ground"}) == "ground") {
+    rotation = multibody::rotation_matrix(body.pose.orientation).transpose() * rotation;
+  }
+  builder.add_node_marker(name, body_name, node, rotation, entry.where());
+}
+
 // Position and orientation of a marker, in the body frame or in ground at the initial poses.
-void read_marker(const std::string& name, const YamlValue& entry, ModelBuilder& builder) {
-  entry.allow_only({"body", "position", "orientation", "frame"});
+void read_marker(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible,
+                 ModelBuilder& builder) {
   const std::string body = entry.at("body").as_string();
+  if (const auto found = flexible.find(body); found != flexible.end()) {
+    read_node_marker(name, entry, found->second, builder);
+    return;
+  }
+  entry.allow_only({"body", "position", "orientation", "frame"});
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   if (const auto p = entry.find("position")) position = p->as_vector3();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
@@ -112,7 +135,8 @@ JointType read_joint_type(const YamlValue& value) {
 
 // A joint on two named markers, or at a point given in ground (it then creates the markers
 // <name>.i on body_i and <name>.j on body_j, frames `orientation` and `orientation_j`).
-JointType read_joint(const std::string& name, const YamlValue& entry, ModelBuilder& builder) {
+JointType read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible,
+                     ModelBuilder& builder) {
   entry.allow_only({"type", "marker_i", "marker_j", "body_i", "body_j", "position", "orientation",
                     "orientation_j"});
   const JointType type = read_joint_type(entry.at("type"));
@@ -132,8 +156,21 @@ JointType read_joint(const std::string& name, const YamlValue& entry, ModelBuild
   if (const auto orientation = entry.find("orientation")) R_i = read_rotation(*orientation);
   Eigen::Matrix3d R_j = R_i;
   if (const auto orientation = entry.find("orientation_j")) R_j = read_rotation(*orientation);
-  builder.add_marker_at(name + ".i", entry.at("body_i").as_string(), p_W, R_i, entry.where());
-  builder.add_marker_at(name + ".j", entry.at("body_j").as_string(), p_W, R_j, entry.where());
+  // On a flexible body the marker sits on the FE node at p_W.
+  const auto add_marker = [&](const std::string& marker, const char* body_key,
+                              const Eigen::Matrix3d& R_W) {
+    const std::string body = entry.at(body_key).as_string();
+    if (const auto found = flexible.find(body); found != flexible.end()) {
+      const int node = node_at_point(found->second, body, p_W, entry.at("position"));
+      const Eigen::Matrix3d R_B =
+          multibody::rotation_matrix(found->second.pose.orientation).transpose() * R_W;
+      builder.add_node_marker(marker, body, node, R_B, entry.where());
+    } else {
+      builder.add_marker_at(marker, body, p_W, R_W, entry.where());
+    }
+  };
+  add_marker(name + ".i", "body_i", R_i);
+  add_marker(name + ".j", "body_j", R_j);
   builder.add_joint(name, type, name + ".i", name + ".j", entry.where());
   return type;
 }
@@ -246,7 +283,7 @@ bool has_mechanism(const YamlValue& root) {
   return false;
 }
 
-MechanismCase read_mechanism(const YamlValue& root) {
+MechanismCase read_mechanism(const YamlValue& root, std::vector<FlexibleBodyCase>& components) {
   if (!root.find("bodies")) {
     root.fail("missing required key 'bodies' in 'the case file' (a mechanism needs its bodies)");
   }
@@ -254,14 +291,21 @@ MechanismCase read_mechanism(const YamlValue& root) {
   // to the ones before).
   ModelBuilder builder;
   if (const auto gravity = root.find("gravity")) builder.set_gravity(gravity->as_vector3());
-  for (const auto& [name, entry] : root.at("bodies").entries()) read_body(name, entry, builder);
+  FlexibleBodies flexible;
+  for (const auto& [name, entry] : root.at("bodies").entries()) {
+    if (entry.is_map() && entry.find("flexible")) {
+      flexible[name] = read_flexible_mechanism_body(name, entry, components, builder);
+    } else {
+      read_body(name, entry, builder);
+    }
+  }
   if (const auto markers = root.find("markers")) {
-    for (const auto& [name, entry] : markers->entries()) read_marker(name, entry, builder);
+    for (const auto& [name, entry] : markers->entries()) read_marker(name, entry, flexible, builder);
   }
   std::map<std::string, JointType> joint_types;
   if (const auto joints = root.find("joints")) {
     for (const auto& [name, entry] : joints->entries()) {
-      joint_types[name] = read_joint(name, entry, builder);
+      joint_types[name] = read_joint(name, entry, flexible, builder);
     }
   }
   if (const auto drivers = root.find("drivers")) {

@@ -2,7 +2,8 @@
 // multibody::Model built through multibody::ModelBuilder, plus the assembly and run settings
 // of `limber run`:
 //   gravity    [gx, gy, gz] [m/s²]
-//   bodies     rigid bodies: mass, inertia, centre of mass, initial pose and velocity, shapes
+//   bodies     rigid bodies: mass, inertia, centre of mass, initial pose and velocity, shapes;
+//              flexible bodies: an entry of flexible_bodies placed (flexible_mechanism_body.h)
 //   markers    frames on bodies (position/orientation in the body frame or in ground)
 //   joints     revolute | translational | spherical | bracket | universal | cylindrical,
 //              on two named markers or at a point given in ground (markers <joint>.i/.j)
@@ -16,6 +17,7 @@
 
 #include <initializer_list>
 #include <string_view>
+#include <vector>
 
 #include "integrate/integrator_options.h"
 #include "io/yaml_reader.h"
@@ -43,8 +45,11 @@ extern const std::initializer_list<std::string_view> kMechanismSections;
 // True when the case root holds any mechanism section.
 bool has_mechanism(const YamlValue& root);
 
-// Reads every mechanism section of the case root. Throws InputError (with location); a case
-// with mechanism sections but no `bodies` is an error.
-MechanismCase read_mechanism(const YamlValue& root);
+// Reads every mechanism section of the case root. `components` are the case's flexible_bodies:
+// the modes of those the mechanism uses are computed and kept there. Throws InputError (with
+// location), NumericalError when such modes fail; a case with mechanism sections but no
+// `bodies` is an error.
+struct FlexibleBodyCase;
+MechanismCase read_mechanism(const YamlValue& root, std::vector<FlexibleBodyCase>& components);
 
 }  // namespace limber::io

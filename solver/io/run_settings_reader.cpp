@@ -6,7 +6,7 @@ namespace limber::io {
 
 RunSettings read_run_settings(const YamlValue& entry) {
   entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "rho_inf", "max_steps",
-                    "t_end", "sample_interval"});
+                    "max_order", "t_end", "sample_interval"});
   RunSettings settings;
   integrate::IntegratorOptions& options = settings.integrator;
   // Integrator and its settings (those of the other integrator are allowed and kept).
@@ -23,6 +23,12 @@ RunSettings read_run_settings(const YamlValue& entry) {
     options.rho_inf = rho->as_non_negative();
     if (options.rho_inf > 1.0) {
       rho->fail("expected 0 <= rho_inf <= 1 for 'rho_inf', got '" + rho->node().Scalar() + "'");
+    }
+  }
+  if (const auto order = entry.find("max_order")) {
+    options.max_order = order->as_positive_integer();
+    if (options.max_order > 5) {
+      order->fail("expected 1 <= max_order <= 5 for 'max_order', got '" + order->node().Scalar() + "'");
     }
   }
   if (const auto budget = entry.find("max_steps")) options.max_steps = budget->as_positive_integer();

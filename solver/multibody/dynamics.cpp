@@ -75,6 +75,12 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
   // Bodies: quadratic-velocity forces and gravity.
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     add_body_inertial_and_gravity_forces(model, b, state.q, state.v, ws.Q);
+    // Modal damping removes Σ c_i η̇_i² (flexible_dynamics.cpp applies Q_η = −c η̇).
+    const Body& body = model.bodies[b];
+    if (powers && body.kind == BodyKind::kFlexible) {
+      const auto eta_dot = state.v.segment(body.v_offset + 6, body.flexible->mode_count());
+      powers->dissipation += eta_dot.dot(body.flexible->damping.cwiseProduct(eta_dot));
+    }
   }
   // Force elements through marker kinematics.
   if (model.forces.empty()) return;

@@ -16,7 +16,7 @@ void mass_matrix(const Model& model, const State& state, Workspace& ws);
 
 // Rates of energy flow into the model at one instant [W].
 struct PowerTerms {
-  double dissipation = 0.0;  // Σ c θ̇² + Σ c l̇² ≥ 0, power removed by dampers
+  double dissipation = 0.0;  // Σ c θ̇² + Σ c l̇² + Σ c_i η̇_i² ≥ 0, removed by dampers
   double actuators = 0.0;    // Σ a θ̇ (RSDA) + Σ a l̇ (TSDA)
   double loads = 0.0;        // Σ F·ṗ + T·ω of point loads
 };

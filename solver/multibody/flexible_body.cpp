@@ -42,4 +42,13 @@ Eigen::VectorXd modal_damping_coefficients(const ModalDamping& damping, const Ei
   return c;
 }
 
+Eigen::Vector3d probe_deflection(const FlexibleBody& body, const DeflectionProbe& probe,
+                                 const Eigen::VectorXd& eta) {
+  const Eigen::Vector3d a = body.node_positions.col(probe.chord_start);
+  const Eigen::Vector3d chord = body.node_positions.col(probe.chord_end) - a;
+  const double s = (body.node_positions.col(probe.node) - a).dot(chord) / chord.squaredNorm();
+  const auto u = [&](int node) -> Eigen::Vector3d { return body.translation_shapes(node) * eta; };
+  return u(probe.node) - ((1.0 - s) * u(probe.chord_start) + s * u(probe.chord_end));
+}
+
 }  // namespace limber::multibody

@@ -9,6 +9,8 @@
 // (φᵀ M φ = 1, so η is in kg^½ m and the modal mass matrix is I).
 #pragma once
 
+#include <array>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -36,6 +38,21 @@ struct ModalDamping {
   static ModalDamping rayleigh(double alpha, double beta);
 };
 
+// How the body is drawn (render/ reads it from results.h5, as rigid bodies' shapes): its FE
+// elements over the nodes. Not used by the dynamics.
+struct FlexibleMesh {
+  std::vector<int> node_ids;              // user labels of the nodes (empty: 1..n)
+  std::vector<std::array<int, 2>> lines;  // beam elements, node indices
+  std::vector<std::array<int, 4>> quads;  // shell elements, node indices
+  double beam_radius = 0.0;               // radius of the tubes beams are drawn as [m]
+};
+
+// Output only: the elastic displacement of `node` relative to the chord between nodes
+// `chord_start` and `chord_end` (e.g. a rod's mid-span deflection), body axes. Node indices.
+struct DeflectionProbe {
+  int node = 0, chord_start = 0, chord_end = 0;
+};
+
 struct FlexibleBody {
   Eigen::MatrixXd node_positions;  // 3 x nodes: undeformed FE nodes, body frame [m]
   Eigen::MatrixXd shapes;          // 6 nodes x nm: mode shapes (ux uy uz rx ry rz per node)
@@ -45,6 +62,8 @@ struct FlexibleBody {
   double size = 0.0;               // diagonal of the nodes' bounding box [m]
   Eigen::VectorXd initial_modal_coordinates;  // nm [kg^½ m]
   Eigen::VectorXd initial_modal_velocities;   // nm [kg^½ m/s]
+  FlexibleMesh mesh;
+  std::optional<DeflectionProbe> deflection_probe;
 
   int mode_count() const { return static_cast<int>(shapes.cols()); }
   int node_count() const { return static_cast<int>(node_positions.cols()); }
@@ -57,5 +76,10 @@ struct FlexibleBody {
 // c_i of `damping` for modes with ω_i² = stiffness(i). Precondition (DEMAND): 1 or nm
 // ratios for kRatio.
 Eigen::VectorXd modal_damping_coefficients(const ModalDamping& damping, const Eigen::VectorXd& stiffness);
+
+// The probe's deflection at modal coordinates eta: u(node) minus the chord's displacement
+// interpolated at the node's projection on the undeformed chord [m, body axes].
+Eigen::Vector3d probe_deflection(const FlexibleBody& body, const DeflectionProbe& probe,
+                                 const Eigen::VectorXd& eta);
 
 }  // namespace limber::multibody

@@ -91,6 +91,20 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
       initial_modal_values(spec.name, "initial modal coordinates", spec.initial_modal_coordinates, nm, where);
   flexible->initial_modal_velocities =
       initial_modal_values(spec.name, "initial modal velocities", spec.initial_modal_velocities, nm, where);
+  flexible->mesh = spec.mesh;
+  if (const auto& probe = spec.deflection_probe) {
+    for (int node : {probe->node, probe->chord_start, probe->chord_end}) {
+      if (node < 0 || node >= nodes) {
+        throw InputError(fmt::format("flexible body \"{}\" deflection probe: expected node indices in [0, {}), got {}",
+                                     spec.name, nodes, node), where);
+      }
+    }
+    if (probe->chord_start == probe->chord_end) {
+      throw InputError(fmt::format("flexible body \"{}\" deflection probe: expected two different chord nodes",
+                                   spec.name), where);
+    }
+  }
+  flexible->deflection_probe = spec.deflection_probe;
   // Undeformed rigid properties, for information: m, c, J_c = J_o + m c̃ c̃.
   const modal::ModalInvariants& inv = flexible->invariants;
   Body body;

@@ -42,6 +42,8 @@ struct FlexibleBodySpec {
   Eigen::VectorXd initial_modal_coordinates;      // nm, or empty for 0 [kg^½ m]
   Eigen::VectorXd initial_modal_velocities;       // nm, or empty for 0 [kg^½ m/s]
   std::vector<Shape> shapes;
+  FlexibleMesh mesh;                              // for drawing; indices into node_positions_B
+  std::optional<DeflectionProbe> deflection_probe;  // output only; node indices
 };
 
 struct RsdaSpec {

@@ -322,6 +322,10 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
       group.get(), "modal_coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
       static_cast<hsize_t>(nm)));
   impl_->body_nmodes.push_back(static_cast<int>(nm));
+  if (body.has_deflection) {
+    impl_->body_series.back().push_back(impl_->create_series(
+        group.get(), "deflection", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+  }
   return static_cast<int>(impl_->body_series.size()) - 1;
 }
 
@@ -399,6 +403,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
       LIMBER_DEMAND(body.modal_coordinates.size() == m.body_nmodes[b]);
       m.append_row(series[2], body.modal_coordinates.data());
     }
+    if (series.size() > 3) m.append_vector3(series[3], body.deflection);
   }
 
   // Joints: point, reactions in both frames, redundancy flag.

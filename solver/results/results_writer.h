@@ -58,6 +58,8 @@ struct FlexibleBodySpec {
   // nm natural frequencies [Hz].
   Eigen::VectorXd frequencies_hz;
   std::vector<ShapeSpec> shapes;
+  // Writes /bodies/<body>/deflection [ns, 3] (BodySample::deflection) when true.
+  bool has_deflection = false;
 };
 
 struct JointSpec {
@@ -72,6 +74,9 @@ struct BodySample {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();                   // frame origin [m]
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();      // ground <- body
   Eigen::VectorXd modal_coordinates;  // nm values (flexible bodies), empty for rigid bodies
+  // Flexible bodies with a deflection probe: a node's elastic displacement relative to a
+  // chord between two other nodes, body axes [m].
+  Eigen::Vector3d deflection = Eigen::Vector3d::Zero();
 };
 
 // One joint's reaction on body_j at a sample.

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <set>
 
 #include "integrate/simulate.h"
+#include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/sample_record.h"
 
@@ -59,11 +61,23 @@ RunSummary run_mechanism(const multibody::Model& model,
   // Integration on the independent rows, energies accumulated by the integrator.
   const multibody::MultibodySystem system(model, start.partition);
   integrate::IntegratorOptions options = settings.integrator;
+  // BDF2 at most when flexible modes are present (integrator_options.h, max_order).
+  const bool flexible = std::any_of(model.bodies.begin(), model.bodies.end(), [](const auto& body) {
+    return body.kind == multibody::BodyKind::kFlexible;
+  });
+  if (options.max_order == 0 && flexible) options.max_order = 2;
   options.quadrature =
       energy_quadrature(model, start.partition, start.state, settings.integrator.rtol);
   SampleRecorder recorder(model, start.partition);
+  std::set<int> warned;  // flexible bodies that left the linear range
   const auto on_sample = [&](const integrate::Sample& sample) {
     const results::Sample record = recorder.record(sample);
+    for (const multibody::LinearRangeCheck& check :
+         multibody::check_linear_range(model, {sample.t, sample.q, sample.v})) {
+      if (check.warning.empty() || !warned.insert(check.body).second) continue;
+      summary.warnings.push_back(check.warning);
+      if (hooks.on_warning) hooks.on_warning(check.warning);
+    }
     if (hooks.writer) hooks.writer->append_sample(record);
     summary.t_reached = sample.t;
     summary.max_position_violation =

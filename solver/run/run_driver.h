@@ -32,6 +32,8 @@ struct RunSummary {
   double max_position_violation = 0.0;  // max over samples of max |g| [m or rad]
   double max_velocity_violation = 0.0;  // max over samples of max |G v + g_t|
   std::vector<RedundantEquationReport> redundant;
+  // Linear-range warnings (multibody/linear_range.h), the first per flexible body.
+  std::vector<std::string> warnings;
 };
 
 // Optional observers; all may be empty.
@@ -41,6 +43,8 @@ struct RunHooks {
   std::function<void(const PreparedStart&)> on_start;
   // Every sample, after it is written.
   std::function<void(const integrate::Sample&, const results::Sample&)> on_sample;
+  // A flexible body left the linear range (its first time only).
+  std::function<void(const std::string&)> on_warning;
 };
 
 // Throws InputError when the settings cannot run (integrator options out of range, sample

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
+#include <vector>
 
 #include "core/error.h"
 #include "multibody/constraints.h"
@@ -28,16 +30,45 @@ results::ShapeSpec to_shape_spec(const multibody::Shape& shape) {
   return spec;
 }
 
+// Mesh, translational mode shapes and frequencies of a flexible body (docs/results-format.md).
+results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
+                                             std::vector<results::ShapeSpec> shapes) {
+  const multibody::FlexibleBody& flexible = *body.flexible;
+  const int nn = flexible.node_count(), nm = flexible.mode_count();
+  results::FlexibleBodySpec spec;
+  spec.name = body.name;
+  spec.nodes = flexible.node_positions.transpose();
+  spec.node_ids = flexible.mesh.node_ids;
+  spec.lines.resize(static_cast<Eigen::Index>(flexible.mesh.lines.size()), 2);
+  for (std::size_t e = 0; e < flexible.mesh.lines.size(); ++e) {
+    for (int k = 0; k < 2; ++k) spec.lines(static_cast<Eigen::Index>(e), k) = flexible.mesh.lines[e][k];
+  }
+  spec.quads.resize(static_cast<Eigen::Index>(flexible.mesh.quads.size()), 4);
+  for (std::size_t e = 0; e < flexible.mesh.quads.size(); ++e) {
+    for (int k = 0; k < 4; ++k) spec.quads(static_cast<Eigen::Index>(e), k) = flexible.mesh.quads[e][k];
+  }
+  spec.beam_radius = flexible.mesh.beam_radius;
+  spec.mode_translations.resize(3 * nn, nm);
+  for (int n = 0; n < nn; ++n) spec.mode_translations.middleRows(3 * n, 3) = flexible.translation_shapes(n);
+  spec.frequencies_hz = flexible.stiffness.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
+  spec.shapes = std::move(shapes);
+  spec.has_deflection = flexible.deflection_probe.has_value();
+  return spec;
+}
+
 }  // namespace
 
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer) {
   // Moving bodies (ground has no pose to record).
   for (std::size_t b = 1; b < model.bodies.size(); ++b) {
-    results::RigidBodySpec spec{model.bodies[b].name, {}};
-    for (const multibody::Shape& shape : model.bodies[b].shapes) {
-      spec.shapes.push_back(to_shape_spec(shape));
+    const multibody::Body& body = model.bodies[b];
+    std::vector<results::ShapeSpec> shapes;
+    for (const multibody::Shape& shape : body.shapes) shapes.push_back(to_shape_spec(shape));
+    if (body.kind == multibody::BodyKind::kFlexible) {
+      writer.add_flexible_body(flexible_body_spec(body, std::move(shapes)));
+    } else {
+      writer.add_rigid_body({body.name, std::move(shapes)});
     }
-    writer.add_rigid_body(spec);
   }
   for (const multibody::Joint& joint : model.joints) {
     writer.add_joint({joint.name, multibody::to_string(joint.type),
@@ -90,6 +121,12 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     results::BodySample pose;
     pose.position = sample.q.segment<3>(body.q_offset);
     pose.orientation = Eigen::Quaterniond(p(0), p(1), p(2), p(3));
+    if (body.kind == multibody::BodyKind::kFlexible) {
+      pose.modal_coordinates = sample.q.segment(body.q_offset + 7, body.flexible->mode_count());
+      if (const auto& probe = body.flexible->deflection_probe) {
+        pose.deflection = multibody::probe_deflection(*body.flexible, *probe, pose.modal_coordinates);
+      }
+    }
     out.bodies.push_back(pose);
   }
 
@@ -110,7 +147,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
 
   // Energies: stored ones from the state, flows from the integrals.
   const multibody::EnergyTerms energy = multibody::energies(model_, state, workspace_);
-  out.energies = {energy.kinetic,      energy.gravity,      energy.spring,
+  out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
 
   // Constraint violations over all rows (redundant ones included).

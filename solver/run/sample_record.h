@@ -17,11 +17,12 @@ namespace limber::run {
 // Energy datasets, in the order of results::Sample::energies [J]. The last three are integrals
 // of powers accumulated by the integrator's quadrature (multibody/energy_rates.h), in the
 // order of kEnergyIntegrals.
-inline constexpr std::array<const char*, 6> kEnergyNames = {
-    "kinetic", "gravity", "spring", "dissipated", "driver_work", "force_work"};
+inline constexpr std::array<const char*, 7> kEnergyNames = {
+    "kinetic", "gravity", "spring", "strain", "dissipated", "driver_work", "force_work"};
 inline constexpr int kEnergyIntegrals = 3;
 
-// Declares every body (with its shapes), joint, driver and energy of `model` in `writer`,
+// Declares every body (with its shapes; flexible bodies with their mesh and modes), joint,
+// driver and energy of `model` in `writer`,
 // in model order (the indices of results::Sample follow the model's).
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer);
 

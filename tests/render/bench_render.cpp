@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <thread>
+#include <string>
 
 namespace {
 
@@ -53,8 +54,8 @@ void measure(const Results& results, RenderOptions options, int frames, double d
   std::printf("  frames/s (PNG included): %.1f\n", frames / wall);
   std::printf("  set-up (context, scene): %.0f ms\n", 1e3 * setup);
   std::printf("  per frame [ms]: scene update %.2f, draw %.2f, readback %.2f; "
-              "PNG encode+write %.2f (writer thread); CPU, all threads %.1f\n",
-              t.scene_update * ms, t.draw * ms, t.readback * ms, png * ms, cpu * ms);
+              "smoothing %.2f; PNG encode+write %.2f (writer thread); CPU, all threads %.1f\n",
+              t.scene_update * ms, t.draw * ms, t.readback * ms, t.smoothing * ms, png * ms, cpu * ms);
 }
 
 }  // namespace
@@ -87,9 +88,11 @@ int main(int argc, char** argv) {
     std::printf("limber_bench_render: %d frames, 1280x720, %ld nodes, %s, %u hardware threads\n",
                 frames, nodes, probe.backend().c_str(), std::thread::hardware_concurrency());
   }
-  measure(results, options, frames, scene.duration, "default (FXAA, light kit, colour bar, text)");
+  const char* lxp = std::getenv("LX_PASS");
+  const std::string pass = lxp ? lxp : "both";
+  if (pass != "nofxaa") measure(results, options, frames, scene.duration, "default (FXAA, light kit, colour bar, text)");
   options.fxaa = false;
-  measure(results, options, frames, scene.duration, "--no-fxaa");
-  std::filesystem::remove_all(dir);
+  if (pass != "default") measure(results, options, frames, scene.duration, "--no-fxaa");
+  if (!std::getenv("LX_KEEP")) std::filesystem::remove_all(dir);
   return 0;
 }

@@ -155,7 +155,7 @@ TEST(RunCli, BadCaseFileGivesFileLineAndExitOne) {
                          ": expected one of revolute, translational, spherical, bracket, universal, "
                          "cylindrical for 'type', got 'hinge'\n");
   // A case without a mechanism.
-  const test::CommandRun modes_only = run_limber("run " + std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml -o " +
+  const test::CommandRun modes_only = run_limber("run " + std::string(LIMBER_CASES_DIR) + "/plate_modes.yaml -o " +
                                                  test::fresh_directory("no_mechanism").string());
   EXPECT_EQ(modes_only.exit_code, 1);
   EXPECT_NE(modes_only.err.find("expected a mechanism (a 'bodies' section), got none"), std::string::npos);

@@ -112,14 +112,15 @@ TEST(RunDriver, EnergyBalanceOfTheResults) {
   const Recorded run = run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml", 0.1, 1e-8, 1e-10);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   const auto balance = [](const results::Sample& s) {
-    const std::vector<double>& e = s.energies;  // kinetic, gravity, spring, dissipated, driver, force
-    return e[0] + e[1] + e[2] + e[3] - e[4] - e[5];
+    // kinetic, gravity, spring, strain, dissipated, driver, force (run/sample_record.h)
+    const std::vector<double>& e = s.energies;
+    return e[0] + e[1] + e[2] + e[3] + e[4] - e[5] - e[6];
   };
   double kinetic = 0.0, drift = 0.0, work = 0.0;
   for (const results::Sample& s : run.samples) {
     kinetic = std::max(kinetic, s.energies[0]);
     drift = std::max(drift, std::abs(balance(s) - balance(run.samples.front())));
-    work = std::max(work, std::abs(s.energies[4]));
+    work = std::max(work, std::abs(s.energies[5]));
   }
   EXPECT_GT(kinetic, 10.0);
   EXPECT_GT(work, 1.0);  // the driver does work: the balance is not trivially zero

@@ -1,0 +1,50 @@
+// A flexible body in a mechanism (docs/case-format.md, "Flexible bodies in a mechanism"): an
+// entry of `bodies` that names an entry of `flexible_bodies`, whose FE model and modes it uses,
+// and places it:
+//   rod:
+//     flexible: rod                # the flexible_bodies entry (mesh, modes)
+//     position: [0.15, 0, 0]       # FE component origin in ground at t = 0 [m]
+//     orientation: {...}           # FE component axes in ground (default: ground axes)
+//     velocity, angular_velocity   # as for rigid bodies
+//     damping: 0.02                # ratio of critical in every mode, or [ζ1, ζ2, ...] per
+//                                  # mode, or {rayleigh: [α, β]}; default 1 % (flexible_body.h)
+//     modal_coordinates, modal_velocities   # η, η̇ at t = 0 (default 0)
+//     deflection: {node: 51, chord: [R2, R3]}   # results: a node's elastic displacement
+//                                  # relative to the chord between two nodes (body axes)
+// Markers on a flexible body sit on FE nodes: named by `node:` (an id or a one-node set), or
+// found at the ground point a joint is given at.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "io/case_reader.h"
+#include "io/yaml_reader.h"
+#include "multibody/model.h"
+#include "multibody/model_builder.h"
+
+namespace limber::io {
+
+// What the mechanism reader keeps of a flexible body to place markers on its nodes.
+struct PlacedFlexibleBody {
+  const FlexibleBodyCase* component = nullptr;
+  multibody::Pose pose;  // initial X_WB
+};
+
+// Reads the entry, computes the component's modes when not done yet (kept in the component;
+// NumericalError when they fail) and adds the body to `builder`.
+PlacedFlexibleBody read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
+                                                std::vector<FlexibleBodyCase>& components,
+                                                multibody::ModelBuilder& builder);
+
+// Index of the node named by `value`: a node id, or a node set holding exactly one node.
+int read_node(const YamlValue& value, const FlexibleBodyCase& component);
+
+// Index of the node of `body` at the ground point p_W (initial pose), within 1e-6 of the
+// body's size; else fails at `where`, naming the nearest node and its distance.
+int node_at_point(const PlacedFlexibleBody& body, const std::string& body_name,
+                  const Eigen::Vector3d& p_W, const YamlValue& where);
+
+}  // namespace limber::io

@@ -1,0 +1,105 @@
+// Flexible bodies in the mechanism sections: a `bodies` entry naming a `flexible_bodies` entry
+// gets its modes, markers on its FE nodes (by node id, node set or the ground point of a
+// joint), its damping and deflection probe; bad input names file, line and what was expected.
+#include "io/case_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "input_error_matchers.h"
+
+namespace limber::io {
+namespace {
+
+using test::fails_at;
+using test::location_of;
+
+// A 1 m steel beam of 10 elements, 3 free-free modes, hinged to ground at its first node and
+// carrying a marker on its last.
+const std::string kCase = R"(title: flexible pendulum
+materials:
+  steel: {E: 206.8e9, nu: 0.3, rho: 7820}
+sections:
+  bar: {shape: rectangle, width: 0.01, height: 0.02}
+flexible_bodies:
+  beam:
+    beams:
+      - {from: [0, 0, 0], to: [1, 0, 0], elements: 10, section: bar, material: steel,
+         orientation: [0, 1, 0], first_node_id: 1}
+    node_sets: {root: [1], tip: [11]}
+    modes: {normal: 3}
+bodies:
+  arm:
+    flexible: beam
+    position: [0.5, 0, 0]
+    damping: [0.01, 0.02, 0.03]
+    deflection: {node: 6, chord: [root, tip]}
+markers:
+  end: {body: arm, node: tip}
+joints:
+  hinge: {type: revolute, body_i: ground, body_j: arm, position: [0.5, 0, 0],
+          orientation: {z_axis: [0, 1, 0], x_axis: [1, 0, 0]}}
+)";
+
+std::string edited(const std::string& from, const std::string& to) {
+  std::string text = kCase;
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(FlexibleMechanismReader, BodyMarkersDampingAndProbeLandInTheModel) {
+  const Case input = read_case_text(kCase, "test.yaml");
+  ASSERT_TRUE(input.mechanism.has_value());
+  const multibody::Model& model = input.mechanism->model;
+  const multibody::Body& arm = model.bodies[model.find_body("arm")];
+  ASSERT_EQ(arm.kind, multibody::BodyKind::kFlexible);
+  // Frame (6) plus 3 modes; its modes are kept with the flexible_bodies entry (computed once).
+  EXPECT_EQ(arm.nv, 9);
+  ASSERT_TRUE(input.flexible_bodies[0].modes != nullptr);
+  EXPECT_EQ(input.flexible_bodies[0].modes->mode_set.shapes.cols(), 3);
+  // Mass rho A L; damping c_i = 2 ζ_i ω_i per mode.
+  EXPECT_NEAR(arm.mass, 7820 * 0.01 * 0.02, 1e-9);
+  const multibody::FlexibleBody& flexible = *arm.flexible;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(flexible.damping(i), 2 * 0.01 * (i + 1) * std::sqrt(flexible.stiffness(i)), 1e-9);
+  }
+  // Markers: node set 'tip' = node index 10; the hinge's rod side found at the ground point
+  // (0.5, 0, 0) = the body origin = node index 0.
+  for (const multibody::Marker& marker : model.markers) {
+    if (marker.name == "end") EXPECT_EQ(marker.node, 10);
+    if (marker.name == "hinge.j") EXPECT_EQ(marker.node, 0);
+  }
+  ASSERT_TRUE(flexible.deflection_probe.has_value());
+  EXPECT_EQ(flexible.deflection_probe->node, 5);
+  EXPECT_EQ(flexible.deflection_probe->chord_end, 10);
+  // Drawn as 10 lines, tubes of the section's equal-area radius sqrt(A / pi).
+  EXPECT_EQ(flexible.mesh.lines.size(), 10u);
+  EXPECT_NEAR(flexible.mesh.beam_radius, std::sqrt(2e-4 / std::numbers::pi), 1e-12);
+}
+
+TEST(FlexibleMechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
+  // A flexible_bodies entry that does not exist.
+  std::string text = edited("flexible: beam", "flexible: bar");
+  EXPECT_TRUE(fails_at(text, location_of(text, "bar\n"),
+                       "expected the name of an entry of 'flexible_bodies' for 'flexible', got 'bar' (defined: beam)"));
+  // A joint point off the mesh: the nearest node and its distance.
+  text = edited("position: [0.5, 0, 0],\n", "position: [0.53, 0, 0],\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "[0.53, 0, 0]"), "nearest: node 1 at 0.03 m"));
+  // A marker on a node set of several nodes, and on an unknown node id.
+  text = edited("root: [1]", "root: [1, 2]");
+  EXPECT_TRUE(fails_at(text, location_of(text, "root, tip"), "(a set of 2 nodes)"));
+  text = edited("node: tip}", "node: 12}");
+  EXPECT_TRUE(fails_at(text, location_of(text, "12}"), "expected a node id of flexible body 'beam'"));
+  // Damping ratios: one per mode.
+  text = edited("[0.01, 0.02, 0.03]", "[0.01, 0.02]");
+  EXPECT_TRUE(fails_at(text, location_of(text, "[0.01, 0.02]"), "expected 3 values (one per mode)"));
+  // A rigid-body key on a flexible body.
+  text = edited("    damping: [", "    mass: 2\n    damping: [");
+  EXPECT_TRUE(fails_at(text, location_of(text, "mass: 2"), "unknown key 'mass'"));
+}
+
+}  // namespace
+}  // namespace limber::io
