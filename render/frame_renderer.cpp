@@ -13,7 +13,6 @@
 
 #include <chrono>
 #include <cstring>
-#include <cstdlib>
 
 namespace limber::render {
 namespace {
@@ -77,9 +76,11 @@ Image FrameRenderer::render(double t) {
     std::memcpy(image.rgb.data() + row * y, source + row * (h - 1 - y), row);
   }
   m.timing.readback += seconds_since(start);
-  if (std::getenv("LX_AA")) {
+
+  // Anti-aliasing on the CPU (the default), sparing the texts and the colour bar.
+  if (m.options.anti_aliasing == AntiAliasing::kFxaa) {
     start = std::chrono::steady_clock::now();
-    smooth_edges(image);
+    smooth_edges(image, m.scene.overlay_boxes());
     m.timing.smoothing += seconds_since(start);
   }
   ++m.timing.frames;

@@ -16,9 +16,9 @@ namespace limber::render {
 // Wall-clock seconds spent per phase, summed over the frames rendered.
 struct RenderTiming {
   double scene_update = 0.0;  // poses, deformed meshes, text
-  double draw = 0.0;          // VTK render (llvmpipe rasterisation, FXAA)
+  double draw = 0.0;          // VTK render (llvmpipe rasterisation; VTK's FXAA pass if asked)
   double readback = 0.0;      // glReadPixels and row flip
-  double smoothing = 0.0;
+  double smoothing = 0.0;     // FXAA on the CPU (the default anti-aliasing)
   int frames = 0;
 };
 
@@ -31,7 +31,8 @@ class FrameRenderer {
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
 
-  // Renders the scene at time t [s] (interpolated between samples).
+  // Renders the scene at time t [s] (interpolated between samples), anti-aliased as the
+  // options say.
   Image render(double t);
   // Pixel (x from the left, y from the top) where ground point p_W projects with the camera of
   // the last render.

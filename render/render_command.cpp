@@ -17,6 +17,8 @@ RenderCommand add_render_command(CLI::App& app) {
   auto t0 = std::make_shared<double>(0.0);
   auto t1 = std::make_shared<double>(0.0);
   auto no_video = std::make_shared<bool>(false);
+  auto anti_aliasing = std::make_shared<std::string>("fxaa");
+  auto no_fxaa = std::make_shared<bool>(false);
 
   CLI::App* command = app.add_subcommand(
       "render", "Render DIR/results.h5 offscreen: PNG frames, MP4 (and GIF), VTU/PVD for ParaView");
@@ -34,14 +36,19 @@ RenderCommand add_render_command(CLI::App& app) {
   command->add_flag("--no-video", *no_video, "skip DIR/animation.mp4");
   command->add_flag("!--no-vtk", options->write_vtk, "skip the VTU/PVD series");
   command->add_flag("!--no-ground", options->ground, "no ground plane");
-  command->add_flag("!--no-fxaa", options->fxaa,
-                    "no anti-aliasing pass: jagged edges, about twice the frame rate in software");
+  CLI::Option* aa_option = command->add_option(
+      "--anti-aliasing", *anti_aliasing,
+      "fxaa: FXAA on the finished frame on the CPU, text spared (a few ms per frame); gl-fxaa: "
+      "VTK's OpenGL FXAA pass (about half the frame rate in software); none: jagged edges");
+  aa_option->capture_default_str();
+  command->add_flag("--no-fxaa", *no_fxaa, "same as --anti-aliasing none")->excludes(aa_option);
   command->add_flag("!--no-progress", options->progress, "no progress bar");
 
   auto run = [=] {
     // Turn the textual options into RenderOptions, then run.
     parse_frame_size(*size, options->width, options->height);
     options->camera = parse_camera_preset(*camera);
+    options->anti_aliasing = *no_fxaa ? AntiAliasing::kNone : parse_anti_aliasing(*anti_aliasing);
     if (t0_option->count() > 0) options->t0 = *t0;
     if (t1_option->count() > 0) options->t1 = *t1;
     options->write_video = !*no_video;

@@ -32,6 +32,13 @@ CameraPreset parse_camera_preset(const std::string& text) {
   throw InputError("--camera: expected iso, front, top or side, got '" + text + "'");
 }
 
+AntiAliasing parse_anti_aliasing(const std::string& text) {
+  if (text == "fxaa") return AntiAliasing::kFxaa;
+  if (text == "gl-fxaa") return AntiAliasing::kGlFxaa;
+  if (text == "none") return AntiAliasing::kNone;
+  throw InputError("--anti-aliasing: expected fxaa, gl-fxaa or none, got '" + text + "'");
+}
+
 void validate(const RenderOptions& options) {
   if (!(options.fps > 0.0) || !std::isfinite(options.fps) || options.fps > 1000.0) {
     throw InputError("--fps: expected a frame rate in (0, 1000] frames/s, got " +

@@ -10,6 +10,14 @@ namespace limber::render {
 // View directions; ground is the z = const plane, +z up.
 enum class CameraPreset { kIso, kFront, kTop, kSide };
 
+// Anti-aliasing of the frames (docs/rendering.md; costs in docs/benchmarks.md).
+enum class AntiAliasing {
+  kFxaa,    // FXAA on the CPU on the read-back frame (render/edge_smoothing.h), text and
+            // colour bar left as drawn
+  kGlFxaa,  // VTK's OpenGL FXAA pass before the text: about half the frame rate in llvmpipe
+  kNone,    // jagged edges
+};
+
 struct RenderOptions {
   std::filesystem::path directory;  // run directory holding results.h5; outputs go there
   double fps = 30.0;                // frames per second of simulated time [1/s]
@@ -22,7 +30,7 @@ struct RenderOptions {
   std::optional<double> t1;
   bool ground = true;         // draw a ground plane under the scene
   bool time_stamp = true;     // "t = ... s" bottom left (off for mode shapes)
-  bool fxaa = true;           // anti-aliasing pass: smooth edges, about half the draw time in llvmpipe
+  AntiAliasing anti_aliasing = AntiAliasing::kFxaa;  // smooth edges at a few ms per frame
   bool write_png = true;      // DIR/frames/frame_00000.png ...
   bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample
   bool write_video = true;    // DIR/animation.mp4 through the ffmpeg program
@@ -40,6 +48,9 @@ void parse_frame_size(const std::string& text, int& width, int& height);
 
 // Parses "iso", "front", "top" or "side"; throws InputError otherwise.
 CameraPreset parse_camera_preset(const std::string& text);
+
+// Parses "fxaa", "gl-fxaa" or "none"; throws InputError otherwise.
+AntiAliasing parse_anti_aliasing(const std::string& text);
 
 // Checks fps > 0, a valid size, a finite scale and t0 <= t1 when both are given; throws
 // InputError naming the option.

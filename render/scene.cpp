@@ -11,10 +11,6 @@
 #include <vtkCylinderSource.h>
 #include <vtkDoubleArray.h>
 #include <vtkLightKit.h>
-#include <vtkFXAAOptions.h>
-#include <vtkLight.h>
-#include <vtkActorCollection.h>
-#include <cstdlib>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPlaneSource.h>
@@ -146,6 +142,9 @@ struct Scene::Impl {
   std::vector<RigidShapeView> shapes;
   std::vector<vtkSmartPointer<vtkActor>> joints;
   vtkSmartPointer<vtkTextActor> time_text = vtkSmartPointer<vtkTextActor>::New();
+  std::vector<vtkSmartPointer<vtkTextActor>> texts;  // every text drawn (title, note, time)
+  vtkSmartPointer<vtkScalarBarActor> bar;            // null without flexible bodies
+  int bar_font = 10;                                 // colour bar label size [pixels]
   double umax = 0.0;
   double follow_distance = 1.0;
   Eigen::Vector3d direction;
@@ -271,6 +270,7 @@ struct Scene::Impl {
     actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     actor->GetPositionCoordinate()->SetValue(x, y);
     renderer->AddViewProp(actor);
+    texts.push_back(actor);
   }
 
   // Camera at `distance` from `focal` along the preset's direction; the clipping range is
@@ -375,14 +375,16 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     bar->SetBarRatio(0.45);
     bar->SetTextPositionToPrecedeScalarBar();
     bar->UnconstrainedFontSizeOn();
+    s.bar_font = std::max(10, options.height / 50);
     for (vtkTextProperty* text : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
       text->SetColor(0.1, 0.1, 0.15);
-      text->SetFontSize(std::max(10, options.height / 50));
+      text->SetFontSize(s.bar_font);
       text->ShadowOff();
       text->BoldOff();
       text->ItalicOff();
     }
     s.renderer->AddViewProp(bar);
+    s.bar = bar;
   }
 
   // Title, deformation scale note, time stamp.
@@ -397,40 +399,17 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   s.time_text->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
   s.time_text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   s.time_text->GetPositionCoordinate()->SetValue(0.02, 0.03);
-  if (options.time_stamp) s.renderer->AddViewProp(s.time_text);
+  if (options.time_stamp) {
+    s.renderer->AddViewProp(s.time_text);
+    s.texts.push_back(s.time_text);
+  }
 
-  // Background, lighting, anti-aliasing (FXAA: far cheaper than multisampling in software,
-  // yet the largest part of a frame there; docs/benchmarks.md).
+  // Background, lighting; VTK's FXAA pass only when asked for (the default FXAA runs on the
+  // read-back frame: far cheaper in software, docs/benchmarks.md). No multisampling.
   s.renderer->SetBackground(kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
-  // EXPERIMENT knobs (temporary)
-  const char* lx = std::getenv("LX_LIGHTS");
-  std::string lmode = lx ? lx : "kit";
-  if (lmode == "kit") {
-    auto lights = vtkSmartPointer<vtkLightKit>::New();
-    lights->AddLightsToRenderer(s.renderer);
-  } else if (lmode == "head") {
-    auto light = vtkSmartPointer<vtkLight>::New();
-    light->SetLightTypeToHeadlight();
-    s.renderer->AddLight(light);
-  } else if (lmode == "kit2") {
-    auto lights = vtkSmartPointer<vtkLightKit>::New();
-    lights->SetBackLightWarmth(0.5);
-    lights->AddLightsToRenderer(s.renderer);
-  }
-  s.renderer->SetUseFXAA(options.fxaa && !std::getenv("LX_AA"));
-  auto envf = [](const char* n, double d) { const char* v = std::getenv(n); return v ? std::atof(v) : d; };
-  vtkFXAAOptions* fx = s.renderer->GetFXAAOptions();
-  fx->SetEndpointSearchIterations(static_cast<int>(envf("LX_FXAA_ITER", 12)));
-  fx->SetUseHighQualityEndpoints(envf("LX_FXAA_HQ", 1) != 0);
-  fx->SetRelativeContrastThreshold(envf("LX_FXAA_REL", 1.0/8));
-  fx->SetHardContrastThreshold(envf("LX_FXAA_HARD", 1.0/16));
-  fx->SetSubpixelBlendLimit(envf("LX_FXAA_SUBLIM", 0.75));
-  fx->SetSubpixelContrastThreshold(envf("LX_FXAA_SUBTHR", 0.25));
-  if (envf("LX_SPEC", 1) == 0) {
-    for (auto& v : s.shapes) v.actor->GetProperty()->SetSpecular(0.0);
-    vtkActorCollection* ac = s.renderer->GetActors(); ac->InitTraversal();
-    while (vtkActor* a = ac->GetNextActor()) a->GetProperty()->SetSpecular(0.0);
-  }
+  auto lights = vtkSmartPointer<vtkLightKit>::New();
+  lights->AddLightsToRenderer(s.renderer);
+  s.renderer->SetUseFXAA(options.anti_aliasing == AntiAliasing::kGlFxaa);
 
   // Camera: a fixed one fits the whole motion, a follow one fits the largest single frame.
   // The scene is put at t0 first: clipping ranges read the actors' bounds.
@@ -445,6 +424,39 @@ Scene::~Scene() = default;
 vtkRenderer* Scene::renderer() const { return impl_->renderer; }
 
 double Scene::color_range_max() const { return impl_->umax; }
+
+std::vector<PixelBox> Scene::overlay_boxes() const {
+  const Impl& s = *impl_;
+  const int width = s.options.width;
+  const int height = s.options.height;
+  // Display coordinates (x right, y up, pixel centres at integers) to rows from the top,
+  // widened by `margin` pixels and clipped to the frame.
+  auto box = [&](double x_min, double x_max, double y_min, double y_max, int margin) {
+    PixelBox b;
+    b.x0 = std::max(0, static_cast<int>(std::floor(x_min)) - margin);
+    b.x1 = std::min(width, static_cast<int>(std::ceil(x_max)) + 1 + margin);
+    b.y0 = std::max(0, height - 1 - static_cast<int>(std::ceil(y_max)) - margin);
+    b.y1 = std::min(height, height - static_cast<int>(std::floor(y_min)) + margin);
+    return b;
+  };
+  std::vector<PixelBox> boxes;
+
+  // Texts: their bounding boxes as last drawn, plus 2 pixels (FXAA reads the neighbours).
+  for (const auto& text : s.texts) {
+    double b[4];  // x min, x max, y min, y max
+    text->GetBoundingBox(s.renderer, b);
+    if (b[1] >= b[0] && b[3] >= b[2]) boxes.push_back(box(b[0], b[1], b[2], b[3], 2));
+  }
+
+  // Colour bar: its box, plus one label height, which its title and labels may overrun.
+  if (s.bar) {
+    const double x = kColorBarBox[0] * width;
+    const double y = kColorBarBox[1] * height;
+    boxes.push_back(box(x, x + kColorBarBox[2] * width, y, y + kColorBarBox[3] * height,
+                        s.bar_font));
+  }
+  return boxes;
+}
 
 void Scene::update(double t) {
   Impl& s = *impl_;

@@ -4,6 +4,7 @@
 // Internal to limber_render (exposes VTK types).
 #pragma once
 
+#include "image.h"
 #include "render_options.h"
 #include "results_reader.h"
 
@@ -11,6 +12,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 class vtkRenderer;
 
@@ -38,6 +40,9 @@ class Scene {
   void update(double t);
   // Largest displacement magnitude of the colour range [m].
   double color_range_max() const;
+  // Pixels of the texts and the colour bar (with a margin) as last drawn: anti-aliased by
+  // FreeType or flat, so the CPU FXAA leaves them alone. Valid after a render.
+  std::vector<PixelBox> overlay_boxes() const;
 
  private:
   struct Impl;

@@ -1,19 +1,22 @@
 // limber_bench_render: frames per second of `limber render` at 1280 x 720 for a shell scene of
 // about 5k nodes (four 35 x 35-quad plates = 4 x 1296 = 5184 nodes, plus a beam and a box),
-// PNG writing included, with the split of the time (docs/benchmarks.md). Two passes: as
-// `limber render` draws by default (FXAA), and with --no-fxaa.
-//   limber_bench_render [frames=90]
+// PNG writing included, with the split of the time (docs/benchmarks.md). One pass per
+// anti-aliasing mode: as `limber render` draws by default (FXAA on the CPU), with VTK's OpenGL
+// FXAA pass, and without anti-aliasing; or only the modes named.
+//   limber_bench_render [frames=90] [fxaa|gl-fxaa|none ...]
 #include "frame_renderer.h"
 #include "png_frame_writer.h"
 #include "render_job.h"
 #include "test_results.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <thread>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace {
 
@@ -53,15 +56,18 @@ void measure(const Results& results, RenderOptions options, int frames, double d
   std::printf("%s\n", label);
   std::printf("  frames/s (PNG included): %.1f\n", frames / wall);
   std::printf("  set-up (context, scene): %.0f ms\n", 1e3 * setup);
-  std::printf("  per frame [ms]: scene update %.2f, draw %.2f, readback %.2f; "
-              "smoothing %.2f; PNG encode+write %.2f (writer thread); CPU, all threads %.1f\n",
-              t.scene_update * ms, t.draw * ms, t.readback * ms, t.smoothing * ms, png * ms, cpu * ms);
+  std::printf("  per frame [ms]: scene update %.2f, draw %.2f, readback %.2f, FXAA on the CPU "
+              "%.2f; PNG encode+write %.2f (writer thread); CPU, all threads %.1f\n",
+              t.scene_update * ms, t.draw * ms, t.readback * ms, t.smoothing * ms, png * ms,
+              cpu * ms);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const int frames = argc > 1 ? std::atoi(argv[1]) : 90;
+  std::vector<std::string> modes(argv + std::min(argc, 2), argv + argc);
+  if (modes.empty()) modes = {"fxaa", "gl-fxaa", "none"};
 
   // The scene: four stacked 35 x 35 plates, 3 s of motion sampled at 100 Hz.
   const auto dir = std::filesystem::temp_directory_path() / "limber_bench_render";
@@ -88,11 +94,12 @@ int main(int argc, char** argv) {
     std::printf("limber_bench_render: %d frames, 1280x720, %ld nodes, %s, %u hardware threads\n",
                 frames, nodes, probe.backend().c_str(), std::thread::hardware_concurrency());
   }
-  const char* lxp = std::getenv("LX_PASS");
-  const std::string pass = lxp ? lxp : "both";
-  if (pass != "nofxaa") measure(results, options, frames, scene.duration, "default (FXAA, light kit, colour bar, text)");
-  options.fxaa = false;
-  if (pass != "default") measure(results, options, frames, scene.duration, "--no-fxaa");
-  if (!std::getenv("LX_KEEP")) std::filesystem::remove_all(dir);
+  for (const std::string& mode : modes) {
+    options.anti_aliasing = parse_anti_aliasing(mode);
+    const std::string label = "--anti-aliasing " + mode +
+                              (mode == "fxaa" ? " (default; light kit, colour bar, text)" : "");
+    measure(results, options, frames, scene.duration, label.c_str());
+  }
+  std::filesystem::remove_all(dir);
   return 0;
 }
