@@ -441,11 +441,15 @@ std::vector<PixelBox> Scene::overlay_boxes() const {
   };
   std::vector<PixelBox> boxes;
 
-  // Texts: their bounding boxes as last drawn, plus 2 pixels (FXAA reads the neighbours).
+  // Texts: bounding box about the anchor (justification included) moved to the anchor's
+  // pixel, plus 2 pixels (FXAA reads the neighbours).
   for (const auto& text : s.texts) {
     double b[4];  // x min, x max, y min, y max
     text->GetBoundingBox(s.renderer, b);
-    if (b[1] >= b[0] && b[3] >= b[2]) boxes.push_back(box(b[0], b[1], b[2], b[3], 2));
+    const int* anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(s.renderer);
+    if (b[1] < b[0] || b[3] < b[2]) continue;  // nothing drawn
+    boxes.push_back(
+        box(anchor[0] + b[0], anchor[0] + b[1], anchor[1] + b[2], anchor[1] + b[3], 2));
   }
 
   // Colour bar: its box, plus one label height, which its title and labels may overrun.
