@@ -69,8 +69,12 @@ TEST(FlexibleMechanismReader, BodyMarkersDampingAndProbeLandInTheModel) {
   // Markers: node set 'tip' = node index 10; the hinge's rod side found at the ground point
   // (0.5, 0, 0) = the body origin = node index 0.
   for (const multibody::Marker& marker : model.markers) {
-    if (marker.name == "end") EXPECT_EQ(marker.node, 10);
-    if (marker.name == "hinge.j") EXPECT_EQ(marker.node, 0);
+    if (marker.name == "end") {
+      EXPECT_EQ(marker.node, 10);
+    }
+    if (marker.name == "hinge.j") {
+      EXPECT_EQ(marker.node, 0);
+    }
   }
   ASSERT_TRUE(flexible.deflection_probe.has_value());
   EXPECT_EQ(flexible.deflection_probe->node, 5);
