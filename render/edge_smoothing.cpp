@@ -3,8 +3,10 @@
 #include "core/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 
 namespace limber::render {
 namespace {
@@ -40,25 +42,46 @@ void smooth_edges(Image& image, const std::vector<PixelBox>& keep,
         (77 * rgb[3 * k] + 150 * rgb[3 * k + 1] + 29 * rgb[3 * k + 2] + 128) >> 8);
   }
 
-  const float hard = 255.0f * static_cast<float>(options.hard_contrast);
-  const float relative = static_cast<float>(options.relative_contrast);
+  // Early-exit thresholds in integers: a pixel is processed when its luma range is at least
+  // `hard` and at least relative_contrast x its largest luma (in 1/256).
+  const int hard = static_cast<int>(std::ceil(255.0 * options.hard_contrast));
+  const int relative = static_cast<int>(std::lround(256.0 * options.relative_contrast));
   const float subpixel_limit = static_cast<float>(options.subpixel_limit);
   std::vector<Blend> blends;
+  std::vector<std::uint8_t> candidate(w);
   for (int y = 1; y + 1 < h; ++y) {
     const std::uint8_t* up = luma.data() + static_cast<std::size_t>(y - 1) * w;
     const std::uint8_t* row = up + w;
     const std::uint8_t* down = row + w;
+
+    // Early exit, decided for the whole row at once: flag the pixels whose luma range over
+    // themselves and their 4 neighbours reaches both thresholds.
     for (int x = 1; x + 1 < w; ++x) {
-      // Early exit: the luma range of the pixel and its 4 neighbours is below the thresholds.
+      const int hi = std::max(std::max(std::max(row[x], up[x]), std::max(down[x], row[x - 1])),
+                              row[x + 1]);
+      const int lo = std::min(std::min(std::min(row[x], up[x]), std::min(down[x], row[x - 1])),
+                              row[x + 1]);
+      const int range = hi - lo;
+      candidate[x] = range >= hard && 256 * range >= relative * hi;
+    }
+
+    for (int x = 1; x + 1 < w; ++x) {
+      // Skip 8 flags at a time: most rows hold only a few edge pixels.
+      if (x + 8 < w) {
+        std::uint64_t flags = 0;
+        std::memcpy(&flags, candidate.data() + x, sizeof flags);
+        if (flags == 0) {
+          x += 7;
+          continue;
+        }
+      }
+      if (!candidate[x] || in_any(keep, x, y)) continue;
       const int c = row[x];
       const int n = up[x];
       const int s = down[x];
       const int west = row[x - 1];
       const int east = row[x + 1];
-      const int hi = std::max({c, n, s, west, east});
-      const int range = hi - std::min({c, n, s, west, east});
-      if (static_cast<float>(range) < std::max(hard, relative * static_cast<float>(hi))) continue;
-      if (in_any(keep, x, y)) continue;
+      const int range = std::max({c, n, s, west, east}) - std::min({c, n, s, west, east});
 
       // Edge direction from second differences of the 3 x 3 lumas: across rows (the edge runs
       // along x) or across columns (it runs along y).
@@ -119,8 +142,8 @@ void smooth_edges(Image& image, const std::vector<PixelBox>& keep,
       const float average =
           (2.0f * static_cast<float>(n + s + west + east) + static_cast<float>(nw + ne + sw + se)) /
           12.0f;
-      const float contrast =
-          std::min(1.0f, std::abs(average - static_cast<float>(c)) / static_cast<float>(range));
+      const float contrast = std::min(1.0f, std::abs(average - static_cast<float>(c)) /
+                                                static_cast<float>(std::max(range, 1)));
       const float smooth = (3.0f - 2.0f * contrast) * contrast * contrast;
       offset = std::max(offset, smooth * smooth * subpixel_limit);
       if (offset <= 0.0f) continue;

@@ -1,8 +1,8 @@
 // Anti-aliasing of a finished frame on the CPU: fast approximate anti-aliasing (FXAA) after
-// T. Lottes, "FXAA", NVIDIA white paper, 2009 (the algorithm of its version 3.11, the one VTK's
+// T. Lottes, "FXAA", NVIDIA white paper, 2009 (the algorithm of its version 3.11, which VTK's
 // OpenGL pass also follows). In llvmpipe VTK's pass costs about 40 ms of CPU per 1280 x 720
-// frame (every pixel runs the whole shader); this pass touches only the pixels on edges and
-// costs a few ms (docs/benchmarks.md).
+// frame, even with thresholds that let every pixel exit early; this pass does the edge work
+// only for the pixels on edges and costs about 2 ms (docs/benchmarks.md).
 #pragma once
 
 #include "image.h"
@@ -23,9 +23,9 @@ struct EdgeSmoothingOptions {
 
 // Smooths the aliased edges of `image` in place: each pixel on an edge is blended with its
 // neighbour across the edge by the fraction FXAA derives from its distance to the nearer end
-// of the edge (and from subpixel contrast). Pixels inside any of `keep` (text and the colour
-// bar, already anti-aliased by FreeType) and the outermost rows and columns are left as they
-// are. Precondition: image.rgb.size() == 3 * width * height.
+// of the edge (and from subpixel contrast). Pixels inside any of `keep` (texts, which FreeType
+// has anti-aliased already, and the colour bar) and the outermost rows and columns are left as
+// they are. Precondition (DEMAND): image.rgb.size() == 3 * width * height.
 void smooth_edges(Image& image, const std::vector<PixelBox>& keep = {},
                   const EdgeSmoothingOptions& options = {});
 

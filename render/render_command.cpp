@@ -38,8 +38,8 @@ RenderCommand add_render_command(CLI::App& app) {
   command->add_flag("!--no-ground", options->ground, "no ground plane");
   CLI::Option* aa_option = command->add_option(
       "--anti-aliasing", *anti_aliasing,
-      "fxaa: FXAA on the finished frame on the CPU, text spared (a few ms per frame); gl-fxaa: "
-      "VTK's OpenGL FXAA pass (about half the frame rate in software); none: jagged edges");
+      "fxaa (on the finished frame, on the CPU), gl-fxaa (VTK's OpenGL pass: about half the "
+      "frame rate in software) or none (jagged edges)");
   aa_option->capture_default_str();
   command->add_flag("--no-fxaa", *no_fxaa, "same as --anti-aliasing none")->excludes(aa_option);
   command->add_flag("!--no-progress", options->progress, "no progress bar");

@@ -429,8 +429,8 @@ std::vector<PixelBox> Scene::overlay_boxes() const {
   const Impl& s = *impl_;
   const int width = s.options.width;
   const int height = s.options.height;
-  // Display coordinates (x right, y up, pixel centres at integers) to rows from the top,
-  // widened by `margin` pixels and clipped to the frame.
+  // Display coordinates (pixels, x right, y up) to columns and rows from the top, widened by
+  // `margin` pixels and clipped to the frame.
   auto box = [&](double x_min, double x_max, double y_min, double y_max, int margin) {
     PixelBox b;
     b.x0 = std::max(0, static_cast<int>(std::floor(x_min)) - margin);

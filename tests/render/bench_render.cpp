@@ -100,6 +100,6 @@ int main(int argc, char** argv) {
                               (mode == "fxaa" ? " (default; light kit, colour bar, text)" : "");
     measure(results, options, frames, scene.duration, label.c_str());
   }
-  if (!std::getenv("LX_KEEP")) std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(dir);
   return 0;
 }

@@ -1,6 +1,6 @@
 // Pixels of a known scene rendered offscreen with DISPLAY unset: background colour, the red box
-// where the camera projects its centre, the colour bar, the plate moving between frames, and
-// no VTK warning (in particular no "GLEW could not be initialized").
+// where the camera projects its centre, the colour bar, the plate moving between frames, the
+// anti-aliasing modes, and no VTK warning (in particular no "GLEW could not be initialized").
 #include "frame_renderer.h"
 
 #include "scene.h"
@@ -131,6 +131,48 @@ TEST_F(FrameRendererTest, NoColorBarWithoutFlexibleBodies) {
     }
   }
   EXPECT_EQ(saturated, 0);
+}
+
+TEST_F(FrameRendererTest, CpuFxaaSmoothsEdgesOnlyAndSparesTextAndColorBar) {
+  const Results results = scene_results(TestScene{}, "anti_aliasing");
+  // One renderer at a time: each owns the EGL display while it lives.
+  auto render_with = [&](AntiAliasing mode, double* smoothing_seconds) {
+    RenderOptions o = options(CameraPreset::kIso);
+    o.anti_aliasing = mode;
+    FrameRenderer renderer(results, o, 0.0, 1.0);
+    Image image = renderer.render(0.5);
+    *smoothing_seconds = renderer.timing().smoothing;
+    return image;
+  };
+  double smoothing = -1.0;
+  const Image jagged = render_with(AntiAliasing::kNone, &smoothing);
+  EXPECT_EQ(smoothing, 0.0);
+  const Image smooth = render_with(AntiAliasing::kFxaa, &smoothing);
+  EXPECT_GT(smoothing, 0.0);
+
+  // Changed pixels: some, each on an edge of the jagged frame (a 4-neighbour of another
+  // colour), none in the title band (top 10 %) or the colour bar's box.
+  int changed = 0, off_edge = 0, in_overlay = 0;
+  for (int y = 1; y + 1 < kHeight; ++y) {
+    for (int x = 1; x + 1 < kWidth; ++x) {
+      const auto p = jagged.pixel(x, y);
+      if (smooth.pixel(x, y) == p) continue;
+      ++changed;
+      const bool on_edge = jagged.pixel(x - 1, y) != p || jagged.pixel(x + 1, y) != p ||
+                           jagged.pixel(x, y - 1) != p || jagged.pixel(x, y + 1) != p;
+      if (!on_edge) ++off_edge;
+      if (y < kHeight / 10 || x >= kColorBarBox[0] * kWidth) ++in_overlay;
+    }
+  }
+  EXPECT_GT(changed, 50);
+  EXPECT_EQ(off_edge, 0);
+  EXPECT_EQ(in_overlay, 0);
+
+  // VTK's OpenGL pass (--anti-aliasing gl-fxaa) draws too, without any VTK message.
+  const Image gl = render_with(AntiAliasing::kGlFxaa, &smoothing);
+  EXPECT_TRUE(is_background(gl.pixel(1, 1)));
+  EXPECT_NE(gl.rgb, jagged.rgb);
+  EXPECT_EQ(std::string(messages_->GetOutput()), "");
 }
 
 TEST_F(FrameRendererTest, DeformedPlateMovesBetweenFrames) {

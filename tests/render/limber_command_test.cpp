@@ -96,6 +96,13 @@ TEST(LimberRender, RendersTheTestSceneAndRejectsAMissingFile) {
       << missing.err;
   const CommandRun size = run_limber("render " + dir.string() + " --size 100000x2", dir);
   EXPECT_EQ(size.exit_code, 1);
+  const CommandRun mode = run_limber("render " + dir.string() + " --anti-aliasing msaa", dir);
+  EXPECT_EQ(mode.exit_code, 1);
+  EXPECT_NE(mode.err.find("expected fxaa, gl-fxaa or none, got 'msaa'"), std::string::npos)
+      << mode.err;
+  const CommandRun both =
+      run_limber("render " + dir.string() + " --no-fxaa --anti-aliasing gl-fxaa", dir);
+  EXPECT_EQ(both.exit_code, 1);
 }
 
 TEST(LimberModes, AnimatesEveryModeOfThePlate) {

@@ -40,6 +40,16 @@ TEST(RenderOptions, ImpossibleSizesAreInputErrors) {
   EXPECT_EQ(parse_camera_preset("top"), CameraPreset::kTop);
 }
 
+TEST(RenderOptions, ParsesAntiAliasingModes) {
+  EXPECT_EQ(RenderOptions{}.anti_aliasing, AntiAliasing::kFxaa);
+  EXPECT_EQ(parse_anti_aliasing("fxaa"), AntiAliasing::kFxaa);
+  EXPECT_EQ(parse_anti_aliasing("gl-fxaa"), AntiAliasing::kGlFxaa);
+  EXPECT_EQ(parse_anti_aliasing("none"), AntiAliasing::kNone);
+  for (const char* bad : {"", "FXAA", "msaa", "gl"}) {
+    EXPECT_THROW(parse_anti_aliasing(bad), InputError) << bad;
+  }
+}
+
 TEST(RenderOptions, FrameTimesCoverTheRangeAtTheFrameRate) {
   // [0, 1] s at 10 frames/s: 11 frames, the last exactly at t1.
   const std::vector<double> times = frame_times(0.0, 1.0, 10.0);
