@@ -4,26 +4,6 @@
 
 namespace limber::render {
 
-H5Id::~H5Id() {
-  if (id_ < 0) return;
-  switch (H5Iget_type(id_)) {
-    case H5I_FILE: H5Fclose(id_); break;
-    case H5I_GROUP: H5Gclose(id_); break;
-    case H5I_DATASET: H5Dclose(id_); break;
-    case H5I_DATASPACE: H5Sclose(id_); break;
-    case H5I_DATATYPE: H5Tclose(id_); break;
-    case H5I_ATTR: H5Aclose(id_); break;
-    default: break;
-  }
-}
-
-SilentHdf5Errors::SilentHdf5Errors() {
-  H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-}
-
-SilentHdf5Errors::~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-
 namespace {
 
 // Checks that `path` is an HDF5 file (a truncated file is not) and opens it read-only.

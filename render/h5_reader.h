@@ -5,6 +5,8 @@
 
 #include <hdf5.h>
 
+#include "results/h5_handle.h"
+
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -12,33 +14,10 @@
 
 namespace limber::render {
 
-// Owns an HDF5 identifier; closes it with the call matching its kind.
-class H5Id {
- public:
-  explicit H5Id(hid_t id = -1) : id_(id) {}
-  H5Id(H5Id&& other) noexcept : id_(std::exchange(other.id_, -1)) {}
-  H5Id& operator=(H5Id&&) = delete;
-  H5Id(const H5Id&) = delete;
-  ~H5Id();
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-};
-
-// Silences HDF5's error-stack printing while alive; failures become InputErrors instead.
-class SilentHdf5Errors {
- public:
-  SilentHdf5Errors();
-  ~SilentHdf5Errors();
-  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
-  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
+// HDF5 identifiers and error silencing of the results-file library (plain HDF5, no solver
+// classes).
+using H5Id = results::H5Handle;
+using results::SilentHdf5Errors;
 
 class H5Reader {
  public:

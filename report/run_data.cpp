@@ -14,26 +14,11 @@ namespace limber::report {
 namespace {
 
 using results::H5Handle;
+using results::SilentHdf5Errors;
 
 // Root attributes shown elsewhere in the report (not as solver settings).
 const std::set<std::string> kKnownRootAttributes = {"format", "version", "title",
                                                     "case_file", "status", "message"};
-
-// Silences HDF5's error-stack printing while reading; failures are reported by the reader.
-class SilentHdf5Errors {
- public:
-  SilentHdf5Errors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
-  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
 
 bool exists(hid_t file, const std::string& path) {
   // Check each link on the way: H5Lexists fails on a path through a missing group.

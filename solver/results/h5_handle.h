@@ -1,5 +1,6 @@
 // RAII ownership of an HDF5 C-API identifier (file, group, dataset, dataspace, type, property
-// list, attribute): the matching H5?close runs when the handle dies.
+// list, attribute): the matching H5?close runs when the handle dies. Shared by the results
+// writer and the readers in render/ and report/.
 #pragma once
 
 #include <hdf5.h>
@@ -32,6 +33,23 @@ class H5Handle {
 
  private:
   hid_t id_ = -1;
+};
+
+// Silences HDF5's automatic error-stack printing while alive; callers report failures
+// themselves (exceptions or messages that name the file).
+class SilentHdf5Errors {
+ public:
+  SilentHdf5Errors() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
+  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
 };
 
 }  // namespace limber::results

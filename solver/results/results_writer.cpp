@@ -11,22 +11,6 @@
 namespace limber::results {
 namespace {
 
-// Silences HDF5's automatic error-stack printing while alive (failures become exceptions).
-class SilentHdf5Errors {
- public:
-  SilentHdf5Errors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~SilentHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  SilentHdf5Errors(const SilentHdf5Errors&) = delete;
-  SilentHdf5Errors& operator=(const SilentHdf5Errors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
 // Throws when an HDF5 call failed (negative return): the file is unusable from then on.
 herr_t check(herr_t status, const char* what) {
   if (status < 0) throw std::runtime_error(std::string("results.h5: HDF5 failed to ") + what);
