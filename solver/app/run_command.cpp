@@ -63,6 +63,11 @@ void print_start(std::FILE* out, const multibody::Model& model, const run::Prepa
              "assembly: closed in {} Newton iterations, max residual {:.3g}; velocity "
              "constraints {:.3g} after projection\n",
              start.assembly.iterations, start.assembly.residual, start.velocity_residual);
+  if (start.assembly.modes_released || start.velocity_modes_released) {
+    fmt::print(out, "assembly: the constraints close only with the flexible bodies deformed{}: "
+                    "their initial modal coordinates and rates were changed\n",
+               start.assembly.modes_released ? "" : " in velocity");
+  }
   const std::size_t independent = start.partition.independent.size();
   if (start.redundant.empty()) {
     fmt::print(out, "redundancy: none ({} independent equations)\n", independent);

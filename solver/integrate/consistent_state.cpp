@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 
+#include "core/minimum_norm.h"
+
 namespace limber::integrate {
 namespace {
 
@@ -11,6 +13,9 @@ constexpr int kMaxProjectionIterations = 25;
 constexpr double kProjectionTolerance = 1e-12;
 // Reciprocal condition number below which a factorisation counts as singular.
 constexpr double kSingularRcond = 1e-14;
+// Relative singular value below which a projection direction counts as dependent (the
+// redundancy analysis' threshold, multibody/redundancy.h).
+constexpr double kRankThreshold = 1e-8;
 
 Status failure(StatusCode code, double t, const std::string& why) {
   return {code, t, fmt::format("at t = {:.6g} s: {}", t, why)};
@@ -38,7 +43,7 @@ Status project_initial_state(const MechanicalSystem& system, double t, Eigen::Ve
     if (!r.allFinite() || !A.allFinite()) {
       return failure(StatusCode::kNaN, t, "the constraints are not finite at the initial state");
     }
-    const Eigen::VectorXd dq = A.completeOrthogonalDecomposition().solve(r);
+    const Eigen::VectorXd dq = minimum_norm_solve(A, r, kRankThreshold);
     q -= dq;
     converged = dq.lpNorm<Eigen::Infinity>() <= kProjectionTolerance * (1.0 + q.lpNorm<Eigen::Infinity>());
   }

@@ -1,9 +1,11 @@
 #include "multibody/assembly.h"
 
-#include <Eigen/QR>
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/minimum_norm.h"
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
@@ -12,8 +14,12 @@ namespace limber::multibody {
 
 namespace {
 
-// A mask of the velocity directions the assembly may change.
-Eigen::VectorXd free_mask(const Model& model, const AssemblyOptions& options) {
+// Velocity residual, relative to the velocities and driver rates, that counts as closed.
+constexpr double kVelocityTolerance = 1e-10;
+
+// A mask of the velocity directions the assembly may change: all but the held ones and,
+// unless `modes_free`, the modal coordinates of flexible bodies.
+Eigen::VectorXd free_mask(const Model& model, const AssemblyOptions& options, bool modes_free) {
   Eigen::VectorXd mask = Eigen::VectorXd::Ones(model.nv);
   for (const HeldCoordinate& h : options.held) {
     if (h.body <= 0 || h.body >= static_cast<int>(model.bodies.size()) || h.component < 0 ||
@@ -23,30 +29,46 @@ Eigen::VectorXd free_mask(const Model& model, const AssemblyOptions& options) {
     }
     mask(model.bodies[h.body].v_offset + h.component) = 0.0;
   }
+  if (modes_free) return mask;
+  for (const Body& b : model.bodies) {
+    if (b.kind == BodyKind::kFlexible) mask.segment(b.v_offset + 6, b.nv - 6).setZero();
+  }
   return mask;
 }
 
-// Minimum-norm solution x of (G diag(mask)) x = rhs.
-Eigen::VectorXd minimum_norm_step(const Eigen::MatrixXd& G, const Eigen::VectorXd& mask,
-                                  const Eigen::VectorXd& rhs) {
-  const Eigen::MatrixXd G_free = G * mask.asDiagonal();
-  return mask.asDiagonal() * Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(G_free).solve(rhs);
+bool has_flexible_body(const Model& model) {
+  return std::any_of(model.bodies.begin(), model.bodies.end(),
+                     [](const Body& b) { return b.kind == BodyKind::kFlexible; });
 }
 
-}  // namespace
+// Minimum-norm solution x of (G diag(mask)) x = rhs, the rank decided as in redundancy.h
+// (rows scaled to unit norm, relative threshold): equations that are redundant up to the
+// rounding in a flexible body's mode shapes must not count as independent, or the step picks
+// up an arbitrary O(1) part along them (e.g. out-of-plane velocities of a planar mechanism).
+Eigen::VectorXd minimum_norm_step(const Eigen::MatrixXd& G, const Eigen::VectorXd& mask,
+                                  const Eigen::VectorXd& rhs) {
+  Eigen::MatrixXd G_free = G * mask.asDiagonal();
+  Eigen::VectorXd scaled_rhs = rhs;
+  for (Eigen::Index row = 0; row < G_free.rows(); ++row) {
+    const double norm = G_free.row(row).norm();
+    if (norm > 0.0) G_free.row(row) /= norm, scaled_rhs(row) /= norm;
+  }
+  return mask.asDiagonal() * minimum_norm_solve(G_free, scaled_rhs, kRedundancyThreshold);
+}
 
-AssemblyResult assemble_positions(const Model& model, State& state, Workspace& ws,
-                                  const AssemblyOptions& options) {
-  const Eigen::VectorXd mask = free_mask(model, options);
-  AssemblyResult result;
+// Newton on g = 0 in the directions of `mask`; fills `result` (status, residual, worst row).
+void newton_assembly(const Model& model, State& state, Workspace& ws,
+                     const AssemblyOptions& options, const Eigen::VectorXd& mask,
+                     AssemblyResult& result) {
   Eigen::VectorXd q_next = state.q;
+  result.status = AssemblyStatus::kOk;
   for (result.iterations = 0;; ++result.iterations) {
     // Residual and its worst equation.
     evaluate_constraints(model, state, Stage::kPosition, ws);
     Eigen::Index worst = 0;
     result.residual = model.num_equations() > 0 ? ws.g.cwiseAbs().maxCoeff(&worst) : 0.0;
     result.worst_equation = model.num_equations() > 0 ? static_cast<int>(worst) : -1;
-    if (result.residual <= options.tolerance) return result;
+    if (result.residual <= options.tolerance) return;
     if (result.iterations == options.max_iterations) break;
     // Newton step on the manifold: q ← q ⊕ (−G⁺ g).
     const Eigen::VectorXd dv = minimum_norm_step(ws.G, mask, -ws.g);
@@ -56,6 +78,22 @@ AssemblyResult assemble_positions(const Model& model, State& state, Workspace& w
     state.q = q_next;
   }
   result.status = AssemblyStatus::kNotConverged;
+}
+
+}  // namespace
+
+AssemblyResult assemble_positions(const Model& model, State& state, Workspace& ws,
+                                  const AssemblyOptions& options) {
+  AssemblyResult result;
+  const Eigen::VectorXd q_given = state.q;
+  newton_assembly(model, state, ws, options, free_mask(model, options, false), result);
+  // A mechanism that closes only by deforming its flexible bodies: let the modes move.
+  if (result.status != AssemblyStatus::kOk && has_flexible_body(model)) {
+    state.q = q_given;
+    newton_assembly(model, state, ws, options, free_mask(model, options, true), result);
+    result.modes_released = true;
+  }
+  if (result.status == AssemblyStatus::kOk) return result;
   const ConstraintEquation& e = model.equations[result.worst_equation];
   result.message = fmt::format(
       "assembly did not converge in {} iterations: equation {} ({}) does not close, residual "
@@ -67,12 +105,24 @@ AssemblyResult assemble_positions(const Model& model, State& state, Workspace& w
 }
 
 double assemble_velocities(const Model& model, State& state, Workspace& ws,
-                           const AssemblyOptions& options) {
-  const Eigen::VectorXd mask = free_mask(model, options);
+                           const AssemblyOptions& options, bool* modes_released) {
   evaluate_constraints(model, state, Stage::kPosition, ws);
-  // Minimum-norm correction of the velocity residual G v + g_t.
-  state.v += minimum_norm_step(ws.G, mask, -(ws.G * state.v + ws.g_t));
-  return model.num_equations() > 0 ? (ws.G * state.v + ws.g_t).cwiseAbs().maxCoeff() : 0.0;
+  const auto residual = [&](const Eigen::VectorXd& v) {
+    return model.num_equations() > 0 ? (ws.G * v + ws.g_t).cwiseAbs().maxCoeff() : 0.0;
+  };
+  // Minimum-norm correction of the velocity residual G v + g_t, modal rates kept.
+  const auto project = [&](bool modes_free) {
+    const Eigen::VectorXd mask = free_mask(model, options, modes_free);
+    return Eigen::VectorXd(state.v + minimum_norm_step(ws.G, mask, -(ws.G * state.v + ws.g_t)));
+  };
+  Eigen::VectorXd v = project(false);
+  // Rates the frames alone cannot meet (a driver deforming a body): let the modes move.
+  const double scale = 1.0 + state.v.lpNorm<Eigen::Infinity>() + ws.g_t.lpNorm<Eigen::Infinity>();
+  const bool release = has_flexible_body(model) && residual(v) > kVelocityTolerance * scale;
+  if (release) v = project(true);
+  if (modes_released != nullptr) *modes_released = release;
+  state.v = v;
+  return residual(state.v);
 }
 
 void solve_accelerations(const Model& model, const State& state,

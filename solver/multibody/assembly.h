@@ -4,8 +4,13 @@
 //  2. velocities: the minimum-norm (Euclidean in v) correction v ← v − G⁺ (G v + g_t),
 //     held directions unchanged;
 //  3. accelerations and multipliers: [M Gᵀ; G 0] [v̇; λ] = [Q; γ] on the independent rows.
-// G⁺ is the pseudo-inverse (complete orthogonal decomposition), so redundant but consistent
-// equations are handled. A failure to converge is a returned status (house style §11).
+// G⁺ is the pseudo-inverse (complete orthogonal decomposition) with the rank decided as in
+// redundancy.h, so redundant but consistent equations are handled. The modal coordinates and
+// rates of flexible bodies keep their given values (undeformed and at rest in their frames
+// unless the case says otherwise): the frames absorb the corrections, so a start at speed is
+// the rigid motion of undeformed bodies, not elastic velocity that happens to have the
+// smallest norm. Only when the constraints cannot close that way are the modes let move.
+// A failure to converge is a returned status (house style §11).
 #pragma once
 
 #include <string>
@@ -38,6 +43,7 @@ struct AssemblyResult {
   int iterations = 0;
   double residual = 0.0;    // max |g_k| at the end
   int worst_equation = -1;  // row of that residual
+  bool modes_released = false;  // closed only by deforming flexible bodies
 };
 
 // Moves state.q onto the constraint manifold at state.t. Throws InputError for a held
@@ -46,8 +52,9 @@ AssemblyResult assemble_positions(const Model& model, State& state, Workspace& w
                                   const AssemblyOptions& options = {});
 
 // Projects state.v onto the velocity constraints; returns max |G v + g_t| afterwards.
+// `modes_released` (optional) tells whether modal rates had to change to close them.
 double assemble_velocities(const Model& model, State& state, Workspace& ws,
-                           const AssemblyOptions& options = {});
+                           const AssemblyOptions& options = {}, bool* modes_released = nullptr);
 
 // Solves for v̇ (nv) and the multipliers of the independent rows (partition.independent.size()).
 // Precondition: the independent rows of G have full rank and M is positive definite.

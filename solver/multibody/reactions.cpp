@@ -2,6 +2,7 @@
 
 #include <Eigen/QR>
 
+#include "core/minimum_norm.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 
@@ -28,9 +29,9 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
   mass_matrix(model, state, ws);
   generalized_forces(model, state, ws);
   Reactions out;
-  // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇.
-  const Eigen::VectorXd rhs = ws.Q - ws.M * v_dot;
-  out.lambda = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(ws.G.transpose()).solve(rhs);
+  // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇, the rank decided
+  // with the redundancy analysis' threshold (core/minimum_norm.h says why not Eigen's COD).
+  out.lambda = minimum_norm_solve(ws.G.transpose(), ws.Q - ws.M * v_dot, partition.relative_threshold);
   // Joints: generalized constraint force of their rows, turned into a wrench at a marker.
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const Joint& joint = model.joints[k];

@@ -13,7 +13,8 @@ PreparedStart prepare_start(const multibody::Model& model,
   // Positions, then velocities: nothing else is meaningful on an open loop.
   start.assembly = multibody::assemble_positions(model, start.state, ws, options);
   if (start.assembly.status != multibody::AssemblyStatus::kOk) return start;
-  start.velocity_residual = multibody::assemble_velocities(model, start.state, ws, options);
+  start.velocity_residual =
+      multibody::assemble_velocities(model, start.state, ws, options, &start.velocity_modes_released);
 
   // Redundancy is a property of the assembled configuration.
   start.partition = multibody::analyse_redundancy(model, start.state, ws);

@@ -24,6 +24,7 @@ struct PreparedStart {
   multibody::AssemblyResult assembly;     // status kNotConverged: `state` is not usable
   multibody::State state;                 // assembled q, consistent v, at t = 0
   double velocity_residual = 0.0;         // max |G v + g_t| after the velocity projection
+  bool velocity_modes_released = false;   // the projection changed modal rates (assembly.h)
   multibody::ConstraintPartition partition;  // independent rows (all rows after a failure)
   std::vector<RedundantEquationReport> redundant;
 };

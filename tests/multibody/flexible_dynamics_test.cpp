@@ -3,8 +3,11 @@
 // change and the energy must fall by the damping power only (central differences in
 // time); the modal rows must satisfy Lagrange's equations; gravity must be −∂V/∂q. Also
 // the builder's checks of flexible bodies and the linear-range warning.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
+#include "multibody/assembly.h"
 #include "multibody/body.h"
 #include "multibody/dynamics.h"
 #include "multibody/linear_range.h"
@@ -223,6 +226,47 @@ TEST(FlexibleBody, LinearRangeWarning) {
   checks = check_linear_range(model, state);
   EXPECT_NE(checks[0].warning.find("rotation"), std::string::npos) << checks[0].warning;
   EXPECT_EQ(checks[0].rotation_node, 0);
+}
+
+// A 1 m rod (20 beams, 4 free-free modes, no axial one) from the ground origin along x,
+// joined to ground at both ends by spherical joints, the far end's ground point at p_far;
+// with `clamp`, the near end is a bracket.
+Model rod_to_point(bool clamp, const Eigen::Vector3d& p_far) {
+  const fe::FeModel rod = testing::straight_rod(1.0, 20);
+  ModelBuilder builder;
+  builder.add_flexible_body(testing::flexible_spec("rod", rod, testing::normal_modes(rod, 4), ModalDamping::ratio(0.0)));
+  builder.add_node_marker("A.rod", "rod", 0);
+  builder.add_marker("A.ground", "ground", Eigen::Vector3d::Zero());
+  builder.add_node_marker("B.rod", "rod", 20);
+  builder.add_marker("B.ground", "ground", p_far);
+  builder.add_joint("A", clamp ? JointType::kBracket : JointType::kSpherical, "A.ground", "A.rod");
+  builder.add_joint("B", JointType::kSpherical, "B.ground", "B.rod");
+  return builder.build();
+}
+
+TEST(FlexibleBody, AssemblyDeformsTheBodyOnlyWhenTheJointsRequireIt) {
+  // Pinned at the near end, the rod reaches a point 1 m away, 1 mm up, by turning: its modes
+  // keep their given zero values exactly.
+  const Model pinned = rod_to_point(false, Eigen::Vector3d(std::sqrt(1.0 - 1e-6), 0.0, 1e-3));
+  Workspace ws_pinned(pinned);
+  State state = initial_state(pinned);
+  const AssemblyResult turned = assemble_positions(pinned, state, ws_pinned);
+  ASSERT_EQ(turned.status, AssemblyStatus::kOk) << turned.message;
+  EXPECT_FALSE(turned.modes_released);
+  const Body& rod = pinned.bodies[1];
+  EXPECT_EQ(state.q.segment(rod.q_offset + 7, rod.nv - 6).lpNorm<Eigen::Infinity>(), 0.0);
+  // Clamped, it reaches a point 0.01 mm above its tip only by bending: the modes are let move
+  // and the joints close (0.01 mm: linear modes cannot shorten the chord, and the frame's tilt
+  // costs (δ/L)²/2 = 5e-11 m, below the assembly tolerance).
+  const Model clamped = rod_to_point(true, Eigen::Vector3d(1.0, 0.0, 1e-5));
+  Workspace ws_clamped(clamped);
+  state = initial_state(clamped);
+  const AssemblyResult bent = assemble_positions(clamped, state, ws_clamped);
+  ASSERT_EQ(bent.status, AssemblyStatus::kOk) << bent.message;
+  EXPECT_TRUE(bent.modes_released);
+  EXPECT_LE(bent.residual, 1e-10);
+  // η of mass-normalised modes (tip amplitude ~1.6 per unit η, seed rod) for 1e-5 m.
+  EXPECT_GT(state.q.segment(clamped.bodies[1].q_offset + 7, 4).lpNorm<Eigen::Infinity>(), 1e-6);
 }
 
 }  // namespace

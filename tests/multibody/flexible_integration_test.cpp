@@ -106,11 +106,15 @@ void check_free_floating(bool constrained_modes) {
               max_de, e0, max_strain);
   // Momentum and energy errors are the integrator's: relative 1e-10 per step over ~1e4
   // steps, bounded by 1e-7 of each quantity's size; a wrong quadratic-velocity term
-  // changes them by O(1) within one revolution (and the strain energy exchanged is real).
+  // changes them by O(1) within one revolution. The strain energy exchanged is real: at
+  // least 1e-3 of the energy, 1e4 times the energy bound. How much depends on the sign
+  // ARPACK gives each mode (start vector, BLAS), which sets how the given η̇ meets the given
+  // ω: measured 0.5 % (constrained modes) and 5 % (free-free) on one machine, over 1 % for
+  // both on another.
   EXPECT_LT(max_dh.head<3>().maxCoeff(), 1e-7 * h0.head<3>().norm());
   EXPECT_LT(max_dh.tail<3>().maxCoeff(), 1e-7 * h0.tail<3>().norm());
   EXPECT_LT(max_de, 1e-7 * e0);
-  EXPECT_GT(max_strain, 1e-2 * e0);
+  EXPECT_GT(max_strain, 1e-3 * e0);
 }
 
 TEST(FlexibleIntegration, FreeFloatingFreeFreeModesKeepMomentumAndEnergy) { check_free_floating(false); }

@@ -1,0 +1,18 @@
+// The minimum-norm least-squares solution x = A⁺ b of a possibly rank-deficient system, as
+// used for redundant constraint equations (assembly steps, reactions).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace limber {
+
+// x minimising ‖x‖ among the minimisers of ‖A x − b‖, from the SVD of A with singular values
+// σ ≤ relative_threshold · σ_max taken as zero (Golub & Van Loan, Matrix Computations,
+// §5.5.4). Not Eigen 3.4's CompleteOrthogonalDecomposition: its solve reads uninitialised
+// memory when A is rank deficient (valgrind on the flexible slider-crank's reactions), and
+// its default threshold, near machine precision, counts rows that are dependent up to
+// rounding (σ ~ 1e-12 σ_max) as independent. Precondition: b.size() == A.rows().
+Eigen::VectorXd minimum_norm_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                                   double relative_threshold);
+
+}  // namespace limber
