@@ -3,16 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/QR>
 
+#include "core/error.h"
 #include "multibody/constraints.h"
+#include "multibody/dynamics.h"
 
 namespace limber::multibody {
 
 namespace {
 
-// Coefficients below this (rows have unit norm) are rounding, not dependence.
-constexpr double kCoefficientTolerance = 1e-8;
+// Coefficients below this (rows have unit norm) are rounding or a mode set's spurious
+// content (redundancy.h), not dependence: true dependencies combine rows with O(1) weights.
+constexpr double kCoefficientTolerance = 1e-4;
 
 void mark_indeterminate(const Model& model, ConstraintPartition& p) {
   p.row_indeterminate.assign(model.num_equations(), false);
@@ -25,6 +29,15 @@ void mark_indeterminate(const Model& model, ConstraintPartition& p) {
     const int joint = model.equations[row].joint;
     if (p.row_indeterminate[row] && joint >= 0) p.joint_indeterminate[joint] = true;
   }
+}
+
+// The rows of A scaled to unit norm (zero rows stay zero: they are redundant with nothing).
+Eigen::MatrixXd unit_rows(Eigen::MatrixXd A) {
+  for (Eigen::Index row = 0; row < A.rows(); ++row) {
+    const double norm = A.row(row).norm();
+    if (norm > 0.0) A.row(row) /= norm;
+  }
+  return A;
 }
 
 }  // namespace
@@ -59,16 +72,18 @@ ConstraintPartition analyse_redundancy(const Model& model, const State& state, W
     mark_indeterminate(model, p);
     return p;
   }
-  // Rows scaled to unit norm (zero rows stay zero: they are redundant with nothing).
-  Eigen::MatrixXd S = ws.G;
-  for (int row = 0; row < m; ++row) {
-    const double norm = S.row(row).norm();
-    if (norm > 0.0) S.row(row) /= norm;
-  }
-  // Pivoted QR of Sᵀ: its first `rank` pivot columns are independent rows of G.
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S.transpose());
-  qr.setThreshold(relative_threshold);
-  const int rank = static_cast<int>(qr.rank());
+  // The rank in the mass metric: rows of G L⁻ᵀ (M = L Lᵀ), whose products are G M⁻¹ Gᵀ.
+  mass_matrix(model, state, ws);
+  const Eigen::LLT<Eigen::MatrixXd> mass(ws.M);
+  LIMBER_DEMAND(mass.info() == Eigen::Success);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> weighted(
+      unit_rows(mass.matrixL().solve(ws.G.transpose()).transpose()).transpose());
+  weighted.setThreshold(relative_threshold);
+  const int rank = static_cast<int>(weighted.rank());
+  // Which rows: the first `rank` pivots of G itself, whose order keeps whole joints where it
+  // can (the mass metric would pick a set that turns singular as a slider-crank moves).
+  const Eigen::MatrixXd S = unit_rows(ws.G);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S.transpose());
   const auto& perm = qr.colsPermutation().indices();
   for (int k = 0; k < rank; ++k) p.independent.push_back(perm(k));
   std::sort(p.independent.begin(), p.independent.end());

@@ -1,8 +1,13 @@
-// Redundant constraint equations: found by a rank-revealing QR with column pivoting
-// (Golub & Van Loan, Matrix Computations, §5.4.2) of the full constraint Jacobian G
-// (m x nv) at an assembled configuration. Each row of G is first scaled to unit norm, so
-// the test is independent of units (metres vs radians) and of the mechanism's size; a
-// pivot |R_kk| ≤ relative_threshold · |R_11| counts as zero. The pivoted rows are the
+// Redundant constraint equations: found by rank-revealing QR with column pivoting (Golub &
+// Van Loan, Matrix Computations, §5.4.2) at an assembled configuration. The rank is that of
+// the full constraint Jacobian G (m x nv) in the mass metric, the rows of G L⁻ᵀ (M = L Lᵀ)
+// whose products are G M⁻¹ Gᵀ, the matrix the integrators factorise; the independent rows
+// are the first `rank` pivots of G itself. Rows are scaled to unit norm first, so the test
+// is independent of units (metres vs radians) and of the mechanism's size; a pivot
+// |R_kk| ≤ relative_threshold · |R_11| counts as zero. The mass metric weighs a coordinate
+// by how easily it moves: a joint equation that only a mode's spurious content makes
+// independent (a bending mode with 1e-6 of rotation about the beam axis, whose own inertia
+// is small) stays redundant, as it is physically. The pivoted rows are the
 // independent equations; every other row is redundant, and it depends on the independent
 // rows with non-zero coefficients in its least-squares expansion over them.
 #pragma once
@@ -15,9 +20,14 @@
 
 namespace limber::multibody {
 
-// Default relative pivot threshold: far above rounding (1e-16 · √m) and far below the
-// pivots of a well-posed mechanism away from singular positions.
-constexpr double kRedundancyThreshold = 1e-8;
+// Default relative pivot threshold: far below the pivots of a well-posed mechanism away from
+// singular positions (≥ 0.05 for the seed slider-crank, rigid or flexible), far above
+// rounding (1e-16 · √m) and above the spurious coupling a computed mode set carries: the
+// seed rod meshed with 20 beams has up to 6e-6 of rotation about its axis in its bending
+// modes, a pivot of 2e-8 in the mass metric. Counted independent, such a row carries
+// multipliers amplified by the inverse pivot and makes G M⁻¹ Gᵀ numerically singular (its
+// eigenvalues go with the pivot squared).
+constexpr double kRedundancyThreshold = 1e-6;
 
 struct RedundantEquation {
   int row = 0;                  // equation index in model.equations
