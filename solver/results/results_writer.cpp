@@ -136,7 +136,8 @@ struct ResultsWriter::Impl {
   H5Handle energy_group;
   std::set<std::string> body_names, joint_names, driver_names, energy_names;
 
-  // Per body: position, orientation, then modal_coordinates (flexible only); nm or -1 (rigid).
+  // Per body: position, orientation, then modal_coordinates, modal_velocities and deflection
+  // (flexible only); nm or -1 (rigid).
   std::vector<std::vector<Series>> body_series;
   std::vector<int> body_nmodes;
   // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate.
@@ -301,10 +302,11 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
   write_dataset(modes.get(), "frequencies_hz", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                 {static_cast<hsize_t>(nm)}, body.frequencies_hz.data());
 
-  // Modal coordinates; a flexible body without modes keeps a [ns, 0] dataset.
-  impl_->body_series.back().push_back(impl_->create_series(
-      group.get(), "modal_coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-      static_cast<hsize_t>(nm)));
+  // Modal coordinates and rates; a flexible body without modes keeps [ns, 0] datasets.
+  for (const char* name : {"modal_coordinates", "modal_velocities"}) {
+    impl_->body_series.back().push_back(impl_->create_series(
+        group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(nm)));
+  }
   impl_->body_nmodes.push_back(static_cast<int>(nm));
   if (body.has_deflection) {
     impl_->body_series.back().push_back(impl_->create_series(
@@ -375,7 +377,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
   LIMBER_DEMAND(sample.driver_efforts.size() == m.driver_series.size());
   LIMBER_DEMAND(sample.energies.size() == m.energy_series.size());
 
-  // Bodies: pose, then modal coordinates.
+  // Bodies: pose, then modal coordinates, rates and deflection.
   for (std::size_t b = 0; b < sample.bodies.size(); ++b) {
     const BodySample& body = sample.bodies[b];
     std::vector<Series>& series = m.body_series[b];
@@ -385,9 +387,11 @@ void ResultsWriter::append_sample(const Sample& sample) {
     m.append_row(series[1], wxyz);
     if (m.body_nmodes[b] >= 0) {
       LIMBER_DEMAND(body.modal_coordinates.size() == m.body_nmodes[b]);
+      LIMBER_DEMAND(body.modal_velocities.size() == m.body_nmodes[b]);
       m.append_row(series[2], body.modal_coordinates.data());
+      m.append_row(series[3], body.modal_velocities.data());
     }
-    if (series.size() > 3) m.append_vector3(series[3], body.deflection);
+    if (series.size() > 4) m.append_vector3(series[4], body.deflection);
   }
 
   // Joints: point, reactions in both frames, redundancy flag.

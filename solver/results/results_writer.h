@@ -73,7 +73,8 @@ struct JointSpec {
 struct BodySample {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();                   // frame origin [m]
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();      // ground <- body
-  Eigen::VectorXd modal_coordinates;  // nm values (flexible bodies), empty for rigid bodies
+  Eigen::VectorXd modal_coordinates;  // η: nm values (flexible bodies), empty for rigid bodies
+  Eigen::VectorXd modal_velocities;   // η̇: likewise
   // Flexible bodies with a deflection probe: a node's elastic displacement relative to a
   // chord between two other nodes, body axes [m].
   Eigen::Vector3d deflection = Eigen::Vector3d::Zero();
@@ -130,8 +131,8 @@ class ResultsWriter {
   void set_integrator(const std::string& name);
 
   // Appends one row to every per-sample dataset and flushes the file to disk. Precondition:
-  // sample vectors sized as declared, modal_coordinates sized nm for flexible bodies (aborts
-  // otherwise).
+  // sample vectors sized as declared, modal_coordinates and modal_velocities sized nm for
+  // flexible bodies (aborts otherwise).
   void append_sample(const Sample& sample);
 
   // Sets the root attributes status ("ok" / "failed") and message, flushes and closes the file.

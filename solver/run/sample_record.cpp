@@ -123,6 +123,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     pose.orientation = Eigen::Quaterniond(p(0), p(1), p(2), p(3));
     if (body.kind == multibody::BodyKind::kFlexible) {
       pose.modal_coordinates = sample.q.segment(body.q_offset + 7, body.flexible->mode_count());
+      pose.modal_velocities = sample.v.segment(body.v_offset + 6, body.flexible->mode_count());
       if (const auto& probe = body.flexible->deflection_probe) {
         pose.deflection = multibody::probe_deflection(*body.flexible, *probe, pose.modal_coordinates);
       }

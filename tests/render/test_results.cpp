@@ -117,12 +117,14 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
       results::BodySample plate;
       plate.position = plate_origin(k);
       plate.modal_coordinates = plate_eta(scene, t);
+      plate.modal_velocities = Eigen::Vector2d::Zero();  // rendering reads η only
       sample.bodies.push_back(plate);
     }
     if (scene.with_beam) {
       results::BodySample beam;
       beam.position = beam_origin();
       beam.modal_coordinates = beam_eta(scene, t);
+      beam.modal_velocities = Eigen::Vector2d::Zero();
       sample.bodies.push_back(beam);
     }
     if (scene.with_box) {

@@ -36,6 +36,7 @@ namespace {
   Sample sample;
   sample.bodies.resize(2);
   sample.bodies[1].modal_coordinates = Eigen::Vector4d::Zero();
+  sample.bodies[1].modal_velocities = Eigen::Vector4d::Zero();
   sample.joints.resize(1);
   sample.driver_efforts = {0.0};
   sample.energies = {0.0};

@@ -59,6 +59,7 @@ TEST(ResultsWriter, WritesTheDocumentedLayout) {
       sample.bodies.resize(2);
       sample.bodies[0].position = {1.0 * k, 2.0, 3.0};
       sample.bodies[1].modal_coordinates = Eigen::Vector2d(0.01 * k, -0.02 * k);
+      sample.bodies[1].modal_velocities = Eigen::Vector2d(0.5 * k, 0.25 * k);
       sample.joints.resize(1);
       sample.joints[0].force_ground = {0.0, 0.0, 5.0 * k};
       sample.driver_efforts = {7.0 * k};
@@ -85,6 +86,7 @@ TEST(ResultsWriter, WritesTheDocumentedLayout) {
   EXPECT_EQ(dataset_dims(file, "/bodies/box/position"), (std::vector<hsize_t>{3, 3}));
   EXPECT_EQ(dataset_dims(file, "/bodies/box/orientation"), (std::vector<hsize_t>{3, 4}));
   EXPECT_EQ(dataset_dims(file, "/bodies/beam/modal_coordinates"), (std::vector<hsize_t>{3, 2}));
+  EXPECT_EQ(dataset_dims(file, "/bodies/beam/modal_velocities"), (std::vector<hsize_t>{3, 2}));
   EXPECT_EQ(dataset_dims(file, "/joints/hinge/indeterminate"), (std::vector<hsize_t>{3}));
   EXPECT_EQ(dataset_dims(file, "/solver/steps"), (std::vector<hsize_t>{3}));
   EXPECT_EQ(read_doubles(file, "/time"), (std::vector<double>{0.0, 0.1, 0.2}));
@@ -93,6 +95,8 @@ TEST(ResultsWriter, WritesTheDocumentedLayout) {
   EXPECT_EQ(read_doubles(file, "/bodies/box/orientation")[4], 1.0);  // w of sample 1
   EXPECT_EQ(read_doubles(file, "/bodies/beam/modal_coordinates"),
             (std::vector<double>{0, 0, 0.01, -0.02, 0.02, -0.04}));
+  EXPECT_EQ(read_doubles(file, "/bodies/beam/modal_velocities"),
+            (std::vector<double>{0, 0, 0.5, 0.25, 1.0, 0.5}));
   EXPECT_EQ(read_doubles(file, "/joints/hinge/force_ground")[8], 10.0);
   EXPECT_EQ(read_doubles(file, "/drivers/motor/effort"), (std::vector<double>{0, 7, 14}));
   EXPECT_EQ(read_doubles(file, "/energy/kinetic"), (std::vector<double>{0, 0.5, 2}));
