@@ -71,6 +71,7 @@ struct IdaIntegrator::Impl {
   Status failure;
   std::string last_message;  // IDA's own text of its last error
   int nonfinite_residuals = 0;  // in the current advance_to
+  Statistics restart_statistics;  // totals at IDA's last restart (reselect_constraints)
 
   SUNContext context = nullptr;
   N_Vector y = nullptr, yp = nullptr, id = nullptr, atol_vec = nullptr;
@@ -139,7 +140,8 @@ struct IdaIntegrator::Impl {
     return ++nonfinite_residuals <= kMaxNonFiniteRetries ? 1 : -1;
   }
 
-  void read_statistics(Statistics& stats) const {
+  // IDA's counters since the last (re)start, added to `before` (the totals at that restart).
+  void read_statistics(Statistics& stats, const Statistics& before) const {
     long value = 0;
     IDAGetNumSteps(ida, &value);
     stats.steps = value;
@@ -160,6 +162,46 @@ struct IdaIntegrator::Impl {
     double last_step = 0.0;
     IDAGetLastStep(ida, &last_step);
     stats.last_step = last_step;
+    stats.steps += before.steps;
+    stats.rejected_steps += before.rejected_steps;
+    stats.newton_failures += before.newton_failures;
+    stats.newton_iterations += before.newton_iterations;
+    stats.jacobian_evaluations += before.jacobian_evaluations;
+    stats.residual_evaluations += before.residual_evaluations;
+  }
+
+  // New constraint rows at the current step end: the multipliers change meaning, so IDA
+  // restarts there (order 1, from the current step size) with λ, v̇ from the saddle-point
+  // system of the new rows and μ = 0; q, v and the integrals carry over.
+  void reselect_constraints(double t) {
+    Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
+    Eigen::Map<Eigen::VectorXd> yp_now(N_VGetArrayPointer(yp), n);
+    LIMBER_DEMAND(IDAGetDky(ida, t, 0, y) == IDA_SUCCESS);
+    LIMBER_DEMAND(IDAGetDky(ida, t, 1, yp) == IDA_SUCCESS);
+    const Eigen::VectorXd q_now = y_now.head(nq);
+    if (!system->reselect_constraints(t, q_now)) return;
+    const Eigen::VectorXd v_now = y_now.segment(iv, nv);
+    Eigen::VectorXd vdot_now, lambda_now;
+    // A failed solve keeps IDA's values; its next step then reports the trouble.
+    if (!solve_accelerations(*system, t, q_now, v_now, vdot_now, lambda_now).ok()) return;
+    y_now.segment(ilambda, nc) = lambda_now;
+    y_now.segment(imu, nc + nh).setZero();
+    system->kinematic_matrix(q_now, N);
+    yp_now.head(nq) = N * v_now;
+    yp_now.segment(iv, nv) = vdot_now;
+    yp_now.segment(ilambda, 2 * nc + nh).setZero();
+    if (nz > 0) {
+      options.quadrature.integrand(t, q_now, v_now, vdot_now, lambda_now, f);
+      yp_now.segment(iz, nz) = f;
+    }
+    double h_last = 0.0;
+    IDAGetLastStep(ida, &h_last);
+    Statistics totals;
+    read_statistics(totals, restart_statistics);
+    restart_statistics = totals;
+    LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
+    if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
+    if (std::isfinite(options.t_stop)) LIMBER_DEMAND(IDASetStopTime(ida, options.t_stop) == IDA_SUCCESS);
   }
 };
 
@@ -219,6 +261,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.t0 = x0.t;
   s.stepped = false;
   s.failed = false;
+  s.restart_statistics = {};
   stats_ = {};
 
   // Sizes and layout of y = [q, v, λ, μ, z].
@@ -317,28 +360,36 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
   }
 
   // The initial time is served from y0 (IDA cannot return before its first step).
-  double t_reached = t_out;
   if (s.stepped || t_out > s.t0 + time_tolerance(s.t0)) {
     s.nonfinite_residuals = 0;
-    const int flag = IDASolve(s.ida, t_out, &t_reached, s.y, s.yp, IDA_NORMAL);
-    s.stepped = true;
-    s.read_statistics(stats_);
-    if (flag < 0) {
-      double t_fail = t_out;
-      IDAGetCurrentTime(s.ida, &t_fail);
-      s.failed = true;
-      s.failure = {status_code(flag), t_fail,
-                   fmt::format("at t = {:.6g} s: IDA failed with flag {} ({})", t_fail, flag,
-                               s.last_message)};
-      return s.failure;
+    // One step at a time until past t_out, then y(t_out) from IDA's interpolating polynomial
+    // (what IDA_NORMAL does); between steps the system may pick new constraint rows.
+    double t_current = s.t0;
+    IDAGetCurrentTime(s.ida, &t_current);
+    while (t_current < t_out - time_tolerance(t_out)) {
+      if (s.stepped) s.reselect_constraints(t_current);
+      const int flag = IDASolve(s.ida, t_out, &t_current, s.y, s.yp, IDA_ONE_STEP);
+      s.stepped = true;
+      s.read_statistics(stats_, s.restart_statistics);
+      if (flag < 0) {
+        double t_fail = t_out;
+        IDAGetCurrentTime(s.ida, &t_fail);
+        s.failed = true;
+        s.failure = {status_code(flag), t_fail,
+                     fmt::format("at t = {:.6g} s: IDA failed with flag {} ({})", t_fail, flag,
+                                 s.last_message)};
+        return s.failure;
+      }
+      if (stats_.steps > s.options.max_steps) {
+        s.failed = true;
+        s.failure = {StatusCode::kTooManySteps, t_current,
+                     fmt::format("at t = {:.6g} s: more than {} steps", t_current,
+                                 s.options.max_steps)};
+        return s.failure;
+      }
     }
-    if (stats_.steps > s.options.max_steps) {
-      s.failed = true;
-      s.failure = {StatusCode::kTooManySteps, t_reached,
-                   fmt::format("at t = {:.6g} s: more than {} steps", t_reached,
-                               s.options.max_steps)};
-      return s.failure;
-    }
+    LIMBER_DEMAND(IDAGetDky(s.ida, t_out, 0, s.y) == IDA_SUCCESS);
+    LIMBER_DEMAND(IDAGetDky(s.ida, t_out, 1, s.yp) == IDA_SUCCESS);
   }
 
   // Unpack y(t_out), y'(t_out).

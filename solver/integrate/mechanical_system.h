@@ -49,6 +49,14 @@ class MechanicalSystem {
   // γ(t,q,v) with G v' = γ: the acceleration-level right-hand side (nc).
   virtual void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                 Eigen::VectorXd& gamma) const = 0;
+  // Which rows of a redundant constraint set are independent depends on the configuration:
+  // a loop whose dependency coefficients turn with a crank makes a fixed choice of rows
+  // singular twice a turn. A system that can, picks new independent rows (same nc) when its
+  // current ones have become ill-conditioned at (t, q) and returns true; the integrator then
+  // restarts from (t, q, v) with new multipliers. Default: the rows never change.
+  virtual bool reselect_constraints(double /*t*/, const Eigen::VectorXd& /*q*/) const {
+    return false;
+  }
 };
 
 }  // namespace limber::integrate

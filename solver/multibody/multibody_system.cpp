@@ -1,5 +1,7 @@
 #include "multibody/multibody_system.h"
 
+#include <Eigen/QR>
+
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
@@ -97,6 +99,42 @@ void MultibodySystem::acceleration_rhs(double t, const Eigen::VectorXd& q, const
                                        Eigen::VectorXd& gamma) const {
   evaluate(t, q, &v);
   select_rows(workspace_.gamma, gamma);
+}
+
+double MultibodySystem::smallest_pivot(const std::vector<int>& rows) const {
+  Eigen::MatrixXd S(model_.nv, rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    S.col(k) = workspace_.G.row(rows[k]).transpose();
+    const double norm = S.col(k).norm();
+    if (norm > 0.0) S.col(k) /= norm;
+  }
+  if (S.cols() == 0) return 1.0;
+  // Pivoted QR as in analyse_redundancy: |R_kk| decrease, the last one measures the rank.
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S);
+  return std::abs(qr.matrixR()(S.cols() - 1, S.cols() - 1));
+}
+
+bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) const {
+  // Without redundant rows the choice is all rows, nothing to reselect.
+  if (partition_.redundant.empty()) return false;
+  evaluate(t, q, nullptr);
+  const double current = smallest_pivot(partition_.independent);
+  if (chosen_pivot_ < 0.0) chosen_pivot_ = current;
+  // Hysteresis: a tenth of the pivot at selection before re-analysing, twice better to switch.
+  if (current >= 0.1 * chosen_pivot_) return false;
+  state_.t = t;
+  state_.q = q;
+  ConstraintPartition fresh =
+      analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold);
+  if (fresh.independent.size() != partition_.independent.size() ||
+      fresh.independent == partition_.independent) {
+    return false;
+  }
+  const double better = smallest_pivot(fresh.independent);
+  if (better < 2.0 * current) return false;
+  partition_ = std::move(fresh);
+  chosen_pivot_ = better;
+  return true;
 }
 
 }  // namespace limber::multibody

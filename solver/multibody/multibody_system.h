@@ -1,7 +1,8 @@
 // A multibody Model seen by the time integrators: implements
 // limber::integrate::MechanicalSystem (integrate/mechanical_system.h) with only the
 // independent constraint rows of a ConstraintPartition (redundancy.h), so the integrators
-// never see a rank-deficient G.
+// never see a rank-deficient G. The partition is re-analysed along the motion when its rows
+// become ill-conditioned (reselect_constraints); partition() always returns the current one.
 // Holds a reference to the model (which must outlive it) and a private Workspace: one
 // MultibodySystem per thread.
 #pragma once
@@ -42,14 +43,22 @@ class MultibodySystem final : public integrate::MechanicalSystem {
                                   Eigen::VectorXd& g_t) const override;
   void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                         Eigen::VectorXd& gamma) const override;
+  // New independent rows (redundancy.h) when the smallest pivot of the current rows, unit
+  // scaled, has fallen below a tenth of its value when they were chosen, and the fresh choice
+  // at (t, q) is better conditioned with the same rank.
+  bool reselect_constraints(double t, const Eigen::VectorXd& q) const override;
 
  private:
   // Evaluates the full constraint set at (t, q[, v]) into workspace_.
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) const;
   void select_rows(const Eigen::VectorXd& full, Eigen::VectorXd& out) const;
 
+  // Smallest pivot of the unit-scaled independent rows of workspace_.G (evaluated).
+  double smallest_pivot(const std::vector<int>& rows) const;
+
   const Model& model_;
-  ConstraintPartition partition_;
+  mutable ConstraintPartition partition_;   // changed by reselect_constraints only
+  mutable double chosen_pivot_ = -1.0;      // smallest_pivot when partition_ was chosen
   int num_moving_bodies_ = 0;
   mutable Workspace workspace_;
   mutable State state_;

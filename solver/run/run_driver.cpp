@@ -67,8 +67,9 @@ RunSummary run_mechanism(const multibody::Model& model,
   });
   if (options.max_order == 0 && flexible) options.max_order = 2;
   options.quadrature =
-      energy_quadrature(model, start.partition, start.state, settings.integrator.rtol);
-  SampleRecorder recorder(model, start.partition);
+      energy_quadrature(model, system.partition(), start.state, settings.integrator.rtol);
+  // The system's partition, which it may re-select along the motion (multibody_system.h).
+  SampleRecorder recorder(model, system.partition());
   std::set<int> warned;  // flexible bodies that left the linear range
   const auto on_sample = [&](const integrate::Sample& sample) {
     const results::Sample record = recorder.record(sample);
