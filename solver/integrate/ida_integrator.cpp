@@ -178,12 +178,18 @@ struct IdaIntegrator::Impl {
     Eigen::Map<Eigen::VectorXd> yp_now(N_VGetArrayPointer(yp), n);
     LIMBER_DEMAND(IDAGetDky(ida, t, 0, y) == IDA_SUCCESS);
     LIMBER_DEMAND(IDAGetDky(ida, t, 1, yp) == IDA_SUCCESS);
-    const Eigen::VectorXd q_now = y_now.head(nq);
+    Eigen::VectorXd q_now = y_now.head(nq);
     if (!system->reselect_constraints(t, q_now)) return;
-    const Eigen::VectorXd v_now = y_now.segment(iv, nv);
+    // The rows that come in were held only through ill-conditioned combinations of the old
+    // ones: project q and v onto them, or IDA restarts from a state off its algebraic
+    // equations and fails its error test down to h ~ 1e-10.
+    Eigen::VectorXd v_now = y_now.segment(iv, nv);
     Eigen::VectorXd vdot_now, lambda_now;
-    // A failed solve keeps IDA's values; its next step then reports the trouble.
+    // A failed projection or solve keeps IDA's values; its next step then reports the trouble.
+    if (!project_initial_state(*system, t, q_now, v_now).ok()) return;
     if (!solve_accelerations(*system, t, q_now, v_now, vdot_now, lambda_now).ok()) return;
+    y_now.head(nq) = q_now;
+    y_now.segment(iv, nv) = v_now;
     y_now.segment(ilambda, nc) = lambda_now;
     y_now.segment(imu, nc + nh).setZero();
     system->kinematic_matrix(q_now, N);

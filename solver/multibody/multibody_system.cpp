@@ -124,8 +124,18 @@ bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) c
   if (current >= 0.1 * chosen_pivot_) return false;
   state_.t = t;
   state_.q = q;
+  // The joints whose dropped rows lost their weight in the dependency are measured in frames
+  // that turn with the motion (a crank's), and so are their other rows: keep them all, so the
+  // redundancy falls on rows whose weight stays (without this, R2.rot_x and R2.rot_y of the
+  // flexible slider-crank took turns every quarter turn, 50 000 rejected IDA steps at rtol 1e-8).
+  for (const RedundantEquation& r : partition_.redundant) {
+    const int joint = model_.equations[r.row].joint;
+    for (int row = 0; row < model_.num_equations(); ++row) {
+      if (joint >= 0 && model_.equations[row].joint == joint) kept_rows_.push_back(row);
+    }
+  }
   ConstraintPartition fresh =
-      analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold);
+      analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_);
   if (fresh.independent.size() != partition_.independent.size() ||
       fresh.independent == partition_.independent) {
     return false;

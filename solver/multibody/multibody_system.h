@@ -59,6 +59,7 @@ class MultibodySystem final : public integrate::MechanicalSystem {
   const Model& model_;
   mutable ConstraintPartition partition_;   // changed by reselect_constraints only
   mutable double chosen_pivot_ = -1.0;      // smallest_pivot when partition_ was chosen
+  mutable std::vector<int> kept_rows_;      // rows of joints whose dropped rows degraded
   int num_moving_bodies_ = 0;
   mutable Workspace workspace_;
   mutable State state_;

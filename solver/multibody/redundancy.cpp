@@ -62,7 +62,7 @@ ConstraintPartition full_partition(const Model& model) {
 }
 
 ConstraintPartition analyse_redundancy(const Model& model, const State& state, Workspace& ws,
-                                       double relative_threshold) {
+                                       double relative_threshold, const std::vector<int>& keep) {
   evaluate_constraints(model, state, Stage::kPosition, ws);
   const int m = model.num_equations();
   ConstraintPartition p;
@@ -83,7 +83,9 @@ ConstraintPartition analyse_redundancy(const Model& model, const State& state, W
   // Which rows: the first `rank` pivots of G itself, whose order keeps whole joints where it
   // can (the mass metric would pick a set that turns singular as a slider-crank moves).
   const Eigen::MatrixXd S = unit_rows(ws.G);
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S.transpose());
+  Eigen::MatrixXd S_pivoting = S;
+  for (int row : keep) S_pivoting.row(row) *= 2.0;  // larger norms are pivoted first
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S_pivoting.transpose());
   const auto& perm = qr.colsPermutation().indices();
   for (int k = 0; k < rank; ++k) p.independent.push_back(perm(k));
   std::sort(p.independent.begin(), p.independent.end());

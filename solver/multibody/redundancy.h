@@ -48,9 +48,11 @@ struct ConstraintPartition {
 // All rows independent (no analysis).
 ConstraintPartition full_partition(const Model& model);
 
-// Analyses G at `state` (evaluated there; updates ws). Precondition: the state is
-// assembled (redundancy is a property of the configuration).
+// Analyses G at `state` (evaluated there; updates ws). Rows in `keep` are pivoted first, so
+// they stay independent where the rank allows (MultibodySystem::reselect_constraints).
+// Precondition: the state is assembled (redundancy is a property of the configuration).
 ConstraintPartition analyse_redundancy(const Model& model, const State& state, Workspace& ws,
-                                       double relative_threshold = kRedundancyThreshold);
+                                       double relative_threshold = kRedundancyThreshold,
+                                       const std::vector<int>& keep = {});
 
 }  // namespace limber::multibody
