@@ -6,9 +6,9 @@
 
 namespace limber {
 
-// x minimising ‖x‖ among the minimisers of ‖A x − b‖, from the SVD of A with singular values
-// σ ≤ relative_threshold · σ_max taken as zero (Golub & Van Loan, Matrix Computations,
-// §5.5.4). Not Eigen 3.4's CompleteOrthogonalDecomposition: its solve reads uninitialised
+// x minimising ‖x‖ among the minimisers of ‖A x − b‖, singular values σ ≤ relative_threshold
+// · σ_max taken as zero (Golub & Van Loan, Matrix Computations, §5.5.4), from the
+// eigen-decomposition of AᵀA. Not Eigen 3.4's CompleteOrthogonalDecomposition: its solve reads uninitialised
 // memory when A is rank deficient (valgrind on the flexible slider-crank's reactions), and
 // its default threshold, near machine precision, counts rows that are dependent up to
 // rounding (σ ~ 1e-12 σ_max) as independent. Precondition: b.size() == A.rows().

@@ -15,7 +15,7 @@ constexpr double kProjectionTolerance = 1e-12;
 constexpr double kSingularRcond = 1e-14;
 // Relative singular value below which a projection direction counts as dependent (the
 // redundancy analysis' threshold, multibody/redundancy.h).
-constexpr double kRankThreshold = 1e-8;
+constexpr double kRankThreshold = 1e-6;
 
 Status failure(StatusCode code, double t, const std::string& why) {
   return {code, t, fmt::format("at t = {:.6g} s: {}", t, why)};

@@ -94,7 +94,7 @@ int main() {
     print_row("IDA (BDF ≤ 2)", fmt::format("rtol {:.0e}, atol {:.0e}", rtol, rtol / 100),
               run_once(mechanism, integrate::IntegratorOptions::ida(rtol, rtol / 100), 3), reference);
   }
-  for (double h : {2e-3, 1e-3, 5e-4, 2e-4, 1e-4}) {
+  for (double h : {2e-3, 1e-3, 6e-4, 5e-4, 2e-4, 1e-4}) {
     print_row("gen-α", fmt::format("h {:.0e}, ρ∞ 0.8", h),
               run_once(mechanism, integrate::IntegratorOptions::generalized_alpha(h, 0.8), 3), reference);
   }
