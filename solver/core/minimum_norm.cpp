@@ -9,6 +9,7 @@ namespace limber {
 Eigen::VectorXd minimum_norm_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                                    double relative_threshold) {
   LIMBER_DEMAND(b.size() == A.rows());
+  LIMBER_DEMAND(relative_threshold >= 1e-7);
   if (A.size() == 0) return Eigen::VectorXd::Zero(A.cols());
   // A⁺ b = (AᵀA)⁺ Aᵀ b from the eigen-decomposition of the Gram matrix: its eigenvalues are
   // the σ², cut at (relative_threshold σ_max)². A few times cheaper than a Jacobi SVD at the

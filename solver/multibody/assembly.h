@@ -4,7 +4,7 @@
 //  2. velocities: the minimum-norm (Euclidean in v) correction v ← v − G⁺ (G v + g_t),
 //     held directions unchanged;
 //  3. accelerations and multipliers: [M Gᵀ; G 0] [v̇; λ] = [Q; γ] on the independent rows.
-// G⁺ is the pseudo-inverse (complete orthogonal decomposition) with the rank decided as in
+// G⁺ is the pseudo-inverse (core/minimum_norm.h) with the rank decided as in
 // redundancy.h, so redundant but consistent equations are handled. The modal coordinates and
 // rates of flexible bodies keep their given values (undeformed and at rest in their frames
 // unless the case says otherwise): the frames absorb the corrections, so a start at speed is
