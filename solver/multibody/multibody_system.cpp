@@ -102,16 +102,12 @@ void MultibodySystem::acceleration_rhs(double t, const Eigen::VectorXd& q, const
 }
 
 double MultibodySystem::smallest_pivot(const std::vector<int>& rows) const {
-  Eigen::MatrixXd S(model_.nv, rows.size());
-  for (size_t k = 0; k < rows.size(); ++k) {
-    S.col(k) = workspace_.G.row(rows[k]).transpose();
-    const double norm = S.col(k).norm();
-    if (norm > 0.0) S.col(k) /= norm;
-  }
-  if (S.cols() == 0) return 1.0;
+  if (rows.empty()) return 1.0;
+  Eigen::MatrixXd G_rows(rows.size(), model_.nv);
+  for (size_t k = 0; k < rows.size(); ++k) G_rows.row(k) = workspace_.G.row(rows[k]);
   // Pivoted QR as in analyse_redundancy: |R_kk| decrease, the last one measures the rank.
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S);
-  return std::abs(qr.matrixR()(S.cols() - 1, S.cols() - 1));
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(unit_rows(G_rows).transpose());
+  return std::abs(qr.matrixR()(rows.size() - 1, rows.size() - 1));
 }
 
 bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) const {

@@ -31,7 +31,8 @@ void mark_indeterminate(const Model& model, ConstraintPartition& p) {
   }
 }
 
-// The rows of A scaled to unit norm (zero rows stay zero: they are redundant with nothing).
+}  // namespace
+
 Eigen::MatrixXd unit_rows(Eigen::MatrixXd A) {
   for (Eigen::Index row = 0; row < A.rows(); ++row) {
     const double norm = A.row(row).norm();
@@ -39,8 +40,6 @@ Eigen::MatrixXd unit_rows(Eigen::MatrixXd A) {
   }
   return A;
 }
-
-}  // namespace
 
 std::vector<std::string> ConstraintPartition::describe(const Model& model) const {
   std::vector<std::string> lines;

@@ -45,6 +45,9 @@ struct ConstraintPartition {
   std::vector<std::string> describe(const Model& model) const;
 };
 
+// The rows of A scaled to unit norm (zero rows stay zero: they are redundant with nothing).
+Eigen::MatrixXd unit_rows(Eigen::MatrixXd A);
+
 // All rows independent (no analysis).
 ConstraintPartition full_partition(const Model& model);
 
