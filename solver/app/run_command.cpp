@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -88,7 +89,34 @@ std::string json_string_list(const std::vector<std::string>& values) {
   return text + "]";
 }
 
-std::string json_report(const run::RunSummary& summary, const std::string& results_path) {
+// "latch L (joint R1) engaged at t = ... s: angle ..°, rate ..°/s".
+std::string describe_event(const multibody::Model& model, const multibody::HingeEvent& event) {
+  const auto& limit = std::get<multibody::HingeLimit>(model.forces[event.force]);
+  const bool latch = limit.kind == multibody::HingeLimitKind::kLatch;
+  const char* what = latch ? "locked" : (event.engaged ? "contact begins" : "contact ends");
+  constexpr double kDegrees = 180.0 / std::numbers::pi;
+  return fmt::format("{} {} (joint {}) {} at t = {:.9g} s: angle {:.4f} deg, rate {:.4g} deg/s",
+                     multibody::to_string(limit.kind), limit.name, model.joints[limit.joint].name,
+                     what, event.t, event.angle * kDegrees, event.rate * kDegrees);
+}
+
+std::string json_events(const multibody::Model& model, const std::vector<multibody::HingeEvent>& events) {
+  std::string text = "[";
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    const multibody::HingeEvent& e = events[k];
+    const auto& limit = std::get<multibody::HingeLimit>(model.forces[e.force]);
+    text += fmt::format("{}{{\"t\": {}, \"name\": {}, \"kind\": {}, \"joint\": {}, \"engaged\": {}, "
+                        "\"angle\": {}, \"rate\": {}}}",
+                        k ? ", " : "", json_number(e.t), json_string(limit.name),
+                        json_string(multibody::to_string(limit.kind)),
+                        json_string(model.joints[limit.joint].name), e.engaged ? "true" : "false",
+                        json_number(e.angle), json_number(e.rate));
+  }
+  return text + "]";
+}
+
+std::string json_report(const multibody::Model& model, const run::RunSummary& summary,
+                        const std::string& results_path) {
   std::vector<std::string> names, details;
   for (const run::RedundantEquationReport& r : summary.redundant) {
     names.push_back(r.name);
@@ -100,13 +128,13 @@ std::string json_report(const run::RunSummary& summary, const std::string& resul
       "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_failures\": {}, "
       "\"newton_iterations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
-      "\"redundant\": {}, \"redundant_details\": {}, \"results\": {}}}",
+      "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"results\": {}}}",
       json_string(summary.ok ? "ok" : "failed"), json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
       summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
       json_number(summary.wall_seconds), json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
-      json_string_list(details), json_string(results_path));
+      json_string_list(details), json_events(model, summary.events), json_string(results_path));
 }
 
 int run_case(const RunOptions& options) {
@@ -150,6 +178,10 @@ int run_case(const RunOptions& options) {
     if (progress) progress->clear();
     fmt::print(stderr, "limber: warning: {}\n", warning);
   };
+  hooks.on_event = [&](const multibody::HingeEvent& event) {
+    if (progress) progress->clear();
+    fmt::print(text, "event: {}\n", describe_event(model, event));
+  };
   const run::RunSummary summary =
       run::run_mechanism(model, input.mechanism->assembly, settings, hooks);
   progress.reset();
@@ -166,7 +198,7 @@ int run_case(const RunOptions& options) {
                summary.max_position_violation, summary.max_velocity_violation);
   }
   fmt::print(text, "wrote {}\n", results_path);
-  if (options.json) fmt::print(stdout, "{}\n", json_report(summary, results_path));
+  if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
   if (!summary.ok) {
     fmt::print(stderr, "limber: error: run failed: {} ({} samples kept in {})\n", summary.message,
                summary.samples, results_path);
@@ -185,7 +217,8 @@ Command add_run_command(CLI::App& app) {
       "Prints the model size, the assembly, every redundant constraint equation with the\n"
       "equations it depends on, and a summary; a progress line on a terminal. Writes\n"
       "DIR/results.h5 one sample at a time (docs/results-format.md): poses, joint reactions,\n"
-      "driver efforts, energies, constraint violations, steps. Settings come from the case's\n"
+      "driver efforts, energies, constraint violations, steps, hinge latch and stop torques and\n"
+      "their located events (each also printed as 'event: ...'). Settings come from the case's\n"
       "'run' section (docs/case-format.md); the options below override them.\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
       "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
@@ -205,7 +238,9 @@ Command add_run_command(CLI::App& app) {
                 "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", \"newton_failures\", "
                 "\"newton_iterations\", \"wall_s\", \"max_constraint_violation\", "
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
-                "\"redundant_details\", \"results\"}; the text goes to stderr");
+                "\"redundant_details\", \"events\": [{\"t\", \"name\", \"kind\", \"joint\", "
+                "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"results\"}; the text "
+                "goes to stderr");
   return {cli, [options] { return run_case(*options); }};
 }
 

@@ -82,6 +82,8 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   curr_.a = curr_.vdot;
   curr_.integrals = Eigen::VectorXd::Zero(options.quadrature.size);
   evaluate_integrand(curr_);
+  system.event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
+  pending_events_.clear();
   prev_ = curr_;
   xi_last_ = Eigen::VectorXd::Zero(nv_);
   return Status::success(x0.t);
@@ -104,16 +106,18 @@ Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
 }
 
 Status GeneralizedAlpha::take_step() {
+  if (const Status status = apply_pending_events(); !status.ok()) return status;
   const double target = std::min(t0_ + static_cast<double>(grid_index_ + 1) * options_.step,
                                  options_.t_stop);
   for (;;) {
     const double h = std::min(h_try_, target - curr_.t);
     const Attempt attempt = attempt_step(h);
     if (attempt == Attempt::kAccepted) {
+      if (const Status status = locate_events(h); !status.ok()) return status;
+      stats_.last_step = next_.t - curr_.t;
       prev_ = std::move(curr_);
       curr_ = next_;
       ++stats_.steps;
-      stats_.last_step = h;
       // Back on the nominal grid: snap the time and restore the nominal step.
       if (target - curr_.t <= time_tolerance(target)) {
         curr_.t = target;
@@ -230,6 +234,83 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
     return Attempt::kStaleJacobian;
   }
   return Attempt::kNewtonFailed;
+}
+
+Status GeneralizedAlpha::locate_events(double h) {
+  if (curr_.events.size() == 0) return Status::success(next_.t);
+  system_->event_functions(next_.t, next_.q, next_.v, next_.events);
+  // The functions that rose through 0 in this step, and the largest of them: it crosses first.
+  std::vector<int> rising;
+  for (Eigen::Index k = 0; k < curr_.events.size(); ++k) {
+    if (curr_.events(k) < 0.0 && next_.events(k) >= 0.0) rising.push_back(static_cast<int>(k));
+  }
+  if (rising.empty()) return Status::success(next_.t);
+  const auto largest = [&rising](const Eigen::VectorXd& e) {
+    double value = -std::numeric_limits<double>::infinity();
+    for (const int k : rising) value = std::max(value, e(k));
+    return value;
+  };
+  // Illinois bracketing of the crossing in the step size: e < 0 at h_lo, ≥ 0 at h_hi.
+  double h_lo = 0.0, e_lo = largest(curr_.events);
+  double h_hi = h, e_hi = largest(next_.events);
+  StepState at_hi = next_;
+  Eigen::VectorXd xi_hi = xi_last_;
+  int side = 0;
+  while (h_hi - h_lo > options_.event_tolerance) {
+    // Regula falsi, kept a hundredth of the bracket inside it.
+    const double width = h_hi - h_lo;
+    const double h_mid =
+        std::clamp(h_lo - e_lo * width / (e_hi - e_lo), h_lo + 0.01 * width, h_hi - 0.01 * width);
+    ++stats_.rejected_steps;
+    if (attempt_step(h_mid) != Attempt::kAccepted) {
+      return failure(StatusCode::kConvergenceFailures,
+                     fmt::format("Newton did not converge in a step h = {:.4g} s shortened to "
+                                 "locate an event", h_mid));
+    }
+    system_->event_functions(next_.t, next_.q, next_.v, next_.events);
+    const double e_mid = largest(next_.events);
+    if (e_mid >= 0.0) {
+      h_hi = h_mid;
+      e_hi = e_mid;
+      at_hi = next_;
+      xi_hi = xi_last_;
+      if (side == 1) e_lo *= 0.5;
+      side = 1;
+    } else {
+      h_lo = h_mid;
+      e_lo = e_mid;
+      if (side == -1) e_hi *= 0.5;
+      side = -1;
+    }
+  }
+  // The step that ends just past the crossing; its crossing events switch before the next.
+  next_ = std::move(at_hi);
+  xi_last_ = xi_hi;
+  for (const int k : rising) {
+    if (next_.events(k) >= 0.0) pending_events_.push_back(k);
+  }
+  return Status::success(next_.t);
+}
+
+Status GeneralizedAlpha::apply_pending_events() {
+  if (pending_events_.empty()) return Status::success(curr_.t);
+  for (const int k : pending_events_) system_->apply_event(k, curr_.t, curr_.q, curr_.v);
+  pending_events_.clear();
+  // New force law: consistent v̇ and λ, a = v̇, no extrapolation across the switch, and a
+  // fresh iteration matrix; the integrals carry on with the new integrand.
+  const Status status =
+      solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
+  if (!status.ok()) {
+    return failure(status.code, fmt::format("after an event, the accelerations could not be "
+                                            "solved: {}", status.message));
+  }
+  curr_.a = curr_.vdot;
+  evaluate_integrand(curr_);
+  system_->event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
+  prev_ = curr_;
+  xi_last_.setZero();
+  jacobian_h_ = 0.0;
+  return Status::success(curr_.t);
 }
 
 bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorXd& lambda_scaled,

@@ -28,11 +28,20 @@
 // run stops with kConvergenceFailures (or kNaN). No projection is applied after the step:
 // positions satisfy g = 0 to the Newton tolerance, velocities drift from G v + g_t = 0 by O(h²).
 //
+// State events (MechanicalSystem::num_events): a step across which an event function rises
+// through 0 is redone from its start with a shorter h, bracketing the crossing by the Illinois
+// variant of regula falsi (Dahlquist & Björck, Numerical Methods, §6.2.3) on the largest of the
+// crossing functions, until it ends at most event_tolerance past the crossing. That step is
+// accepted, the system switches modes at its end before the next step, and the scheme restarts
+// there like at t0 (v̇, λ from the saddle-point system, a = v̇), then returns to its step grid.
+//
 // Output times are served by interpolating inside the last step: positions by a cubic Hermite
 // curve in the tangent space (q_n ⊕ Δ(θ), end slopes h v_n and h v_{n+1}), v, v̇, λ and the
 // quadratures linearly — all second-order accurate like the scheme. Quadratures are integrated
 // with the trapezoidal rule over each step.
 #pragma once
+
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -63,11 +72,18 @@ class GeneralizedAlpha final : public Integrator {
     double t = 0.0;
     Eigen::VectorXd q, v, vdot, a, lambda;
     Eigen::VectorXd integrals, integrand;  // ∫f dt so far and f(t)
+    Eigen::VectorXd events;                // event functions
   };
   enum class Attempt { kAccepted, kNewtonFailed, kStaleJacobian, kNaN, kSingular };
 
   Status take_step();
   Attempt attempt_step(double h);
+  // After an accepted attempt of size h (in next_): when an event function rose through 0,
+  // shortens the step to the crossing (next_ and xi_last_ then hold that step) and marks the
+  // crossing events pending. Returns a failure when a shortened step fails.
+  Status locate_events(double h);
+  // Switches the pending events' modes at curr_ and restarts the scheme there.
+  Status apply_pending_events();
   // q, v, v̇ at the end of a step of size h from curr_ whose tangent displacement is ξ.
   void end_of_step_kinematics(double h, const Eigen::VectorXd& xi, StepState& s) const;
   // Scaled residual [βh²(M v̇ − Q) + Gᵀλ̃; g] at the state s with λ̃ = βh²λ.
@@ -96,6 +112,7 @@ class GeneralizedAlpha final : public Integrator {
   int halvings_ = 0;
   bool failed_ = false;
   Status failure_;
+  std::vector<int> pending_events_;  // located at curr_.t, applied before the next step
 
   // The last accepted step, from prev_ to curr_, with tangent displacement xi_last_.
   StepState prev_, curr_, next_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <ida/ida.h>
@@ -72,6 +73,10 @@ struct IdaIntegrator::Impl {
   std::string last_message;  // IDA's own text of its last error
   int nonfinite_residuals = 0;  // in the current advance_to
   Statistics restart_statistics;  // totals at IDA's last restart (reselect_constraints)
+  int ne = 0;                     // event functions
+  double t_reached = 0.0;         // where the solution stands: IDA's last return or restart
+  std::vector<int> pending_events;  // located at t_reached, applied before the next step
+  Eigen::VectorXd e_values;
 
   SUNContext context = nullptr;
   N_Vector y = nullptr, yp = nullptr, id = nullptr, atol_vec = nullptr;
@@ -170,35 +175,53 @@ struct IdaIntegrator::Impl {
     stats.residual_evaluations += before.residual_evaluations;
   }
 
-  // New constraint rows at the current step end: the multipliers change meaning, so IDA
-  // restarts there (order 1, from the current step size) with λ, v̇ from the saddle-point
-  // system of the new rows and μ = 0; q, v and the integrals carry over.
+  // New constraint rows at time t (the current step end, or a located event): the multipliers
+  // change meaning, so IDA restarts there.
   void reselect_constraints(double t) {
+    LIMBER_DEMAND(IDAGetDky(ida, t, 0, y) == IDA_SUCCESS);
+    const Eigen::VectorXd q_now = Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(y), nq);
+    if (system->reselect_constraints(t, q_now)) restart(t);
+  }
+
+  // The events located at t_reached switch their modes; IDA restarts there.
+  void apply_pending_events() {
+    if (pending_events.empty()) return;
+    LIMBER_DEMAND(IDAGetDky(ida, t_reached, 0, y) == IDA_SUCCESS);
+    const Eigen::VectorXd q_now = Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(y), nq);
+    const Eigen::VectorXd v_now = Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(y) + iv, nv);
+    for (const int k : pending_events) system->apply_event(k, t_reached, q_now, v_now);
+    pending_events.clear();
+    restart(t_reached);
+  }
+
+  // Restart at t (inside the last step) at order 1, from the current step size, with λ, v̇
+  // from the saddle-point system and μ = 0; q, v and the integrals carry over.
+  void restart(double t) {
     Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
     Eigen::Map<Eigen::VectorXd> yp_now(N_VGetArrayPointer(yp), n);
     LIMBER_DEMAND(IDAGetDky(ida, t, 0, y) == IDA_SUCCESS);
     LIMBER_DEMAND(IDAGetDky(ida, t, 1, yp) == IDA_SUCCESS);
     Eigen::VectorXd q_now = y_now.head(nq);
-    if (!system->reselect_constraints(t, q_now)) return;
-    // The rows that come in were held only through ill-conditioned combinations of the old
-    // ones: project q and v onto them, or IDA restarts from a state off its algebraic
-    // equations and fails its error test down to h ~ 1e-10.
+    // Rows that come in after a reselection were held only through ill-conditioned
+    // combinations of the old ones: project q and v onto them, or IDA restarts from a state
+    // off its algebraic equations and fails its error test down to h ~ 1e-10.
     Eigen::VectorXd v_now = y_now.segment(iv, nv);
     Eigen::VectorXd vdot_now, lambda_now;
     // A failed projection or solve keeps IDA's values; its next step then reports the trouble.
-    if (!project_initial_state(*system, t, q_now, v_now).ok()) return;
-    if (!solve_accelerations(*system, t, q_now, v_now, vdot_now, lambda_now).ok()) return;
-    y_now.head(nq) = q_now;
-    y_now.segment(iv, nv) = v_now;
-    y_now.segment(ilambda, nc) = lambda_now;
-    y_now.segment(imu, nc + nh).setZero();
-    system->kinematic_matrix(q_now, N);
-    yp_now.head(nq) = N * v_now;
-    yp_now.segment(iv, nv) = vdot_now;
-    yp_now.segment(ilambda, 2 * nc + nh).setZero();
-    if (nz > 0) {
-      options.quadrature.integrand(t, q_now, v_now, vdot_now, lambda_now, f);
-      yp_now.segment(iz, nz) = f;
+    if (project_initial_state(*system, t, q_now, v_now).ok() &&
+        solve_accelerations(*system, t, q_now, v_now, vdot_now, lambda_now).ok()) {
+      y_now.head(nq) = q_now;
+      y_now.segment(iv, nv) = v_now;
+      y_now.segment(ilambda, nc) = lambda_now;
+      y_now.segment(imu, nc + nh).setZero();
+      system->kinematic_matrix(q_now, N);
+      yp_now.head(nq) = N * v_now;
+      yp_now.segment(iv, nv) = vdot_now;
+      yp_now.segment(ilambda, 2 * nc + nh).setZero();
+      if (nz > 0) {
+        options.quadrature.integrand(t, q_now, v_now, vdot_now, lambda_now, f);
+        yp_now.segment(iz, nz) = f;
+      }
     }
     double h_last = 0.0;
     IDAGetLastStep(ida, &h_last);
@@ -206,8 +229,18 @@ struct IdaIntegrator::Impl {
     read_statistics(totals, restart_statistics);
     restart_statistics = totals;
     LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
+    t_reached = t;
     if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
     if (std::isfinite(options.t_stop)) LIMBER_DEMAND(IDASetStopTime(ida, options.t_stop) == IDA_SUCCESS);
+  }
+
+  // Event functions of the system at IDA's (t, y), for its root finding.
+  int events(double t, const double* y_data, double* e_data) {
+    q = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
+    v = Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv);
+    system->event_functions(t, q, v, e_values);
+    Eigen::Map<Eigen::VectorXd>(e_data, ne) = e_values;
+    return e_values.allFinite() ? 0 : -1;
   }
 };
 
@@ -217,6 +250,10 @@ int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data)
   return static_cast<IdaIntegrator::Impl*>(user_data)->residual(t, N_VGetArrayPointer(y),
                                                                  N_VGetArrayPointer(yp),
                                                                  N_VGetArrayPointer(r));
+}
+
+int ida_events(double t, N_Vector y, N_Vector, double* e, void* user_data) {
+  return static_cast<IdaIntegrator::Impl*>(user_data)->events(t, N_VGetArrayPointer(y), e);
 }
 
 // Keeps IDA's message for our status instead of printing it on stderr.
@@ -268,6 +305,9 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.stepped = false;
   s.failed = false;
   s.restart_statistics = {};
+  s.t_reached = x0.t;
+  s.pending_events.clear();
+  s.ne = system.num_events();
   stats_ = {};
 
   // Sizes and layout of y = [q, v, λ, μ, z].
@@ -352,6 +392,13 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
                                                : initial_step(system, {x0.t, q, v}, vdot, options);
   flag = flag < 0 ? flag : IDASetInitStep(s.ida, h0);
   if (flag >= 0 && std::isfinite(options.t_stop)) flag = IDASetStopTime(s.ida, options.t_stop);
+  // Events: only rises through 0 switch a mode (mechanical_system.h).
+  if (flag >= 0 && s.ne > 0) {
+    flag = IDARootInit(s.ida, s.ne, ida_events);
+    std::vector<int> rising(static_cast<size_t>(s.ne), 1);
+    flag = flag < 0 ? flag : IDASetRootDirection(s.ida, rising.data());
+    flag = flag < 0 ? flag : IDASetNoInactiveRootWarn(s.ida);
+  }
   LIMBER_DEMAND(flag >= 0);
   return Status::success(x0.t);
 }
@@ -369,13 +416,24 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
   if (s.stepped || t_out > s.t0 + time_tolerance(s.t0)) {
     s.nonfinite_residuals = 0;
     // One step at a time until past t_out, then y(t_out) from IDA's interpolating polynomial
-    // (what IDA_NORMAL does); between steps the system may pick new constraint rows.
-    double t_current = s.t0;
-    IDAGetCurrentTime(s.ida, &t_current);
-    while (t_current < t_out - time_tolerance(t_out)) {
-      if (s.stepped) s.reselect_constraints(t_current);
+    // (what IDA_NORMAL does); between steps events switch modes and the system may pick new
+    // constraint rows. An event located past t_out is applied after t_out is served.
+    while (s.t_reached < t_out - time_tolerance(t_out)) {
+      if (s.stepped) {
+        s.apply_pending_events();
+        s.reselect_constraints(s.t_reached);
+      }
+      double t_current = s.t_reached;
       const int flag = IDASolve(s.ida, t_out, &t_current, s.y, s.yp, IDA_ONE_STEP);
       s.stepped = true;
+      s.t_reached = t_current;
+      if (flag == IDA_ROOT_RETURN) {
+        std::vector<int> found(static_cast<size_t>(s.ne), 0);
+        LIMBER_DEMAND(IDAGetRootInfo(s.ida, found.data()) == IDA_SUCCESS);
+        for (int k = 0; k < s.ne; ++k) {
+          if (found[k] > 0) s.pending_events.push_back(k);
+        }
+      }
       s.read_statistics(stats_, s.restart_statistics);
       if (flag < 0) {
         double t_fail = t_out;

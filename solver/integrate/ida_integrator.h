@@ -12,6 +12,10 @@
 // (consistent_state.h; IDACalcIC is not called): y' = [N v, v̇, 0, 0, f].
 // Output times are served with IDA_NORMAL, i.e. IDA steps past t_out and interpolates its
 // BDF interpolating polynomial (the one IDAGetDky evaluates); it stops only at t_stop.
+// State events (MechanicalSystem::num_events) go to IDA's root finding (IDARootInit, rising
+// crossings only), which locates them to about 100 ε (|t| + |h|) by its secant/Illinois
+// iteration on the interpolating polynomial; the system switches modes there and IDA
+// restarts from the event (as after a reselection of constraint rows).
 #pragma once
 
 #include <memory>

@@ -62,6 +62,7 @@ void IntegratorOptions::validate() const {
   demand_input(newton_tolerance > 0.0 && newton_tolerance < 1.0, "integrator newton_tolerance",
                "0 < newton_tolerance < 1", newton_tolerance);
   demand_input(max_step_halvings >= 0, "integrator max_step_halvings", "≥ 0", max_step_halvings);
+  demand_input(event_tolerance > 0.0, "integrator event_tolerance", "> 0", event_tolerance);
   demand_input(max_steps >= 1, "integrator max_steps", "at least 1",
                static_cast<double>(max_steps));
   demand_input(quadrature.size >= 0, "quadrature size", "≥ 0", quadrature.size);

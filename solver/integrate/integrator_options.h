@@ -56,6 +56,10 @@ struct IntegratorOptions {
   // (each plus a round-off floor), ξ the step's tangent displacement [m, rad]: relative bounds.
   double newton_tolerance = 1e-8;
   int max_step_halvings = 6;  // a Newton failure halves h at most this many times
+  // A state event (mechanical_system.h) is located to within this time [s]: the step that
+  // crosses it is cut back until it ends no further than this past the crossing. (IDA locates
+  // events with its own root finding, to round-off.)
+  double event_tolerance = 1e-9;
 
   // Both: budget of accepted steps, and the time not to step beyond (set by `simulate` to
   // the last sample, so a model is never evaluated past the end of the run).

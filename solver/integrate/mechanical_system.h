@@ -57,6 +57,21 @@ class MechanicalSystem {
   virtual bool reselect_constraints(double /*t*/, const Eigen::VectorXd& /*q*/) const {
     return false;
   }
+
+  // State events (hinge latches, stops): the force law is piecewise, one piece per mode, and
+  // the mode changes where an event function e_k(t, q, v) rises through 0. The integrators
+  // keep the mode fixed within a step, locate the crossing (IDA's root finding; generalized-α
+  // cuts its step back to it), call apply_event there and restart from (t, q, v) with new
+  // accelerations and multipliers. Default: no events.
+  virtual int num_events() const { return 0; }
+  // e (num_events) at (t, q, v) in the current modes.
+  virtual void event_functions(double /*t*/, const Eigen::VectorXd& /*q*/,
+                               const Eigen::VectorXd& /*v*/, Eigen::VectorXd& e) const {
+    e.resize(0);
+  }
+  // Event k has been located at (t, q, v): switch its mode.
+  virtual void apply_event(int /*k*/, double /*t*/, const Eigen::VectorXd& /*q*/,
+                           const Eigen::VectorXd& /*v*/) const {}
 };
 
 }  // namespace limber::integrate

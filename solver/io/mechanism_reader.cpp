@@ -201,10 +201,21 @@ void read_driver(const std::string& name, const YamlValue& entry,
 }
 
 void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& builder) {
-  const std::string type = entry.at("type").as_choice({"rsda", "tsda", "point_load"});
-  if (type == "rsda") {
+  const std::string type =
+      entry.at("type").as_choice({"rsda", "tsda", "point_load", "latch", "stop"});
+  if (type == "latch" || type == "stop") {
+    entry.allow_only({"type", "joint", "angle", "stiffness", "damping"});
+    multibody::HingeLimitSpec spec;
+    spec.name = name;
+    spec.kind = type == "latch" ? multibody::HingeLimitKind::kLatch : multibody::HingeLimitKind::kStop;
+    spec.joint = entry.at("joint").as_string();
+    spec.angle = entry.at("angle").as_number();
+    spec.stiffness = entry.at("stiffness").as_positive();
+    if (const auto c = entry.find("damping")) spec.damping = c->as_non_negative();
+    builder.add_hinge_limit(spec, entry.where());
+  } else if (type == "rsda") {
     entry.allow_only({"type", "marker_i", "marker_j", "stiffness", "damping", "free_angle",
-                      "actuator", "actuator_of"});
+                      "actuator", "actuator_of", "angle_center"});
     multibody::RsdaSpec spec;
     spec.name = name;
     spec.marker_i = entry.at("marker_i").as_string();
@@ -212,6 +223,7 @@ void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& b
     if (const auto k = entry.find("stiffness")) spec.stiffness = k->as_non_negative();
     if (const auto c = entry.find("damping")) spec.damping = c->as_non_negative();
     if (const auto angle = entry.find("free_angle")) spec.free_angle = angle->as_number();
+    if (const auto center = entry.find("angle_center")) spec.angle_center = center->as_number();
     if (const auto actuator = entry.find("actuator")) spec.actuator = read_time_function(*actuator);
     if (const auto of = entry.find("actuator_of")) {
       spec.actuator_of_angle = of->as_choice({"time", "angle"}) == "angle";

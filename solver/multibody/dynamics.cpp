@@ -3,10 +3,14 @@
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/flexible_dynamics.h"
+#include "multibody/hinge_limit.h"
 
 namespace limber::multibody {
 
 namespace {
+
+// Whether force element k is in its engaged mode (State::engaged).
+bool is_engaged(const State& state, size_t k) { return k < state.engaged.size() && state.engaged[k]; }
 
 // θ of an RSDA, unwrapped within ±π of its reference angle.
 double rsda_angle(const Rsda& r, const RelativeAngle& angle) {
@@ -17,6 +21,7 @@ struct ForceVisitor {
   const State& state;
   Workspace& ws;
   PowerTerms* powers;
+  bool engaged = false;  // mode of the element being visited
 
   void operator()(const Rsda& r) const {
     const FrameKinematics& mi = ws.markers[r.marker_i];
@@ -60,6 +65,16 @@ struct ForceVisitor {
     add_frame_load(m, f_W, tau_W, ws.Q);
     if (powers) powers->loads += f_W.dot(m.v_W) + tau_W.dot(m.w_W);
   }
+
+  void operator()(const HingeLimit& h) const {
+    if (!engaged) return;
+    const FrameKinematics& mi = ws.markers[h.marker_i];
+    const FrameKinematics& mj = ws.markers[h.marker_j];
+    const RelativeAngle angle = relative_angle(mi, mj, Stage::kVelocity);
+    const HingeLimitForce f = hinge_limit_force(h, hinge_limit_angle(h, angle), angle.rate, engaged);
+    ws.Q.noalias() += f.torque * (mj.J_w - mi.J_w).transpose() * angle.u;
+    if (powers) powers->dissipation += f.dissipation;
+  }
 };
 
 }  // namespace
@@ -85,8 +100,11 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
   // Force elements through marker kinematics.
   if (model.forces.empty()) return;
   update_marker_kinematics(model, state, Stage::kVelocity, ws);
-  const ForceVisitor visitor{state, ws, powers};
-  for (const ForceElement& force : model.forces) std::visit(visitor, force);
+  ForceVisitor visitor{state, ws, powers};
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    visitor.engaged = is_engaged(state, k);
+    std::visit(visitor, model.forces[k]);
+  }
 }
 
 EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
@@ -97,7 +115,8 @@ EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
     if (model.bodies[b].kind == BodyKind::kFlexible) e.strain += flexible_strain_energy(model.bodies[b], state.q);
   }
   update_marker_kinematics(model, state, Stage::kPosition, ws);
-  for (const ForceElement& force : model.forces) {
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    const ForceElement& force = model.forces[k];
     if (const Rsda* r = std::get_if<Rsda>(&force)) {
       const double theta =
           rsda_angle(*r, relative_angle(ws.markers[r->marker_i], ws.markers[r->marker_j], Stage::kPosition));
@@ -105,6 +124,10 @@ EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
     } else if (const Tsda* s = std::get_if<Tsda>(&force)) {
       const double stretch = (ws.markers[s->marker_j].p_W - ws.markers[s->marker_i].p_W).norm() - s->free_length;
       e.spring += 0.5 * s->stiffness * stretch * stretch;
+    } else if (const HingeLimit* h = std::get_if<HingeLimit>(&force)) {
+      const RelativeAngle angle =
+          relative_angle(ws.markers[h->marker_i], ws.markers[h->marker_j], Stage::kPosition);
+      e.spring += hinge_limit_energy(*h, hinge_limit_angle(*h, angle), is_engaged(state, k));
     }
   }
   return e;

@@ -1,7 +1,8 @@
 // Mass matrix, generalized forces, energies and powers of a whole model (house style §3):
 //   M(q) v̇ + Gᵀ λ = Q(t, q, v),   Q = Σ_bodies (Q_v + gravity) + Σ force elements.
 // Force elements (model.h for their conventions) give Q by virtual work through marker
-// Jacobians: RSDA τ (J_wj − J_wi)ᵀ u, TSDA f (J_pj − J_pi)ᵀ e, point load J_pᵀ F + J_wᵀ T.
+// Jacobians: RSDA τ (J_wj − J_wi)ᵀ u, TSDA f (J_pj − J_pi)ᵀ e, point load J_pᵀ F + J_wᵀ T;
+// hinge latches and stops (hinge_limit.h) like an RSDA, in the mode state.engaged gives.
 #pragma once
 
 #include <Eigen/Dense>
@@ -29,7 +30,7 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws,
 struct EnergyTerms {
   double kinetic = 0.0;  // ½ vᵀ M v [J]
   double gravity = 0.0;  // −Σ m g·r_c [J] (zero at the ground origin)
-  double spring = 0.0;   // Σ ½ k (θ − θ0)² + Σ ½ k (l − l0)² [J]
+  double spring = 0.0;   // Σ ½ k (θ − θ0)² + Σ ½ k (l − l0)² + locked latches, stops [J]
   double strain = 0.0;   // Σ ½ ηᵀ diag(ω²) η of the flexible bodies [J]
 };
 

@@ -23,6 +23,14 @@ const char* to_string(JointType type) {
   return "?";
 }
 
+const char* to_string(HingeLimitKind kind) {
+  switch (kind) {
+    case HingeLimitKind::kLatch: return "latch";
+    case HingeLimitKind::kStop: return "stop";
+  }
+  return "?";
+}
+
 namespace {
 
 template <class T>

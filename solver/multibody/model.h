@@ -109,7 +109,8 @@ struct ConstraintEquation {
 };
 
 // Rotational spring-damper-actuator about z_i of marker i; θ as for a rotation driver,
-// unwrapped within ±π of its value at the initial poses (reference_angle).
+// unwrapped within ±π of reference_angle (by default its value at the initial poses; a hinge
+// that turns by π or more needs the middle of its travel there).
 // Torque on body j about z_i: τ = −k (θ − θ0) − c θ̇ + a, with a = actuator(t) or actuator(θ).
 struct Rsda {
   std::string name;
@@ -140,7 +141,27 @@ struct PointLoad {
   LoadFrame frame = LoadFrame::kGround;
 };
 
-using ForceElement = std::variant<Rsda, Tsda, PointLoad>;
+// A latch or a one-sided stop on a revolute joint (hinge_limit.h: force law and events).
+// θ is the joint's angle as for a rotation driver, unwrapped within ±π of angle_center; the
+// hinge starts on the free side, and direction = sign(angle − θ at the initial poses) says
+// which way it travels towards the limit. Penetration p = direction (θ − angle).
+//   latch: engages (for good) when p rises through 0; locked, τ = −k (θ − angle) − c θ̇.
+//   stop:  in contact while p > 0;  τ = −direction max(0, k p + c ṗ)  (pushes, never pulls).
+// Torque on body j about z_i, like an RSDA's. Switches are events located by the integrator.
+enum class HingeLimitKind { kLatch, kStop };
+const char* to_string(HingeLimitKind kind);
+
+struct HingeLimit {
+  std::string name;
+  HingeLimitKind kind = HingeLimitKind::kLatch;
+  int joint = 0, marker_i = 0, marker_j = 0;
+  double angle = 0.0;                     // [rad]
+  double direction = 1.0;                 // ±1
+  double stiffness = 0.0, damping = 0.0;  // [N·m/rad], [N·m·s/rad]
+  double angle_center = 0.0;              // [rad]
+};
+
+using ForceElement = std::variant<Rsda, Tsda, PointLoad, HingeLimit>;
 
 struct Model {
   std::vector<Body> bodies;  // bodies[0] is ground

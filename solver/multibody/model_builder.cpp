@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
@@ -227,7 +228,43 @@ void ModelBuilder::add_rsda(const RsdaSpec& spec, const SourceLocation& where) {
   initial_marker_pose(model_, model_.markers[mj], p_j, R_j);
   const double theta0 = std::atan2(R_j.col(0).dot(R_i.col(1)), R_j.col(0).dot(R_i.col(0)));
   model_.forces.push_back(Rsda{spec.name, mi, mj, spec.stiffness, spec.damping, spec.free_angle,
-                               spec.actuator, spec.actuator_of_angle, theta0});
+                               spec.actuator, spec.actuator_of_angle,
+                               spec.angle_center.value_or(theta0)});
+}
+
+void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocation& where) {
+  const char* kind = to_string(spec.kind);
+  const int j = model_.find_joint(spec.joint);
+  if (j < 0) {
+    throw InputError(fmt::format("{} \"{}\": expected a joint name, got \"{}\" (no such joint)", kind,
+                                 spec.name, spec.joint), where);
+  }
+  const Joint& joint = model_.joints[j];
+  if (joint.type != JointType::kRevolute) {
+    throw InputError(fmt::format("{} \"{}\": expected a revolute joint, got {} joint \"{}\"", kind,
+                                 spec.name, to_string(joint.type), spec.joint), where);
+  }
+  if (!(spec.stiffness > 0.0) || !(spec.damping >= 0.0)) {
+    throw InputError(fmt::format("{} \"{}\": expected stiffness > 0 and damping ≥ 0, got k = {}, "
+                                 "c = {}", kind, spec.name, spec.stiffness, spec.damping), where);
+  }
+  // The joint angle at the initial poses, as for a rotation driver: x_j from x_i towards y_i.
+  Eigen::Vector3d p_i, p_j;
+  Eigen::Matrix3d R_i, R_j;
+  initial_marker_pose(model_, model_.markers[joint.marker_i], p_i, R_i);
+  initial_marker_pose(model_, model_.markers[joint.marker_j], p_j, R_j);
+  const double theta0 = std::atan2(R_j.col(0).dot(R_i.col(1)), R_j.col(0).dot(R_i.col(0)));
+  const double travel = spec.angle - theta0;
+  if (!(std::abs(travel) > 1e-9) || !(std::abs(travel) < 2.0 * std::numbers::pi)) {
+    throw InputError(fmt::format("{} \"{}\": expected an angle within one turn of the joint's initial "
+                                 "angle {:.6g} rad and not equal to it (0 < |angle − {:.6g}| < 2π), "
+                                 "got {:.6g} rad", kind, spec.name, theta0, theta0, spec.angle), where);
+  }
+  claim_element_name(spec.name, where);
+  // Unwrap about the middle of the travel: start and limit both lie within ±π of it.
+  model_.forces.push_back(HingeLimit{spec.name, spec.kind, j, joint.marker_i, joint.marker_j,
+                                     spec.angle, travel > 0.0 ? 1.0 : -1.0, spec.stiffness,
+                                     spec.damping, theta0 + 0.5 * travel});
 }
 
 void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {

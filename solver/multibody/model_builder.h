@@ -51,6 +51,15 @@ struct RsdaSpec {
   double stiffness = 0.0, damping = 0.0, free_angle = 0.0;  // k ≥ 0, c ≥ 0
   TimeFunction actuator;
   bool actuator_of_angle = false;
+  std::optional<double> angle_center{};  // θ unwrapped within ±π of it; default θ at the initial poses
+};
+
+// A latch or stop on revolute joint `joint` at `angle` [rad] (model.h, HingeLimit).
+struct HingeLimitSpec {
+  std::string name, joint;
+  HingeLimitKind kind = HingeLimitKind::kLatch;
+  double angle = 0.0;
+  double stiffness = 0.0, damping = 0.0;  // k > 0, c ≥ 0
 };
 
 struct TsdaSpec {
@@ -104,6 +113,10 @@ class ModelBuilder {
   void add_rsda(const RsdaSpec& spec, const SourceLocation& where = {});
   void add_tsda(const TsdaSpec& spec, const SourceLocation& where = {});
   void add_point_load(const PointLoadSpec& spec, const SourceLocation& where = {});
+  // Throws unless the joint is a revolute, k > 0, c ≥ 0, and the angle is reachable from the
+  // joint's angle at the initial poses θ0: 0 < |angle − θ0| < 2π (within one turn, and not
+  // where the hinge starts).
+  void add_hinge_limit(const HingeLimitSpec& spec, const SourceLocation& where = {});
 
   // Numbers the coordinates and the constraint equations; the builder stays usable.
   Model build() const;

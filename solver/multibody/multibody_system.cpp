@@ -13,6 +13,10 @@ MultibodySystem::MultibodySystem(const Model& model, ConstraintPartition partiti
   for (const Body& b : model_.bodies) {
     if (b.kind != BodyKind::kGround) ++num_moving_bodies_;
   }
+  for (size_t k = 0; k < model_.forces.size(); ++k) {
+    if (std::holds_alternative<HingeLimit>(model_.forces[k])) limits_.push_back(static_cast<int>(k));
+  }
+  state_.engaged.assign(model_.forces.size(), 0);
 }
 
 void MultibodySystem::kinematic_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& N) const {
@@ -141,6 +145,28 @@ bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) c
   partition_ = std::move(fresh);
   chosen_pivot_ = better;
   return true;
+}
+
+void MultibodySystem::event_functions(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                      Eigen::VectorXd& e) const {
+  state_.t = t;
+  state_.q = q;
+  state_.v = v;
+  hinge_limit_events(model_, limits_, state_, workspace_, e);
+}
+
+void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q,
+                                  const Eigen::VectorXd& v) const {
+  const int force = limits_.at(static_cast<size_t>(k));
+  const auto& limit = std::get<HingeLimit>(model_.forces[force]);
+  state_.t = t;
+  state_.q = q;
+  state_.v = v;
+  const RelativeAngle angle = hinge_limit_state(model_, limit, state_, workspace_);
+  // A latch locks for good; a stop toggles between free and in contact.
+  unsigned char& mode = state_.engaged[force];
+  mode = limit.kind == HingeLimitKind::kLatch ? 1 : !mode;
+  events_.push_back(HingeEvent{force, t, angle.theta, angle.rate, mode != 0});
 }
 
 }  // namespace limber::multibody

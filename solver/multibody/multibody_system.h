@@ -4,10 +4,12 @@
 // never see a rank-deficient G. The partition is re-analysed along the motion when its rows
 // become ill-conditioned (reselect_constraints); partition() always returns the current one.
 // Holds a reference to the model (which must outlive it) and a private Workspace: one
-// MultibodySystem per thread.
+// MultibodySystem per thread. It also carries the hybrid modes of hinge latches and stops
+// (State::engaged), switched by the integrators at located events (apply_event).
 #pragma once
 
 #include "integrate/mechanical_system.h"
+#include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
 #include "multibody/state.h"
@@ -48,6 +50,15 @@ class MultibodySystem final : public integrate::MechanicalSystem {
   // at (t, q) is better conditioned with the same rank.
   bool reselect_constraints(double t, const Eigen::VectorXd& q) const override;
 
+  // One event per hinge latch and stop (hinge_limit.h), in model.forces order.
+  int num_events() const override { return static_cast<int>(limits_.size()); }
+  void event_functions(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       Eigen::VectorXd& e) const override;
+  void apply_event(int k, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const override;
+  // Modes of the force elements now (State::engaged) and every switch so far, in order.
+  const std::vector<unsigned char>& engaged() const { return state_.engaged; }
+  const std::vector<HingeEvent>& events() const { return events_; }
+
  private:
   // Evaluates the full constraint set at (t, q[, v]) into workspace_.
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) const;
@@ -61,6 +72,8 @@ class MultibodySystem final : public integrate::MechanicalSystem {
   mutable double chosen_pivot_ = -1.0;      // smallest_pivot when partition_ was chosen
   mutable std::vector<int> kept_rows_;      // rows of joints whose dropped rows degraded
   int num_moving_bodies_ = 0;
+  std::vector<int> limits_;                 // model.forces indices of hinge latches and stops
+  mutable std::vector<HingeEvent> events_;  // appended by apply_event
   mutable Workspace workspace_;
   mutable State state_;
 };

@@ -16,6 +16,9 @@ struct State {
   double t = 0.0;
   Eigen::VectorXd q;
   Eigen::VectorXd v;
+  // Hybrid modes, one per model force element: a latch locked or a stop in contact
+  // (hinge_limit.h). Empty means none engaged. Switched only at located events.
+  std::vector<unsigned char> engaged{};
 };
 
 // The builder's initial poses and velocities (not yet consistent with the constraints:

@@ -1,5 +1,7 @@
 #include "results/results_writer.h"
 
+#include <array>
+
 #include "core/error.h"
 #include "results/h5_handle.h"
 
@@ -134,7 +136,13 @@ struct ResultsWriter::Impl {
   H5Handle joints_group;
   H5Handle drivers_group;
   H5Handle energy_group;
-  std::set<std::string> body_names, joint_names, driver_names, energy_names;
+  H5Handle limits_group;
+  std::set<std::string> body_names, joint_names, driver_names, energy_names, limit_names;
+  // Per hinge limit: torque and engaged; the event table and its row count.
+  std::vector<std::array<Series, 2>> limit_series;
+  H5Handle events_group;
+  Series event_time, event_limit, event_engaged, event_angle, event_rate;
+  std::int64_t ne = 0;
 
   // Per body: position, orientation, then modal_coordinates, modal_velocities and deflection
   // (flexible only); nm or -1 (rigid).
@@ -170,12 +178,15 @@ struct ResultsWriter::Impl {
   }
 
   // Extends a series to ns + 1 rows and writes the new last row.
-  void append_row(Series& series, const void* row) {
-    const hsize_t new_dims[2] = {static_cast<hsize_t>(ns) + 1, series.width};
+  void append_row(Series& series, const void* row) { write_row(series, ns, row); }
+
+  // Extends a series to `index` + 1 rows and writes row `index`.
+  void write_row(Series& series, std::int64_t index, const void* row) {
+    const hsize_t new_dims[2] = {static_cast<hsize_t>(index) + 1, series.width};
     check(H5Dset_extent(series.dataset.get(), new_dims), "extend a dataset");
     H5Handle file_space = checked(H5Dget_space(series.dataset.get()), "get a dataspace");
     const int rank = series.width == 0 ? 1 : 2;
-    const hsize_t start[2] = {static_cast<hsize_t>(ns), 0};
+    const hsize_t start[2] = {static_cast<hsize_t>(index), 0};
     const hsize_t count[2] = {1, series.width};
     check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
           "select a row");
@@ -353,6 +364,45 @@ int ResultsWriter::add_energy(const std::string& name) {
   return static_cast<int>(impl_->energy_series.size()) - 1;
 }
 
+int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
+  Impl& m = *impl_;
+  m.demand_declaring();
+  demand_new_name(m.limit_names, limit.name);
+  H5Handle group = create_group(m.group(m.limits_group, "hinge_limits"), limit.name);
+  write_string_attribute(group.get(), "kind", limit.kind);
+  write_string_attribute(group.get(), "joint", limit.joint);
+  write_doubles_attribute(group.get(), "angle", &limit.angle, 1);
+  m.limit_series.push_back(
+      {m.create_series(group.get(), "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+       m.create_series(group.get(), "engaged", H5T_STD_I8LE, H5T_NATIVE_INT8, 0)});
+  // The event table exists in every file with hinge limits, empty until the first switch.
+  if (!m.events_group.valid()) {
+    const hid_t events = m.group(m.events_group, "events");
+    m.event_time = m.create_series(events, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_limit = m.create_series(events, "limit", H5T_STD_I32LE, H5T_NATIVE_INT32, 0);
+    m.event_engaged = m.create_series(events, "engaged", H5T_STD_I8LE, H5T_NATIVE_INT8, 0);
+    m.event_angle = m.create_series(events, "angle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_rate = m.create_series(events, "rate", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+  }
+  return static_cast<int>(m.limit_series.size()) - 1;
+}
+
+void ResultsWriter::append_event(const HingeEventRecord& event) {
+  Impl& m = *impl_;
+  LIMBER_DEMAND(!m.finished && m.events_group.valid());
+  LIMBER_DEMAND(event.limit >= 0 && event.limit < static_cast<int>(m.limit_series.size()));
+  const std::int32_t limit = event.limit;
+  const std::int8_t engaged = event.engaged ? 1 : 0;
+  m.write_row(m.event_limit, m.ne, &limit);
+  m.write_row(m.event_engaged, m.ne, &engaged);
+  m.write_row(m.event_angle, m.ne, &event.angle);
+  m.write_row(m.event_rate, m.ne, &event.rate);
+  // Time last, as for samples.
+  m.write_row(m.event_time, m.ne, &event.time);
+  ++m.ne;
+  check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
+}
+
 void ResultsWriter::set_redundant_equations(const std::vector<std::string>& names,
                                             const std::vector<std::string>& depends_on) {
   impl_->demand_declaring();
@@ -376,6 +426,8 @@ void ResultsWriter::append_sample(const Sample& sample) {
   LIMBER_DEMAND(sample.joints.size() == m.joint_series.size());
   LIMBER_DEMAND(sample.driver_efforts.size() == m.driver_series.size());
   LIMBER_DEMAND(sample.energies.size() == m.energy_series.size());
+  LIMBER_DEMAND(sample.hinge_limit_torques.size() == m.limit_series.size());
+  LIMBER_DEMAND(sample.hinge_limits_engaged.size() == m.limit_series.size());
 
   // Bodies: pose, then modal coordinates, rates and deflection.
   for (std::size_t b = 0; b < sample.bodies.size(); ++b) {
@@ -414,6 +466,10 @@ void ResultsWriter::append_sample(const Sample& sample) {
   for (std::size_t e = 0; e < sample.energies.size(); ++e) {
     m.append_row(m.energy_series[e], &sample.energies[e]);
   }
+  for (std::size_t k = 0; k < m.limit_series.size(); ++k) {
+    m.append_row(m.limit_series[k][0], &sample.hinge_limit_torques[k]);
+    m.append_row(m.limit_series[k][1], &sample.hinge_limits_engaged[k]);
+  }
   m.append_row(m.position_violation, &sample.position_violation);
   m.append_row(m.velocity_violation, &sample.velocity_violation);
   m.append_row(m.steps, &sample.steps);
@@ -437,6 +493,12 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.joint_series.clear();
   m.driver_series.clear();
   m.energy_series.clear();
+  m.limit_series.clear();
+  m.event_time = {};
+  m.event_limit = {};
+  m.event_engaged = {};
+  m.event_angle = {};
+  m.event_rate = {};
   m.position_violation = {};
   m.velocity_violation = {};
   m.steps = {};
@@ -445,6 +507,8 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.joints_group.reset();
   m.drivers_group.reset();
   m.energy_group.reset();
+  m.limits_group.reset();
+  m.events_group.reset();
   m.file.reset();
   m.finished = true;
 }

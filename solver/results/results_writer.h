@@ -100,6 +100,26 @@ struct Sample {
   double position_violation = 0.0;
   double velocity_violation = 0.0;
   std::int64_t steps = 0;  // cumulative accepted steps
+  // Per hinge latch or stop, in declaration order: its torque on body j about the joint axis
+  // [N m] and whether it is engaged (latch locked, stop in contact).
+  std::vector<double> hinge_limit_torques;
+  std::vector<std::int8_t> hinge_limits_engaged;
+};
+
+struct HingeLimitSpec {
+  std::string name;
+  std::string kind;   // "latch" or "stop"
+  std::string joint;  // the revolute joint it acts on
+  double angle = 0.0;  // latch or stop angle [rad]
+};
+
+// A located mode switch of a hinge limit (docs/results-format.md, /events).
+struct HingeEventRecord {
+  double time = 0.0;   // [s]
+  int limit = 0;       // index of the hinge limit in declaration order
+  bool engaged = false;  // mode after the switch
+  double angle = 0.0;  // joint angle at the switch [rad]
+  double rate = 0.0;   // joint angular rate at the switch [rad/s]
 };
 
 enum class RunStatus { kOk, kFailed };
@@ -122,6 +142,7 @@ class ResultsWriter {
   int add_joint(const JointSpec& joint);
   int add_driver(const std::string& name);
   int add_energy(const std::string& name);
+  int add_hinge_limit(const HingeLimitSpec& limit);
   // The redundant constraint equations found at the start (at most once, before the first
   // sample): /constraints/redundant [nr] holds their names ("R2.z"), /constraints/redundant_with
   // [nr] the independent equations each is a combination of ("R1.z, R3.z"). Sizes must match.
@@ -134,6 +155,8 @@ class ResultsWriter {
   // sample vectors sized as declared, modal_coordinates and modal_velocities sized nm for
   // flexible bodies (aborts otherwise).
   void append_sample(const Sample& sample);
+  // Appends one row to /events and flushes (at any time before finish()).
+  void append_event(const HingeEventRecord& event);
 
   // Sets the root attributes status ("ok" / "failed") and message, flushes and closes the file.
   void finish(RunStatus status, const std::string& message = "");

@@ -66,12 +66,31 @@ RunSummary run_mechanism(const multibody::Model& model,
     return body.kind == multibody::BodyKind::kFlexible;
   });
   if (options.max_order == 0 && flexible) options.max_order = 2;
-  options.quadrature =
-      energy_quadrature(model, system.partition(), start.state, settings.integrator.rtol);
-  // The system's partition, which it may re-select along the motion (multibody_system.h).
-  SampleRecorder recorder(model, system.partition());
+  options.quadrature = energy_quadrature(model, system.partition(), system.engaged(), start.state,
+                                         settings.integrator.rtol);
+  // The system's partition, which it may re-select along the motion (multibody_system.h), and
+  // its hinge modes, which the integrator switches at events.
+  SampleRecorder recorder(model, system.partition(), system.engaged());
   std::set<int> warned;  // flexible bodies that left the linear range
+  // Events go to the file and the hooks as soon as the integrator has located them.
+  std::vector<int> limit_index(model.forces.size(), -1);
+  int limits = 0;
+  for (std::size_t k = 0; k < model.forces.size(); ++k) {
+    if (std::holds_alternative<multibody::HingeLimit>(model.forces[k])) limit_index[k] = limits++;
+  }
+  const auto report_events = [&] {
+    for (std::size_t e = summary.events.size(); e < system.events().size(); ++e) {
+      const multibody::HingeEvent& event = system.events()[e];
+      summary.events.push_back(event);
+      if (hooks.writer) {
+        hooks.writer->append_event(
+            {event.t, limit_index[event.force], event.engaged, event.angle, event.rate});
+      }
+      if (hooks.on_event) hooks.on_event(event);
+    }
+  };
   const auto on_sample = [&](const integrate::Sample& sample) {
+    report_events();
     const results::Sample record = recorder.record(sample);
     for (const multibody::LinearRangeCheck& check :
          multibody::check_linear_range(model, {sample.t, sample.q, sample.v})) {
@@ -91,7 +110,8 @@ RunSummary run_mechanism(const multibody::Model& model,
       system, options, {0.0, start.state.q, start.state.v},
       integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval), on_sample);
 
-  // Outcome: a failure keeps every sample written before it.
+  // Outcome: a failure keeps every sample (and event) written before it.
+  report_events();
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   if (!result.status.ok()) {

@@ -13,6 +13,7 @@
 
 #include "integrate/integrator.h"
 #include "io/mechanism_reader.h"
+#include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "results/results_writer.h"
 #include "run/prepared_start.h"
@@ -34,6 +35,8 @@ struct RunSummary {
   std::vector<RedundantEquationReport> redundant;
   // Linear-range warnings (multibody/linear_range.h), the first per flexible body.
   std::vector<std::string> warnings;
+  // Mode switches of hinge latches and stops, in order (located events).
+  std::vector<multibody::HingeEvent> events;
 };
 
 // Optional observers; all may be empty.
@@ -45,6 +48,8 @@ struct RunHooks {
   std::function<void(const integrate::Sample&, const results::Sample&)> on_sample;
   // A flexible body left the linear range (its first time only).
   std::function<void(const std::string&)> on_warning;
+  // A hinge latch or stop switched (reported once its time has been passed by a sample).
+  std::function<void(const multibody::HingeEvent&)> on_event;
 };
 
 // Throws InputError when the settings cannot run (integrator options out of range, sample

@@ -10,6 +10,7 @@
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"
+#include "multibody/hinge_limit.h"
 #include "multibody/reactions.h"
 #include "multibody/rotation.h"
 
@@ -77,22 +78,29 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
   }
   for (const multibody::Driver& driver : model.drivers) writer.add_driver(driver.name);
   for (const char* name : kEnergyNames) writer.add_energy(name);
+  for (const multibody::ForceElement& force : model.forces) {
+    if (const auto* limit = std::get_if<multibody::HingeLimit>(&force)) {
+      writer.add_hinge_limit({limit->name, multibody::to_string(limit->kind),
+                              model.joints[limit->joint].name, limit->angle});
+    }
+  }
 }
 
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
+                                        const std::vector<unsigned char>& engaged,
                                         const multibody::State& start, double rtol) {
   // The integrand runs inside the integrator: it gets its own workspace.
   auto ws = std::make_shared<multibody::Workspace>(model);
   integrate::Quadrature quadrature;
   quadrature.size = kEnergyIntegrals;
-  quadrature.integrand = [&model, &partition, ws](double t, const Eigen::VectorXd& q,
+  quadrature.integrand = [&model, &partition, &engaged, ws](double t, const Eigen::VectorXd& q,
                                                   const Eigen::VectorXd& v,
                                                   const Eigen::VectorXd& v_dot,
                                                   const Eigen::VectorXd& lambda,
                                                   Eigen::VectorXd& f) {
     const multibody::EnergyRates rates =
-        multibody::energy_rates(model, partition, multibody::State{t, q, v}, v_dot, lambda, *ws);
+        multibody::energy_rates(model, partition, multibody::State{t, q, v, engaged}, v_dot, lambda, *ws);
     f << rates.dissipation, rates.driver, rates.forces;
   };
   // Energy scale at the start, for the integrals' absolute tolerance.
@@ -104,12 +112,13 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
 }
 
 SampleRecorder::SampleRecorder(const multibody::Model& model,
-                               const multibody::ConstraintPartition& partition)
-    : model_(model), partition_(partition), workspace_(model) {}
+                               const multibody::ConstraintPartition& partition,
+                               const std::vector<unsigned char>& engaged)
+    : model_(model), partition_(partition), engaged_(engaged), workspace_(model) {}
 
 results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   LIMBER_DEMAND(sample.integrals.size() == kEnergyIntegrals);
-  const multibody::State state{sample.t, sample.q, sample.v};
+  const multibody::State state{sample.t, sample.q, sample.v, engaged_};
   results::Sample out;
   out.time = sample.t;
   out.steps = sample.statistics.steps;
@@ -150,6 +159,18 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   const multibody::EnergyTerms energy = multibody::energies(model_, state, workspace_);
   out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
+
+  // Hinge latches and stops: torque on body j about the joint axis, and mode.
+  for (std::size_t k = 0; k < model_.forces.size(); ++k) {
+    const auto* limit = std::get_if<multibody::HingeLimit>(&model_.forces[k]);
+    if (!limit) continue;
+    const bool engaged = k < engaged_.size() && engaged_[k];
+    const multibody::RelativeAngle angle =
+        multibody::hinge_limit_state(model_, *limit, state, workspace_);
+    out.hinge_limit_torques.push_back(
+        multibody::hinge_limit_force(*limit, angle.theta, angle.rate, engaged).torque);
+    out.hinge_limits_engaged.push_back(engaged ? 1 : 0);
+  }
 
   // Constraint violations over all rows (redundant ones included).
   const multibody::ConstraintViolation violation =

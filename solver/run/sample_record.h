@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "integrate/integrator.h"
 #include "multibody/model.h"
@@ -29,17 +30,20 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
 // The quadrature the integrator accumulates for the energies: ∫ dissipation, ∫ driver power,
 // ∫ power of force actuators and point loads [J], with IDA's absolute tolerance on them
 // rtol · E, E the mechanism's energy scale at the start (kinetic + |gravity| + spring, at least
-// 1 J): energies are held to the same relative accuracy as q and v. References must outlive
-// the run.
+// 1 J): energies are held to the same relative accuracy as q and v. `engaged` are the modes of
+// the hinge latches and stops as the integrator switches them (MultibodySystem::engaged).
+// References must outlive the run.
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
+                                        const std::vector<unsigned char>& engaged,
                                         const multibody::State& start, double rtol);
 
 // Turns integrator samples into results samples; one per run (holds a Workspace).
 class SampleRecorder {
  public:
   // References must outlive the recorder.
-  SampleRecorder(const multibody::Model& model, const multibody::ConstraintPartition& partition);
+  SampleRecorder(const multibody::Model& model, const multibody::ConstraintPartition& partition,
+                 const std::vector<unsigned char>& engaged);
 
   // Precondition: sample.integrals holds kEnergyIntegrals values (energy_quadrature).
   results::Sample record(const integrate::Sample& sample);
@@ -47,6 +51,7 @@ class SampleRecorder {
  private:
   const multibody::Model& model_;
   const multibody::ConstraintPartition& partition_;
+  const std::vector<unsigned char>& engaged_;
   multibody::Workspace workspace_;
 };
 

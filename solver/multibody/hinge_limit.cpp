@@ -1,0 +1,67 @@
+#include "multibody/hinge_limit.h"
+
+#include <algorithm>
+
+namespace limber::multibody {
+
+double hinge_limit_angle(const HingeLimit& limit, const RelativeAngle& angle) {
+  return limit.angle_center + wrap_angle(angle.theta - limit.angle_center);
+}
+
+HingeLimitForce hinge_limit_force(const HingeLimit& limit, double theta, double rate, bool engaged) {
+  HingeLimitForce f;
+  if (!engaged) return f;
+  if (limit.kind == HingeLimitKind::kLatch) {
+    // Locked hinge: a two-sided torsional spring-damper about the latch angle.
+    f.torque = -limit.stiffness * (theta - limit.angle) - limit.damping * rate;
+    f.dissipation = limit.damping * rate * rate;
+    return f;
+  }
+  // Stop: contact force on the penetration p = direction (θ − angle), clamped to push only.
+  const double p = limit.direction * (theta - limit.angle);
+  const double p_rate = limit.direction * rate;
+  const double push = std::max(0.0, limit.stiffness * p + limit.damping * p_rate);
+  f.torque = -limit.direction * push;
+  // Removed power = −τ θ̇ − d/dt(½ k p²); it is c ṗ² while unclamped and k p |ṗ| when clamped.
+  f.dissipation = push * p_rate - limit.stiffness * p * p_rate;
+  return f;
+}
+
+double hinge_limit_energy(const HingeLimit& limit, double theta, bool engaged) {
+  if (!engaged) return 0.0;
+  const double p = limit.direction * (theta - limit.angle);
+  if (limit.kind == HingeLimitKind::kStop && p <= 0.0) return 0.0;
+  return 0.5 * limit.stiffness * p * p;
+}
+
+double hinge_limit_event(const HingeLimit& limit, double theta, bool engaged) {
+  const double p = limit.direction * (theta - limit.angle);
+  if (limit.kind == HingeLimitKind::kLatch) return engaged ? -1.0 : p;
+  return engaged ? -p : p;
+}
+
+void hinge_limit_events(const Model& model, const std::vector<int>& limits, const State& state,
+                        Workspace& ws, Eigen::VectorXd& e) {
+  e.resize(static_cast<Eigen::Index>(limits.size()));
+  if (limits.empty()) return;
+  update_marker_kinematics(model, state, Stage::kPosition, ws);
+  for (size_t k = 0; k < limits.size(); ++k) {
+    const auto& limit = std::get<HingeLimit>(model.forces[limits[k]]);
+    const RelativeAngle angle =
+        relative_angle(ws.markers[limit.marker_i], ws.markers[limit.marker_j], Stage::kPosition);
+    const size_t f = static_cast<size_t>(limits[k]);
+    const bool engaged = f < state.engaged.size() && state.engaged[f];
+    e(static_cast<Eigen::Index>(k)) = hinge_limit_event(limit, hinge_limit_angle(limit, angle), engaged);
+  }
+}
+
+RelativeAngle hinge_limit_state(const Model& model, const HingeLimit& limit, const State& state,
+                                Workspace& ws) {
+  update_marker_kinematics(model, state, Stage::kVelocity, ws);
+  RelativeAngle angle =
+      relative_angle(ws.markers[limit.marker_i], ws.markers[limit.marker_j], Stage::kVelocity);
+  angle.theta = hinge_limit_angle(limit, angle);
+  return angle;
+}
+
+}  // namespace limber::multibody

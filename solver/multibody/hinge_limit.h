@@ -1,0 +1,53 @@
+// Force law, energy and event function of hinge latches and stops (model.h, HingeLimit).
+// A latch holds the hinge at its angle once reached, through a torsional spring-damper of the
+// locked hinge (a deployment latch's measured stiffness, not a rigid lock: latch-up loads stay
+// finite and converge as the step shrinks). A stop is a one-sided spring-damper contact that
+// pushes and never pulls (Hunt & Crossley's objection to a linear damper at separation).
+// The switches are state events: the integrators locate the crossing of hinge_limit_event
+// and only then flip State::engaged, so Newton never sees the force law change within a step.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "multibody/constraints.h"
+#include "multibody/model.h"
+
+namespace limber::multibody {
+
+// θ of the limit's joint, unwrapped within ±π of limit.angle_center [rad].
+double hinge_limit_angle(const HingeLimit& limit, const RelativeAngle& angle);
+
+// What a hinge limit applies and removes at (θ, θ̇) in its mode.
+struct HingeLimitForce {
+  double torque = 0.0;       // on body j about z_i [N·m]
+  double dissipation = 0.0;  // power removed, ≥ 0 [W]
+};
+HingeLimitForce hinge_limit_force(const HingeLimit& limit, double theta, double rate, bool engaged);
+
+// Elastic energy stored in the locked latch or the compressed stop [J].
+double hinge_limit_energy(const HingeLimit& limit, double theta, bool engaged);
+
+// The event function: its rise through 0 switches the mode (latch: engages; stop: contact
+// begins when free, ends when engaged). A locked latch never switches again (−1).
+double hinge_limit_event(const HingeLimit& limit, double theta, bool engaged);
+
+// A located mode switch: which limit, when, at what angle and rate, and into which mode.
+struct HingeEvent {
+  int force = 0;          // index into model.forces
+  double t = 0.0;         // [s]
+  double angle = 0.0;     // θ at the switch [rad]
+  double rate = 0.0;      // θ̇ at the switch [rad/s]
+  bool engaged = false;   // the mode after the switch (latch: locked; stop: in contact)
+};
+
+// The event functions of the limits `limits` (indices into model.forces) at `state`
+// (position stage; updates ws.markers).
+void hinge_limit_events(const Model& model, const std::vector<int>& limits, const State& state,
+                        Workspace& ws, Eigen::VectorXd& e);
+
+// θ and θ̇ of a limit's joint at `state` (velocity stage; updates ws.markers).
+RelativeAngle hinge_limit_state(const Model& model, const HingeLimit& limit, const State& state,
+                                Workspace& ws);
+
+}  // namespace limber::multibody
