@@ -51,10 +51,26 @@ struct BeamProperty {
                                // Euler-Bernoulli theory); torsional inertia is always kept
 };
 
+// Shear correction factor of a homogeneous plate (Reissner 1945); PSHELL's TS/T default.
+inline constexpr double kShellShearFactor = 5.0 / 6.0;
+
+// Shell section in the manner of NASTRAN's PSHELL (fields T, 12I/T³, TS/T, NSM): one material
+// and a membrane thickness T, with ratios that let a sandwich or stiffened panel match its
+// bending stiffness, transverse shear stiffness and mass separately. Per unit width:
+//   membrane   E T / (1 − ν²)                 (shell_membrane.h)
+//   bending    E I / (1 − ν²),  I = bending_ratio T³ / 12   (shell_plate.h)
+//   shear      G shear_ratio T                (shell_plate.h)
+//   mass       ρ T + nonstructural_mass per area; rotary inertia ρ I on the two bending
+//              rotations, none from the non-structural mass (shell_element.cpp)
+// The defaults are the homogeneous plate of thickness T. Formulation and a honeycomb-sandwich
+// example: docs/shell-element.md, "Sandwich (PSHELL) section".
 struct ShellProperty {
   std::string name;
   Material material;
-  double thickness = 0.0;  // [m]
+  double thickness = 0.0;                  // T [m] (membrane)
+  double bending_ratio = 1.0;              // 12 I / T³ [-], > 0
+  double shear_ratio = kShellShearFactor;  // T_s / T [-], > 0
+  double nonstructural_mass = 0.0;         // NSM [kg/m^2], >= 0
 };
 
 // 2-node beam. Local x runs from node 0 to node 1; `orientation` is any vector in

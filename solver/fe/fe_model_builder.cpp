@@ -19,6 +19,13 @@ void demand_positive(double value, const std::string& what, const SourceLocation
   }
 }
 
+// Throws unless `value` >= 0 and finite.
+void demand_non_negative(double value, const std::string& what, const SourceLocation& where) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw InputError(fmt::format("{}: expected a value >= 0, got {}", what, value), where);
+  }
+}
+
 // Checks E, nu and rho of a material.
 void check_material(const Material& material, const std::string& owner,
                     const SourceLocation& where) {
@@ -79,6 +86,9 @@ int FeModelBuilder::add_shell_property(const ShellProperty& property, const Sour
   const std::string owner = fmt::format("shell property '{}'", property.name);
   check_material(property.material, owner, where);
   demand_positive(property.thickness, owner + " thickness [m]", where);
+  demand_positive(property.bending_ratio, owner + " bending ratio 12I/T^3", where);
+  demand_positive(property.shear_ratio, owner + " shear ratio TS/T", where);
+  demand_non_negative(property.nonstructural_mass, owner + " non-structural mass [kg/m^2]", where);
   model_.shell_properties.push_back(property);
   return static_cast<int>(model_.shell_properties.size()) - 1;
 }

@@ -19,8 +19,9 @@ class FeModelBuilder {
   // or a non-finite position [m].
   int add_node(int id, const Eigen::Vector3d& position, const SourceLocation& where = {});
 
-  // Properties return their index. Throw when E, rho, thickness, A, Iy, Iz, J or a shear
-  // factor is not > 0, or nu is outside (-1, 0.5).
+  // Properties return their index. Throw when E, rho, thickness, A, Iy, Iz, J, a shear
+  // factor or a shell's bending/shear ratio is not > 0, a shell's non-structural mass is
+  // negative, or nu is outside (-1, 0.5).
   int add_beam_property(const BeamProperty& property, const SourceLocation& where = {});
   int add_shell_property(const ShellProperty& property, const SourceLocation& where = {});
 

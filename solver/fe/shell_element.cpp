@@ -2,11 +2,13 @@
 // the local frame of the quad's mean plane (shell_frame.h), consistent mass, rotation to
 // global axes.
 //
-// Mass per unit area: ρ t on (u, v, w) with the bilinear shape functions (consistent), ρ t³/12
-// rotary inertia on (θx, θy), and the same ρ t³/12 on the drilling rotation θz. The drilling
-// inertia is not physical (it adds ρ t³ A / 12 to the moment of inertia about the normal,
-// a relative error t² / (12 r²) for a body of gyration radius r) but keeps M positive definite.
-// 2×2 Gauss integration is exact for these terms.
+// Mass per unit area: ρ T + NSM on (u, v, w) with the bilinear shape functions (consistent),
+// rotary inertia ρ I = ρ (12I/T³) T³/12 on (θx, θy) (the faces' own for a sandwich; the
+// non-structural mass sits on the mid-surface), and ρ T³/12 on the drilling rotation θz. The
+// drilling inertia is not physical (it adds ρ T³ A / 12 to the moment of inertia about the
+// normal, a relative error T² / (12 r²) for a homogeneous body of gyration radius r) but keeps
+// M positive definite; it does not follow 12I/T³, so a sandwich's drilling modes stay as high
+// as a homogeneous plate's. 2×2 Gauss integration is exact for these terms.
 #include "fe/shell_element.h"
 
 #include "core/error.h"
@@ -38,8 +40,11 @@ void scatter(const Matrix12d& part, const std::array<int, 3>& dofs, Matrix24d& w
 // Consistent mass in the local frame.
 Matrix24d local_mass(const QuadCoordinates& xy, const ShellProperty& property) {
   const double t = property.thickness;
-  const double translational = property.material.density * t;
-  const double rotary = property.material.density * t * t * t / 12.0;
+  const double rho = property.material.density;
+  const double translational = rho * t + property.nonstructural_mass;
+  // ρ I and ρ T³/12; the ratio multiplies first so that 12I/T³ = 1 rounds as ρ T³/12 does.
+  const double rotary = rho * property.bending_ratio * t * t * t / 12.0;
+  const double drilling = rho * t * t * t / 12.0;
   Matrix24d m = Matrix24d::Zero();
   for (const GaussPoint& gauss : kGauss2x2) {
     const QuadPoint point = quad_point(xy, gauss.xi, gauss.eta);
@@ -48,7 +53,8 @@ Matrix24d local_mass(const QuadCoordinates& xy, const ShellProperty& property) {
       for (int b = 0; b < 4; ++b) {
         const double nn = w * point.n(a) * point.n(b);
         for (int i = 0; i < 3; ++i) m(6 * a + i, 6 * b + i) += translational * nn;
-        for (int i = 3; i < 6; ++i) m(6 * a + i, 6 * b + i) += rotary * nn;
+        for (int i = 3; i < 5; ++i) m(6 * a + i, 6 * b + i) += rotary * nn;
+        m(6 * a + 5, 6 * b + 5) += drilling * nn;
       }
     }
   }
@@ -78,7 +84,9 @@ Matrix24d global_to_local(const ShellFrame& frame) {
 
 ShellElementMatrices shell_element_matrices(const std::array<Eigen::Vector3d, 4>& corners,
                                             const ShellProperty& property) {
-  LIMBER_DEMAND(property.thickness > 0.0 && property.material.youngs_modulus > 0.0);
+  LIMBER_DEMAND(property.thickness > 0.0 && property.material.youngs_modulus > 0.0 &&
+                property.bending_ratio > 0.0 && property.shear_ratio > 0.0 &&
+                property.nonstructural_mass >= 0.0);
   // Local frame and shape checks (throws InputError).
   const ShellFrame frame = shell_frame(corners);
 

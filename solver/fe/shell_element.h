@@ -22,9 +22,10 @@ struct ShellElementMatrices {
 };
 
 // Element matrices of a quad with corner positions `corners` [m] (counter-clockwise about
-// the normal, which the node order defines). Precondition: thickness and E > 0 (the
-// builder checks them). Throws InputError when the quad is degenerate (zero area, a
-// non-convex corner, or a warp beyond kMaxShellWarpRatio, see shell_frame.h).
+// the normal, which the node order defines). Precondition: thickness, E, bending_ratio and
+// shear_ratio > 0, nonstructural_mass >= 0 (the builder checks them). Throws InputError when
+// the quad is degenerate (zero area, a non-convex corner, or a warp beyond
+// kMaxShellWarpRatio, see shell_frame.h).
 ShellElementMatrices shell_element_matrices(const std::array<Eigen::Vector3d, 4>& corners,
                                             const ShellProperty& property);
 

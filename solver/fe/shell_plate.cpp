@@ -66,12 +66,14 @@ Eigen::Matrix3d plate_bending_rigidity(const ShellProperty& property) {
   const double t = property.thickness;
   Eigen::Matrix3d d;
   d << 1.0, nu, 0.0, nu, 1.0, 0.0, 0.0, 0.0, 0.5 * (1.0 - nu);
-  return e * t * t * t / (12.0 * (1.0 - nu * nu)) * d;
+  // E I with I = r T³/12; r multiplies first so that r = 1 rounds exactly as E T³/12.
+  return e * property.bending_ratio * t * t * t / (12.0 * (1.0 - nu * nu)) * d;
 }
 
 Matrix12d plate_stiffness(const QuadCoordinates& xy, const ShellProperty& property) {
   const Eigen::Matrix3d d_bending = plate_bending_rigidity(property);
-  const double d_shear = kShellShearFactor * property.material.shear_modulus() * property.thickness;
+  const double d_shear =
+      property.shear_ratio * property.material.shear_modulus() * property.thickness;
   const TyingRows tying = tying_rows(xy);
   Matrix12d k = Matrix12d::Zero();
   // Bending and assumed shear energy at the 2×2 Gauss points.

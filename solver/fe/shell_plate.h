@@ -19,14 +19,13 @@
 
 namespace limber::fe {
 
-// Shear correction factor of a homogeneous plate (Reissner 1945).
-inline constexpr double kShellShearFactor = 5.0 / 6.0;
-
 using Matrix12d = Eigen::Matrix<double, 12, 12>;
 using Vector12d = Eigen::Matrix<double, 12, 1>;
 
-// Bending + assumed-shear stiffness [N/m, N, N·m]; null space: the 3 plate rigid motions
-// (w, θx, θy) = (1, 0, 0), (y, 1, 0), (−x, 0, 1). Precondition: a valid (convex) quad.
+// Bending + assumed-shear stiffness [N/m, N, N·m], with the section's bending rigidity
+// (plate_bending_rigidity) and shear stiffness G shear_ratio T [N/m]; null space: the 3 plate
+// rigid motions (w, θx, θy) = (1, 0, 0), (y, 1, 0), (−x, 0, 1). Precondition: a valid
+// (convex) quad.
 Matrix12d plate_stiffness(const QuadCoordinates& xy, const ShellProperty& property);
 
 // Curvatures (κxx, κyy, κxy) [1/m] at (ξ, η) for nodal values `dofs` (w [m], θ [rad]).
@@ -37,8 +36,9 @@ Eigen::Vector3d plate_curvature(const QuadCoordinates& xy, const Vector12d& dofs
 Eigen::Vector2d plate_shear_strain(const QuadCoordinates& xy, const Vector12d& dofs, double xi,
                                    double eta);
 
-// Bending rigidity E t³ / (12 (1 − ν²)) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]] [N·m];
-// maps κ to the moments (Mxx, Myy, Mxy) per unit length.
+// Bending rigidity E I / (1 − ν²) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]] [N·m] with
+// I = bending_ratio T³ / 12 [m³] (PSHELL 12I/T³); maps κ to the moments (Mxx, Myy, Mxy)
+// per unit length.
 Eigen::Matrix3d plate_bending_rigidity(const ShellProperty& property);
 
 }  // namespace limber::fe

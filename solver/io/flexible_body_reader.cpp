@@ -124,13 +124,18 @@ void read_beams(const YamlValue& list, const CaseLibrary& library, fe::FeModelBu
 
 void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelBuilder& builder) {
   for (const YamlValue& plate : list.items()) {
-    plate.allow_only(
-        {"origin", "edge_x", "edge_y", "nx", "ny", "thickness", "material", "first_node_id"});
-    // Property: material by name and a thickness.
+    plate.allow_only({"origin", "edge_x", "edge_y", "nx", "ny", "thickness", "bending_ratio",
+                      "shear_ratio", "nonstructural_mass", "material", "first_node_id"});
+    // Property: material by name, a thickness and the optional PSHELL-style section ratios.
     fe::ShellProperty property;
     property.name = plate.name();
     property.material = library.material(plate.at("material"));
     property.thickness = plate.at("thickness").as_positive();
+    if (auto ratio = plate.find("bending_ratio")) property.bending_ratio = ratio->as_positive();
+    if (auto ratio = plate.find("shear_ratio")) property.shear_ratio = ratio->as_positive();
+    if (auto nsm = plate.find("nonstructural_mass")) {
+      property.nonstructural_mass = nsm->as_non_negative();
+    }
 
     // Mesh: parallelogram origin + s edge_x + t edge_y split into nx x ny quads.
     fe::RectangularPlateMesh mesh;

@@ -116,6 +116,24 @@ TEST(FeModelBuilder, ShellPropertyErrors) {
   EXPECT_EQ(
       input_error_of([&] { f.builder.add_shell_property(p, kWhere); }),
       "case.yaml:12:5: shell property 'plate' Poisson ratio: expected -1 < nu < 0.5, got 0.7");
+  // Section ratios (PSHELL 12I/T³, TS/T) must be > 0, the non-structural mass >= 0.
+  p = plate_property();
+  p.bending_ratio = 0.0;
+  EXPECT_EQ(input_error_of([&] { f.builder.add_shell_property(p, kWhere); }),
+            "case.yaml:12:5: shell property 'plate' bending ratio 12I/T^3: expected a positive "
+            "value, got 0");
+  p = plate_property();
+  p.shear_ratio = -0.5;
+  EXPECT_EQ(input_error_of([&] { f.builder.add_shell_property(p, kWhere); }),
+            "case.yaml:12:5: shell property 'plate' shear ratio TS/T: expected a positive value, "
+            "got -0.5");
+  p = plate_property();
+  p.nonstructural_mass = -0.1;
+  EXPECT_EQ(input_error_of([&] { f.builder.add_shell_property(p, kWhere); }),
+            "case.yaml:12:5: shell property 'plate' non-structural mass [kg/m^2]: expected a "
+            "value >= 0, got -0.1");
+  p.nonstructural_mass = 0.0;
+  EXPECT_EQ(input_error_of([&] { f.builder.add_shell_property(p, kWhere); }), "no InputError");
 }
 
 TEST(FeModelBuilder, BeamElementErrors) {

@@ -111,6 +111,32 @@ TEST(CaseReader, ValuesLandInTheModelAndRequest) {
   EXPECT_EQ(arm.modes_where.to_string(), location_of(kHappyCase, "normal: {"));
 }
 
+TEST(CaseReader, PlateSectionRatiosLandInTheShellProperty) {
+  // A sandwich plate with all three PSHELL-style keys, and a plain one keeping the defaults.
+  const std::string text = R"(materials: {cfrp: {E: 6e10, nu: 0.3, rho: 1600}}
+flexible_bodies:
+  panel:
+    plates:
+      - {origin: [0, 0, 0], edge_x: [1, 0, 0], edge_y: [0, 1, 0], nx: 2, ny: 2,
+         thickness: 0.0005, bending_ratio: 7650.75, shear_ratio: 0.309,
+         nonstructural_mass: 1.6, material: cfrp}
+      - {origin: [0, 0, 1], edge_x: [1, 0, 0], edge_y: [0, 1, 0], nx: 1, ny: 1,
+         thickness: 0.002, material: cfrp}
+    modes: {normal: 2}
+)";
+  const fe::FeModel& model = read_case_text(text, "test.yaml").flexible_bodies.at(0).model;
+  ASSERT_EQ(model.shell_properties.size(), 2u);
+  const fe::ShellProperty& sandwich = model.shell_properties[0];
+  EXPECT_DOUBLE_EQ(sandwich.thickness, 0.0005);
+  EXPECT_DOUBLE_EQ(sandwich.bending_ratio, 7650.75);
+  EXPECT_DOUBLE_EQ(sandwich.shear_ratio, 0.309);
+  EXPECT_DOUBLE_EQ(sandwich.nonstructural_mass, 1.6);
+  const fe::ShellProperty& plain = model.shell_properties[1];
+  EXPECT_EQ(plain.bending_ratio, 1.0);
+  EXPECT_EQ(plain.shear_ratio, fe::kShellShearFactor);
+  EXPECT_EQ(plain.nonstructural_mass, 0.0);
+}
+
 TEST(CaseReader, TitleDefaultsToTheFileStem) {
   const std::string text = R"(materials: {steel: {E: 2e11, nu: 0.3, rho: 7800}}
 sections: {s: {shape: circle, diameter: 0.01}}
@@ -206,6 +232,27 @@ flexible_bodies:
 )";
   EXPECT_TRUE(fails_at(plate, location_of(plate, "-0.002"),
                        "expected a positive number for 'thickness', got '-0.002'"));
+  // Section ratios > 0, non-structural mass >= 0, each at its own value.
+  const auto plate_with = [](const std::string& keys) {
+    return R"(materials: {al: {E: 7e10, nu: 0.33, rho: 2700}}
+flexible_bodies:
+  p:
+    plates: [{origin: [0, 0, 0], edge_x: [1, 0, 0], edge_y: [0, 1, 0], nx: 2, ny: 2,
+              thickness: 0.002, )" +
+           keys + R"(, material: al}]
+    modes: {normal: 2}
+)";
+  };
+  const std::string bending = plate_with("bending_ratio: 0");
+  EXPECT_TRUE(fails_at(bending, location_of(bending, "0, material"),
+                       "expected a positive number for 'bending_ratio', got '0'"));
+  const std::string shear = plate_with("shear_ratio: -0.8");
+  EXPECT_TRUE(fails_at(shear, location_of(shear, "-0.8"),
+                       "expected a positive number for 'shear_ratio', got '-0.8'"));
+  const std::string nsm = plate_with("nonstructural_mass: -1.5");
+  EXPECT_TRUE(fails_at(nsm, location_of(nsm, "-1.5"),
+                       "expected a non-negative number for 'nonstructural_mass', got '-1.5'"));
+  EXPECT_NO_THROW(read_case_text(plate_with("nonstructural_mass: 0"), "test.yaml"));
   const std::string elements = rod_case(
       "{from: [0, 0, 0], to: [1, 0, 0], elements: 0, "
       "section: bar, material: steel, orientation: [0, 1, 0]}");
