@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,14 @@
 #include "run/prepared_start.h"
 
 namespace limber::run {
+
+// The smallest clearance over the samples (multibody/clearance.h), its first time and pair.
+struct ClearanceMinimum {
+  bool checked = false;  // the model has two or more bodies with surfaces
+  double distance = std::numeric_limits<double>::infinity();  // [m], negative: interference
+  double time = 0.0;                                          // [s]
+  std::string body_a, body_b;                                 // "" while none was found
+};
 
 struct RunSummary {
   bool ok = false;
@@ -34,6 +43,7 @@ struct RunSummary {
   std::vector<RedundantEquationReport> redundant;
   // Linear-range warnings (multibody/linear_range.h), the first per flexible body.
   std::vector<std::string> warnings;
+  ClearanceMinimum clearance;
 };
 
 // Optional observers; all may be empty.
