@@ -115,6 +115,29 @@ std::string json_events(const multibody::Model& model, const std::vector<multibo
   return text + "]";
 }
 
+// {"minimum", "time", "pair": [body_a, body_b]}, or null when no clearance was checked.
+std::string json_clearance(const run::ClearanceMinimum& clearance) {
+  if (!clearance.checked) return "null";
+  return fmt::format("{{\"minimum\": {}, \"time\": {}, \"pair\": {}}}",
+                     json_number(clearance.distance), json_number(clearance.time),
+                     json_string_list({clearance.body_a, clearance.body_b}));
+}
+
+// The run's minimum clearance on `out`, and a warning on stderr when two bodies interfere.
+void print_clearance(std::FILE* out, const run::ClearanceMinimum& clearance) {
+  if (!clearance.checked) return;
+  if (clearance.body_a.empty()) {
+    fmt::print(out, "minimum clearance: none found (every vertex within a joint band)\n");
+    return;
+  }
+  fmt::print(out, "minimum clearance: {:.4g} m between {} and {} at t = {:g} s\n",
+             clearance.distance, clearance.body_a, clearance.body_b, clearance.time);
+  if (clearance.distance < 0.0) {
+    fmt::print(stderr, "limber: warning: {} passes through {} at t = {:g} s (clearance {:.3g} m)\n",
+               clearance.body_a, clearance.body_b, clearance.time, clearance.distance);
+  }
+}
+
 std::string json_report(const multibody::Model& model, const run::RunSummary& summary,
                         const std::string& results_path) {
   std::vector<std::string> names, details;
@@ -128,13 +151,15 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_failures\": {}, "
       "\"newton_iterations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
-      "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"results\": {}}}",
+      "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"clearance\": {}, "
+      "\"results\": {}}}",
       json_string(summary.ok ? "ok" : "failed"), json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
       summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
       json_number(summary.wall_seconds), json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
-      json_string_list(details), json_events(model, summary.events), json_string(results_path));
+      json_string_list(details), json_events(model, summary.events),
+      json_clearance(summary.clearance), json_string(results_path));
 }
 
 int run_case(const RunOptions& options) {
@@ -196,6 +221,7 @@ int run_case(const RunOptions& options) {
                s.rejected_steps, s.newton_iterations, summary.wall_seconds);
     fmt::print(text, "max constraint violation: position {:.3g}, velocity {:.3g}\n",
                summary.max_position_violation, summary.max_velocity_violation);
+    print_clearance(text, summary.clearance);
   }
   fmt::print(text, "wrote {}\n", results_path);
   if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
@@ -218,8 +244,10 @@ Command add_run_command(CLI::App& app) {
       "equations it depends on, and a summary; a progress line on a terminal. Writes\n"
       "DIR/results.h5 one sample at a time (docs/results-format.md): poses, joint reactions,\n"
       "driver efforts, energies, constraint violations, steps, hinge latch and stop torques and\n"
-      "their located events (each also printed as 'event: ...'). Settings come from the case's\n"
-      "'run' section (docs/case-format.md); the options below override them.\n"
+      "their located events (each also printed as 'event: ...'), and the minimum clearance between\n"
+      "bodies' surfaces (shell quads, shapes) when two or more have one: printed at the end,\n"
+      "with a warning when it is negative (one body passes through another). Settings come\n"
+      "from the case's 'run' section (docs/case-format.md); the options below override them.\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
       "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
       "are kept and the file's status is \"failed\"), 3 internal error.");
@@ -239,7 +267,8 @@ Command add_run_command(CLI::App& app) {
                 "\"newton_iterations\", \"wall_s\", \"max_constraint_violation\", "
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
                 "\"redundant_details\", \"events\": [{\"t\", \"name\", \"kind\", \"joint\", "
-                "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"results\"}; the text "
+                "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"clearance\": "
+                "{\"minimum\", \"time\", \"pair\": [body, body]} or null, \"results\"}; the text "
                 "goes to stderr");
   return {cli, [options] { return run_case(*options); }};
 }

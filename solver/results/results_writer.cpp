@@ -153,6 +153,9 @@ struct ResultsWriter::Impl {
   std::vector<Series> driver_series;
   std::vector<Series> energy_series;
   Series position_violation, velocity_violation, steps, time;
+  // /clearance/minimum and /clearance/pair, when pairs were declared.
+  Series clearance_minimum, clearance_pair;
+  bool has_clearance = false;
   std::int64_t ns = 0;
   bool finished = false;
 
@@ -414,6 +417,18 @@ void ResultsWriter::set_redundant_equations(const std::vector<std::string>& name
   write_string_dataset(constraints.get(), "redundant_with", depends_on);
 }
 
+void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
+  impl_->demand_declaring();
+  LIMBER_DEMAND(!impl_->has_clearance);
+  H5Handle group = create_group(impl_->file.get(), "clearance");
+  write_string_dataset(group.get(), "pairs", pairs);
+  impl_->clearance_minimum =
+      impl_->create_series(group.get(), "minimum", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+  impl_->clearance_pair =
+      impl_->create_series(group.get(), "pair", H5T_STD_I32LE, H5T_NATIVE_INT, 0);
+  impl_->has_clearance = true;
+}
+
 void ResultsWriter::set_integrator(const std::string& name) {
   impl_->demand_declaring();
   write_string_attribute(impl_->file.get(), "integrator", name);
@@ -473,6 +488,10 @@ void ResultsWriter::append_sample(const Sample& sample) {
   m.append_row(m.position_violation, &sample.position_violation);
   m.append_row(m.velocity_violation, &sample.velocity_violation);
   m.append_row(m.steps, &sample.steps);
+  if (m.has_clearance) {
+    m.append_row(m.clearance_minimum, &sample.clearance_minimum);
+    m.append_row(m.clearance_pair, &sample.clearance_pair);
+  }
 
   // Time last, then flush: a reader never sees a time without its data.
   m.append_row(m.time, &sample.time);
@@ -503,6 +522,8 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.velocity_violation = {};
   m.steps = {};
   m.time = {};
+  m.clearance_minimum = {};
+  m.clearance_pair = {};
   m.bodies_group.reset();
   m.joints_group.reset();
   m.drivers_group.reset();

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -104,6 +105,11 @@ struct Sample {
   // [N m] and whether it is engaged (latch locked, stop in contact).
   std::vector<double> hinge_limit_torques;
   std::vector<std::int8_t> hinge_limits_engaged;
+  // Written only when set_clearance_pairs() was called: the smallest clearance between the
+  // declared body pairs [m] (negative: interference; +inf when no pair had anything to
+  // check) and the index of its pair in that list (−1 with +inf).
+  double clearance_minimum = std::numeric_limits<double>::infinity();
+  int clearance_pair = -1;
 };
 
 struct HingeLimitSpec {
@@ -148,6 +154,10 @@ class ResultsWriter {
   // [nr] the independent equations each is a combination of ("R1.z, R3.z"). Sizes must match.
   void set_redundant_equations(const std::vector<std::string>& names,
                                const std::vector<std::string>& depends_on);
+  // The body pairs of the clearance check (at most once, before the first sample):
+  // /clearance/pairs [np] holds "<body_a>, <body_b>"; each sample then appends
+  // /clearance/minimum and /clearance/pair (Sample::clearance_minimum, clearance_pair).
+  void set_clearance_pairs(const std::vector<std::string>& pairs);
   // Root attribute `integrator` ("ida", "galpha"): which method produced the samples.
   void set_integrator(const std::string& name);
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "integrate/simulate.h"
+#include "multibody/clearance.h"
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/sample_record.h"
@@ -89,6 +90,8 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (hooks.on_event) hooks.on_event(event);
     }
   };
+  const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
+  summary.clearance.checked = !clearance_pairs.empty();
   const auto on_sample = [&](const integrate::Sample& sample) {
     report_events();
     const results::Sample record = recorder.record(sample);
@@ -104,6 +107,14 @@ RunSummary run_mechanism(const multibody::Model& model,
         std::max(summary.max_position_violation, record.position_violation);
     summary.max_velocity_violation =
         std::max(summary.max_velocity_violation, record.velocity_violation);
+    // The first time the smallest clearance is reached, with its pair.
+    if (record.clearance_pair >= 0 && record.clearance_minimum < summary.clearance.distance) {
+      const multibody::ClearancePair& pair = clearance_pairs[static_cast<std::size_t>(record.clearance_pair)];
+      summary.clearance.distance = record.clearance_minimum;
+      summary.clearance.time = sample.t;
+      summary.clearance.body_a = model.bodies[static_cast<std::size_t>(pair.body_a)].name;
+      summary.clearance.body_b = model.bodies[static_cast<std::size_t>(pair.body_b)].name;
+    }
     if (hooks.on_sample) hooks.on_sample(sample, record);
   };
   const integrate::SimulationResult result = integrate::simulate(

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,14 @@
 #include "run/prepared_start.h"
 
 namespace limber::run {
+
+// The smallest clearance over the samples (multibody/clearance.h), its first time and pair.
+struct ClearanceMinimum {
+  bool checked = false;  // the model has two or more bodies with surfaces
+  double distance = std::numeric_limits<double>::infinity();  // [m], negative: interference
+  double time = 0.0;                                          // [s]
+  std::string body_a, body_b;                                 // "" while none was found
+};
 
 struct RunSummary {
   bool ok = false;
@@ -37,6 +46,7 @@ struct RunSummary {
   std::vector<std::string> warnings;
   // Mode switches of hinge latches and stops, in order (located events).
   std::vector<multibody::HingeEvent> events;
+  ClearanceMinimum clearance;
 };
 
 // Optional observers; all may be empty.

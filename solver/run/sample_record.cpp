@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "multibody/clearance.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"
@@ -84,6 +85,13 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
                               model.joints[limit->joint].name, limit->angle});
     }
   }
+  // Clearance pairs, only where there is something to check.
+  const std::vector<multibody::ClearancePair> pairs = multibody::clearance_pairs(model);
+  if (!pairs.empty()) {
+    std::vector<std::string> names;
+    for (const multibody::ClearancePair& pair : pairs) names.push_back(multibody::pair_name(model, pair));
+    writer.set_clearance_pairs(names);
+  }
 }
 
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
@@ -114,7 +122,11 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
 SampleRecorder::SampleRecorder(const multibody::Model& model,
                                const multibody::ConstraintPartition& partition,
                                const std::vector<unsigned char>& engaged)
-    : model_(model), partition_(partition), engaged_(engaged), workspace_(model) {}
+    : model_(model),
+      partition_(partition),
+      engaged_(engaged),
+      workspace_(model),
+      check_clearance_(!multibody::clearance_pairs(model).empty()) {}
 
 results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   LIMBER_DEMAND(sample.integrals.size() == kEnergyIntegrals);
@@ -177,6 +189,13 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
       multibody::constraint_violation(model_, state, workspace_);
   out.position_violation = violation.position;
   out.velocity_violation = violation.velocity;
+
+  // Minimum clearance between the bodies' surfaces (default joint band).
+  if (check_clearance_) {
+    const multibody::Clearance clearance = multibody::compute_clearance(model_, state);
+    out.clearance_minimum = clearance.minimum;
+    out.clearance_pair = clearance.minimum_pair;
+  }
   return out;
 }
 

@@ -1,6 +1,7 @@
 // What `limber run` writes for one output sample (docs/results-format.md): body poses, joint
 // reactions on body j in the joint frame and in ground axes with the indeterminate flags,
-// driver efforts, energies, constraint violations and the step count, computed from the
+// driver efforts, energies, constraint violations, the step count and, when two or more bodies
+// have surfaces, the minimum clearance between them (multibody/clearance.h), computed from the
 // integrator's sample (q, v, v̇, λ and the energy integrals).
 #pragma once
 
@@ -23,7 +24,7 @@ inline constexpr std::array<const char*, 7> kEnergyNames = {
 inline constexpr int kEnergyIntegrals = 3;
 
 // Declares every body (with its shapes; flexible bodies with their mesh and modes), joint,
-// driver and energy of `model` in `writer`,
+// driver, energy and clearance pair (when there are any) of `model` in `writer`,
 // in model order (the indices of results::Sample follow the model's).
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer);
 
@@ -53,6 +54,7 @@ class SampleRecorder {
   const multibody::ConstraintPartition& partition_;
   const std::vector<unsigned char>& engaged_;
   multibody::Workspace workspace_;
+  bool check_clearance_ = false;  // two or more bodies with surfaces
 };
 
 }  // namespace limber::run

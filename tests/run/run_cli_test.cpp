@@ -1,7 +1,8 @@
 // `limber run` as a user runs it (popen): the seed slider-crank lists its redundant equations
 // by joint and direction on stdout, in --json and in results.h5; the results file holds every
-// documented dataset with one row per sample; bad case files give file:line:col (exit 1); a
-// failed run exits with 2 and leaves a readable file with status "failed".
+// documented dataset with one row per sample; an interference is printed with its pair and
+// time; bad case files give file:line:col (exit 1); a failed run exits with 2 and leaves a
+// readable file with status "failed".
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -52,6 +53,11 @@ TEST(RunCli, SliderCrankListsItsRedundantEquationsEverywhere) {
   EXPECT_GE(json["wall_s"].number(), 0.0);
   // Positions at IDA's interpolated samples, rtol 1e-6 of the case: well below 1e-5 m.
   EXPECT_LT(json["max_constraint_violation"].number(), 1e-5);
+  // Three bodies with box shapes: the minimum clearance, its time and pair, also on the text.
+  const test::JsonValue& clearance = json["clearance"];
+  EXPECT_GE(clearance["time"].number(), 0.0);
+  ASSERT_EQ(clearance["pair"].array().size(), 2u);
+  EXPECT_NE(run.err.find("minimum clearance: "), std::string::npos) << run.err;
 
   // 18 velocities, 21 equations, rank 18: 3 redundant, every one out of the plane and named
   // "<joint>.<direction>" of a revolute (the 3D model's surplus is at the crank pins).
@@ -139,6 +145,40 @@ TEST(RunCli, ResultsHoldEveryDocumentedDataset) {
   const std::vector<double> steps = read_doubles(file, "/solver/steps");
   EXPECT_EQ(steps.back(), 200.0);  // 0.02 s at h = 0.1 ms
   H5Fclose(file);
+}
+
+TEST(RunCli, InterferenceIsWarnedWithPairAndTime) {
+  // A bar turned about ground z whose 1 m box starts with its tip 0.1 m inside a block's
+  // face at x = 0.9 (tests/run/clearance_run_test.cpp has the numbers).
+  const std::string path = test::write_case("cli_interference",
+      "title: Bar through a block\n"
+      "bodies:\n"
+      "  bar:\n"
+      "    mass: 1.0\n"
+      "    inertia: [1e-4, 0.0833, 0.0833]\n"
+      "    center_of_mass: [0.5, 0, 0]\n"
+      "    position: [0, 0, 0]\n"
+      "    shapes:\n"
+      "      - {type: box, size: [1.0, 0.05, 0.05], position: [0.5, 0, 0]}\n"
+      "  block:\n"
+      "    mass: 1.0\n"
+      "    inertia: [0.2, 0.2, 0.2]\n"
+      "    position: [1.4, 0, 0]\n"
+      "    shapes:\n"
+      "      - {type: box, size: [1, 1, 1]}\n"
+      "joints:\n"
+      "  R: {type: revolute, body_i: ground, body_j: bar, position: [0, 0, 0],\n"
+      "      orientation: {z_axis: [0, 0, 1], x_axis: [1, 0, 0]}}\n"
+      "drivers:\n"
+      "  D: {joint: R, motion: {type: constant_speed, initial: 0, speed: 6.283185307179586}}\n"
+      "run:\n"
+      "  t_end: 0.5\n"
+      "  sample_interval: 0.05\n");
+  const auto dir = test::fresh_directory("cli_interference");
+  const test::CommandRun run = run_limber("run " + path + " -o " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("minimum clearance: -0.1 m between bar and block at t = 0 s"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("limber: warning: bar passes through block at t = 0 s"), std::string::npos) << run.err;
 }
 
 TEST(RunCli, BadCaseFileGivesFileLineAndExitOne) {
