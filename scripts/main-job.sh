@@ -1,20 +1,32 @@
 #!/usr/bin/env bash
-# The main job on the seed's slider-crank with its flexible connecting rod
-# (cases/slider_crank.yaml): build limber, then
-#   1. limber modes   the rod's frequency table, modes.h5, modes_rod.vtu, mode-shape animations
-#   2. limber run     1 s of the mechanism at 20 rev/s: results.h5 (reactions, deflection, ...)
-#   3. limber render  two crank turns (0.5-0.6 s) in 20x slow motion, deformation x20: PNG
-#                     frames, animation.mp4, vtk/scene.pvd for ParaView
-#   4. limber report  report/index.html with the reaction-force plots
-# Everything goes to out/slider_crank/ (or $1); the last line printed is the report's path.
+# The main job: the seed paper's two examples, end to end. Builds limber, then for each scene
+# runs limber modes (frequency table, modes.h5, mode-shape animations), limber run
+# (results.h5), limber render (PNG frames, animation.mp4, vtk/scene.pvd for ParaView) and
+# limber report (report/index.html):
+#   1. cases/slider_crank.yaml           the flexible slider-crank, 1 s at 20 rev/s; two crank
+#                                        turns (0.5-0.6 s) rendered in 20x slow motion, x20
+#   2. cases/satellite_deployment.yaml   the solar-array deployment, 6 s from stowed to latched
+#                                        and ringing; rendered in real time, deformation x20
+# Everything goes to out/slider_crank/ and out/satellite_deployment/ (or $1/...); the last two
+# lines printed are the two reports' paths.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
 build_dir=${LIMBER_BUILD_DIR:-$root/build}
 limber="$build_dir/solver/app/limber"
-case_file="$root/cases/slider_crank.yaml"
-out=${1:-$root/out/slider_crank}
-"$limber" modes "$case_file" -o "$out"
-"$limber" run "$case_file" -o "$out"
-"$limber" render "$out" --scale 20 --camera front --t0 0.5 --t1 0.6 --fps 600
-"$limber" report "$out" --title "Seed slider-crank, flexible connecting rod"
+out_root=${1:-$root/out}
+
+slider="$out_root/slider_crank"
+"$limber" modes "$root/cases/slider_crank.yaml" -o "$slider"
+"$limber" run "$root/cases/slider_crank.yaml" -o "$slider"
+"$limber" render "$slider" --scale 20 --camera front --t0 0.5 --t1 0.6 --fps 600
+"$limber" report "$slider" --title "Seed slider-crank, flexible connecting rod" > "$slider/report.log"
+
+satellite="$out_root/satellite_deployment"
+"$limber" modes "$root/cases/satellite_deployment.yaml" -o "$satellite"
+"$limber" run "$root/cases/satellite_deployment.yaml" -o "$satellite"
+"$limber" render "$satellite" --scale 20 --camera iso --no-ground
+"$limber" report "$satellite" --title "Satellite solar-array deployment" > "$satellite/report.log"
+
+tail -n 1 "$slider/report.log"
+tail -n 1 "$satellite/report.log"

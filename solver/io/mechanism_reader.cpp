@@ -210,7 +210,7 @@ void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& b
     spec.kind = type == "latch" ? multibody::HingeLimitKind::kLatch : multibody::HingeLimitKind::kStop;
     spec.joint = entry.at("joint").as_string();
     spec.angle = entry.at("angle").as_number();
-    spec.stiffness = entry.at("stiffness").as_positive();
+    if (const auto k = entry.find("stiffness")) spec.stiffness = k->as_positive();
     if (const auto c = entry.find("damping")) spec.damping = c->as_non_negative();
     builder.add_hinge_limit(spec, entry.where());
   } else if (type == "rsda") {

@@ -54,12 +54,18 @@ struct RsdaSpec {
   std::optional<double> angle_center{};  // θ unwrapped within ±π of it; default θ at the initial poses
 };
 
-// A latch or stop on revolute joint `joint` at `angle` [rad] (model.h, HingeLimit).
+// A latch or stop on revolute joint `joint` at `angle` [rad] (model.h, HingeLimit). The
+// defaults are of the order of a spacecraft deployment hinge: locked-hinge stiffness is
+// measured at 1e3-1e4 N·m/rad; 5 N·m·s/rad damps a ~1 kg·m² panel's latch ringing at a few
+// per cent of critical.
+inline constexpr double kDefaultHingeLimitStiffness = 5e3;  // [N·m/rad]
+inline constexpr double kDefaultHingeLimitDamping = 5.0;    // [N·m·s/rad]
 struct HingeLimitSpec {
   std::string name, joint;
   HingeLimitKind kind = HingeLimitKind::kLatch;
   double angle = 0.0;
-  double stiffness = 0.0, damping = 0.0;  // k > 0, c ≥ 0
+  double stiffness = kDefaultHingeLimitStiffness;  // > 0
+  double damping = kDefaultHingeLimitDamping;      // ≥ 0
 };
 
 struct TsdaSpec {

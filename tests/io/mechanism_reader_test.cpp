@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "input_error_matchers.h"
+#include "multibody/model_builder.h"
 #include "multibody/rotation.h"
 #include "multibody/state.h"
 
@@ -212,6 +213,36 @@ TEST(MechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   EXPECT_TRUE(fails_at(text, location_of(text, "{type: revolute"), "got both"));
   // Mechanism sections without bodies.
   EXPECT_TRUE(fails_at("gravity: [0, 0, -9.81]\n", "test.yaml:1:1", "missing required key 'bodies'"));
+}
+
+TEST(MechanismReader, HingeLatchesAndStops) {
+  // A latch with the documented defaults and a stop with its own values land in the model.
+  std::string text = edited("forces:\n", "forces:\n  lock: {type: latch, joint: hinge, angle: 1.5}\n"
+                                          "  limit: {type: stop, joint: hinge, angle: -0.5, stiffness: 200, damping: 0}\n");
+  const io::Case input = io::read_case_text(text, test::kCaseName);
+  const multibody::Model& model = input.mechanism->model;
+  const auto& lock = std::get<multibody::HingeLimit>(model.forces[0]);  // in file order
+  EXPECT_EQ(lock.kind, multibody::HingeLimitKind::kLatch);
+  EXPECT_EQ(model.joints[lock.joint].name, "hinge");
+  EXPECT_EQ(lock.angle, 1.5);
+  EXPECT_EQ(lock.direction, 1.0);  // the hinge starts at 0 and travels up to the latch
+  EXPECT_EQ(lock.stiffness, multibody::kDefaultHingeLimitStiffness);
+  EXPECT_EQ(lock.damping, multibody::kDefaultHingeLimitDamping);
+  const auto& limit = std::get<multibody::HingeLimit>(model.forces[1]);
+  EXPECT_EQ(limit.kind, multibody::HingeLimitKind::kStop);
+  EXPECT_EQ(limit.direction, -1.0);
+  EXPECT_EQ(limit.stiffness, 200.0);
+  // A latch on the translational joint, at the initial angle, or beyond one turn: errors at
+  // the entry with what was expected.
+  text = edited("forces:\n", "forces:\n  lock: {type: latch, joint: rail, angle: 1.5}\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "{type: latch"),
+                       "latch \"lock\": expected a revolute joint, got translational joint \"rail\""));
+  text = edited("forces:\n", "forces:\n  lock: {type: latch, joint: hinge, angle: 0}\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "{type: latch"), "expected an angle within one turn"));
+  text = edited("forces:\n", "forces:\n  lock: {type: stop, joint: hinge, angle: 7}\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "{type: stop"), "expected an angle within one turn"));
+  text = edited("forces:\n", "forces:\n  lock: {type: latch, joint: hinge, angle: 1, stiffness: 0}\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "0}"), "expected a positive number"));
 }
 
 TEST(MechanismReader, ShippedCaseBuildsTheRedundantSliderCrank) {
