@@ -138,8 +138,8 @@ struct ResultsWriter::Impl {
   H5Handle energy_group;
   H5Handle limits_group;
   std::set<std::string> body_names, joint_names, driver_names, energy_names, limit_names;
-  // Per hinge limit: torque and engaged; the event table and its row count.
-  std::vector<std::array<Series, 2>> limit_series;
+  // Per hinge limit: angle, torque and engaged; the event table and its row count.
+  std::vector<std::array<Series, 3>> limit_series;
   H5Handle events_group;
   Series event_time, event_limit, event_engaged, event_angle, event_rate;
   std::int64_t ne = 0;
@@ -376,7 +376,8 @@ int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
   write_string_attribute(group.get(), "joint", limit.joint);
   write_doubles_attribute(group.get(), "angle", &limit.angle, 1);
   m.limit_series.push_back(
-      {m.create_series(group.get(), "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+      {m.create_series(group.get(), "angle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+       m.create_series(group.get(), "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
        m.create_series(group.get(), "engaged", H5T_STD_I8LE, H5T_NATIVE_INT8, 0)});
   // The event table exists in every file with hinge limits, empty until the first switch.
   if (!m.events_group.valid()) {
@@ -441,6 +442,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
   LIMBER_DEMAND(sample.joints.size() == m.joint_series.size());
   LIMBER_DEMAND(sample.driver_efforts.size() == m.driver_series.size());
   LIMBER_DEMAND(sample.energies.size() == m.energy_series.size());
+  LIMBER_DEMAND(sample.hinge_limit_angles.size() == m.limit_series.size());
   LIMBER_DEMAND(sample.hinge_limit_torques.size() == m.limit_series.size());
   LIMBER_DEMAND(sample.hinge_limits_engaged.size() == m.limit_series.size());
 
@@ -482,8 +484,9 @@ void ResultsWriter::append_sample(const Sample& sample) {
     m.append_row(m.energy_series[e], &sample.energies[e]);
   }
   for (std::size_t k = 0; k < m.limit_series.size(); ++k) {
-    m.append_row(m.limit_series[k][0], &sample.hinge_limit_torques[k]);
-    m.append_row(m.limit_series[k][1], &sample.hinge_limits_engaged[k]);
+    m.append_row(m.limit_series[k][0], &sample.hinge_limit_angles[k]);
+    m.append_row(m.limit_series[k][1], &sample.hinge_limit_torques[k]);
+    m.append_row(m.limit_series[k][2], &sample.hinge_limits_engaged[k]);
   }
   m.append_row(m.position_violation, &sample.position_violation);
   m.append_row(m.velocity_violation, &sample.velocity_violation);

@@ -101,8 +101,9 @@ struct Sample {
   double position_violation = 0.0;
   double velocity_violation = 0.0;
   std::int64_t steps = 0;  // cumulative accepted steps
-  // Per hinge latch or stop, in declaration order: its torque on body j about the joint axis
-  // [N m] and whether it is engaged (latch locked, stop in contact).
+  // Per hinge latch or stop, in declaration order: its joint's angle [rad], its torque on body j
+  // about the joint axis [N m] and whether it is engaged (latch locked, stop in contact).
+  std::vector<double> hinge_limit_angles;
   std::vector<double> hinge_limit_torques;
   std::vector<std::int8_t> hinge_limits_engaged;
   // Written only when set_clearance_pairs() was called: the smallest clearance between the

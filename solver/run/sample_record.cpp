@@ -172,13 +172,14 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
 
-  // Hinge latches and stops: torque on body j about the joint axis, and mode.
+  // Hinge latches and stops: joint angle, torque on body j about the joint axis, and mode.
   for (std::size_t k = 0; k < model_.forces.size(); ++k) {
     const auto* limit = std::get_if<multibody::HingeLimit>(&model_.forces[k]);
     if (!limit) continue;
     const bool engaged = k < engaged_.size() && engaged_[k];
     const multibody::RelativeAngle angle =
         multibody::hinge_limit_state(model_, *limit, state, workspace_);
+    out.hinge_limit_angles.push_back(angle.theta);
     out.hinge_limit_torques.push_back(
         multibody::hinge_limit_force(*limit, angle.theta, angle.rate, engaged).torque);
     out.hinge_limits_engaged.push_back(engaged ? 1 : 0);
