@@ -15,7 +15,7 @@
 
 namespace limber::fe::testing {
 
-// Steel of the seed paper's connecting rod (PAPER_EN.md, example 1).
+// Steel of the seed paper's connecting rod (docs/seed-paper.md, example 1).
 inline Material paper_steel() { return {"steel", 206.8e9, 0.3, 7820.0}; }
 
 // The paper's rod section 0.01 m (local y) x 0.02 m (local z).

@@ -45,7 +45,7 @@ inline Chain spring_chain(const std::vector<double>& springs, const std::vector<
   return chain;
 }
 
-// Steel of the seed paper's connecting rod (PAPER_EN.md, example 1).
+// Steel of the seed paper's connecting rod (docs/seed-paper.md, example 1).
 inline fe::Material paper_steel() { return {"steel", 206.8e9, 0.3, 7820.0}; }
 
 // Section 0.01 m (local y) x 0.02 m (local z).

@@ -16,7 +16,7 @@
 
 namespace limber::multibody::testing {
 
-// Steel 0.01 m (local y) x 0.02 m (local z) beams of the seed rod (PAPER_EN.md, example 1).
+// Steel 0.01 m (local y) x 0.02 m (local z) beams of the seed rod (docs/seed-paper.md, example 1).
 inline fe::BeamProperty seed_rod_property() {
   fe::BeamProperty property;
   property.name = "rod";

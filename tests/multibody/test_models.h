@@ -1,5 +1,5 @@
 // Small models shared by the multibody tests: helpers to declare bodies, and the seed
-// paper's slider-crank (PAPER_EN.md, example 1) with a rigid rod.
+// paper's slider-crank (docs/seed-paper.md, example 1) with a rigid rod.
 #pragma once
 
 #include <numbers>
