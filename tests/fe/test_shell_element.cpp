@@ -11,20 +11,22 @@
 #include "fe/shell_element.h"
 #include "fe/shell_frame.h"
 #include "fe_test_support.h"
+#include "shell_test_quads.h"
 
 namespace limber::fe {
 namespace {
 
-using Corners = std::array<Eigen::Vector3d, 4>;
+using testing::Corners;
+using testing::kDistorted;
+using testing::kOffset;
+using testing::kRectangle;
+using testing::kSmallWarp;
+using testing::placed;
+using testing::skew;
+using testing::tilted_rotation;
 using Matrix24x6d = Eigen::Matrix<double, 24, 6>;
 
 ShellProperty steel_shell(double thickness) { return {"panel", testing::paper_steel(), thickness}; }
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& r) {
-  Eigen::Matrix3d s;
-  s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-  return s;
-}
 
 // Rigid-body modes about the global origin: columns are translations along x, y, z and
 // small rotations about x, y, z (u = θ × r, nodal rotation θ).
@@ -37,28 +39,6 @@ Matrix24x6d rigid_modes(const Corners& corners) {
   }
   return psi;
 }
-
-// A rotation with no axis aligned to the global ones, and an offset.
-Eigen::Matrix3d tilted_rotation() {
-  return (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()) *
-          Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
-const Eigen::Vector3d kOffset(0.3, -1.2, 2.5);
-
-Corners placed(const std::array<Eigen::Vector2d, 4>& xy, const std::array<double, 4>& z = {}) {
-  Corners corners;
-  for (int k = 0; k < 4; ++k) {
-    corners[k] = kOffset + tilted_rotation() * Eigen::Vector3d(xy[k].x(), xy[k].y(), z[k]);
-  }
-  return corners;
-}
-
-const std::array<Eigen::Vector2d, 4> kRectangle{
-    {{-0.2, -0.15}, {0.2, -0.15}, {0.2, 0.15}, {-0.2, 0.15}}};
-const std::array<Eigen::Vector2d, 4> kDistorted{{{0.0, 0.0}, {1.1, 0.1}, {1.3, 0.9}, {0.2, 0.7}}};
-// Corner offsets ±0.01 m from the mean plane: warp ratio 0.01 / sqrt(0.795) = 0.011 < 0.05.
-const std::array<double, 4> kSmallWarp{0.01, -0.01, 0.01, -0.01};
 
 // Counts eigenvalues of K below `zero_tolerance` × the largest, and returns the smallest
 // eigenvalue above it relative to the largest.

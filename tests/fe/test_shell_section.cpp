@@ -16,39 +16,21 @@
 #include "fe/mesh_generators.h"
 #include "fe/shell_element.h"
 #include "fe_test_support.h"
+#include "shell_test_quads.h"
 
 namespace limber::fe {
 namespace {
 
-using Corners = std::array<Eigen::Vector3d, 4>;
+using testing::Corners;
+using testing::kDistorted;
+using testing::kOffset;
+using testing::kRectangle;
+using testing::kSmallWarp;
+using testing::placed;
+using testing::skew;
+using testing::tilted_rotation;
 using Vector24d = Eigen::Matrix<double, 24, 1>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& r) {
-  Eigen::Matrix3d s;
-  s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-  return s;
-}
-
-// The tilted placement of test_shell_element.cpp: no axis aligned with the global ones.
-const Eigen::Vector3d kOffset(0.3, -1.2, 2.5);
-Eigen::Matrix3d tilted_rotation() {
-  return (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()) *
-          Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
-Corners placed(const std::array<Eigen::Vector2d, 4>& xy, const std::array<double, 4>& z = {}) {
-  Corners corners;
-  for (int k = 0; k < 4; ++k) {
-    corners[k] = kOffset + tilted_rotation() * Eigen::Vector3d(xy[k].x(), xy[k].y(), z[k]);
-  }
-  return corners;
-}
-
-const std::array<Eigen::Vector2d, 4> kRectangle{
-    {{-0.2, -0.15}, {0.2, -0.15}, {0.2, 0.15}, {-0.2, 0.15}}};
-const std::array<Eigen::Vector2d, 4> kDistorted{{{0.0, 0.0}, {1.1, 0.1}, {1.3, 0.9}, {0.2, 0.7}}};
-const std::array<double, 4> kSmallWarp{0.01, -0.01, 0.01, -0.01};
 
 // Rigid-body modes about the global origin (translations, then small rotations u = θ × r).
 Eigen::Matrix<double, 24, 6> rigid_modes(const Corners& corners) {
