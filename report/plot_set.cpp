@@ -1,6 +1,9 @@
 #include "plot_set.h"
 
+#include "hinge_summary.h"
 #include "html.h"
+
+#include <numbers>
 
 #include <map>
 
@@ -66,6 +69,38 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
                      "Energies and work: kinetic, potential (gravity, spring, strain), dissipated, "
                      "work of drivers and forces.",
                      {"Energy", kTimeLabel, "energy [J]", series_curves(t, run.energies), false}});
+  }
+  if (const std::optional<Series> residual = energy_residual(run)) {
+    plots.push_back({PlotSection::kEnergy, prefix + "energy_balance.png",
+                     "Residual of the energy balance: kinetic + gravity + spring + strain + "
+                     "dissipated − driver work − force work, minus its value at the start "
+                     "(zero when the run conserves energy).",
+                     {"Energy balance residual", kTimeLabel, "residual [J]",
+                      {{residual->name, t, residual->values}}, false}});
+  }
+
+  // Hinge latches and stops: their joints' angles and their torques.
+  std::vector<Curve> angles, torques;
+  for (const HingeLimitTrack& limit : run.hinge_limits) {
+    if (limit.angle.size() != t.size()) continue;
+    angles.push_back({limit.joint + " (" + limit.name + ")", t, limit.angle * (180.0 / std::numbers::pi)});
+    torques.push_back({limit.name, t, limit.torque});
+  }
+  if (!angles.empty()) {
+    plots.push_back({PlotSection::kHinges, prefix + "hinge_angles.png",
+                     "Angle of each joint carrying a latch or stop, from its start to its lock.",
+                     {"Hinge angles", kTimeLabel, "angle [deg]", angles, false}});
+    plots.push_back({PlotSection::kHinges, prefix + "latch_torques.png",
+                     "Torque of each latch or stop on its joint's body j, about the joint axis "
+                     "(zero until it engages).",
+                     {"Latch and stop torques", kTimeLabel, "torque [N m]", torques, false}});
+  }
+  if (run.clearance && run.clearance->values.size() == t.size() && run.clearance->values.allFinite()) {
+    plots.push_back({PlotSection::kClearance, prefix + "clearance.png",
+                     "Smallest distance between the surfaces of any two bodies (shell panels, "
+                     "shapes); below zero one passes through the other.",
+                     {"Clearance between bodies", kTimeLabel, "clearance [m]",
+                      {{"minimum", t, run.clearance->values}}, false}});
   }
 
   // Deflections: the largest elastic displacement of each flexible body, then its modal

@@ -1,6 +1,7 @@
 // Which plots a report holds, built from run data (no drawing here): reactions per joint in the
 // joint frame (seed paper Figs. 4, 5, 9), comparisons of one reaction component over several
-// runs (Figs. 6, 10), driver efforts, energies, deflections, modal coordinates and constraint
+// runs (Figs. 6, 10), driver efforts, energies and the balance's residual, hinge angles and
+// latch torques, clearance between bodies, deflections, modal coordinates and constraint
 // violations versus time.
 #pragma once
 
@@ -12,7 +13,9 @@
 
 namespace limber::report {
 
-enum class PlotSection { kReactions, kDrivers, kEnergy, kDeflection, kViolation, kComparison };
+enum class PlotSection {
+  kReactions, kDrivers, kEnergy, kHinges, kClearance, kDeflection, kViolation, kComparison
+};
 
 struct NamedPlot {
   PlotSection section = PlotSection::kReactions;

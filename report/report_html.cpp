@@ -1,10 +1,12 @@
 #include "report_html.h"
 
+#include "hinge_summary.h"
 #include "html.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numbers>
 
 namespace limber::report {
 namespace {
@@ -195,6 +197,75 @@ std::string mode_images(const RunSection& section) {
   return out + "</div>\n";
 }
 
+// Located latch and stop switches, and the peaks after each latch-up.
+std::string hinge_tables(const RunData& run) {
+  if (run.events.empty()) return "";
+  constexpr double kDegrees = 180.0 / std::numbers::pi;
+  std::string out =
+      "<h4>Events</h4>\n<table><tr><th>time [s]</th><th>limit</th><th>kind</th><th>joint</th>"
+      "<th>what</th><th>angle [deg]</th><th>rate [deg/s]</th></tr>\n";
+  for (const HingeEventRow& e : run.events) {
+    const HingeLimitTrack& limit = run.hinge_limits[static_cast<std::size_t>(e.limit)];
+    const char* what = limit.kind == "latch" ? "locked" : (e.engaged ? "contact begins" : "contact ends");
+    out += fmt::format("<tr><td class=\"number\">{:.6f}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+                       "<td class=\"number\">{:.3f}</td><td class=\"number\">{:.2f}</td></tr>\n",
+                       e.time, html_escape(limit.name), html_escape(limit.kind), html_escape(limit.joint),
+                       what, e.angle * kDegrees, e.rate * kDegrees);
+  }
+  out += "</table>\n";
+  const std::vector<LatchUpPeaks> peaks = latch_up_peaks(run);
+  if (peaks.empty()) return out;
+  out += fmt::format(
+      "<h4>Latch-up peaks</h4>\n<p>Within {:g} s after each latch locked: the largest reaction "
+      "force (magnitude, ground axes) at the latched joint and at any joint, and the largest "
+      "latch torque. Peaks are read at the output samples.</p>\n"
+      "<table><tr><th>latch</th><th>locked at [s]</th><th>joint</th><th>peak |F| [N]</th>"
+      "<th>at [s]</th><th>peak latch torque [N m]</th><th>largest |F| of any joint [N]</th>"
+      "<th>joint</th><th>at [s]</th></tr>\n",
+      kLatchUpWindow);
+  for (const LatchUpPeaks& p : peaks) {
+    const HingeEventRow& e = run.events[static_cast<std::size_t>(p.event)];
+    const HingeLimitTrack& limit = run.hinge_limits[static_cast<std::size_t>(e.limit)];
+    out += fmt::format("<tr><td>{}</td><td class=\"number\">{:.6f}</td><td>{}</td>"
+                       "<td class=\"number\">{}</td><td class=\"number\">{:.4f}</td>"
+                       "<td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td>"
+                       "<td class=\"number\">{:.4f}</td></tr>\n",
+                       html_escape(limit.name), e.time, html_escape(limit.joint), number(p.latched_force),
+                       p.latched_force_time, number(p.latch_torque), number(p.largest_force),
+                       html_escape(p.largest_joint), p.largest_force_time);
+  }
+  return out + "</table>\n";
+}
+
+// The energy balance's worst residual against the largest kinetic energy.
+std::string energy_note(const RunData& run) {
+  const std::optional<Series> residual = energy_residual(run);
+  if (!residual) return "";
+  double kinetic = 0.0;
+  for (const Series& s : run.energies) {
+    if (s.name == "kinetic" && s.values.size() > 0) kinetic = s.values.cwiseAbs().maxCoeff();
+  }
+  const double worst = residual->values.cwiseAbs().maxCoeff();
+  if (kinetic <= 0.0) return fmt::format("<p>Energy balance residual at most {} J.</p>\n", number(worst));
+  return fmt::format("<p>The energy balance closes to {} J, {:.2g} of the peak kinetic energy "
+                     "({} J).</p>\n",
+                     number(worst), worst / kinetic, number(kinetic));
+}
+
+// The smallest clearance over the run, with a warning when bodies interfere.
+std::string clearance_note(const RunData& run) {
+  if (!run.clearance || run.clearance->values.size() == 0) return "";
+  Eigen::Index k = 0;
+  const double minimum = run.clearance->values.minCoeff(&k);
+  const int pair = run.clearance_pair[static_cast<std::size_t>(k)];
+  const std::string pair_name =
+      pair >= 0 && pair < static_cast<int>(run.clearance_pairs.size()) ? run.clearance_pairs[pair] : "?";
+  const std::string text = fmt::format("Smallest clearance over the run: {} m, between {} at t = {:.4f} s.",
+                                       number(minimum), html_escape(pair_name), run.results.time(k));
+  if (minimum < 0.0) return "<div class=\"banner failed\" role=\"alert\">Interference. " + text + "</div>\n";
+  return "<p>" + text + "</p>\n";
+}
+
 // One <h3> subsection when it has content.
 std::string subsection(const RunSection& s, const std::string& id, const std::string& heading,
                        const std::string& body) {
@@ -212,7 +283,9 @@ std::string run_section(const RunSection& s) {
                         mode_tables(run) + notes(run));
   out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
   out += subsection(s, "drivers", "Drivers", plots_of(s, PlotSection::kDrivers));
-  out += subsection(s, "energy", "Energy", plots_of(s, PlotSection::kEnergy));
+  out += subsection(s, "energy", "Energy", energy_note(run) + plots_of(s, PlotSection::kEnergy));
+  out += subsection(s, "hinges", "Hinges and latches", hinge_tables(run) + plots_of(s, PlotSection::kHinges));
+  out += subsection(s, "clearance", "Clearance", clearance_note(run) + plots_of(s, PlotSection::kClearance));
   out += subsection(s, "deflection", "Deflection", plots_of(s, PlotSection::kDeflection));
   out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
   out += subsection(s, "animation", "Animation", media(s));

@@ -183,6 +183,15 @@ void truncate(RunData& run, Eigen::Index n) {
   for (JointReactions& joint : run.joints) {
     joint.force_joint.conservativeResize(n, 3);
     joint.torque_joint.conservativeResize(n, 3);
+    if (joint.force_ground.rows() > n) joint.force_ground.conservativeResize(n, 3);
+  }
+  for (HingeLimitTrack& limit : run.hinge_limits) {
+    limit.angle.conservativeResize(n);
+    limit.torque.conservativeResize(n);
+  }
+  if (run.clearance) {
+    run.clearance->values.conservativeResize(n);
+    run.clearance_pair.resize(static_cast<std::size_t>(n));
   }
   for (Series& s : run.drivers) s.values.conservativeResize(n);
   for (Series& s : run.energies) s.values.conservativeResize(n);
@@ -202,9 +211,15 @@ hsize_t read_series(hid_t file, RunData& run) {
     const std::vector<double> force = read_doubles(file, g + "force_joint", 3, rows);
     const std::vector<double> torque = read_doubles(file, g + "torque_joint", 3, torque_rows);
     if (force.empty()) continue;
-    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3)};
+    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3), {}};
     if (!torque.empty()) reactions.torque_joint = as_rows3(torque, torque_rows);
     ns = std::min({ns, rows, torque.empty() ? rows : torque_rows});
+    hsize_t ground_rows = 0;
+    const std::vector<double> ground = read_doubles(file, g + "force_ground", 3, ground_rows);
+    if (!ground.empty()) {
+      reactions.force_ground = as_rows3(ground, ground_rows);
+      ns = std::min(ns, ground_rows);
+    }
     run.joints.push_back(std::move(reactions));
   }
 
@@ -219,6 +234,50 @@ hsize_t read_series(hid_t file, RunData& run) {
     const std::vector<double> v = read_doubles(file, "/energy/" + energy, 0, rows);
     if (v.empty()) continue;
     run.energies.push_back({energy, as_vector(v)});
+    ns = std::min(ns, rows);
+  }
+
+  // Hinge latches and stops in the model's order, and their events.
+  for (const std::string& name : members(file, "/hinge_limits")) {
+    const std::string g = "/hinge_limits/" + name;
+    hsize_t torque_rows = 0;
+    const std::vector<double> angle = read_doubles(file, g + "/angle", 0, rows);
+    const std::vector<double> torque = read_doubles(file, g + "/torque", 0, torque_rows);
+    if (angle.empty() || torque.empty()) continue;
+    HingeLimitTrack track{name, "", "", 0.0, as_vector(angle), as_vector(torque)};
+    int index = static_cast<int>(run.hinge_limits.size());
+    for (const auto& [key, value] : attributes(file, g, {})) {
+      if (key == "kind") track.kind = value;
+      if (key == "joint") track.joint = value;
+      if (key == "angle") track.limit_angle = std::stod(value);
+      if (key == "index") index = std::stoi(value);
+    }
+    run.hinge_limits.resize(std::max<std::size_t>(run.hinge_limits.size(), index + 1));
+    run.hinge_limits[static_cast<std::size_t>(index)] = std::move(track);
+    ns = std::min({ns, rows, torque_rows});
+  }
+  hsize_t events = 0;
+  const std::vector<double> event_time = read_doubles(file, "/events/time", 0, events);
+  const std::vector<double> event_limit = read_doubles(file, "/events/limit", 0, rows);
+  const std::vector<double> event_engaged = read_doubles(file, "/events/engaged", 0, rows);
+  const std::vector<double> event_angle = read_doubles(file, "/events/angle", 0, rows);
+  const std::vector<double> event_rate = read_doubles(file, "/events/rate", 0, rows);
+  for (std::size_t k = 0; k < event_time.size() && k < event_limit.size() && k < event_engaged.size() &&
+                          k < event_angle.size() && k < event_rate.size();
+       ++k) {
+    const int limit = static_cast<int>(event_limit[k]);
+    if (limit < 0 || limit >= static_cast<int>(run.hinge_limits.size())) continue;
+    run.events.push_back({event_time[k], limit, event_engaged[k] != 0.0, event_angle[k], event_rate[k]});
+  }
+
+  // Clearance between bodies.
+  const std::vector<double> clearance = read_doubles(file, "/clearance/minimum", 0, rows);
+  hsize_t pair_rows = 0;
+  const std::vector<double> pair = read_doubles(file, "/clearance/pair", 0, pair_rows);
+  if (!clearance.empty() && pair_rows == rows) {
+    run.clearance = Series{"clearance", as_vector(clearance)};
+    run.clearance_pairs = read_strings(file, "/clearance/pairs");
+    for (double p : pair) run.clearance_pair.push_back(static_cast<int>(p));
     ns = std::min(ns, rows);
   }
 

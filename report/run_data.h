@@ -23,12 +23,32 @@ struct JointReactions {
   std::string name;
   RowMatrix3d force_joint;   // joint frame [N]
   RowMatrix3d torque_joint;  // joint frame [N m]
+  RowMatrix3d force_ground;  // ground axes [N] (empty when the file has none)
 };
 
 // A named per-sample series (driver effort, energy, violation).
 struct Series {
   std::string name;
   Eigen::VectorXd values;  // ns
+};
+
+// A hinge latch or stop (results.h5 /hinge_limits): its joint's angle, its torque, its mode.
+struct HingeLimitTrack {
+  std::string name;
+  std::string kind;             // "latch" or "stop"
+  std::string joint;
+  double limit_angle = 0.0;     // [rad]
+  Eigen::VectorXd angle;        // ns, joint angle [rad]
+  Eigen::VectorXd torque;       // ns, on body j about the joint axis [N m]
+};
+
+// A located mode switch (results.h5 /events).
+struct HingeEventRow {
+  double time = 0.0;     // [s]
+  int limit = 0;         // index into RunData::hinge_limits
+  bool engaged = false;  // mode after the switch
+  double angle = 0.0;    // [rad]
+  double rate = 0.0;     // [rad/s]
 };
 
 // One row of a flexible body's mode table.
@@ -50,6 +70,11 @@ struct RunData {
   std::vector<JointReactions> joints;   // in the order of results.joints
   std::vector<Series> drivers;          // efforts [N or N m]
   std::vector<Series> energies;         // [J]
+  std::vector<HingeLimitTrack> hinge_limits;  // in the model's order
+  std::vector<HingeEventRow> events;
+  std::optional<Series> clearance;      // smallest clearance between bodies [m]
+  std::vector<std::string> clearance_pairs;  // "body_a, body_b"
+  std::vector<int> clearance_pair;      // ns, index into clearance_pairs (−1: none)
   std::optional<Series> position_violation;
   std::optional<Series> velocity_violation;
   std::optional<std::int64_t> steps;    // cumulative accepted steps at the last sample

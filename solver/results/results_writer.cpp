@@ -375,6 +375,8 @@ int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
   write_string_attribute(group.get(), "kind", limit.kind);
   write_string_attribute(group.get(), "joint", limit.joint);
   write_doubles_attribute(group.get(), "angle", &limit.angle, 1);
+  // Groups list by name; the index keeps the model's order that /events/limit refers to.
+  write_int_attribute(group.get(), "index", static_cast<int>(m.limit_series.size()));
   m.limit_series.push_back(
       {m.create_series(group.get(), "angle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
        m.create_series(group.get(), "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),

@@ -1,0 +1,67 @@
+#include "hinge_summary.h"
+
+#include <cmath>
+
+namespace limber::report {
+namespace {
+
+const Series* find_series(const std::vector<Series>& series, const std::string& name) {
+  for (const Series& s : series) {
+    if (s.name == name) return &s;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<LatchUpPeaks> latch_up_peaks(const RunData& run) {
+  std::vector<LatchUpPeaks> out;
+  const Eigen::VectorXd& t = run.results.time;
+  for (std::size_t e = 0; e < run.events.size(); ++e) {
+    const HingeEventRow& event = run.events[e];
+    const HingeLimitTrack& limit = run.hinge_limits[static_cast<std::size_t>(event.limit)];
+    if (limit.kind != "latch" || !event.engaged) continue;
+    LatchUpPeaks peaks;
+    peaks.event = static_cast<int>(e);
+    for (Eigen::Index k = 0; k < t.size(); ++k) {
+      if (t(k) < event.time || t(k) > event.time + kLatchUpWindow) continue;
+      if (k < limit.torque.size()) peaks.latch_torque = std::max(peaks.latch_torque, std::abs(limit.torque(k)));
+      // Every joint's reaction magnitude; the latched joint's own peak apart.
+      for (const JointReactions& joint : run.joints) {
+        if (k >= joint.force_ground.rows()) continue;
+        const double force = joint.force_ground.row(k).norm();
+        if (joint.name == limit.joint && force > peaks.latched_force) {
+          peaks.latched_force = force;
+          peaks.latched_force_time = t(k);
+        }
+        if (force > peaks.largest_force) {
+          peaks.largest_force = force;
+          peaks.largest_force_time = t(k);
+          peaks.largest_joint = joint.name;
+        }
+      }
+    }
+    out.push_back(peaks);
+  }
+  return out;
+}
+
+std::optional<Series> energy_residual(const RunData& run) {
+  const char* stored[] = {"kinetic", "gravity", "spring", "strain", "dissipated"};
+  const char* work[] = {"driver_work", "force_work"};
+  Eigen::VectorXd balance = Eigen::VectorXd::Zero(run.results.time.size());
+  for (const char* name : stored) {
+    const Series* s = find_series(run.energies, name);
+    if (!s || s->values.size() != balance.size()) return std::nullopt;
+    balance += s->values;
+  }
+  for (const char* name : work) {
+    const Series* s = find_series(run.energies, name);
+    if (!s || s->values.size() != balance.size()) return std::nullopt;
+    balance -= s->values;
+  }
+  if (balance.size() == 0) return std::nullopt;
+  return Series{"balance residual", balance.array() - balance(0)};
+}
+
+}  // namespace limber::report

@@ -1,0 +1,36 @@
+// What a deployment report says about its hinges, computed from run data (no drawing): the
+// peaks at each latch-up (the loads deployment hardware is sized for) and the energy balance's
+// residual.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "run_data.h"
+
+namespace limber::report {
+
+// Seconds after a latch event searched for its peaks.
+inline constexpr double kLatchUpWindow = 0.5;
+
+// The peaks within kLatchUpWindow after one latch locked.
+struct LatchUpPeaks {
+  int event = 0;                    // index into RunData::events
+  double latched_force = 0.0;       // max |reaction| of the latched joint, ground axes [N]
+  double latched_force_time = 0.0;  // [s]
+  double latch_torque = 0.0;        // max |latch torque| [N m]
+  std::string largest_joint;        // the joint with the largest |reaction| in the window
+  double largest_force = 0.0;       // [N]
+  double largest_force_time = 0.0;  // [s]
+};
+
+// One entry per event that locked a latch, in time order. Joints without ground-axes
+// reactions in the file are skipped.
+std::vector<LatchUpPeaks> latch_up_peaks(const RunData& run);
+
+// kinetic + gravity + spring + strain + dissipated − driver_work − force_work minus its value
+// at the first sample [J]: zero when the balance closes. Empty unless every energy is present.
+std::optional<Series> energy_residual(const RunData& run);
+
+}  // namespace limber::report
