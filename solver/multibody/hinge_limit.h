@@ -7,7 +7,6 @@
 // and only then flip State::engaged, so Newton never sees the force law change within a step.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "multibody/constraints.h"
