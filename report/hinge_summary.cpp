@@ -30,6 +30,9 @@ std::vector<LatchUpPeaks> latch_up_peaks(const RunData& run) {
       for (const JointReactions& joint : run.joints) {
         if (k >= joint.force_ground.rows()) continue;
         const double force = joint.force_ground.row(k).norm();
+        if (joint.name == limit.joint) {
+          peaks.latched_force_joint = peaks.latched_force_joint.cwiseMax(joint.force_joint.row(k).transpose().cwiseAbs());
+        }
         if (joint.name == limit.joint && force > peaks.latched_force) {
           peaks.latched_force = force;
           peaks.latched_force_time = t(k);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "run_data.h"
 
 namespace limber::report {
@@ -19,6 +21,7 @@ struct LatchUpPeaks {
   int event = 0;                    // index into RunData::events
   double latched_force = 0.0;       // max |reaction| of the latched joint, ground axes [N]
   double latched_force_time = 0.0;  // [s]
+  Eigen::Vector3d latched_force_joint = Eigen::Vector3d::Zero();  // max |F_x|, |F_y|, |F_z|, joint frame [N]
   double latch_torque = 0.0;        // max |latch torque| [N m]
   std::string largest_joint;        // the joint with the largest |reaction| in the window
   double largest_force = 0.0;       // [N]

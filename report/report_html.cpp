@@ -217,10 +217,12 @@ std::string hinge_tables(const RunData& run) {
   if (peaks.empty()) return out;
   out += fmt::format(
       "<h4>Latch-up peaks</h4>\n<p>Within {:g} s after each latch locked: the largest reaction "
-      "force (magnitude, ground axes) at the latched joint and at any joint, and the largest "
-      "latch torque. Peaks are read at the output samples.</p>\n"
+      "force (magnitude, ground axes) at the latched joint, its largest components in the "
+      "joint frame (on body j), the largest latch torque, and the largest reaction magnitude "
+      "of any joint. Peaks are read at the output samples.</p>\n"
       "<table><tr><th>latch</th><th>locked at [s]</th><th>joint</th><th>peak |F| [N]</th>"
-      "<th>at [s]</th><th>peak latch torque [N m]</th><th>largest |F| of any joint [N]</th>"
+      "<th>at [s]</th><th>peak |F<sub>x</sub>|, |F<sub>y</sub>|, |F<sub>z</sub>| joint frame [N]</th>"
+      "<th>peak latch torque [N m]</th><th>largest |F| of any joint [N]</th>"
       "<th>joint</th><th>at [s]</th></tr>\n",
       kLatchUpWindow);
   for (const LatchUpPeaks& p : peaks) {
@@ -228,10 +230,13 @@ std::string hinge_tables(const RunData& run) {
     const HingeLimitTrack& limit = run.hinge_limits[static_cast<std::size_t>(e.limit)];
     out += fmt::format("<tr><td>{}</td><td class=\"number\">{:.6f}</td><td>{}</td>"
                        "<td class=\"number\">{}</td><td class=\"number\">{:.4f}</td>"
+                       "<td class=\"number\">{}, {}, {}</td>"
                        "<td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td>"
                        "<td class=\"number\">{:.4f}</td></tr>\n",
                        html_escape(limit.name), e.time, html_escape(limit.joint), number(p.latched_force),
-                       p.latched_force_time, number(p.latch_torque), number(p.largest_force),
+                       p.latched_force_time, number(p.latched_force_joint.x()),
+                       number(p.latched_force_joint.y()), number(p.latched_force_joint.z()),
+                       number(p.latch_torque), number(p.largest_force),
                        html_escape(p.largest_joint), p.largest_force_time);
   }
   return out + "</table>\n";

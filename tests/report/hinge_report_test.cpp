@@ -46,6 +46,7 @@ void write_deployment_run(const std::filesystem::path& dir) {
     results::JointSample mount, hinge;
     mount.force_ground = Eigen::Vector3d(30.0, 40.0, 0.0);
     hinge.force_ground = Eigen::Vector3d(0.0, 0.0, -hinge_force(t));
+    hinge.force_joint = Eigen::Vector3d(0.0, -hinge_force(t), 0.0);  // joint y along ground −z
     sample.joints = {mount, hinge};
     // Spring energy turning into kinetic, 1 mJ/s lost to the balance.
     sample.energies = {5.0 * t, 0.0, 10.0 - 5.0 * t, 0.0, 1e-3 * t, 0.0, 0.0};
@@ -82,6 +83,8 @@ TEST(HingeReport, LimitsEventsPeaksAndEnergyResidualAsWritten) {
   EXPECT_NEAR(peaks[0].latched_force, 100.0, 1e-9);
   EXPECT_NEAR(peaks[0].latched_force_time, 0.55, 1e-12);
   EXPECT_NEAR(peaks[0].latch_torque, 10.0, 1e-9);
+  EXPECT_NEAR(peaks[0].latched_force_joint.y(), 100.0, 1e-9);
+  EXPECT_EQ(peaks[0].latched_force_joint.x(), 0.0);
   EXPECT_EQ(peaks[0].largest_joint, "hinge");
 
   // The balance: 10 J stored throughout plus 1e-3 t J dissipated, so the residual is 1e-3 t.
