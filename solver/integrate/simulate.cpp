@@ -12,8 +12,16 @@ namespace limber::integrate {
 
 std::vector<double> uniform_sample_times(double t0, double t_end, double dt) {
   if (!(dt > 0.0)) throw InputError(fmt::format("sample interval: expected > 0, got {}", dt));
-  if (!(t_end >= t0)) {
-    throw InputError(fmt::format("end time: expected ≥ {} (the start), got {}", t0, t_end));
+  if (!(t_end >= t0) || !std::isfinite(t_end)) {
+    throw InputError(fmt::format("end time: expected a finite time ≥ {} (the start), got {}", t0, t_end));
+  }
+  // Every sample is held in memory and written to the results file: bound their number
+  // before the count is cast (an end time of 1e308 s overflowed it and crashed).
+  const double count = std::floor((t_end - t0) / dt);
+  if (!(count <= kMaxSamples)) {
+    throw InputError(fmt::format("number of samples (end time {} s / sample interval {} s): expected "
+                                 "at most {:g}, got {:g}; choose a larger sample interval",
+                                 t_end - t0, dt, kMaxSamples, count));
   }
   // Multiples of dt (no accumulated round-off); a last interval shorter than 1e-9 dt is merged.
   std::vector<double> times;

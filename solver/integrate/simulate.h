@@ -15,8 +15,12 @@ struct SimulationResult {
   double wall_seconds = 0.0;
 };
 
+// Most samples a run may ask for (1e8: 800 MB of times alone).
+inline constexpr double kMaxSamples = 1e8;
+
 // Output times t0, t0 + dt, ..., up to t_end (the last is t_end itself, even when dt does not
-// divide the span). Throws InputError unless dt > 0 and t_end ≥ t0.
+// divide the span). Throws InputError unless dt > 0, t_end ≥ t0 is finite and the samples
+// number at most kMaxSamples.
 std::vector<double> uniform_sample_times(double t0, double t_end, double dt);
 
 // Integrates from `start` with the integrator `options.method` and calls on_sample at each of

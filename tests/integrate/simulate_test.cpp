@@ -36,6 +36,11 @@ TEST(UniformSampleTimes, EndExactlyAtTheEndTime) {
   EXPECT_EQ(tenths.back(), 1.0);
   EXPECT_THROW(uniform_sample_times(0.0, 1.0, 0.0), InputError);
   EXPECT_THROW(uniform_sample_times(1.0, 0.0, 0.1), InputError);
+  // Spans whose sample count would overflow or exhaust memory (a crash before).
+  EXPECT_THROW(uniform_sample_times(0.0, 1e308, 0.1), InputError);
+  EXPECT_THROW(uniform_sample_times(0.0, std::numeric_limits<double>::infinity(), 0.1), InputError);
+  EXPECT_THROW(uniform_sample_times(0.0, 1.0, 1e-300), InputError);
+  EXPECT_THROW(uniform_sample_times(0.0, 1e9, 1.0), InputError);
 }
 
 TEST(Simulate, SamplesDoNotChangeTheSteps) {
