@@ -17,11 +17,34 @@ namespace {
 const std::initializer_list<std::string_view> kCaseSections = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
     "markers", "joints",   "drivers",  "forces",          "assembly", "run"};
+// A case may also name a `base` case whose sections it takes where it has none: a variant
+// (another mode set, other settings) without copying the mechanism.
+const std::initializer_list<std::string_view> kCaseSectionsAndBase = {
+    "base",   "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
+    "markers", "joints", "drivers",  "forces",   "assembly",        "run"};
+
+// A case's `base`: the file (relative to the case's folder) whose sections this case takes
+// where it has none of its own. One level only: a base has no base.
+YamlValue with_base_case(const YamlValue& root, const std::string& file) {
+  const auto base = root.find("base");
+  if (!base) return root;
+  const std::filesystem::path path = std::filesystem::path(file).parent_path() / base->as_string();
+  if (!std::filesystem::is_regular_file(path)) {
+    base->fail("expected a case file for 'base', got '" + base->as_string() + "' (no file " +
+               path.string() + ")");
+  }
+  const YamlValue base_root = YamlDocument::load_file(path.string()).root();
+  if (!base_root.is_map()) base_root.fail("expected a case (a map of sections) as a base");
+  base_root.allow_only(kCaseSections);
+  return root.with_base(base_root);
+}
 
 Case read_case(const YamlDocument& document) {
-  const YamlValue root = document.root();
-  if (root.is_null()) root.fail("expected a case (a map of sections), got an empty file");
-  root.allow_only(kCaseSections);
+  if (document.root().is_null()) {
+    document.root().fail("expected a case (a map of sections), got an empty file");
+  }
+  document.root().allow_only(kCaseSectionsAndBase);
+  const YamlValue root = with_base_case(document.root(), document.file());
 
   Case result;
   result.file = document.file();

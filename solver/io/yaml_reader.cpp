@@ -85,6 +85,12 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
     value.key_mark_ = it->first.Mark();
     result.emplace_back(key, std::move(value));
   }
+  // Then the base's entries this map does not override.
+  if (base_) {
+    for (auto& [key, value] : base_->entries()) {
+      if (seen.insert(key).second) result.emplace_back(key, std::move(value));
+    }
+  }
   return result;
 }
 
@@ -95,9 +101,15 @@ void YamlValue::allow_only(std::initializer_list<std::string_view> allowed) cons
     if (!known) {
       throw InputError(
           "unknown key '" + key + "' in '" + name_ + "'; expected one of: " + join(allowed),
-          location_of(value.key_mark_, *file_));
+          location_of(value.key_mark_, *value.file_));
     }
   }
+}
+
+YamlValue YamlValue::with_base(const YamlValue& base) const {
+  YamlValue layered = *this;
+  layered.base_ = std::make_shared<const YamlValue>(base);
+  return layered;
 }
 
 std::optional<YamlValue> YamlValue::find(std::string_view key) const {

@@ -49,8 +49,12 @@ class YamlValue {
   std::optional<YamlValue> find(std::string_view key) const;
   // Required entry: throws "missing required key 'E' in <name>" at this map.
   YamlValue at(std::string_view key) const;
-  // Entries in file order, with key locations; throws unless this is a map.
+  // Entries in file order, with key locations, then the base's entries whose keys this map
+  // does not hold (with_base); throws unless this is a map.
   std::vector<std::pair<std::string, YamlValue>> entries() const;
+  // This map, with the keys it does not hold taken from `base` (another file's map: each entry
+  // keeps its own file and line in messages). Used for a case's `base:` file.
+  YamlValue with_base(const YamlValue& base) const;
 
   // --- sequences ---
   // Items in order (named "<name>[i]"); throws unless this is a sequence.
@@ -77,6 +81,7 @@ class YamlValue {
   std::shared_ptr<const std::string> file_;
   std::string name_;
   YAML::Mark key_mark_;  // set for map entries: where the key is, used when the value has none
+  std::shared_ptr<const YamlValue> base_;  // keys this map does not hold (with_base)
   friend class YamlDocument;
 };
 

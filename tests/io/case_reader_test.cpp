@@ -4,8 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <string>
 
 #include "input_error_matchers.h"
 
@@ -315,6 +320,64 @@ TEST(CaseReaderErrors, EmptyAndMalformedFiles) {
     EXPECT_EQ(error.where().file, "test.yaml");
     EXPECT_GE(error.where().line, 2);
   }
+}
+
+}  // namespace
+}  // namespace limber::io
+
+namespace limber::io {
+namespace {
+
+// A base case and a variant of it, written to files (a base is found beside its variant).
+class CaseBase : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / ("limber_case_base_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+    write("base.yaml", "title: base\n"
+                       "materials:\n  steel: {E: 2e11, nu: 0.3, rho: 7800}\n"
+                       "sections:\n  bar: {shape: rectangle, width: 0.01, height: 0.02}\n"
+                       "flexible_bodies:\n  rod:\n    beams:\n"
+                       "      - {from: [0, 0, 0], to: [1, 0, 0], elements: 10, section: bar, material: steel,\n"
+                       "         orientation: [0, 1, 0]}\n"
+                       "    modes: {normal: 2}\n");
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(CaseBase, AVariantTakesTheBaseSectionsItDoesNotReplace) {
+  // The variant replaces flexible_bodies (4 modes) and keeps the base's materials and sections.
+  const Case variant = read_case_file(write(
+      "variant.yaml", "base: base.yaml\ntitle: variant\nflexible_bodies:\n  rod:\n    beams:\n"
+                      "      - {from: [0, 0, 0], to: [1, 0, 0], elements: 10, section: bar, material: steel,\n"
+                      "         orientation: [0, 1, 0]}\n    modes: {normal: 4}\n"));
+  EXPECT_EQ(variant.title, "variant");
+  ASSERT_EQ(variant.flexible_bodies.size(), 1u);
+  EXPECT_EQ(variant.flexible_bodies[0].request.normal_count, 4);
+  EXPECT_EQ(variant.flexible_bodies[0].model.beam_properties[0].material.youngs_modulus, 2e11);
+  // Without its own title, the base's.
+  EXPECT_EQ(read_case_file(write("plain.yaml", "base: base.yaml\n")).title, "base");
+}
+
+TEST_F(CaseBase, ErrorsPointIntoTheFileThatHasThem) {
+  // A bad value in the base is reported at the base's line.
+  write("bad_base.yaml", "title: base\nmaterials:\n  steel: {E: -1, nu: 0.3, rho: 7800}\n");
+  const std::string variant = write("v.yaml", "base: bad_base.yaml\n");
+  try {
+    read_case_file(variant);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("bad_base.yaml:3:"), std::string::npos) << error.what();
+  }
+  // A missing base, and a base that has a base itself.
+  EXPECT_THROW(read_case_file(write("missing.yaml", "base: nowhere.yaml\n")), InputError);
+  write("chained.yaml", "base: base.yaml\n");
+  EXPECT_THROW(read_case_file(write("twice.yaml", "base: chained.yaml\n")), InputError);
 }
 
 }  // namespace
