@@ -20,8 +20,8 @@ const std::initializer_list<std::string_view> kCaseSections = {
 // A case may also name a `base` case whose sections it takes where it has none: a variant
 // (another mode set, other settings) without copying the mechanism.
 const std::initializer_list<std::string_view> kCaseSectionsAndBase = {
-    "base",   "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
-    "markers", "joints", "drivers",  "forces",   "assembly",        "run"};
+    "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
+    "markers", "joints",   "drivers",  "forces",          "assembly", "run", "base"};
 
 // A case's `base`: the file (relative to the case's folder) whose sections this case takes
 // where it has none of its own. One level only: a base has no base.
