@@ -55,9 +55,7 @@ void hinge_limit_events(const Model& model, const std::vector<int>& limits, cons
   }
 }
 
-RelativeAngle hinge_limit_state(const Model& model, const HingeLimit& limit, const State& state,
-                                Workspace& ws) {
-  update_marker_kinematics(model, state, Stage::kVelocity, ws);
+RelativeAngle hinge_limit_state(const HingeLimit& limit, const Workspace& ws) {
   RelativeAngle angle =
       relative_angle(ws.markers[limit.marker_i], ws.markers[limit.marker_j], Stage::kVelocity);
   angle.theta = hinge_limit_angle(limit, angle);

@@ -45,8 +45,8 @@ struct HingeEvent {
 void hinge_limit_events(const Model& model, const std::vector<int>& limits, const State& state,
                         Workspace& ws, Eigen::VectorXd& e);
 
-// θ and θ̇ of a limit's joint at `state` (velocity stage; updates ws.markers).
-RelativeAngle hinge_limit_state(const Model& model, const HingeLimit& limit, const State& state,
-                                Workspace& ws);
+// θ (unwrapped) and θ̇ of a limit's joint from ws.markers, which must hold the velocity stage
+// (update_marker_kinematics, constraints.h): one update serves every limit.
+RelativeAngle hinge_limit_state(const HingeLimit& limit, const Workspace& ws);
 
 }  // namespace limber::multibody

@@ -162,7 +162,8 @@ void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q,
   state_.t = t;
   state_.q = q;
   state_.v = v;
-  const RelativeAngle angle = hinge_limit_state(model_, limit, state_, workspace_);
+  update_marker_kinematics(model_, state_, Stage::kVelocity, workspace_);
+  const RelativeAngle angle = hinge_limit_state(limit, workspace_);
   // A latch locks for good; a stop toggles between free and in contact.
   unsigned char& mode = state_.engaged[force];
   mode = limit.kind == HingeLimitKind::kLatch ? 1 : !mode;

@@ -172,13 +172,19 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
 
-  // Hinge latches and stops: joint angle, torque on body j about the joint axis, and mode.
+  // Hinge latches and stops: joint angle, torque on body j about the joint axis, and mode;
+  // one marker update serves them all.
+  const bool has_limits = std::any_of(model_.forces.begin(), model_.forces.end(), [](const auto& f) {
+    return std::holds_alternative<multibody::HingeLimit>(f);
+  });
+  if (has_limits) {
+    multibody::update_marker_kinematics(model_, state, multibody::Stage::kVelocity, workspace_);
+  }
   for (std::size_t k = 0; k < model_.forces.size(); ++k) {
     const auto* limit = std::get_if<multibody::HingeLimit>(&model_.forces[k]);
     if (!limit) continue;
     const bool engaged = k < engaged_.size() && engaged_[k];
-    const multibody::RelativeAngle angle =
-        multibody::hinge_limit_state(model_, *limit, state, workspace_);
+    const multibody::RelativeAngle angle = multibody::hinge_limit_state(*limit, workspace_);
     out.hinge_limit_angles.push_back(angle.theta);
     out.hinge_limit_torques.push_back(
         multibody::hinge_limit_force(*limit, angle.theta, angle.rate, engaged).torque);
