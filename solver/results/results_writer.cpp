@@ -3,6 +3,7 @@
 #include <array>
 
 #include "core/error.h"
+#include "results/directory_lock.h"
 #include "results/h5_handle.h"
 
 #include <algorithm>
@@ -130,6 +131,7 @@ struct Series {
 }  // namespace
 
 struct ResultsWriter::Impl {
+  DirectoryLock lock;  // first member: released after the file is closed
   std::filesystem::path path;
   H5Handle file;
   H5Handle bodies_group;
@@ -236,6 +238,8 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
     throw InputError("cannot create the results directory '" + directory.string() +
                      "': " + error.message());
   }
+  // No other run may be writing here: creating the file truncates it.
+  impl_->lock = DirectoryLock(directory);
   impl_->path = directory / kResultsFileName;
 
   // Create the file in the 1.8-compatible format: no "open for writing" flag survives a crash.

@@ -133,8 +133,9 @@ enum class RunStatus { kOk, kFailed };
 
 class ResultsWriter {
  public:
-  // Creates directory/results.h5 (the directory too, if missing), replacing an existing file.
-  // Throws InputError when the file cannot be created (message names the path).
+  // Creates directory/results.h5 (the directory too, if missing), replacing an existing file,
+  // and holds the directory's lock (directory_lock.h) until destroyed. Throws InputError when
+  // another run is writing there or the file cannot be created (message names the path).
   ResultsWriter(const std::filesystem::path& directory, const std::string& title,
                 const std::string& case_file);
   ~ResultsWriter();

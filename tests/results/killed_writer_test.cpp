@@ -1,6 +1,9 @@
 // A run killed by SIGKILL leaves a results file that opens, with every per-sample dataset at the
-// same row count and at least every sample the writer had reported as appended.
+// same row count and at least every sample the writer had reported as appended. A second run
+// into a directory a live run writes is refused and leaves the live file intact.
 #include "results/results_writer.h"
+
+#include "core/error.h"
 
 #include "h5_test_read.h"
 
@@ -99,6 +102,40 @@ TEST(KilledWriter, FileOpensWithEveryReportedSample) {
   }
   EXPECT_EQ(testing::read_string_attribute(file, "/", "status"), "running");
   H5Fclose(file);
+}
+
+TEST(KilledWriter, ASecondRunIntoALiveDirectoryIsRefusedAndTruncatesNothing) {
+  const auto dir = std::filesystem::temp_directory_path() / "limber_results_locked";
+  std::filesystem::remove_all(dir);
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(fds[0]);
+    write_forever(dir, fds[1]);
+  }
+  close(fds[1]);
+  std::int64_t reported = 0;
+  while (reported < 5 && read(fds[0], &reported, sizeof reported) == sizeof reported) {
+  }
+  // The live run holds the directory: a second writer is refused, naming it.
+  const auto size_before = std::filesystem::file_size(dir / "results.h5");
+  try {
+    ResultsWriter second(dir, "second", "none");
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(dir.string()), std::string::npos) << error.what();
+  }
+  // ... and the live file was not truncated (before the lock, HDF5's create emptied it; the
+  // file cannot be opened here while HDF5's own lock is held by the live run).
+  EXPECT_GE(std::filesystem::file_size(dir / "results.h5"), size_before);
+  // Once that run is gone, killed or not, the directory is free.
+  ASSERT_EQ(kill(child, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  close(fds[0]);
+  EXPECT_NO_THROW(ResultsWriter(dir, "after", "none"));
 }
 
 }  // namespace
