@@ -13,6 +13,7 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 1;   // bad case file or command line (InputError)
 inline constexpr int kExitNumerical = 2;  // a numerical method failed (e.g. eigen-solver)
 inline constexpr int kExitInternal = 3;   // unexpected error: a bug, please report
+inline constexpr int kExitInterrupted = 4;  // stopped by SIGINT or SIGTERM, files closed
 
 struct Command {
   CLI::App* cli = nullptr;   // the sub-command, parsed by main

@@ -14,6 +14,7 @@
 #include "app/command.h"
 #include "app/json_text.h"
 #include "app/run_progress.h"
+#include "app/stop_signal.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "results/results_writer.h"
@@ -162,6 +163,9 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       json_clearance(summary.clearance), json_string(results_path));
 }
 
+// Thrown from the sample hook when a stop signal arrived: leaves the integration between samples.
+struct RunInterrupted {};
+
 int run_case(const RunOptions& options) {
   const io::Case input = io::read_case_file(options.case_file);
   if (!input.mechanism) {
@@ -196,8 +200,12 @@ int run_case(const RunOptions& options) {
     std::fflush(text);
     progress.emplace(settings.t_end, true);
   };
+  const StopSignals stop_signals;
+  double t_written = 0.0;
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
     if (progress) progress->update(sample.t, sample.statistics.steps);
+    t_written = sample.t;
+    if (StopSignals::received() != 0) throw RunInterrupted{};
   };
   hooks.on_warning = [&](const std::string& warning) {
     if (progress) progress->clear();
@@ -207,8 +215,23 @@ int run_case(const RunOptions& options) {
     if (progress) progress->clear();
     fmt::print(text, "event: {}\n", describe_event(model, event));
   };
-  const run::RunSummary summary =
-      run::run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  // A signal or an error mid-run still closes the file, as "interrupted" or "failed".
+  run::RunSummary summary;
+  try {
+    summary = run::run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  } catch (const RunInterrupted&) {
+    progress.reset();
+    const std::string message =
+        fmt::format("interrupted by signal {} after t = {:g} s", StopSignals::received(), t_written);
+    writer.finish(results::RunStatus::kInterrupted, message);
+    fmt::print(stderr, "limber: {} ({} samples kept in {})\n", message, writer.sample_count(),
+               results_path);
+    return kExitInterrupted;
+  } catch (const std::exception& error) {
+    progress.reset();
+    writer.finish(results::RunStatus::kFailed, error.what());
+    throw;
+  }
   progress.reset();
 
   // Summary, JSON, and the failure (exit code 2) if any.
@@ -250,7 +273,9 @@ Command add_run_command(CLI::App& app) {
       "from the case's 'run' section (docs/case-format.md); the options below override them.\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
       "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
-      "are kept and the file's status is \"failed\"), 3 internal error.");
+      "are kept and the file's status is \"failed\"), 3 internal error, 4 interrupted by SIGINT or\n"
+      "SIGTERM (the run stops at its next sample and closes the file as \"interrupted\"; a second\n"
+      "signal ends it at once).");
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>)");

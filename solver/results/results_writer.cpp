@@ -512,7 +512,9 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();
-  write_string_attribute(root, "status", status == RunStatus::kOk ? "ok" : "failed");
+  write_string_attribute(root, "status", status == RunStatus::kOk       ? "ok"
+                                         : status == RunStatus::kFailed ? "failed"
+                                                                        : "interrupted");
   write_string_attribute(root, "message", message);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 

@@ -129,7 +129,8 @@ struct HingeEventRecord {
   double rate = 0.0;   // joint angular rate at the switch [rad/s]
 };
 
-enum class RunStatus { kOk, kFailed };
+// How a run ended: finished, failed (numerically or on an error), or stopped by a signal.
+enum class RunStatus { kOk, kFailed, kInterrupted };
 
 class ResultsWriter {
  public:
@@ -170,7 +171,8 @@ class ResultsWriter {
   // Appends one row to /events and flushes (at any time before finish()).
   void append_event(const HingeEventRecord& event);
 
-  // Sets the root attributes status ("ok" / "failed") and message, flushes and closes the file.
+  // Sets the root attributes status ("ok" / "failed" / "interrupted") and message, flushes and
+  // closes the file.
   void finish(RunStatus status, const std::string& message = "");
 
   std::int64_t sample_count() const;

@@ -229,3 +229,24 @@ TEST(RunCli, FailedRunExitsWithTwoAndKeepsAReadableFile) {
 
 }  // namespace
 }  // namespace limber
+
+namespace limber {
+namespace {
+
+TEST(RunCli, SigtermClosesTheFileAsInterrupted) {
+  // The deployment runs 6-10 s after a ~1 s start; SIGTERM 3 s in lands mid-run.
+  const auto dir = test::fresh_directory("sigterm");
+  const test::CommandRun run = test::run_command(
+      "timeout", "--preserve-status -s TERM 3 " + std::string(LIMBER_EXE) + " run " +
+                     std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml -o " + dir.string());
+  EXPECT_EQ(run.exit_code, 4) << run.err;
+  EXPECT_NE(run.err.find("interrupted by signal 15"), std::string::npos) << run.err;
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "interrupted");
+  EXPECT_GT(dataset_dims(file, "/time").at(0), 0u);
+  H5Fclose(file);
+}
+
+}  // namespace
+}  // namespace limber
