@@ -51,34 +51,50 @@ namespace {
   }
 }
 
-TEST(KilledWriter, FileOpensWithEveryReportedSample) {
-  const auto dir = std::filesystem::temp_directory_path() / "limber_results_killed";
-  std::filesystem::remove_all(dir);
-
-  // Child: writes forever; parent: waits for 20 reported samples, then kills at a random moment.
+// A child process running write_forever into `dir`, and the parent's end of its report pipe.
+struct WriterProcess {
+  pid_t pid = -1;
+  int reports = -1;
+};
+WriterProcess start_writer(const std::filesystem::path& dir) {
   int fds[2];
-  ASSERT_EQ(pipe(fds), 0);
+  LIMBER_DEMAND(pipe(fds) == 0);
   const pid_t child = fork();
-  ASSERT_GE(child, 0);
+  LIMBER_DEMAND(child >= 0);
   if (child == 0) {
     close(fds[0]);
     write_forever(dir, fds[1]);
   }
   close(fds[1]);
+  return {child, fds[0]};
+}
+
+// Blocks until the writer reported at least `count` samples; returns the last count read.
+std::int64_t wait_for_samples(const WriterProcess& writer, std::int64_t count) {
   std::int64_t reported = 0;
-  while (reported < 20 && read(fds[0], &reported, sizeof reported) == sizeof reported) {
+  while (reported < count && read(writer.reports, &reported, sizeof reported) == sizeof reported) {
   }
+  return reported;
+}
+
+TEST(KilledWriter, FileOpensWithEveryReportedSample) {
+  const auto dir = std::filesystem::temp_directory_path() / ("limber_results_killed_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+
+  // Child: writes forever; parent: waits for 20 reported samples, then kills at a random moment.
+  const WriterProcess writer = start_writer(dir);
+  std::int64_t reported = wait_for_samples(writer, 20);
   std::mt19937 random(std::random_device{}());
   std::this_thread::sleep_for(
       std::chrono::microseconds(std::uniform_int_distribution<int>(0, 3000)(random)));
-  ASSERT_EQ(kill(child, SIGKILL), 0);
+  ASSERT_EQ(kill(writer.pid, SIGKILL), 0);
   int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_EQ(waitpid(writer.pid, &status, 0), writer.pid);
   ASSERT_TRUE(WIFSIGNALED(status));
   // Drain reports written before the kill.
   std::int64_t k = 0;
-  while (read(fds[0], &k, sizeof k) == sizeof k) reported = k;
-  close(fds[0]);
+  while (read(writer.reports, &k, sizeof k) == sizeof k) reported = k;
+  close(writer.reports);
   ASSERT_GE(reported, 20);
 
   // The file opens without h5clear and every per-sample dataset has the same rows.
@@ -105,20 +121,10 @@ TEST(KilledWriter, FileOpensWithEveryReportedSample) {
 }
 
 TEST(KilledWriter, ASecondRunIntoALiveDirectoryIsRefusedAndTruncatesNothing) {
-  const auto dir = std::filesystem::temp_directory_path() / "limber_results_locked";
+  const auto dir = std::filesystem::temp_directory_path() / ("limber_results_locked_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
-  int fds[2];
-  ASSERT_EQ(pipe(fds), 0);
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    close(fds[0]);
-    write_forever(dir, fds[1]);
-  }
-  close(fds[1]);
-  std::int64_t reported = 0;
-  while (reported < 5 && read(fds[0], &reported, sizeof reported) == sizeof reported) {
-  }
+  const WriterProcess writer = start_writer(dir);
+  wait_for_samples(writer, 5);
   // The live run holds the directory: a second writer is refused, naming it.
   const auto size_before = std::filesystem::file_size(dir / "results.h5");
   try {
@@ -131,10 +137,10 @@ TEST(KilledWriter, ASecondRunIntoALiveDirectoryIsRefusedAndTruncatesNothing) {
   // file cannot be opened here while HDF5's own lock is held by the live run).
   EXPECT_GE(std::filesystem::file_size(dir / "results.h5"), size_before);
   // Once that run is gone, killed or not, the directory is free.
-  ASSERT_EQ(kill(child, SIGKILL), 0);
+  ASSERT_EQ(kill(writer.pid, SIGKILL), 0);
   int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  close(fds[0]);
+  ASSERT_EQ(waitpid(writer.pid, &status, 0), writer.pid);
+  close(writer.reports);
   EXPECT_NO_THROW(ResultsWriter(dir, "after", "none"));
 }
 
