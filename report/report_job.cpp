@@ -40,7 +40,12 @@ ReportSummary generate_report(const ReportOptions& options) {
   const std::filesystem::path out =
       options.output.empty() ? options.directories.front() / "report" : options.output;
   const std::filesystem::path images = out / kImageFolder;
-  std::filesystem::create_directories(images);
+  std::error_code error;
+  std::filesystem::create_directories(images, error);
+  if (error) {
+    throw InputError("expected a report folder that can be created, got '" + out.string() + "' (" +
+                     error.message() + ")");
+  }
 
   ReportContent content;
   content.title = !options.title.empty() ? options.title

@@ -27,7 +27,8 @@ struct ReportSummary {
 };
 
 // Writes the report. Throws InputError (expected/got, naming the file) when no directory is
-// given or one has no readable results.h5 — before anything is written; std::runtime_error when
+// given or one has no readable results.h5 — before anything is written — or when the report
+// folder cannot be created (e.g. it names an existing file); std::runtime_error when
 // the offscreen context cannot be created or a file cannot be written.
 ReportSummary generate_report(const ReportOptions& options);
 

@@ -45,7 +45,13 @@ Eigen::VectorXd read_vector(const YamlValue& value, Eigen::Index n) {
 
 multibody::ModalDamping read_damping(const YamlValue& value, Eigen::Index modes) {
   if (value.is_scalar()) return multibody::ModalDamping::ratio(value.as_non_negative());
-  if (value.is_sequence()) return multibody::ModalDamping::per_mode(read_vector(value, modes));
+  if (value.is_sequence()) {
+    // Each ratio checked where it stands in the file.
+    const Eigen::VectorXd ratios = read_vector(value, modes);
+    const std::vector<YamlValue> items = value.items();
+    for (const YamlValue& item : items) item.as_non_negative();
+    return multibody::ModalDamping::per_mode(ratios);
+  }
   value.allow_only({"rayleigh"});
   const YamlValue rayleigh = value.at("rayleigh");
   const std::vector<YamlValue> items = rayleigh.items();

@@ -51,9 +51,16 @@ void check_damping(const std::string& name, const ModalDamping& damping, Eigen::
                                  damping.alpha, damping.beta), where);
   }
   const Eigen::Index n = damping.ratios.size();
-  if ((n != 1 && n != nm) || (damping.ratios.array() < 0.0).any() || !damping.ratios.allFinite()) {
-    throw InputError(fmt::format("flexible body \"{}\" damping ratios: expected 1 or {} values ≥ 0, got {} values",
+  if (n != 1 && n != nm) {
+    throw InputError(fmt::format("flexible body \"{}\" damping ratios: expected 1 or {} values, got {} values",
                                  name, nm, n), where);
+  }
+  // Name the first bad ratio: a long list with one sign slip is otherwise a hunt.
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!(damping.ratios(i) >= 0.0) || !std::isfinite(damping.ratios(i))) {
+      throw InputError(fmt::format("flexible body \"{}\" damping ratio of mode {}: expected a finite "
+                                   "value ≥ 0, got {}", name, i + 1, damping.ratios(i)), where);
+    }
   }
 }
 

@@ -100,6 +100,9 @@ TEST(FlexibleMechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // Damping ratios: one per mode.
   text = edited("[0.01, 0.02, 0.03]", "[0.01, 0.02]");
   EXPECT_TRUE(fails_at(text, location_of(text, "[0.01, 0.02]"), "expected 3 values (one per mode)"));
+  // ... each ≥ 0, the bad one named at its place.
+  text = edited("[0.01, 0.02, 0.03]", "[0.01, -0.02, 0.03]");
+  EXPECT_TRUE(fails_at(text, location_of(text, "-0.02"), "expected a non-negative number for 'damping[1]'"));
   // A rigid-body key on a flexible body.
   text = edited("    damping: [", "    mass: 2\n    damping: [");
   EXPECT_TRUE(fails_at(text, location_of(text, "mass: 2"), "unknown key 'mass'"));

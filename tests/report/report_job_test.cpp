@@ -277,6 +277,23 @@ TEST_F(ReportJobTest, DirectoryWithoutResultsIsAnInputErrorAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir / "report"));
 }
 
+TEST_F(ReportJobTest, OutputNamingAnExistingFileIsAnInputError) {
+  // `limber report DIR -o FILE` was an internal error (exit 3); the file stays as it was.
+  const auto dir = testing::fresh_directory("output_file");
+  write_reaction_run(dir, ReactionRun{});
+  const auto file = dir / "not_a_folder";
+  std::ofstream(file) << "keep";
+  ReportOptions options = options_for({dir});
+  options.output = file;
+  try {
+    generate_report(options);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(testing::read_text(file), "keep");
+}
+
 TEST_F(ReportJobTest, CommandParsesDirectoriesOutputAndTitle) {
   const auto dir = testing::fresh_directory("command");
   ReactionRun run;
