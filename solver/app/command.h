@@ -23,6 +23,9 @@ struct Command {
 // `limber modes CASE [-o DIR] [--json] [--vtu-format ascii|binary]`.
 Command add_modes_command(CLI::App& app);
 
+// `limber select CASE [-o DIR] [--keep F] [--target E] [--json] ...` (select_command.cpp).
+Command add_select_command(CLI::App& app);
+
 // `limber run CASE [-o DIR] [--integrator ida|galpha] [--rtol R] [--atol A] [--step H]
 // [--t-end T] [--json]`.
 Command add_run_command(CLI::App& app);

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {
       add_modes_command(app),
       add_run_command(app),
+      add_select_command(app),
       from_foreign(limber::render::add_render_command(app)),
       from_foreign(limber::report::add_report_command(app)),
   };

@@ -14,6 +14,7 @@
 #include "app/command.h"
 #include "app/json_text.h"
 #include "app/run_progress.h"
+#include "app/settings_overrides.h"
 #include "app/stop_signal.h"
 #include "core/error.h"
 #include "io/case_reader.h"
@@ -27,22 +28,9 @@ namespace {
 struct RunOptions {
   std::string case_file;
   std::string output_dir;
-  std::string integrator;  // "" = the case's
-  std::optional<double> rtol, atol, step, t_end;
+  SettingsOverrides overrides;
   bool json = false;
 };
-
-// The case's run settings with the command-line overrides.
-io::RunSettings settings_with_overrides(io::RunSettings settings, const RunOptions& options) {
-  integrate::IntegratorOptions& integrator = settings.integrator;
-  if (options.integrator == "ida") integrator.method = integrate::Method::kIda;
-  if (options.integrator == "galpha") integrator.method = integrate::Method::kGeneralizedAlpha;
-  if (options.rtol) integrator.rtol = *options.rtol;
-  if (options.atol) integrator.atol = *options.atol;
-  if (options.step) integrator.step = *options.step;
-  if (options.t_end) settings.t_end = *options.t_end;
-  return settings;
-}
 
 std::string describe_integrator(const integrate::IntegratorOptions& options) {
   if (options.method == integrate::Method::kIda) {
@@ -173,7 +161,7 @@ int run_case(const RunOptions& options) {
                      SourceLocation{options.case_file, 0, 0});
   }
   const multibody::Model& model = input.mechanism->model;
-  const io::RunSettings settings = settings_with_overrides(input.mechanism->run, options);
+  const io::RunSettings settings = options.overrides.apply(input.mechanism->run);
   run::check_settings(settings);
 
   // Human-readable text on stdout, or on stderr when stdout carries JSON.
@@ -279,13 +267,7 @@ Command add_run_command(CLI::App& app) {
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>)");
-  cli->add_option("--integrator", options->integrator,
-                  "ida (variable-step BDF, error control) or galpha (fixed-step generalized-alpha)")
-      ->check(CLI::IsMember({"ida", "galpha"}));
-  cli->add_option("--rtol", options->rtol, "IDA relative tolerance (> 0)");
-  cli->add_option("--atol", options->atol, "IDA absolute tolerance (> 0)");
-  cli->add_option("--step", options->step, "generalized-alpha step [s] (> 0)");
-  cli->add_option("--t-end", options->t_end, "End time [s] (>= 0)");
+  options->overrides.add_options(*cli);
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"message\", \"integrator\", "
                 "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", \"newton_failures\", "

@@ -13,6 +13,7 @@
 // including the errors raised by fe::FeModelBuilder, which receives those locations.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,7 +35,12 @@ struct FlexibleBodyCase {
   modal::ModeRequest request;  // node indices refer to `model`
   // Computed while reading a mechanism that uses this body (flexible_body_modes.h), else null.
   std::shared_ptr<const modal::ModalResult> modes;
+  double reduction_seconds = 0.0;  // wall time of that computation [s]
 };
+
+// Mode requests that replace those of the case file, by `flexible_bodies` entry name: how
+// `limber select` runs one mechanism with several mode sets (the FE models stay as read).
+using ModeOverrides = std::map<std::string, modal::ModeRequest>;
 
 struct Case {
   std::string file;  // path as given
@@ -43,10 +49,13 @@ struct Case {
   std::optional<MechanismCase> mechanism;         // when the case has mechanism sections
 };
 
-// Reads and checks the case file at `path`. Throws InputError (with location).
-Case read_case_file(const std::string& path);
+// Reads and checks the case file at `path`; `overrides` replace the mode requests of the
+// bodies they name before any mode is computed. Throws InputError (with location), also when an
+// override names no entry of `flexible_bodies`.
+Case read_case_file(const std::string& path, const ModeOverrides& overrides = {});
 
 // Same from text; `file` names the text in messages (tests, stdin).
-Case read_case_text(const std::string& text, const std::string& file);
+Case read_case_text(const std::string& text, const std::string& file,
+                    const ModeOverrides& overrides = {});
 
 }  // namespace limber::io

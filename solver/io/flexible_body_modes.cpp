@@ -1,5 +1,6 @@
 #include "io/flexible_body_modes.h"
 
+#include <chrono>
 #include <memory>
 
 #include "core/error.h"
@@ -16,7 +17,12 @@ modal::ModalResult compute_body_modes(const FlexibleBodyCase& body) {
 }
 
 const modal::ModeSet& body_mode_set(FlexibleBodyCase& body) {
-  if (!body.modes) body.modes = std::make_shared<const modal::ModalResult>(compute_body_modes(body));
+  if (!body.modes) {
+    const auto start = std::chrono::steady_clock::now();
+    body.modes = std::make_shared<const modal::ModalResult>(compute_body_modes(body));
+    body.reduction_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   if (body.modes->status != modal::ModalStatus::kOk) {
     throw NumericalError("modes of flexible body '" + body.name + "' (" +
                          body.modes_where.to_string() + "): " +

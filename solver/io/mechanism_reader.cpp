@@ -332,6 +332,7 @@ MechanismCase read_mechanism(const YamlValue& root, std::vector<FlexibleBodyCase
   // Frozen model, then what to do with it.
   MechanismCase result;
   result.model = builder.build();
+  for (const auto& [name, body] : flexible) result.flexible_components[name] = body.component->name;
   if (const auto assembly = root.find("assembly")) {
     result.assembly = read_assembly(*assembly, result.model);
   }

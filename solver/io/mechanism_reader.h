@@ -16,6 +16,8 @@
 #pragma once
 
 #include <initializer_list>
+#include <map>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +37,9 @@ struct RunSettings {
 
 struct MechanismCase {
   multibody::Model model;
+  // Each flexible body of the model -> the `flexible_bodies` entry it uses (several bodies may
+  // share one entry, and with it one mode set).
+  std::map<std::string, std::string> flexible_components;
   multibody::AssemblyOptions assembly;
   RunSettings run;
 };

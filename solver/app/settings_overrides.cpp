@@ -1,0 +1,26 @@
+#include "app/settings_overrides.h"
+
+namespace limber::app {
+
+void SettingsOverrides::add_options(CLI::App& command) {
+  command.add_option("--integrator", integrator,
+                     "ida (variable-step BDF, error control) or galpha (fixed-step generalized-alpha)")
+      ->check(CLI::IsMember({"ida", "galpha"}));
+  command.add_option("--rtol", rtol, "IDA relative tolerance (> 0)");
+  command.add_option("--atol", atol, "IDA absolute tolerance (> 0)");
+  command.add_option("--step", step, "generalized-alpha step [s] (> 0)");
+  command.add_option("--t-end", t_end, "End time [s] (>= 0)");
+}
+
+io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
+  integrate::IntegratorOptions& options = settings.integrator;
+  if (integrator == "ida") options.method = integrate::Method::kIda;
+  if (integrator == "galpha") options.method = integrate::Method::kGeneralizedAlpha;
+  if (rtol) options.rtol = *rtol;
+  if (atol) options.atol = *atol;
+  if (step) options.step = *step;
+  if (t_end) settings.t_end = *t_end;
+  return settings;
+}
+
+}  // namespace limber::app

@@ -1,0 +1,176 @@
+#include "select/selection_study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "results/results_writer.h"
+
+namespace limber::select {
+
+namespace {
+
+constexpr const char* kAxisNames = "xyz";
+
+// Bodies (model indices) with a deflection probe, in model order.
+std::vector<int> probed_bodies(const multibody::Model& model) {
+  std::vector<int> bodies;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const multibody::Body& body = model.bodies[b];
+    if (body.flexible && body.flexible->deflection_probe) bodies.push_back(static_cast<int>(b));
+  }
+  return bodies;
+}
+
+// Rows of `rows` (each a vector of equal length) as a matrix.
+Eigen::MatrixXd stack(const std::vector<Eigen::VectorXd>& rows, Eigen::Index columns) {
+  Eigen::MatrixXd matrix(static_cast<Eigen::Index>(rows.size()), columns);
+  for (std::size_t r = 0; r < rows.size(); ++r) matrix.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
+  return matrix;
+}
+
+}  // namespace
+
+CandidateRun run_candidate(const std::string& case_file, const ModeSetCandidate& candidate,
+                           const SettingsAdjustment& adjust, const std::filesystem::path& directory,
+                           const std::function<void(const integrate::Sample&)>& on_sample) {
+  CandidateRun result;
+  result.candidate = candidate;
+  result.directory = directory;
+  auto input = std::make_shared<io::Case>(io::read_case_file(case_file, candidate.requests));
+  if (!input->mechanism) {
+    throw InputError("expected a mechanism (a 'bodies' section), got none", SourceLocation{case_file, 0, 0});
+  }
+  result.input = input;
+  for (const io::FlexibleBodyCase& body : input->flexible_bodies) {
+    if (!body.modes) continue;
+    result.reduction_seconds += body.reduction_seconds;
+    for (const std::string& notice : body.modes->notices) result.notices.push_back(body.name + ": " + notice);
+  }
+  const multibody::Model& model = input->mechanism->model;
+  for (const multibody::Body& body : model.bodies) {
+    if (body.flexible) result.modes += static_cast<int>(body.flexible->shapes.cols());
+  }
+  const io::RunSettings settings = adjust ? adjust(input->mechanism->run) : input->mechanism->run;
+  run::check_settings(settings);
+
+  // Every sample's reactions on the flexible bodies and deflections, kept in memory.
+  const std::vector<JointOnFlexibleBody> sites = joints_on_flexible_bodies(model);
+  const std::vector<int> probed = probed_bodies(model);
+  result.indeterminate.assign(sites.size(), false);
+  std::vector<double> times;
+  std::vector<Eigen::VectorXd> reactions, deflections;
+  results::ResultsWriter writer(directory, input->title + " [" + candidate.name + "]", input->file);
+  run::RunHooks hooks;
+  hooks.writer = &writer;
+  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
+    times.push_back(record.time);
+    Eigen::VectorXd r(6 * static_cast<Eigen::Index>(sites.size()));
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+      r.segment<6>(6 * static_cast<Eigen::Index>(s)) = reaction_on_body(sites[s], record);
+      if (record.joints[static_cast<std::size_t>(sites[s].joint)].indeterminate) result.indeterminate[s] = true;
+    }
+    reactions.push_back(r);
+    Eigen::VectorXd d(3 * static_cast<Eigen::Index>(probed.size()));
+    for (std::size_t p = 0; p < probed.size(); ++p) {
+      d.segment<3>(3 * static_cast<Eigen::Index>(p)) =
+          record.bodies[static_cast<std::size_t>(probed[p] - 1)].deflection;
+    }
+    deflections.push_back(d);
+    if (on_sample) on_sample(sample);
+  };
+  try {
+    result.summary = run::run_mechanism(model, input->mechanism->assembly, settings, hooks);
+  } catch (const SelectionInterrupted&) {
+    writer.finish(results::RunStatus::kInterrupted, "selection interrupted by a signal");
+    throw;
+  } catch (const std::exception& error) {
+    writer.finish(results::RunStatus::kFailed, error.what());
+    throw;
+  }
+  result.time = Eigen::Map<const Eigen::VectorXd>(times.data(), static_cast<Eigen::Index>(times.size()));
+  result.reactions = stack(reactions, 6 * static_cast<Eigen::Index>(sites.size()));
+  result.deflections = stack(deflections, 3 * static_cast<Eigen::Index>(probed.size()));
+  return result;
+}
+
+std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& ranking,
+                                        const CandidateRun& reference) {
+  std::vector<KeyQuantity> keys;
+  for (const RankedComponent& component : ranking) {
+    if (component.kept) keys.push_back({component.description(), false, 6 * component.site_index + component.column()});
+  }
+  const multibody::Model& model = reference.input->mechanism->model;
+  const std::vector<int> probed = probed_bodies(model);
+  for (std::size_t p = 0; p < probed.size(); ++p) {
+    const auto columns = reference.deflections.middleCols(3 * static_cast<Eigen::Index>(p), 3);
+    if (columns.rows() == 0) continue;
+    const Eigen::Vector3d peaks = columns.cwiseAbs().colwise().maxCoeff().transpose();
+    for (int axis = 0; axis < 3; ++axis) {
+      if (peaks(axis) > 0.0 && peaks(axis) >= 0.01 * peaks.maxCoeff()) {
+        keys.push_back({fmt::format("{} deflection {} [m]", model.bodies[static_cast<std::size_t>(probed[p])].name,
+                                    kAxisNames[axis]),
+                        true, 3 * static_cast<int>(p) + axis});
+      }
+    }
+  }
+  return keys;
+}
+
+Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity) {
+  return quantity.deflection ? Eigen::VectorXd(run.deflections.col(quantity.column))
+                             : Eigen::VectorXd(run.reactions.col(quantity.column));
+}
+
+void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity>& keys) {
+  const auto reference = std::find_if(runs.begin(), runs.end(),
+                                      [](const CandidateRun& r) { return r.candidate.reference; });
+  if (reference == runs.end() || !reference->ok()) return;
+  for (CandidateRun& run : runs) {
+    if (run.candidate.reference || !run.ok()) continue;
+    // The same sample times: both runs share the case's settings.
+    const Eigen::Index n = std::min(run.time.size(), reference->time.size());
+    if (n == 0) continue;
+    run.error_peak = run.error_rms = 0.0;
+    double worst = -1.0;
+    for (const KeyQuantity& key : keys) {
+      const Eigen::VectorXd x = key_series(run, key).head(n);
+      const Eigen::VectorXd x_ref = key_series(*reference, key).head(n);
+      const Eigen::VectorXd difference = x - x_ref;
+      const double scale_peak = x_ref.cwiseAbs().maxCoeff();
+      const double scale_rms = x_ref.norm();
+      if (scale_peak <= 0.0) continue;
+      const double peak = difference.cwiseAbs().maxCoeff() / scale_peak;
+      const double rms = difference.norm() / scale_rms;
+      run.error_peak = std::max(run.error_peak, peak);
+      run.error_rms = std::max(run.error_rms, rms);
+      if (std::max(peak, rms) > worst) {
+        worst = std::max(peak, rms);
+        run.worst_quantity = key.name;
+      }
+    }
+  }
+}
+
+std::optional<std::size_t> choose_run(const std::vector<CandidateRun>& runs,
+                                      std::optional<double> target, ErrorNorm norm) {
+  std::optional<std::size_t> chosen;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const CandidateRun& run = runs[k];
+    if (!target) {
+      if (run.candidate.name == "kept") return k;
+      continue;
+    }
+    if (run.candidate.reference || !run.ok() || !(run.error(norm) <= *target)) continue;
+    if (!chosen || run.modes < runs[*chosen].modes ||
+        (run.modes == runs[*chosen].modes && run.summary.wall_seconds < runs[*chosen].summary.wall_seconds)) {
+      chosen = k;
+    }
+  }
+  return chosen;
+}
+
+}  // namespace limber::select

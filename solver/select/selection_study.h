@@ -1,0 +1,92 @@
+// Runs the mode sets of a selection (mode_set_candidates.h) and measures each against the
+// richest one, as the seed paper's Fig. 6 compares mode sets (docs/select.md).
+//
+// Every run reads the case afresh with its mode requests (io::ModeOverrides), so the modal
+// reduction and its wall time are part of what a set costs; each writes DIR/results.h5 like
+// `limber run`. A set whose run fails is a row with its message, never a lost selection.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "io/case_reader.h"
+#include "run/run_driver.h"
+#include "select/mode_set_candidates.h"
+#include "select/reaction_ranking.h"
+
+namespace limber::select {
+
+// How a set's difference to the reference is measured, per quantity x over the samples:
+// peak: max |x − x_ref| / max |x_ref|; rms: rms(x − x_ref) / rms(x_ref).
+enum class ErrorNorm { kPeak, kRms };
+
+// One mode set's run: what it cost and the series the comparison measures.
+struct CandidateRun {
+  ModeSetCandidate candidate;
+  std::shared_ptr<const io::Case> input;  // the case as read with the set's modes
+  int modes = 0;                   // modes of all flexible bodies together
+  double reduction_seconds = 0.0;  // wall time of their modal reductions [s]
+  std::vector<std::string> notices;  // the reduction's, e.g. a static mode dropped as dependent
+  run::RunSummary summary;
+  std::filesystem::path directory;   // holds its results.h5
+  Eigen::VectorXd time;              // samples [s]
+  Eigen::MatrixXd reactions;         // samples x 6 · sites (reaction_ranking.h)
+  std::vector<bool> indeterminate;   // per site, set when any sample had it
+  Eigen::MatrixXd deflections;       // samples x 3 · probed bodies (body axes) [m]
+  // Against the reference (compare_runs); NaN when not measured.
+  double error_peak = std::numeric_limits<double>::quiet_NaN();
+  double error_rms = std::numeric_limits<double>::quiet_NaN();
+  std::string worst_quantity;      // the quantity of the larger of the two errors
+
+  bool ok() const { return summary.ok; }
+  double error(ErrorNorm norm) const { return norm == ErrorNorm::kPeak ? error_peak : error_rms; }
+};
+
+// Settings of every run: the case's, adjusted (e.g. by command-line options).
+using SettingsAdjustment = std::function<io::RunSettings(const io::RunSettings&)>;
+
+// What `on_sample` throws to stop a selection (a signal): the run's file is closed as
+// "interrupted" before it leaves run_candidate.
+struct SelectionInterrupted {};
+
+// Runs one set from `case_file` into `directory` (created; locked while written). `on_sample`
+// sees every sample (progress; it may throw SelectionInterrupted). Throws InputError on bad
+// input; a numerical failure is in the returned summary. Any exception closes the results file
+// first ("interrupted" or "failed").
+CandidateRun run_candidate(const std::string& case_file, const ModeSetCandidate& candidate,
+                           const SettingsAdjustment& adjust, const std::filesystem::path& directory,
+                           const std::function<void(const integrate::Sample&)>& on_sample = {});
+
+// A series the comparison measures: a kept reaction component or a deflection probe's axis.
+struct KeyQuantity {
+  std::string name;  // "R3 force z on rod [N]", "rod deflection z [m]"
+  bool deflection = false;
+  int column = 0;    // in CandidateRun::reactions or ::deflections
+};
+
+// The kept components of `ranking`, then every probed body's deflection axes whose peak in
+// `reference` is at least 1 % of its largest axis (a smaller axis is noise on a relative scale).
+std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& ranking,
+                                        const CandidateRun& reference);
+
+// The quantity's series in a run.
+Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity);
+
+// Fills error_peak, error_rms and worst_quantity of every finished run against the run marked
+// reference (largest error over `keys`), on their common samples.
+void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity>& keys);
+
+// The set to use: with a target, the finished non-reference set with the fewest modes (then the
+// shortest run) whose error is at most `target`, or none; without one, the procedure's answer
+// ("kept"). Returns an index into `runs`, or nullopt.
+std::optional<std::size_t> choose_run(const std::vector<CandidateRun>& runs,
+                                      std::optional<double> target, ErrorNorm norm);
+
+}  // namespace limber::select
