@@ -4,9 +4,9 @@
 //
 // Components are taken in the flexible body's own axes (its floating frame, which is its FE
 // frame): static modes are unit loads or displacements along those axes, and a joint frame
-// fixed to another body turns relative to the flexible one (the slider-crank's R2 frame turns
-// with the crank). Where the joint frame is fixed to the flexible body the two differ only by
-// a permutation of axes.
+// (marker j's axes) on another body turns relative to the flexible one (the slider-crank's R3
+// frame is the slider's, and the rod swings against it). Where the joint frame is fixed to the
+// flexible body the two differ by a permutation of axes and the node's elastic rotation.
 #pragma once
 
 #include <string>

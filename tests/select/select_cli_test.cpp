@@ -1,0 +1,86 @@
+// `limber select` as a user runs it (popen), on the coarse flexible slider-crank: --json holds
+// the ranking, the comparison and the choice; the files for the report and the user are there;
+// bad options are input errors (exit 1) that name the option.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "coarse_slider_crank.h"
+#include "mini_json.h"
+
+namespace limber {
+namespace {
+
+test::CommandRun run_limber(const std::string& args) { return test::run_command(LIMBER_EXE, args); }
+
+TEST(SelectCli, JsonFilesAndTheChosenRun) {
+  const auto dir = test::fresh_directory("select_cli");
+  const test::CommandRun run =
+      run_limber("select " + test::coarse_slider_crank_file() + " -o " + dir.string() +
+                 " --t-end 0.15 --max-single 2 --target 0.05 --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const test::JsonValue json = test::parse_json(run.out);
+  EXPECT_EQ(json["status"].string(), "ok");
+  // 12 components (2 joints x 6), the four in-plane forces kept.
+  const test::JsonValue::Array& ranking = json["ranking"].array();
+  ASSERT_EQ(ranking.size(), 12u);
+  int kept = 0;
+  for (const test::JsonValue& row : ranking) kept += std::get<bool>(row["kept"].value) ? 1 : 0;
+  EXPECT_EQ(kept, 4);
+  // normal, two singles, kept, more_normal, reference.
+  const test::JsonValue::Array& comparison = json["comparison"].array();
+  ASSERT_EQ(comparison.size(), 6u);
+  EXPECT_EQ(comparison.front()["set"].string(), "normal");
+  EXPECT_EQ(comparison.back()["set"].string(), "reference");
+  // The target is met: the chosen set's error is at most 5 %, and it has no more modes than
+  // any other set that meets it.
+  EXPECT_TRUE(std::get<bool>(json["target_met"].value));
+  const std::string chosen = json["chosen"].string();
+  double chosen_modes = 0.0;
+  for (const test::JsonValue& row : comparison) {
+    if (row["set"].string() == chosen) {
+      chosen_modes = row["modes"].number();
+      EXPECT_LE(row["error_peak"].number(), 0.05);
+    }
+  }
+  for (const test::JsonValue& row : comparison) {
+    if (row["set"].string() != "reference" && row["error_peak"].number() <= 0.05) {
+      EXPECT_LE(chosen_modes, row["modes"].number()) << row["set"].string();
+    }
+  }
+  EXPECT_NE(json["fragment"].string().find("flexible_bodies:\n  rod:\n    modes:\n"), std::string::npos);
+
+  // Files: every set's results, the CSVs, the fragment, and the chosen run's results in DIR.
+  for (const char* file : {"results.h5", "selected_modes.yaml", "selection/ranking.csv",
+                           "selection/comparison.csv", "selection/key_series.csv",
+                           "runs/normal/results.h5", "runs/reference/results.h5"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  const std::string comparison_csv = test::read_text((dir / "selection/comparison.csv").string());
+  EXPECT_EQ(comparison_csv.rfind("set,description,modes,reduction_s,run_s,status,error_peak,error_rms,"
+                                 "worst_quantity,directory,role\n", 0), 0u);
+  EXPECT_NE(comparison_csv.find(",reference\n"), std::string::npos);
+  EXPECT_NE(comparison_csv.find(",chosen\n"), std::string::npos);
+  const std::string series = test::read_text((dir / "selection/key_series.csv").string());
+  EXPECT_NE(series.find("normal|R3 force z on rod [N]"), std::string::npos);
+  // A header and one row per sample (every 1 ms from 0 to 0.15 s).
+  EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 152);
+}
+
+TEST(SelectCli, BadOptionsAreInputErrors) {
+  const std::string file = test::coarse_slider_crank_file();
+  const test::CommandRun keep = run_limber("select " + file + " --keep 0");
+  EXPECT_EQ(keep.exit_code, 1);
+  EXPECT_NE(keep.err.find("expected --keep in (0, 1], got 0"), std::string::npos) << keep.err;
+  const test::CommandRun target = run_limber("select " + file + " --target -1");
+  EXPECT_EQ(target.exit_code, 1);
+  EXPECT_NE(target.err.find("expected --target > 0"), std::string::npos) << target.err;
+  // A rigid mechanism has nothing to select.
+  const test::CommandRun rigid = run_limber("select " + std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml");
+  EXPECT_EQ(rigid.exit_code, 1);
+  EXPECT_NE(rigid.err.find("expected a mechanism with at least one flexible body"), std::string::npos) << rigid.err;
+}
+
+}  // namespace
+}  // namespace limber
