@@ -1,5 +1,5 @@
-// Which plots a report holds, built from run data (no drawing here): reactions per joint in the
-// joint frame (seed paper Figs. 4, 5, 9), comparisons of one reaction component over several
+// Which plots a report holds, built from run data (no drawing here): reactions per joint in
+// ground axes and in the joint frame (seed paper Figs. 4, 5, 9), comparisons of one reaction component over several
 // runs (Figs. 6, 10), driver efforts, energies and the balance's residual, hinge angles and
 // latch torques, clearance between bodies, deflections, modal coordinates and constraint
 // violations versus time.

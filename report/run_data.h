@@ -24,6 +24,7 @@ struct JointReactions {
   RowMatrix3d force_joint;   // joint frame [N]
   RowMatrix3d torque_joint;  // joint frame [N m]
   RowMatrix3d force_ground;  // ground axes [N] (empty when the file has none)
+  RowMatrix3d torque_ground; // ground axes, about the joint point [N m] (empty when none)
 };
 
 // A named per-sample series (driver effort, energy, violation).
