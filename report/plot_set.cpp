@@ -83,6 +83,11 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
     }
   }
 
+  // The mode sets `limber select` compared.
+  if (run.selection) {
+    for (NamedPlot& plot : selection_plots(*run.selection, prefix)) plots.push_back(std::move(plot));
+  }
+
   // Driver efforts and energies.
   if (!run.drivers.empty()) {
     plots.push_back({PlotSection::kDrivers, prefix + "driver_efforts.png",
@@ -163,6 +168,37 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
                      "Largest norm of the position constraints [m, rad] and of the velocity "
                      "constraints [m/s, rad/s]; logarithmic axis when every value is positive.",
                      {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
+  }
+  return plots;
+}
+
+std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std::string& prefix) {
+  // Set name -> its role in the comparison ("chosen", "reference").
+  std::map<std::string, std::string> roles;
+  for (const ComparisonRow& row : selection.comparison) {
+    if (!row.role.empty()) roles[row.set] = row.role;
+  }
+  // Quantities in first-seen order, each with its curves.
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<Curve>> curves;
+  for (const KeySeries& s : selection.key_series) {
+    if (curves.count(s.quantity) == 0) order.push_back(s.quantity);
+    const auto role = roles.find(s.set);
+    const bool named = role == roles.end() || role->second == s.set;  // "reference" needs no "(reference)"
+    const std::string label = named ? s.set : s.set + " (" + role->second + ")";
+    curves[s.quantity].push_back({label, s.time, s.values});
+  }
+
+  std::vector<NamedPlot> plots;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::string& quantity = order[k];
+    std::vector<Curve>& set_curves = curves[quantity];
+    const std::size_t sets = set_curves.size();
+    plots.push_back({PlotSection::kSelection,
+                     prefix + "selection_" + std::to_string(k + 1) + "_" + file_stem(quantity) + ".png",
+                     quantity + " in each of the " + std::to_string(sets) +
+                         " mode sets run by limber select (selection/key_series.csv).",
+                     {"Mode sets: " + quantity, kTimeLabel, quantity, std::move(set_curves), false}});
   }
   return plots;
 }
