@@ -3,15 +3,17 @@
 #include "hinge_summary.h"
 #include "html.h"
 
-#include <numbers>
-
+#include <array>
 #include <map>
+#include <numbers>
 
 namespace limber::report {
 namespace {
 
 constexpr const char* kTimeLabel = "time [s]";
 constexpr std::array<const char*, 3> kAxes{"x", "y", "z"};
+constexpr std::array<const char*, 3> kGroundAxes{"X", "Y", "Z"};
+constexpr const char* kGroundAxesNote = "ground axes (X = ground x, Y = ground y, Z = ground z)";
 
 // The name of body_j of a joint (the body the reaction acts on), "" when unknown.
 std::string reaction_body(const RunData& run, const std::string& joint) {
@@ -29,6 +31,13 @@ std::vector<Curve> component_curves(const Eigen::VectorXd& time, const RowMatrix
   return curves;
 }
 
+// Curves "X", "Y", "Z" of the columns of `values` (ground axes; see kGroundAxesNote).
+std::vector<Curve> ground_curves(const Eigen::VectorXd& time, const RowMatrix3d& values) {
+  std::vector<Curve> curves;
+  for (int c = 0; c < 3; ++c) curves.push_back({kGroundAxes[c], time, values.col(c)});
+  return curves;
+}
+
 std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<Series>& series) {
   std::vector<Curve> curves;
   for (const Series& s : series) curves.push_back({s.name, time, s.values});
@@ -41,20 +50,42 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
   std::vector<NamedPlot> plots;
   const Eigen::VectorXd& t = run.results.time;
 
-  // Reactions: forces always, torques when the joint transmits any.
+  // Reactions: in ground axes first when written (seed paper Figs. 4, 5), then in the joint
+  // frame; forces always, torques when the joint transmits any.
   for (const JointReactions& joint : run.joints) {
     const std::string body = reaction_body(run, joint.name);
     const std::string on = body.empty() ? "" : " on " + body;
-    plots.push_back({PlotSection::kReactions, prefix + "reaction_" + file_stem(joint.name) + "_force.png",
+    const std::string stem = prefix + "reaction_" + file_stem(joint.name);
+    if (joint.force_ground.rows() == t.size() && t.size() > 0) {
+      plots.push_back({PlotSection::kReactions, stem + "_force_ground.png",
+                       "Reaction force at joint " + joint.name + on + ", components in " +
+                           kGroundAxesNote + ".",
+                       {"Joint " + joint.name + ": reaction force (ground axes)", kTimeLabel,
+                        "force [N]", ground_curves(t, joint.force_ground), false}});
+    }
+    if (joint.torque_ground.rows() == t.size() && t.size() > 0 &&
+        joint.torque_ground.cwiseAbs().maxCoeff() > 0.0) {
+      plots.push_back({PlotSection::kReactions, stem + "_torque_ground.png",
+                       "Reaction torque at joint " + joint.name + on + " about the joint point, "
+                       "components in " + kGroundAxesNote + ".",
+                       {"Joint " + joint.name + ": reaction torque (ground axes)", kTimeLabel,
+                        "torque [N m]", ground_curves(t, joint.torque_ground), false}});
+    }
+    plots.push_back({PlotSection::kReactions, stem + "_force.png",
                      "Reaction force at joint " + joint.name + on + ", components in the joint frame.",
                      {"Joint " + joint.name + ": reaction force (joint frame)", kTimeLabel,
                       "force [N]", component_curves(t, joint.force_joint, "F"), false}});
     if (joint.torque_joint.size() > 0 && joint.torque_joint.cwiseAbs().maxCoeff() > 0.0) {
-      plots.push_back({PlotSection::kReactions, prefix + "reaction_" + file_stem(joint.name) + "_torque.png",
+      plots.push_back({PlotSection::kReactions, stem + "_torque.png",
                        "Reaction torque at joint " + joint.name + on + ", components in the joint frame.",
                        {"Joint " + joint.name + ": reaction torque (joint frame)", kTimeLabel,
                         "torque [N m]", component_curves(t, joint.torque_joint, "T"), false}});
     }
+  }
+
+  // The mode sets `limber select` compared.
+  if (run.selection) {
+    for (NamedPlot& plot : selection_plots(*run.selection, prefix)) plots.push_back(std::move(plot));
   }
 
   // Driver efforts and energies.
@@ -137,6 +168,37 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
                      "Largest norm of the position constraints [m, rad] and of the velocity "
                      "constraints [m/s, rad/s]; logarithmic axis when every value is positive.",
                      {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
+  }
+  return plots;
+}
+
+std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std::string& prefix) {
+  // Set name -> its role in the comparison ("chosen", "reference").
+  std::map<std::string, std::string> roles;
+  for (const ComparisonRow& row : selection.comparison) {
+    if (!row.role.empty()) roles[row.set] = row.role;
+  }
+  // Quantities in first-seen order, each with its curves.
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<Curve>> curves;
+  for (const KeySeries& s : selection.key_series) {
+    if (curves.count(s.quantity) == 0) order.push_back(s.quantity);
+    const auto role = roles.find(s.set);
+    const bool named = role == roles.end() || role->second == s.set;  // "reference" needs no "(reference)"
+    const std::string label = named ? s.set : s.set + " (" + role->second + ")";
+    curves[s.quantity].push_back({label, s.time, s.values});
+  }
+
+  std::vector<NamedPlot> plots;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::string& quantity = order[k];
+    std::vector<Curve>& set_curves = curves[quantity];
+    const std::size_t sets = set_curves.size();
+    plots.push_back({PlotSection::kSelection,
+                     prefix + "selection_" + std::to_string(k + 1) + "_" + file_stem(quantity) + ".png",
+                     quantity + " in each of the " + std::to_string(sets) +
+                         " mode sets run by limber select (selection/key_series.csv).",
+                     {"Mode sets: " + quantity, kTimeLabel, quantity, std::move(set_curves), false}});
   }
   return plots;
 }

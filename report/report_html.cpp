@@ -2,6 +2,7 @@
 
 #include "hinge_summary.h"
 #include "html.h"
+#include "selection_html.h"
 
 #include <fmt/format.h>
 
@@ -33,6 +34,11 @@ figcaption { font-size: .95em; color: #444; }
 .strip figure { margin: 0; flex: 1 1 180px; }
 .modes { display: grid; grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); gap: 8px; }
 .modes figure { margin: 0; }
+tr.kept td, .kept-key, tr.chosen td, .chosen-key { background: #e3f2e1; }
+tr.kept td { font-weight: bold; }
+tr.reference td, .reference-key { background: #eef2f7; font-style: italic; }
+.indeterminate { color: #8a5a00; }
+td.failed { color: #8e0000; font-weight: bold; }
 @media print { nav { display: none; } h2 { page-break-before: always; } }
 )";
 
@@ -287,6 +293,14 @@ std::string run_section(const RunSection& s) {
                         "<h4>Joints</h4>\n" + joints_table(run) + redundancy_table(run) +
                         mode_tables(run) + notes(run));
   out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
+  if (run.selection) {
+    std::string body = selection_tables(*run.selection) + plots_of(s, PlotSection::kSelection);
+    if (body.empty()) {
+      body = "<p class=\"note\">The selection folder holds nothing usable (see the notes in the "
+             "case summary).</p>\n";
+    }
+    out += subsection(s, "selection", "Mode selection", body);
+  }
   out += subsection(s, "drivers", "Drivers", plots_of(s, PlotSection::kDrivers));
   out += subsection(s, "energy", "Energy", energy_note(run) + plots_of(s, PlotSection::kEnergy));
   out += subsection(s, "hinges", "Hinges and latches", hinge_tables(run) + plots_of(s, PlotSection::kHinges));

@@ -184,6 +184,7 @@ void truncate(RunData& run, Eigen::Index n) {
     joint.force_joint.conservativeResize(n, 3);
     joint.torque_joint.conservativeResize(n, 3);
     if (joint.force_ground.rows() > n) joint.force_ground.conservativeResize(n, 3);
+    if (joint.torque_ground.rows() > n) joint.torque_ground.conservativeResize(n, 3);
   }
   for (HingeLimitTrack& limit : run.hinge_limits) {
     limit.angle.conservativeResize(n);
@@ -204,20 +205,26 @@ hsize_t read_series(hid_t file, RunData& run) {
   hsize_t ns = static_cast<hsize_t>(run.sample_count());
   hsize_t rows = 0;
 
-  // Joint reactions (joint frame); a joint without them has no plot.
+  // Joint reactions (joint frame, and ground axes when written); a joint without joint-frame
+  // forces has no plot.
   for (const render::JointTrack& joint : run.results.joints) {
     const std::string g = "/joints/" + joint.name + "/";
     hsize_t torque_rows = 0;
     const std::vector<double> force = read_doubles(file, g + "force_joint", 3, rows);
     const std::vector<double> torque = read_doubles(file, g + "torque_joint", 3, torque_rows);
     if (force.empty()) continue;
-    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3), {}};
+    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3), {}, {}};
     if (!torque.empty()) reactions.torque_joint = as_rows3(torque, torque_rows);
     ns = std::min({ns, rows, torque.empty() ? rows : torque_rows});
     hsize_t ground_rows = 0;
     const std::vector<double> ground = read_doubles(file, g + "force_ground", 3, ground_rows);
     if (!ground.empty()) {
       reactions.force_ground = as_rows3(ground, ground_rows);
+      ns = std::min(ns, ground_rows);
+    }
+    const std::vector<double> ground_torque = read_doubles(file, g + "torque_ground", 3, ground_rows);
+    if (!ground_torque.empty()) {
+      reactions.torque_ground = as_rows3(ground_torque, ground_rows);
       ns = std::min(ns, ground_rows);
     }
     run.joints.push_back(std::move(reactions));
@@ -387,6 +394,7 @@ RunData read_run_data(const std::filesystem::path& directory) {
   }
   read_mode_tables(run);
   find_media(run);
+  run.selection = read_selection(directory, run.notes);
   return run;
 }
 

@@ -1,10 +1,12 @@
 // Everything the report shows about one run directory, read from its files only:
 // DIR/results.h5 (docs/results-format.md) through render's reader plus the per-sample series
 // render does not need (reactions, drivers, energies, violations, steps), DIR/modes.h5
-// (docs/modes-format.md) for mode kinds and labels, and the media `limber render` left in DIR.
+// (docs/modes-format.md) for mode kinds and labels, the media `limber render` left in DIR, and
+// the CSV files `limber select` left in DIR/selection (selection_data.h).
 #pragma once
 
 #include "results_reader.h"
+#include "selection_data.h"
 
 #include <Eigen/Core>
 
@@ -24,6 +26,7 @@ struct JointReactions {
   RowMatrix3d force_joint;   // joint frame [N]
   RowMatrix3d torque_joint;  // joint frame [N m]
   RowMatrix3d force_ground;  // ground axes [N] (empty when the file has none)
+  RowMatrix3d torque_ground; // ground axes, about the joint point [N m] (empty when none)
 };
 
 // A named per-sample series (driver effort, energy, violation).
@@ -86,6 +89,7 @@ struct RunData {
   std::vector<ModeTable> mode_tables;   // flexible bodies only
   std::vector<std::filesystem::path> frames;  // DIR/frames/*.png, sorted
   std::optional<std::filesystem::path> video; // DIR/animation.mp4
+  std::optional<SelectionData> selection;     // DIR/selection from `limber select`
   std::vector<std::string> notes;       // what was found but could not be used, and why
 
   Eigen::Index sample_count() const { return results.sample_count(); }
@@ -94,7 +98,8 @@ struct RunData {
 
 // Reads `directory`. Throws InputError (expected/got, naming the file) when results.h5 is
 // missing, damaged or not a limber results file. A run that failed or was killed is read as it
-// is: every series is cut to the samples complete in all datasets read.
+// is: every series is cut to the samples complete in all datasets read. A missing or malformed
+// modes.h5 or selection file is a note, not an error.
 RunData read_run_data(const std::filesystem::path& directory);
 
 // Largest elastic displacement max_n |u_n| of a flexible body per sample [m], u = Phi eta.

@@ -11,6 +11,11 @@ Eigen::Vector3d reaction_force(const ReactionRun& run, double t) {
   return run.amplitude * Eigen::Vector3d(std::cos(w), 0.05 * std::sin(w), std::sin(w));
 }
 
+Eigen::Vector3d reaction_force_ground(const ReactionRun& run, double t) {
+  const Eigen::Vector3d f = reaction_force(run, t);
+  return Eigen::Vector3d(f.x(), -f.z(), f.y());
+}
+
 void write_reaction_run(const std::filesystem::path& dir, const ReactionRun& run) {
   results::ResultsWriter writer(dir, run.title, "reaction_runs.cpp");
   results::ShapeSpec block;
@@ -31,7 +36,7 @@ void write_reaction_run(const std::filesystem::path& dir, const ReactionRun& run
     results::JointSample r3;
     r3.position = slider.position;
     r3.force_joint = reaction_force(run, t);
-    r3.force_ground = r3.force_joint;
+    r3.force_ground = reaction_force_ground(run, t);
     sample.joints.push_back(r3);
     sample.driver_efforts = {run.amplitude * t};
     sample.energies = {run.amplitude * t * t, run.amplitude * t};

@@ -2,6 +2,7 @@
 // results writer (limber_results): one rigid body "slider" on a joint "R3" (revolute,
 // rod -> slider) whose reaction in the joint frame is
 //   F(t) = A (cos(2 pi f t), 0.05 sin(2 pi f t), sin(2 pi f t)) [N], torque 0,
+// and in ground axes (joint frame turned +90 deg about ground x) G(t) = (F_x, -F_z, F_y) [N],
 // a driver "crank" with effort A t [N m], energies kinetic = A t^2 and driver_work = A t [J],
 // position violation 1e-10 (1 + t) and velocity violation 1e-8 (1 + t).
 // Samples at t_k = k T/(ns - 1).
@@ -27,6 +28,7 @@ struct ReactionRun {
 
 void write_reaction_run(const std::filesystem::path& dir, const ReactionRun& run);
 
-Eigen::Vector3d reaction_force(const ReactionRun& run, double t);
+Eigen::Vector3d reaction_force(const ReactionRun& run, double t);        // F(t), joint frame
+Eigen::Vector3d reaction_force_ground(const ReactionRun& run, double t);  // G(t), ground axes
 
 }  // namespace limber::report::testing

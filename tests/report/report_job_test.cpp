@@ -126,19 +126,8 @@ TEST_F(ReportJobTest, ModalCoordinatePlotShowsTheBeamsClosedForm) {
     const Eigen::Vector2d eta = render::testing::beam_eta(scene, t);
     for (int i = 0; i < 2; ++i) {
       const Eigen::Vector2d at = frame.to_pixel(t, eta(i));
-      bool found = false;
-      for (int dy = -3; dy <= 3 && !found; ++dy) {
-        for (int dx = -3; dx <= 3 && !found; ++dx) {
-          const int x = static_cast<int>(std::lround(at.x())) + dx;
-          const int y = static_cast<int>(std::lround(at.y())) + dy;
-          if (x < 0 || y < 0 || x >= png.width || y >= png.height) continue;
-          const auto p = png.pixel(x, y);
-          found = std::abs(p[0] - kCurveColors[i][0]) <= 40 &&
-                  std::abs(p[1] - kCurveColors[i][1]) <= 40 &&
-                  std::abs(p[2] - kCurveColors[i][2]) <= 40;
-        }
-      }
-      EXPECT_TRUE(found) << "eta" << i + 1 << " at t = " << t;
+      EXPECT_TRUE(testing::color_near(png, at.x(), at.y(), kCurveColors[i]))
+          << "eta" << i + 1 << " at t = " << t;
     }
   }
 }

@@ -6,6 +6,8 @@
 #include <vtkPNGReader.h>
 
 #include <array>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -50,6 +52,25 @@ struct Png {
     return {p[0], p[1], p[2]};
   }
 };
+
+// True when a pixel within `radius` px of `at` (column, row from the top) has `color` within
+// `tolerance` per channel.
+inline bool color_near(const Png& png, double column, double row, const std::array<unsigned char, 3>& color,
+                       int radius = 3, int tolerance = 40) {
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const int x = static_cast<int>(std::lround(column)) + dx;
+      const int y = static_cast<int>(std::lround(row)) + dy;
+      if (x < 0 || y < 0 || x >= png.width || y >= png.height) continue;
+      const auto p = png.pixel(x, y);
+      if (std::abs(p[0] - color[0]) <= tolerance && std::abs(p[1] - color[1]) <= tolerance &&
+          std::abs(p[2] - color[2]) <= tolerance) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
 
 // Every src="..." and href="..." value of a page.
 inline std::vector<std::string> links(const std::string& html) {
