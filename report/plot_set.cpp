@@ -189,16 +189,36 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
     curves[s.quantity].push_back({label, s.time, s.values});
   }
 
+  // Each set's difference to the reference set, per quantity: where the sets part, which the
+  // overlay hides when they differ by a few per cent.
+  std::map<std::string, std::vector<Curve>> differences;
+  for (const KeySeries& reference : selection.key_series) {
+    const auto role = roles.find(reference.set);
+    if (role == roles.end() || role->second != "reference") continue;
+    for (const KeySeries& s : selection.key_series) {
+      if (s.quantity != reference.quantity || s.set == reference.set) continue;
+      if (s.values.size() != reference.values.size()) continue;
+      differences[s.quantity].push_back({s.set, s.time, s.values - reference.values});
+    }
+  }
+
   std::vector<NamedPlot> plots;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::string& quantity = order[k];
     std::vector<Curve>& set_curves = curves[quantity];
     const std::size_t sets = set_curves.size();
-    plots.push_back({PlotSection::kSelection,
-                     prefix + "selection_" + std::to_string(k + 1) + "_" + file_stem(quantity) + ".png",
+    const std::string stem = prefix + "selection_" + std::to_string(k + 1) + "_" + file_stem(quantity);
+    plots.push_back({PlotSection::kSelection, stem + ".png",
                      quantity + " in each of the " + std::to_string(sets) +
                          " mode sets run by limber select (selection/key_series.csv).",
                      {"Mode sets: " + quantity, kTimeLabel, quantity, std::move(set_curves), false}});
+    if (!differences[quantity].empty()) {
+      plots.push_back({PlotSection::kSelection, stem + "_difference.png",
+                       quantity + ": each mode set minus the reference set, the error the comparison "
+                                  "table measures.",
+                       {"Difference to the reference: " + quantity, kTimeLabel, "difference",
+                        std::move(differences[quantity]), false}});
+    }
   }
   return plots;
 }

@@ -183,7 +183,9 @@ TEST(SelectionReport, TablesAndOverlayPlotsOfTheModeSets) {
   const RunData run = read_run_data(dir);
   ASSERT_TRUE(run.selection);
   const std::vector<NamedPlot> plots = selection_plots(*run.selection, "run1_");
-  ASSERT_EQ(plots.size(), 2u);
+  // Overlay and difference to the reference for R3 force z; the deflection has no reference
+  // column, so its overlay alone.
+  ASSERT_EQ(plots.size(), 3u);
   EXPECT_EQ(plots[0].section, PlotSection::kSelection);
   EXPECT_EQ(plots[0].spec.y_label, "R3 force z on rod [N]");
   ASSERT_EQ(plots[0].spec.curves.size(), 3u);
@@ -192,9 +194,14 @@ TEST(SelectionReport, TablesAndOverlayPlotsOfTheModeSets) {
   EXPECT_EQ(plots[0].spec.curves[2].label, "reference");  // named after its role
   EXPECT_EQ(values(plots[0].spec.curves[2].x), (std::vector<double>{0.0, 0.1, 0.2}));
   EXPECT_EQ(values(plots[0].spec.curves[2].y), (std::vector<double>{3.0, 30.0, -7.0}));
-  ASSERT_EQ(plots[1].spec.curves.size(), 3u);
-  EXPECT_EQ(plots[1].spec.curves[2].label, "more_normal");
-  EXPECT_EQ(values(plots[1].spec.curves[2].y), (std::vector<double>{0.004, 0.04}));
+  ASSERT_EQ(plots[1].spec.curves.size(), 2u);
+  EXPECT_EQ(plots[1].file, "run1_selection_1_R3_force_z_on_rod__N__difference.png");
+  EXPECT_EQ(plots[1].spec.curves[0].label, "normal");
+  EXPECT_EQ(values(plots[1].spec.curves[0].y), (std::vector<double>{-2.0, -20.0, 2.0}));
+  EXPECT_EQ(values(plots[1].spec.curves[1].y), (std::vector<double>{-1.0, -10.0, 1.0}));
+  ASSERT_EQ(plots[2].spec.curves.size(), 3u);
+  EXPECT_EQ(plots[2].spec.curves[2].label, "more_normal");
+  EXPECT_EQ(values(plots[2].spec.curves[2].y), (std::vector<double>{0.004, 0.04}));
 }
 
 TEST(SelectionReport, MissingOrMalformedFilesAreNotesNotFailures) {
