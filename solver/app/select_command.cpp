@@ -166,7 +166,9 @@ int select_case(const SelectOptions& options) {
   int counter = 0;
   const auto run_set = [&](const select::ModeSetCandidate& candidate, std::size_t total) {
     ++counter;
-    fmt::print(text, "[{}/{}] {}: {}\n", counter, total, candidate.name, candidate.description);
+    // The number of sets is known once the ranking is: the first run shows its number alone.
+    const std::string of = total > 1 ? fmt::format("/{}", total) : "";
+    fmt::print(text, "[{}{}] {}: {}\n", counter, of, candidate.name, candidate.description);
     std::fflush(text);
     std::optional<RunProgress> progress;
     select::CandidateRun run = select::run_candidate(
