@@ -14,6 +14,7 @@ inline constexpr int kExitBadInput = 1;   // bad case file or command line (Inpu
 inline constexpr int kExitNumerical = 2;  // a numerical method failed (e.g. eigen-solver)
 inline constexpr int kExitInternal = 3;   // unexpected error: a bug, please report
 inline constexpr int kExitInterrupted = 4;  // stopped by SIGINT or SIGTERM, files closed
+inline constexpr int kExitInaccurate = 5;   // finished, but its own accuracy estimate says it is off
 
 struct Command {
   CLI::App* cli = nullptr;   // the sub-command, parsed by main

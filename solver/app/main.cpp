@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Exit codes: 0 success, 1 bad input (case file or command line), 2 numerical failure,\n"
-      "3 internal error. Case file format: docs/case-format.md.\n"
+      "3 internal error, 4 interrupted by a signal, 5 finished but not accurate (limber run).\n"
+      "Case file format: docs/case-format.md.\n"
       "Run 'limber <command> --help' for the options of a command.");
 
   // Every sub-command registers itself; exactly one is run.

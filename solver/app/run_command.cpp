@@ -78,6 +78,15 @@ std::string json_string_list(const std::vector<std::string>& values) {
   return text + "]";
 }
 
+// The run's accuracy estimate on `out`, each warning on stderr.
+void print_accuracy(std::FILE* out, const run::AccuracyEstimate& accuracy) {
+  fmt::print(out, "accuracy: energy balance {:.2g} of the energy scale, local error {:.2g}, "
+                  "constraint drift {:.2g} of the size{}\n",
+             accuracy.energy_relative, accuracy.local_error, accuracy.drift_relative,
+             accuracy.accurate() ? "" : ": NOT ACCURATE");
+  for (const std::string& warning : accuracy.warnings) fmt::print(stderr, "limber: warning: {}\n", warning);
+}
+
 // "latch L (joint R1) engaged at t = ... s: angle ..°, rate ..°/s".
 std::string describe_event(const multibody::Model& model, const multibody::HingeEvent& event) {
   const auto& limit = std::get<multibody::HingeLimit>(model.forces[event.force]);
@@ -127,6 +136,16 @@ void print_clearance(std::FILE* out, const run::ClearanceMinimum& clearance) {
   }
 }
 
+// {"energy_relative", "energy_residual", "energy_scale", "local_error", "drift_relative",
+// "warnings": [...]}.
+std::string json_accuracy(const run::AccuracyEstimate& a) {
+  return fmt::format("{{\"energy_relative\": {}, \"energy_residual\": {}, \"energy_scale\": {}, "
+                     "\"local_error\": {}, \"drift_relative\": {}, \"warnings\": {}}}",
+                     json_number(a.energy_relative), json_number(a.energy_residual),
+                     json_number(a.energy_scale), json_number(a.local_error),
+                     json_number(a.drift_relative), json_string_list(a.warnings));
+}
+
 std::string json_report(const multibody::Model& model, const run::RunSummary& summary,
                         const std::string& results_path) {
   std::vector<std::string> names, details;
@@ -141,14 +160,15 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       "\"newton_iterations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
       "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"clearance\": {}, "
-      "\"results\": {}}}",
-      json_string(summary.ok ? "ok" : "failed"), json_string(summary.message),
+      "\"accuracy\": {}, \"results\": {}}}",
+      json_string(!summary.ok ? "failed" : summary.accurate() ? "ok" : "ok_inaccurate"),
+      json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
       summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
       json_number(summary.wall_seconds), json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
       json_string_list(details), json_events(model, summary.events),
-      json_clearance(summary.clearance), json_string(results_path));
+      json_clearance(summary.clearance), json_accuracy(summary.accuracy), json_string(results_path));
 }
 
 // Thrown from the sample hook when a stop signal arrived: leaves the integration between samples.
@@ -232,6 +252,7 @@ int run_case(const RunOptions& options) {
                s.rejected_steps, s.newton_iterations, summary.wall_seconds);
     fmt::print(text, "max constraint violation: position {:.3g}, velocity {:.3g}\n",
                summary.max_position_violation, summary.max_velocity_violation);
+    if (summary.ok) print_accuracy(text, summary.accuracy);
     print_clearance(text, summary.clearance);
   }
   fmt::print(text, "wrote {}\n", results_path);
@@ -240,6 +261,11 @@ int run_case(const RunOptions& options) {
     fmt::print(stderr, "limber: error: run failed: {} ({} samples kept in {})\n", summary.message,
                summary.samples, results_path);
     return kExitNumerical;
+  }
+  if (!summary.accurate()) {
+    fmt::print(stderr, "limber: the run finished, but its accuracy estimate says the answer is off "
+                       "(status \"ok_inaccurate\" in {}); see the warnings above\n", results_path);
+    return kExitInaccurate;
   }
   return kExitOk;
 }
@@ -263,7 +289,10 @@ Command add_run_command(CLI::App& app) {
       "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
       "are kept and the file's status is \"failed\"), 3 internal error, 4 interrupted by SIGINT or\n"
       "SIGTERM (the run stops at its next sample and closes the file as \"interrupted\"; a second\n"
-      "signal ends it at once).");
+      "signal ends it at once), 5 finished but not accurate: the run's own accuracy estimate\n"
+      "('accuracy:' line: energy balance against the energy scale, generalized-alpha's local error,\n"
+      "constraint drift; docs/integrators.md) exceeds its threshold; each warning names the option\n"
+      "that would fix it, and the file's status is \"ok_inaccurate\".");
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>)");
@@ -275,8 +304,10 @@ Command add_run_command(CLI::App& app) {
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
                 "\"redundant_details\", \"events\": [{\"t\", \"name\", \"kind\", \"joint\", "
                 "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"clearance\": "
-                "{\"minimum\", \"time\", \"pair\": [body, body]} or null, \"results\"}; the text "
-                "goes to stderr");
+                "{\"minimum\", \"time\", \"pair\": [body, body]} or null, \"accuracy\": "
+                "{\"energy_relative\", \"energy_residual\", \"energy_scale\", \"local_error\", "
+                "\"drift_relative\", \"warnings\"}, \"results\"}; status is \"ok\", "
+                "\"ok_inaccurate\" or \"failed\"; the text goes to stderr");
   return {cli, [options] { return run_case(*options); }};
 }
 

@@ -35,6 +35,12 @@
 // accepted, the system switches modes at its end before the next step, and the scheme restarts
 // there like at t0 (v̇, λ from the saddle-point system, a = v̇), then returns to its step grid.
 //
+// Accuracy estimate (Zienkiewicz & Xie 1991, Earthquake Eng Struct Dyn 20:871–887, for the
+// Newmark family, whose position update this scheme shares): the leading local error term of a
+// step's position increment is (β − 1/6) h² (a_{n+1} − a_n). Its largest value over the run,
+// relative to the run's largest increment |ξ|, is Statistics::max_local_error. It costs nothing
+// (no extra solve) and does not steer the fixed step: `limber run` turns it into a warning.
+//
 // Output times are served by interpolating inside the last step: positions by a cubic Hermite
 // curve in the tangent space (q_n ⊕ Δ(θ), end slopes h v_n and h v_{n+1}), v, v̇, λ and the
 // quadratures linearly — all second-order accurate like the scheme. Quadratures are integrated
@@ -77,6 +83,8 @@ class GeneralizedAlpha final : public Integrator {
   enum class Attempt { kAccepted, kNewtonFailed, kStaleJacobian, kNaN, kSingular };
 
   Status take_step();
+  // After an accepted step: Statistics::max_local_error.
+  void estimate_local_error();
   Attempt attempt_step(double h);
   // After an accepted attempt of size h (in next_): when an event function rose through 0,
   // shortens the step to the crossing (next_ and xi_last_ then hold that step) and marks the
@@ -127,6 +135,8 @@ class GeneralizedAlpha final : public Integrator {
   StepState probe_;
 
   Statistics stats_;
+  double largest_increment_ = 0.0;  // largest |ξ| of the run (estimate_local_error)
+  double largest_error_ = 0.0;      // largest local error estimate of the run
 };
 
 }  // namespace limber::integrate

@@ -36,6 +36,10 @@ struct Statistics {
   long jacobian_evaluations = 0;  // iteration-matrix evaluations
   long residual_evaluations = 0;  // evaluations of M, Q and the constraints (incl. for Jacobians)
   double last_step = 0.0;         // size of the last accepted step [s]
+  // Generalized-α only: the largest local error estimate of a step's position increment over
+  // the run, relative to the run's largest increment (generalized_alpha.h); IDA's error test keeps its own
+  // local error within rtol, and leaves this 0.
+  double max_local_error = 0.0;
 };
 
 }  // namespace limber::integrate

@@ -508,13 +508,24 @@ void ResultsWriter::append_sample(const Sample& sample) {
   check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
 }
 
+void ResultsWriter::set_accuracy(double energy_relative, double local_error, double drift_relative,
+                                 const std::string& warnings) {
+  LIMBER_DEMAND(!impl_->finished);
+  const hid_t root = impl_->file.get();
+  write_doubles_attribute(root, "accuracy_energy_relative", &energy_relative, 1);
+  write_doubles_attribute(root, "accuracy_local_error", &local_error, 1);
+  write_doubles_attribute(root, "accuracy_drift_relative", &drift_relative, 1);
+  write_string_attribute(root, "accuracy_warnings", warnings);
+}
+
 void ResultsWriter::finish(RunStatus status, const std::string& message) {
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();
-  write_string_attribute(root, "status", status == RunStatus::kOk       ? "ok"
-                                         : status == RunStatus::kFailed ? "failed"
-                                                                        : "interrupted");
+  write_string_attribute(root, "status", status == RunStatus::kOk           ? "ok"
+                                         : status == RunStatus::kInaccurate ? "ok_inaccurate"
+                                         : status == RunStatus::kFailed     ? "failed"
+                                                                            : "interrupted");
   write_string_attribute(root, "message", message);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 

@@ -129,8 +129,9 @@ struct HingeEventRecord {
   double rate = 0.0;   // joint angular rate at the switch [rad/s]
 };
 
-// How a run ended: finished, failed (numerically or on an error), or stopped by a signal.
-enum class RunStatus { kOk, kFailed, kInterrupted };
+// How a run ended: finished, finished but its own accuracy estimate says the answer is off
+// ("ok_inaccurate"), failed (numerically or on an error), or stopped by a signal.
+enum class RunStatus { kOk, kInaccurate, kFailed, kInterrupted };
 
 class ResultsWriter {
  public:
@@ -171,8 +172,14 @@ class ResultsWriter {
   // Appends one row to /events and flushes (at any time before finish()).
   void append_event(const HingeEventRecord& event);
 
-  // Sets the root attributes status ("ok" / "failed" / "interrupted") and message, flushes and
-  // closes the file.
+  // The run's accuracy estimate (run/accuracy_check.h), at most once before finish(): root
+  // attributes accuracy_energy_relative, accuracy_local_error, accuracy_drift_relative
+  // (relative measures) and accuracy_warnings (text, one warning per line, "" when none).
+  void set_accuracy(double energy_relative, double local_error, double drift_relative,
+                    const std::string& warnings);
+
+  // Sets the root attributes status ("ok" / "ok_inaccurate" / "failed" / "interrupted") and
+  // message, flushes and closes the file.
   void finish(RunStatus status, const std::string& message = "");
 
   std::int64_t sample_count() const;

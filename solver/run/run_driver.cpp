@@ -27,7 +27,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   summary.t_end = settings.t_end;
   const auto finish = [&](results::RunStatus status) {
     if (hooks.writer) hooks.writer->finish(status, summary.message);
-    summary.ok = status == results::RunStatus::kOk;
+    summary.ok = status == results::RunStatus::kOk || status == results::RunStatus::kInaccurate;
     summary.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return summary;
@@ -92,6 +92,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   };
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
   summary.clearance.checked = !clearance_pairs.empty();
+  AccuracyMonitor accuracy;
   const auto on_sample = [&](const integrate::Sample& sample) {
     report_events();
     const results::Sample record = recorder.record(sample);
@@ -102,6 +103,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (hooks.on_warning) hooks.on_warning(check.warning);
     }
     if (hooks.writer) hooks.writer->append_sample(record);
+    accuracy.add(record);
     summary.t_reached = sample.t;
     summary.max_position_violation =
         std::max(summary.max_position_violation, record.position_violation);
@@ -125,12 +127,19 @@ RunSummary run_mechanism(const multibody::Model& model,
   report_events();
   summary.samples = result.samples;
   summary.statistics = result.statistics;
+  summary.accuracy = accuracy.estimate(result.statistics, options);
+  if (hooks.writer) {
+    std::string warnings;
+    for (const std::string& w : summary.accuracy.warnings) warnings += (warnings.empty() ? "" : "\n") + w;
+    hooks.writer->set_accuracy(summary.accuracy.energy_relative, summary.accuracy.local_error,
+                               summary.accuracy.drift_relative, warnings);
+  }
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);
     summary.message = result.status.message;
     return finish(results::RunStatus::kFailed);
   }
-  return finish(results::RunStatus::kOk);
+  return finish(summary.accuracy.accurate() ? results::RunStatus::kOk : results::RunStatus::kInaccurate);
 }
 
 }  // namespace limber::run

@@ -17,6 +17,7 @@
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "results/results_writer.h"
+#include "run/accuracy_check.h"
 #include "run/prepared_start.h"
 
 namespace limber::run {
@@ -30,7 +31,7 @@ struct ClearanceMinimum {
 };
 
 struct RunSummary {
-  bool ok = false;
+  bool ok = false;              // the run reached t_end (accurate or not: see `accuracy`)
   std::string message;          // why the run failed ("" when ok)
   std::string failure;          // "assembly", an integrate::StatusCode name, or ""
   std::string integrator;       // "ida" / "galpha"
@@ -47,6 +48,11 @@ struct RunSummary {
   // Mode switches of hinge latches and stops, in order (located events).
   std::vector<multibody::HingeEvent> events;
   ClearanceMinimum clearance;
+  // The run's own accuracy estimate (accuracy_check.h), from every sample written.
+  AccuracyEstimate accuracy;
+
+  // Reached t_end and its accuracy estimate holds.
+  bool accurate() const { return ok && accuracy.accurate(); }
 };
 
 // Optional observers; all may be empty.
