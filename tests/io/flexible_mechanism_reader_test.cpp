@@ -90,6 +90,28 @@ TEST(FlexibleMechanismReader, BodyMarkersDampingAndProbeLandInTheModel) {
   EXPECT_NEAR(flexible.mesh.beam_radius, std::sqrt(2e-4 / std::numbers::pi), 1e-12);
 }
 
+TEST(FlexibleMechanismReader, StagesReadThenReduceThenBuild) {
+  // Reading computes no modes, so a reference error fails before any reduction; a per-mode
+  // list's length needs the modes and fails in the build, still at its file:line:col.
+  std::string text = edited("node: tip}", "node: 12}");
+  EXPECT_THROW(read_case_text(text, "test.yaml"), InputError);
+  text = edited("[0.01, 0.02, 0.03]", "[0.01, 0.02]");
+  const Case input = read_case_text(text, "test.yaml");
+  const CaseReduction reduction = reduce_case(input, ReductionScope::kMechanismBodies);
+  try {
+    build_mechanism(input, reduction);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().to_string(), location_of(text, "[0.01, 0.02]"));
+  }
+  // The mode requests of `limber select` replace the case's in the reduction only.
+  ModeOverrides overrides{{"beam", input.flexible_bodies[0].request}};
+  overrides["beam"].normal_count = 2;
+  EXPECT_EQ(reduce_case(input, ReductionScope::kAllBodies, overrides).bodies[0].result.mode_set.shapes.cols(), 2);
+  EXPECT_EQ(input.flexible_bodies[0].request.normal_count, 3);
+  EXPECT_THROW(reduce_case(input, ReductionScope::kAllBodies, {{"bar", {}}}), InputError);
+}
+
 TEST(FlexibleMechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // A flexible_bodies entry that does not exist.
   std::string text = edited("flexible: beam", "flexible: bar");
