@@ -1,5 +1,5 @@
-// `limber modes`: reads a case, computes every flexible body's mode set (normal,
-// constraint and attachment modes, seed paper eq. 4-11), prints the frequency table and
+// `limber modes`: reads a case, computes every flexible body's mode set (io::reduce_case:
+// normal, constraint and attachment modes, seed paper eq. 4-11), prints the frequency table and
 // writes DIR/modes.h5 (docs/modes-format.md), DIR/modes_<body>.vtu (ParaView) and, from
 // modes.h5 through render/, animated mode shapes in DIR/modes/ (docs/rendering.md).
 #include <fmt/format.h>
@@ -15,7 +15,7 @@
 #include "app/json_text.h"
 #include "core/error.h"
 #include "io/case_reader.h"
-#include "io/flexible_body_modes.h"
+#include "io/case_reduction.h"
 #include "io/modes_file.h"
 #include "io/vtu_writer.h"
 #include "modal/component_modes.h"
@@ -136,12 +136,13 @@ int run_modes(const ModesOptions& options) {
   std::FILE* table = options.json ? stderr : stdout;
   fmt::print(table, "limber modes: {} ({})\n", input.title, input.file);
 
-  // Every body in turn; a numerical failure is reported and the others still computed.
+  // Every body's modes; a numerical failure is reported and the others still written.
+  io::CaseReduction reduction = io::reduce_case(input, io::ReductionScope::kAllBodies);
   std::vector<BodyOutcome> outcomes;
   std::vector<std::string> failures;
-  for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
-    // Reading a mechanism that uses the body has computed its modes already.
-    BodyOutcome outcome{&body, body.modes ? *body.modes : io::compute_body_modes(body)};
+  for (std::size_t b = 0; b < input.flexible_bodies.size(); ++b) {
+    const io::FlexibleBodyCase& body = input.flexible_bodies[b];
+    BodyOutcome outcome{&body, std::move(reduction.bodies[b].result)};
     if (outcome.result.status != modal::ModalStatus::kOk) {
       failures.push_back(fmt::format("body '{}': {}: {}", body.name,
                                      outcome.result.status == modal::ModalStatus::kSingular

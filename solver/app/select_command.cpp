@@ -138,7 +138,8 @@ int select_case(const SelectOptions& options) {
   if (options.reference_normal < 0) {
     throw InputError(fmt::format("expected --reference-normal >= 0, got {}", options.reference_normal));
   }
-  const io::Case input = io::read_case_file(options.case_file);
+  const auto shared_input = std::make_shared<const io::Case>(io::read_case_file(options.case_file));
+  const io::Case& input = *shared_input;
   if (!input.mechanism || input.mechanism->flexible_components.empty()) {
     throw InputError("expected a mechanism with at least one flexible body, got none",
                      SourceLocation{options.case_file, 0, 0});
@@ -172,7 +173,7 @@ int select_case(const SelectOptions& options) {
     std::fflush(text);
     std::optional<RunProgress> progress;
     select::CandidateRun run = select::run_candidate(
-        options.case_file, candidate, adjust, root / "runs" / folder_name(candidate.name),
+        shared_input, candidate, adjust, root / "runs" / folder_name(candidate.name),
         [&](const integrate::Sample& sample) {
           if (!progress) progress.emplace(adjust(input.mechanism->run).t_end, true);
           progress->update(sample.t, sample.statistics.steps);
@@ -195,13 +196,13 @@ int select_case(const SelectOptions& options) {
                            runs.front().summary.message);
     }
     const std::vector<select::RankedComponent> ranking = select::rank_reactions(
-        runs.front().input->mechanism->model, runs.front().reactions, runs.front().indeterminate, rank_by,
+        runs.front().mechanism.model, runs.front().reactions, runs.front().indeterminate, rank_by,
         options.keep);
     print_ranking(text, ranking, options.keep, options.rank_by);
 
     // Step 4: the other sets, then the comparison.
     const std::vector<select::ModeSetCandidate> candidates =
-        select::mode_set_candidates(*runs.front().input, ranking, candidate_options);
+        select::mode_set_candidates(input, runs.front().reduction, ranking, candidate_options);
     fmt::print(text, "\n");
     for (std::size_t k = 1; k < candidates.size(); ++k) runs.push_back(run_set(candidates[k], candidates.size()));
     const select::CandidateRun& reference = runs.back().ok() ? runs.back() : runs.front();

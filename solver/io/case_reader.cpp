@@ -1,11 +1,11 @@
 #include "io/case_reader.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <string_view>
 
 #include "io/case_library.h"
 #include "io/flexible_body_reader.h"
+#include "io/mechanism_builder.h"
 #include "io/mechanism_reader.h"
 #include "io/yaml_reader.h"
 
@@ -40,22 +40,7 @@ YamlValue with_base_case(const YamlValue& root, const std::string& file) {
   return root.with_base(base_root);
 }
 
-// Replaces the requests `overrides` names (before the mechanism computes any mode).
-void apply_overrides(std::vector<FlexibleBodyCase>& bodies, const ModeOverrides& overrides,
-                     const std::string& file) {
-  for (const auto& [name, request] : overrides) {
-    const auto body = std::find_if(bodies.begin(), bodies.end(),
-                                   [&](const FlexibleBodyCase& b) { return b.name == name; });
-    if (body == bodies.end()) {
-      throw InputError("expected an entry of 'flexible_bodies' named '" + name +
-                           "' for a mode set, got none",
-                       SourceLocation{file, 0, 0});
-    }
-    body->request = request;
-  }
-}
-
-Case read_case(const YamlDocument& document, const ModeOverrides& overrides) {
+Case read_case(const YamlDocument& document) {
   if (document.root().is_null()) {
     document.root().fail("expected a case (a map of sections), got an empty file");
   }
@@ -74,20 +59,20 @@ Case read_case(const YamlDocument& document, const ModeOverrides& overrides) {
       result.flexible_bodies.push_back(read_flexible_body(name, entry, library));
     }
   }
-  apply_overrides(result.flexible_bodies, overrides, result.file);
-  if (has_mechanism(root)) result.mechanism = read_mechanism(root, result.flexible_bodies);
+  // The mechanism as data, then its references checked (no modes needed).
+  if (has_mechanism(root)) {
+    result.mechanism = read_mechanism(root, result.flexible_bodies);
+    check_mechanism(*result.mechanism, result.flexible_bodies);
+  }
   return result;
 }
 
 }  // namespace
 
-Case read_case_file(const std::string& path, const ModeOverrides& overrides) {
-  return read_case(YamlDocument::load_file(path), overrides);
-}
+Case read_case_file(const std::string& path) { return read_case(YamlDocument::load_file(path)); }
 
-Case read_case_text(const std::string& text, const std::string& file,
-                    const ModeOverrides& overrides) {
-  return read_case(YamlDocument::load_text(text, file), overrides);
+Case read_case_text(const std::string& text, const std::string& file) {
+  return read_case(YamlDocument::load_text(text, file));
 }
 
 }  // namespace limber::io

@@ -1,4 +1,6 @@
-// Reads a limber case file (YAML; format in docs/case-format.md) into checked models.
+// Reads a limber case file (YAML; format in docs/case-format.md) into an io::Case: the first
+// stage of the pipeline read -> reduce (case_reduction.h) -> build (mechanism_builder.h).
+// Pure data, every section parsed and checked; no mode is computed.
 //
 // Top-level sections, each read by its own reader:
 //   title            text (default: the file's stem)
@@ -6,15 +8,16 @@
 //   sections         case_library.h
 //   flexible_bodies  flexible_body_reader.h -> one FeModel + ModeRequest per body
 //   gravity, bodies, markers, joints, drivers, forces, assembly, run
-//                    mechanism_reader.h -> one multibody::Model with its run settings
+//                    mechanism_reader.h -> the mechanism's entries and its run settings
 // Any other top-level key is an error that lists these.
 //
 // Every error is an InputError at file:line:col of the offending value (expected/got),
-// including the errors raised by fe::FeModelBuilder, which receives those locations.
+// including the errors raised by fe::FeModelBuilder and multibody::ModelBuilder, which
+// receive those locations. The mechanism's references (names, markers, joint and driver
+// types, hinge angles) are checked here too (check_mechanism); only the checks that need the
+// modes wait for the build.
 #pragma once
 
-#include <map>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,14 +36,7 @@ struct FlexibleBodyCase {
   SourceLocation modes_where;  // its `modes` entry (for errors of the mode computation)
   fe::FeModel model;
   modal::ModeRequest request;  // node indices refer to `model`
-  // Computed while reading a mechanism that uses this body (flexible_body_modes.h), else null.
-  std::shared_ptr<const modal::ModalResult> modes;
-  double reduction_seconds = 0.0;  // wall time of that computation [s]
 };
-
-// Mode requests that replace those of the case file, by `flexible_bodies` entry name: how
-// `limber select` runs one mechanism with several mode sets (the FE models stay as read).
-using ModeOverrides = std::map<std::string, modal::ModeRequest>;
 
 struct Case {
   std::string file;  // path as given
@@ -49,13 +45,10 @@ struct Case {
   std::optional<MechanismCase> mechanism;         // when the case has mechanism sections
 };
 
-// Reads and checks the case file at `path`; `overrides` replace the mode requests of the
-// bodies they name before any mode is computed. Throws InputError (with location), also when an
-// override names no entry of `flexible_bodies`.
-Case read_case_file(const std::string& path, const ModeOverrides& overrides = {});
+// Reads and checks the case file at `path`. Throws InputError (with location).
+Case read_case_file(const std::string& path);
 
 // Same from text; `file` names the text in messages (tests, stdin).
-Case read_case_text(const std::string& text, const std::string& file,
-                    const ModeOverrides& overrides = {});
+Case read_case_text(const std::string& text, const std::string& file);
 
 }  // namespace limber::io

@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
 #include <limits>
-#include <numbers>
 
-#include "io/flexible_body_modes.h"
+#include "core/error.h"
 #include "io/mechanism_values.h"
 #include "multibody/rotation.h"
 
@@ -17,9 +15,10 @@ namespace limber::io {
 namespace {
 
 // The `flexible_bodies` entry called `name`.
-FlexibleBodyCase& find_component(const YamlValue& value, std::vector<FlexibleBodyCase>& components) {
+const FlexibleBodyCase& find_component(const YamlValue& value,
+                                       const std::vector<FlexibleBodyCase>& components) {
   const std::string name = value.as_string();
-  for (FlexibleBodyCase& component : components) {
+  for (const FlexibleBodyCase& component : components) {
     if (component.name == name) return component;
   }
   std::string defined;
@@ -31,86 +30,82 @@ FlexibleBodyCase& find_component(const YamlValue& value, std::vector<FlexibleBod
              ")");
 }
 
-// A list of exactly n numbers.
-Eigen::VectorXd read_vector(const YamlValue& value, Eigen::Index n) {
+// A list of numbers, one per mode: its length is checked once the modes are known.
+PerModeValues read_per_mode(const YamlValue& value) {
   const std::vector<YamlValue> items = value.items();
-  if (static_cast<Eigen::Index>(items.size()) != n) {
-    value.fail(fmt::format("expected {} values (one per mode) for '{}', got {}", n, value.name(),
-                           items.size()));
+  PerModeValues result{Eigen::VectorXd(static_cast<Eigen::Index>(items.size())), value.name(),
+                       value.where()};
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    result.values(static_cast<Eigen::Index>(i)) = items[i].as_number();
   }
-  Eigen::VectorXd result(n);
-  for (Eigen::Index i = 0; i < n; ++i) result(i) = items[static_cast<std::size_t>(i)].as_number();
   return result;
 }
 
-multibody::ModalDamping read_damping(const YamlValue& value, Eigen::Index modes) {
-  if (value.is_scalar()) return multibody::ModalDamping::ratio(value.as_non_negative());
+// A ratio in every mode, ratios per mode (each checked where it stands), or Rayleigh.
+void read_damping(const YamlValue& value, FlexibleBodyEntry& body) {
+  if (value.is_scalar()) {
+    body.damping = multibody::ModalDamping::ratio(value.as_non_negative());
+    return;
+  }
   if (value.is_sequence()) {
-    // Each ratio checked where it stands in the file.
-    const Eigen::VectorXd ratios = read_vector(value, modes);
-    const std::vector<YamlValue> items = value.items();
-    for (const YamlValue& item : items) item.as_non_negative();
-    return multibody::ModalDamping::per_mode(ratios);
+    for (const YamlValue& item : value.items()) item.as_non_negative();
+    body.damping_ratios = read_per_mode(value);
+    return;
   }
   value.allow_only({"rayleigh"});
   const YamlValue rayleigh = value.at("rayleigh");
   const std::vector<YamlValue> items = rayleigh.items();
   if (items.size() != 2) rayleigh.fail("expected [alpha, beta] for 'rayleigh'");
-  return multibody::ModalDamping::rayleigh(items[0].as_non_negative(), items[1].as_non_negative());
-}
-
-// The FE elements, for drawing; beams as tubes of the largest section's equal-area radius.
-multibody::FlexibleMesh drawing_mesh(const fe::FeModel& model) {
-  multibody::FlexibleMesh mesh;
-  mesh.node_ids = model.node_ids;
-  for (const fe::BeamElement& beam : model.beams) mesh.lines.push_back(beam.nodes);
-  for (const fe::ShellElement& shell : model.shells) mesh.quads.push_back(shell.nodes);
-  for (const fe::BeamProperty& property : model.beam_properties) {
-    mesh.beam_radius = std::max(mesh.beam_radius, std::sqrt(property.section.area / std::numbers::pi));
-  }
-  return mesh;
+  body.damping =
+      multibody::ModalDamping::rayleigh(items[0].as_non_negative(), items[1].as_non_negative());
 }
 
 }  // namespace
 
-PlacedFlexibleBody read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
-                                                std::vector<FlexibleBodyCase>& components,
-                                                multibody::ModelBuilder& builder) {
+FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
+                                               const std::vector<FlexibleBodyCase>& components) {
   entry.allow_only({"flexible", "position", "orientation", "velocity", "angular_velocity",
                     "damping", "modal_coordinates", "modal_velocities", "deflection"});
-  FlexibleBodyCase& component = find_component(entry.at("flexible"), components);
-  multibody::FlexibleBodySpec spec;
-  spec.name = name;
-  spec.modes = body_mode_set(component);
-  spec.node_positions_B = component.model.node_positions;
-  spec.mesh = drawing_mesh(component.model);
-  const Eigen::Index modes = spec.modes.shapes.cols();
-  if (const auto position = entry.find("position")) spec.initial_pose.position = position->as_vector3();
+  const FlexibleBodyCase& component = find_component(entry.at("flexible"), components);
+  FlexibleBodyEntry body;
+  body.name = name;
+  body.component = component.name;
+  body.where = entry.where();
+  // Initial pose and velocities.
+  if (const auto position = entry.find("position")) body.initial_pose.position = position->as_vector3();
   if (const auto orientation = entry.find("orientation")) {
-    spec.initial_pose.orientation = multibody::quaternion_from_matrix(read_rotation(*orientation));
+    body.initial_pose.orientation = multibody::quaternion_from_matrix(read_rotation(*orientation));
   }
-  if (const auto velocity = entry.find("velocity")) spec.initial_velocity_W = velocity->as_vector3();
+  if (const auto velocity = entry.find("velocity")) body.initial_velocity_W = velocity->as_vector3();
   if (const auto omega = entry.find("angular_velocity")) {
-    spec.initial_angular_velocity_B = omega->as_vector3();
+    body.initial_angular_velocity_B = omega->as_vector3();
   }
-  if (const auto damping = entry.find("damping")) spec.damping = read_damping(*damping, modes);
-  if (const auto eta = entry.find("modal_coordinates")) {
-    spec.initial_modal_coordinates = read_vector(*eta, modes);
-  }
+  // Modal damping and initial modal values.
+  if (const auto damping = entry.find("damping")) read_damping(*damping, body);
+  if (const auto eta = entry.find("modal_coordinates")) body.modal_coordinates = read_per_mode(*eta);
   if (const auto eta_dot = entry.find("modal_velocities")) {
-    spec.initial_modal_velocities = read_vector(*eta_dot, modes);
+    body.modal_velocities = read_per_mode(*eta_dot);
   }
+  // Output: a node's deflection from a chord.
   if (const auto deflection = entry.find("deflection")) {
     deflection->allow_only({"node", "chord"});
     const YamlValue chord = deflection->at("chord");
     const std::vector<YamlValue> ends = chord.items();
     if (ends.size() != 2) chord.fail("expected [start node, end node] for 'chord'");
-    spec.deflection_probe = multibody::DeflectionProbe{read_node(deflection->at("node"), component),
+    body.deflection_probe = multibody::DeflectionProbe{read_node(deflection->at("node"), component),
                                                        read_node(ends[0], component),
                                                        read_node(ends[1], component)};
   }
-  builder.add_flexible_body(spec, entry.where());
-  return {&component, spec.initial_pose};
+  return body;
+}
+
+PlacedFlexibleBody place(const FlexibleBodyEntry& body,
+                         const std::vector<FlexibleBodyCase>& components) {
+  for (const FlexibleBodyCase& component : components) {
+    if (component.name == body.component) return {&component, body.initial_pose};
+  }
+  LIMBER_DEMAND(false);
+  return {};
 }
 
 int read_node(const YamlValue& value, const FlexibleBodyCase& component) {

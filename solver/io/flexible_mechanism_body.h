@@ -9,6 +9,8 @@
 //     damping: 0.02                # ratio of critical in every mode, or [ζ1, ζ2, ...] per
 //                                  # mode, or {rayleigh: [α, β]}; default 1 % (flexible_body.h)
 //     modal_coordinates, modal_velocities   # η, η̇ at t = 0 (default 0)
+//                                  # (lists one per mode: their length is checked by the build,
+//                                  # mechanism_builder.h, once the modes are known)
 //     deflection: {node: 51, chord: [R2, R3]}   # results: a node's elastic displacement
 //                                  # relative to the chord between two nodes (body axes)
 // Markers on a flexible body sit on FE nodes: named by `node:` (an id or a one-node set), or
@@ -21,9 +23,9 @@
 #include <Eigen/Dense>
 
 #include "io/case_reader.h"
+#include "io/mechanism_reader.h"
 #include "io/yaml_reader.h"
 #include "multibody/model.h"
-#include "multibody/model_builder.h"
 
 namespace limber::io {
 
@@ -33,11 +35,14 @@ struct PlacedFlexibleBody {
   multibody::Pose pose;  // initial X_WB
 };
 
-// Reads the entry, computes the component's modes when not done yet (kept in the component;
-// NumericalError when they fail) and adds the body to `builder`.
-PlacedFlexibleBody read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
-                                                std::vector<FlexibleBodyCase>& components,
-                                                multibody::ModelBuilder& builder);
+// Reads the entry; `components` are the case's flexible_bodies, one of which it must name.
+// Throws InputError (with location); computes nothing.
+FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
+                                               const std::vector<FlexibleBodyCase>& components);
+
+// The entry's component (which must exist) and initial pose.
+PlacedFlexibleBody place(const FlexibleBodyEntry& body,
+                         const std::vector<FlexibleBodyCase>& components);
 
 // Index of the node named by `value`: a node id, or a node set holding exactly one node.
 int read_node(const YamlValue& value, const FlexibleBodyCase& component);

@@ -2,11 +2,13 @@
 
 #include <map>
 #include <string>
+#include <type_traits>
+#include <variant>
 
+#include "io/case_reader.h"
 #include "io/flexible_mechanism_body.h"
 #include "io/mechanism_values.h"
 #include "io/run_settings_reader.h"
-#include "multibody/model_builder.h"
 #include "multibody/rotation.h"
 
 namespace limber::io {
@@ -17,7 +19,6 @@ const std::initializer_list<std::string_view> kMechanismSections = {
 namespace {
 
 using multibody::JointType;
-using multibody::ModelBuilder;
 
 // Velocity components a held coordinate may name (multibody::HeldCoordinate::component).
 const std::initializer_list<std::string_view> kComponents = {"x", "y", "z", "rx", "ry", "rz"};
@@ -55,7 +56,7 @@ multibody::Shape read_shape(const YamlValue& entry) {
   return shape;
 }
 
-void read_body(const std::string& name, const YamlValue& entry, ModelBuilder& builder) {
+RigidBodyEntry read_body(const std::string& name, const YamlValue& entry) {
   entry.allow_only({"mass", "inertia", "center_of_mass", "position", "orientation", "velocity",
                     "angular_velocity", "shapes"});
   multibody::RigidBodySpec spec;
@@ -80,15 +81,15 @@ void read_body(const std::string& name, const YamlValue& entry, ModelBuilder& bu
   if (const auto shapes = entry.find("shapes")) {
     for (const YamlValue& shape : shapes->items()) spec.shapes.push_back(read_shape(shape));
   }
-  builder.add_rigid_body(spec, entry.where());
+  return {spec, entry.where()};
 }
 
 // The flexible bodies of the mechanism, by name.
 using FlexibleBodies = std::map<std::string, PlacedFlexibleBody>;
 
 // A marker on an FE node of a flexible body: axes in body axes, or in ground at the initial pose.
-void read_node_marker(const std::string& name, const YamlValue& entry,
-                      const PlacedFlexibleBody& body, ModelBuilder& builder) {
+MarkerEntry read_node_marker(const std::string& name, const YamlValue& entry,
+                             const PlacedFlexibleBody& body) {
   entry.allow_only({"body", "node", "orientation", "frame"});
   const std::string body_name = entry.at("body").as_string();
   const int node = read_node(entry.at("node"), *body.component);
@@ -97,16 +98,16 @@ void read_node_marker(const std::string& name, const YamlValue& entry,
   if (entry.find("frame") && entry.at("frame").as_choice({"body", "ground"}) == "ground") {
     rotation = multibody::rotation_matrix(body.pose.orientation).transpose() * rotation;
   }
-  builder.add_node_marker(name, body_name, node, rotation, entry.where());
+  return {name, body_name, MarkerEntry::Frame::kNode, Eigen::Vector3d::Zero(), rotation, node,
+          entry.where()};
 }
 
 // Position and orientation of a marker, in the body frame or in ground at the initial poses.
-void read_marker(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible,
-                 ModelBuilder& builder) {
+MarkerEntry read_marker(const std::string& name, const YamlValue& entry,
+                        const FlexibleBodies& flexible) {
   const std::string body = entry.at("body").as_string();
   if (const auto found = flexible.find(body); found != flexible.end()) {
-    read_node_marker(name, entry, found->second, builder);
-    return;
+    return read_node_marker(name, entry, found->second);
   }
   entry.allow_only({"body", "position", "orientation", "frame"});
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -115,11 +116,8 @@ void read_marker(const std::string& name, const YamlValue& entry, const Flexible
   if (const auto orientation = entry.find("orientation")) rotation = read_rotation(*orientation);
   const bool in_ground =
       entry.find("frame") && entry.at("frame").as_choice({"body", "ground"}) == "ground";
-  if (in_ground) {
-    builder.add_marker_at(name, body, position, rotation, entry.where());
-  } else {
-    builder.add_marker(name, body, position, rotation, entry.where());
-  }
+  return {name, body, in_ground ? MarkerEntry::Frame::kGround : MarkerEntry::Frame::kBody,
+          position, rotation, -1, entry.where()};
 }
 
 JointType read_joint_type(const YamlValue& value) {
@@ -135,11 +133,10 @@ JointType read_joint_type(const YamlValue& value) {
 
 // A joint on two named markers, or at a point given in ground (it then creates the markers
 // <name>.i on body_i and <name>.j on body_j, frames `orientation` and `orientation_j`).
-JointType read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible,
-                     ModelBuilder& builder) {
+JointEntry read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible) {
   entry.allow_only({"type", "marker_i", "marker_j", "body_i", "body_j", "position", "orientation",
                     "orientation_j"});
-  const JointType type = read_joint_type(entry.at("type"));
+  JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where()};
   if (entry.find("marker_i") || entry.find("marker_j")) {
     for (const char* key : {"body_i", "body_j", "position", "orientation", "orientation_j"}) {
       if (entry.find(key)) {
@@ -147,9 +144,9 @@ JointType read_joint(const std::string& name, const YamlValue& entry, const Flex
                    "(and orientations) for joint '" + name + "', got both ('" + key + "')");
       }
     }
-    builder.add_joint(name, type, entry.at("marker_i").as_string(),
-                      entry.at("marker_j").as_string(), entry.where());
-    return type;
+    joint.marker_i = entry.at("marker_i").as_string();
+    joint.marker_j = entry.at("marker_j").as_string();
+    return joint;
   }
   const Eigen::Vector3d p_W = entry.at("position").as_vector3();
   Eigen::Matrix3d R_i = Eigen::Matrix3d::Identity();
@@ -164,20 +161,22 @@ JointType read_joint(const std::string& name, const YamlValue& entry, const Flex
       const int node = node_at_point(found->second, body, p_W, entry.at("position"));
       const Eigen::Matrix3d R_B =
           multibody::rotation_matrix(found->second.pose.orientation).transpose() * R_W;
-      builder.add_node_marker(marker, body, node, R_B, entry.where());
+      joint.markers.push_back({marker, body, MarkerEntry::Frame::kNode, Eigen::Vector3d::Zero(), R_B,
+                               node, entry.where()});
     } else {
-      builder.add_marker_at(marker, body, p_W, R_W, entry.where());
+      joint.markers.push_back({marker, body, MarkerEntry::Frame::kGround, p_W, R_W, -1, entry.where()});
     }
   };
   add_marker(name + ".i", "body_i", R_i);
   add_marker(name + ".j", "body_j", R_j);
-  builder.add_joint(name, type, name + ".i", name + ".j", entry.where());
-  return type;
+  joint.marker_i = name + ".i";
+  joint.marker_j = name + ".j";
+  return joint;
 }
 
 // The driven coordinate: given, or implied by a revolute (rotation) or translational joint.
-void read_driver(const std::string& name, const YamlValue& entry,
-                 const std::map<std::string, JointType>& joints, ModelBuilder& builder) {
+DriverEntry read_driver(const std::string& name, const YamlValue& entry,
+                        const std::map<std::string, JointType>& joints) {
   entry.allow_only({"joint", "coordinate", "motion"});
   const YamlValue joint = entry.at("joint");
   const std::string joint_name = joint.as_string();
@@ -196,11 +195,10 @@ void read_driver(const std::string& name, const YamlValue& entry,
       coordinate = multibody::DriverCoordinate::kTranslation;
     }
   }
-  builder.add_driver(name, joint_name, coordinate, read_time_function(entry.at("motion")),
-                     entry.where());
+  return {name, joint_name, coordinate, read_time_function(entry.at("motion")), entry.where()};
 }
 
-void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& builder) {
+ForceEntry read_force(const std::string& name, const YamlValue& entry) {
   const std::string type =
       entry.at("type").as_choice({"rsda", "tsda", "point_load", "latch", "stop"});
   if (type == "latch" || type == "stop") {
@@ -212,7 +210,7 @@ void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& b
     spec.angle = entry.at("angle").as_number();
     if (const auto k = entry.find("stiffness")) spec.stiffness = k->as_positive();
     if (const auto c = entry.find("damping")) spec.damping = c->as_non_negative();
-    builder.add_hinge_limit(spec, entry.where());
+    return {spec, entry.where()};
   } else if (type == "rsda") {
     entry.allow_only({"type", "marker_i", "marker_j", "stiffness", "damping", "free_angle",
                       "actuator", "actuator_of", "angle_center"});
@@ -228,7 +226,7 @@ void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& b
     if (const auto of = entry.find("actuator_of")) {
       spec.actuator_of_angle = of->as_choice({"time", "angle"}) == "angle";
     }
-    builder.add_rsda(spec, entry.where());
+    return {spec, entry.where()};
   } else if (type == "tsda") {
     entry.allow_only({"type", "marker_i", "marker_j", "stiffness", "damping", "free_length",
                       "actuator"});
@@ -240,7 +238,7 @@ void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& b
     if (const auto c = entry.find("damping")) spec.damping = c->as_non_negative();
     if (const auto l0 = entry.find("free_length")) spec.free_length = l0->as_non_negative();
     if (const auto actuator = entry.find("actuator")) spec.actuator = read_time_function(*actuator);
-    builder.add_tsda(spec, entry.where());
+    return {spec, entry.where()};
   } else {
     entry.allow_only({"type", "marker", "force", "torque", "frame", "scale"});
     multibody::PointLoadSpec spec;
@@ -254,11 +252,26 @@ void read_force(const std::string& name, const YamlValue& entry, ModelBuilder& b
       }
     }
     if (const auto scale = entry.find("scale")) spec.scale = read_time_function(*scale);
-    builder.add_point_load(spec, entry.where());
+    return {spec, entry.where()};
   }
 }
 
-multibody::AssemblyOptions read_assembly(const YamlValue& entry, const multibody::Model& model) {
+// Model index of the body called `name`: 0 for ground, k + 1 for bodies[k], -1 for none.
+int body_index(const std::vector<BodyEntry>& bodies, const std::string& name) {
+  if (name == "ground") return 0;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const std::string& body = std::visit(
+        [](const auto& e) -> const std::string& {
+          if constexpr (std::is_same_v<std::decay_t<decltype(e)>, RigidBodyEntry>) return e.spec.name;
+          else return e.name;
+        },
+        bodies[k]);
+    if (body == name) return static_cast<int>(k) + 1;
+  }
+  return -1;
+}
+
+multibody::AssemblyOptions read_assembly(const YamlValue& entry, const std::vector<BodyEntry>& bodies) {
   entry.allow_only({"held", "tolerance", "max_iterations"});
   multibody::AssemblyOptions options;
   if (const auto tolerance = entry.find("tolerance")) options.tolerance = tolerance->as_positive();
@@ -269,7 +282,7 @@ multibody::AssemblyOptions read_assembly(const YamlValue& entry, const multibody
     for (const YamlValue& item : held->items()) {
       item.allow_only({"body", "component"});
       const YamlValue body = item.at("body");
-      const int b = model.find_body(body.as_string());
+      const int b = body_index(bodies, body.as_string());
       if (b <= 0) {
         body.fail("expected a moving body for 'body', got '" + body.as_string() + "'" +
                   (b == 0 ? " (ground does not move)" : " (no such body under 'bodies')"));
@@ -295,46 +308,49 @@ bool has_mechanism(const YamlValue& root) {
   return false;
 }
 
-MechanismCase read_mechanism(const YamlValue& root, std::vector<FlexibleBodyCase>& components) {
+MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBodyCase>& components) {
   if (!root.find("bodies")) {
     root.fail("missing required key 'bodies' in 'the case file' (a mechanism needs its bodies)");
   }
-  // Set-up: gravity, bodies, markers, joints, drivers, forces, in that order (each refers
-  // to the ones before).
-  ModelBuilder builder;
-  if (const auto gravity = root.find("gravity")) builder.set_gravity(gravity->as_vector3());
+  // Gravity, bodies, markers, joints, drivers, forces, in that order (each refers to the ones
+  // before).
+  MechanismCase result;
+  if (const auto gravity = root.find("gravity")) result.gravity_W = gravity->as_vector3();
   FlexibleBodies flexible;
   for (const auto& [name, entry] : root.at("bodies").entries()) {
     if (entry.is_map() && entry.find("flexible")) {
-      flexible[name] = read_flexible_mechanism_body(name, entry, components, builder);
+      FlexibleBodyEntry body = read_flexible_mechanism_body(name, entry, components);
+      flexible[name] = place(body, components);
+      result.flexible_components[name] = body.component;
+      result.bodies.emplace_back(std::move(body));
     } else {
-      read_body(name, entry, builder);
+      result.bodies.emplace_back(read_body(name, entry));
     }
   }
   if (const auto markers = root.find("markers")) {
-    for (const auto& [name, entry] : markers->entries()) read_marker(name, entry, flexible, builder);
+    for (const auto& [name, entry] : markers->entries()) {
+      result.markers.push_back(read_marker(name, entry, flexible));
+    }
   }
   std::map<std::string, JointType> joint_types;
   if (const auto joints = root.find("joints")) {
     for (const auto& [name, entry] : joints->entries()) {
-      joint_types[name] = read_joint(name, entry, flexible, builder);
+      result.joints.push_back(read_joint(name, entry, flexible));
+      joint_types[name] = result.joints.back().type;
     }
   }
   if (const auto drivers = root.find("drivers")) {
     for (const auto& [name, entry] : drivers->entries()) {
-      read_driver(name, entry, joint_types, builder);
+      result.drivers.push_back(read_driver(name, entry, joint_types));
     }
   }
   if (const auto forces = root.find("forces")) {
-    for (const auto& [name, entry] : forces->entries()) read_force(name, entry, builder);
+    for (const auto& [name, entry] : forces->entries()) result.forces.push_back(read_force(name, entry));
   }
 
-  // Frozen model, then what to do with it.
-  MechanismCase result;
-  result.model = builder.build();
-  for (const auto& [name, body] : flexible) result.flexible_components[name] = body.component->name;
+  // What to do with the model.
   if (const auto assembly = root.find("assembly")) {
-    result.assembly = read_assembly(*assembly, result.model);
+    result.assembly = read_assembly(*assembly, result.bodies);
   }
   if (const auto run = root.find("run")) result.run = read_run_settings(*run);
   return result;

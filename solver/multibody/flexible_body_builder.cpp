@@ -77,27 +77,15 @@ Eigen::VectorXd initial_modal_values(const std::string& name, const char* what, 
 
 }  // namespace
 
-int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLocation& where) {
-  // Name, pose, and a mode set whose pieces fit together.
+std::shared_ptr<FlexibleBody> ModelBuilder::flexible_outline(const FlexibleBodySpec& spec,
+                                                            const SourceLocation& where) const {
   check_new_body(spec.name, spec.initial_pose, where);
   const int nodes = static_cast<int>(spec.node_positions_B.size());
-  check_mode_set_sizes(spec.name, spec.modes, nodes, where);
-  const Eigen::Index nm = spec.modes.shapes.cols();
-  check_damping(spec.name, spec.damping, nm, where);
-  // The body's constant data, shared by every copy of the model.
   auto flexible = std::make_shared<FlexibleBody>();
   flexible->node_positions.resize(3, nodes);
   for (int p = 0; p < nodes; ++p) flexible->node_positions.col(p) = spec.node_positions_B[p];
-  flexible->shapes = spec.modes.shapes;
-  flexible->stiffness = spec.modes.modal_stiffness;
-  flexible->damping = modal_damping_coefficients(spec.damping, flexible->stiffness);
-  flexible->invariants = spec.modes.invariants;
   flexible->size = nodes > 0 ? (flexible->node_positions.rowwise().maxCoeff() -
                                 flexible->node_positions.rowwise().minCoeff()).norm() : 0.0;
-  flexible->initial_modal_coordinates =
-      initial_modal_values(spec.name, "initial modal coordinates", spec.initial_modal_coordinates, nm, where);
-  flexible->initial_modal_velocities =
-      initial_modal_values(spec.name, "initial modal velocities", spec.initial_modal_velocities, nm, where);
   flexible->mesh = spec.mesh;
   if (const auto& probe = spec.deflection_probe) {
     for (int node : {probe->node, probe->chord_start, probe->chord_end}) {
@@ -112,6 +100,40 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
     }
   }
   flexible->deflection_probe = spec.deflection_probe;
+  return flexible;
+}
+
+int ModelBuilder::add_flexible_body_outline(const FlexibleBodySpec& spec, const SourceLocation& where) {
+  // The frame alone: no modes, so no modal coordinates yet.
+  Body body;
+  body.name = spec.name;
+  body.kind = BodyKind::kFlexible;
+  body.flexible = flexible_outline(spec, where);
+  body.initial_pose = spec.initial_pose;
+  body.initial_pose.orientation.normalize();
+  body.shapes = spec.shapes;
+  body.nq = 7;
+  body.nv = 6;
+  ++outlines_;
+  return append_body(std::move(body));
+}
+
+int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLocation& where) {
+  // Name, pose, nodes, probe, and a mode set whose pieces fit together.
+  std::shared_ptr<FlexibleBody> flexible = flexible_outline(spec, where);
+  const int nodes = static_cast<int>(spec.node_positions_B.size());
+  check_mode_set_sizes(spec.name, spec.modes, nodes, where);
+  const Eigen::Index nm = spec.modes.shapes.cols();
+  check_damping(spec.name, spec.damping, nm, where);
+  // The body's constant data, shared by every copy of the model.
+  flexible->shapes = spec.modes.shapes;
+  flexible->stiffness = spec.modes.modal_stiffness;
+  flexible->damping = modal_damping_coefficients(spec.damping, flexible->stiffness);
+  flexible->invariants = spec.modes.invariants;
+  flexible->initial_modal_coordinates =
+      initial_modal_values(spec.name, "initial modal coordinates", spec.initial_modal_coordinates, nm, where);
+  flexible->initial_modal_velocities =
+      initial_modal_values(spec.name, "initial modal velocities", spec.initial_modal_velocities, nm, where);
   // Undeformed rigid properties, for information: m, c, J_c = J_o + m c̃ c̃.
   const modal::ModalInvariants& inv = flexible->invariants;
   Body body;

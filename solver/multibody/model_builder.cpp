@@ -286,6 +286,7 @@ void ModelBuilder::add_point_load(const PointLoadSpec& spec, const SourceLocatio
 }
 
 Model ModelBuilder::build() const {
+  LIMBER_DEMAND(outlines_ == 0);
   Model model = model_;
   model.equations.clear();
   // Joint equations first, named "<joint>.<component>".

@@ -4,6 +4,7 @@
 // Body 0 is "ground". Names of joints, drivers and force elements share one namespace.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,11 @@ class ModelBuilder {
   // plus modes is positive definite (modes holding rigid motion the frame already carries
   // make it singular).
   int add_flexible_body(const FlexibleBodySpec& spec, const SourceLocation& where = {});
+  // A flexible body whose modes are not known yet (spec.modes, damping and initial modal
+  // values ignored): name, pose, nodes and deflection probe are checked as above, so that the
+  // markers, joints and forces on it can be checked before the modal reduction (the case
+  // reader's check). A builder holding such a body cannot build() (it aborts).
+  int add_flexible_body_outline(const FlexibleBodySpec& spec, const SourceLocation& where = {});
   // Marker given in the body frame; R_BM must be a rotation (orthonormal, det +1). Not on
   // flexible bodies (their markers sit on nodes: add_node_marker).
   int add_marker(const std::string& name, const std::string& body, const Eigen::Vector3d& p_BM,
@@ -125,6 +131,7 @@ class ModelBuilder {
   void add_hinge_limit(const HingeLimitSpec& spec, const SourceLocation& where = {});
 
   // Numbers the coordinates and the constraint equations; the builder stays usable.
+  // Precondition: no body was added by add_flexible_body_outline.
   Model build() const;
 
  private:
@@ -136,8 +143,12 @@ class ModelBuilder {
   int append_body(Body body);
   void claim_element_name(const std::string& name, const SourceLocation& where);
 
+  // The frame-independent part of a flexible body: node positions, mesh, checked probe.
+  std::shared_ptr<FlexibleBody> flexible_outline(const FlexibleBodySpec& spec, const SourceLocation& where) const;
+
   Model model_;
   std::vector<std::string> element_names_;
+  int outlines_ = 0;  // bodies added by add_flexible_body_outline
 };
 
 }  // namespace limber::multibody

@@ -58,8 +58,9 @@ int static_mode_count(const modal::ModeRequest& request) {
 }
 
 // The normal modes the normal-mode run computed for a body.
-int normal_count(const io::FlexibleBodyCase& body) {
-  return body.modes ? static_cast<int>(body.modes->mode_set.shapes.cols()) : body.request.normal_count;
+int normal_count(const io::FlexibleBodyCase& body, const io::CaseReduction& normal) {
+  const io::BodyReduction* reduced = normal.find(body.name);
+  return reduced ? static_cast<int>(reduced->result.mode_set.shapes.cols()) : body.request.normal_count;
 }
 
 // Every body's request with `normal` normal modes (by count) and its static modes kept.
@@ -100,7 +101,7 @@ io::ModeOverrides normal_only(const io::Case& input) {
   return requests;
 }
 
-std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input,
+std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input, const io::CaseReduction& normal_run,
                                                   const std::vector<RankedComponent>& ranking,
                                                   const CandidateOptions& options) {
   const io::ModeOverrides normal = normal_only(input);
@@ -146,7 +147,7 @@ std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input,
   // Like for like: the same number of modes, all normal; then the richest set.
   std::map<std::string, int> more, reference;
   for (const auto& [name, request] : kept.requests) {
-    const int normals = normal_count(component_of(input, name));
+    const int normals = normal_count(component_of(input, name), normal_run);
     more[name] = normals + static_mode_count(request);
     reference[name] = options.reference_normal > 0 ? options.reference_normal : 4 * normals;
   }

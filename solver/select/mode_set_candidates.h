@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
 #include "select/reaction_ranking.h"
 
 namespace limber::select {
@@ -42,8 +43,9 @@ struct CandidateOptions {
 io::ModeOverrides normal_only(const io::Case& input);
 
 // The sets above for the kept components of `ranking` (which must keep at least one), in the
-// order listed. `input` must hold a mechanism.
-std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input,
+// order listed. `input` must hold a mechanism; `normal` is the normal-mode run's reduction
+// (its mode counts set those of the other sets).
+std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input, const io::CaseReduction& normal,
                                                   const std::vector<RankedComponent>& ranking,
                                                   const CandidateOptions& options);
 

@@ -34,27 +34,28 @@ Eigen::MatrixXd stack(const std::vector<Eigen::VectorXd>& rows, Eigen::Index col
 
 }  // namespace
 
-CandidateRun run_candidate(const std::string& case_file, const ModeSetCandidate& candidate,
+CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
                            const SettingsAdjustment& adjust, const std::filesystem::path& directory,
                            const std::function<void(const integrate::Sample&)>& on_sample) {
   CandidateRun result;
   result.candidate = candidate;
   result.directory = directory;
-  auto input = std::make_shared<io::Case>(io::read_case_file(case_file, candidate.requests));
   if (!input->mechanism) {
-    throw InputError("expected a mechanism (a 'bodies' section), got none", SourceLocation{case_file, 0, 0});
+    throw InputError("expected a mechanism (a 'bodies' section), got none", SourceLocation{input->file, 0, 0});
   }
   result.input = input;
-  for (const io::FlexibleBodyCase& body : input->flexible_bodies) {
-    if (!body.modes) continue;
-    result.reduction_seconds += body.reduction_seconds;
-    for (const std::string& notice : body.modes->notices) result.notices.push_back(body.name + ": " + notice);
+  // The set's modes, then its model.
+  result.reduction = io::reduce_case(*input, io::ReductionScope::kMechanismBodies, candidate.requests);
+  for (const io::BodyReduction& body : result.reduction.bodies) {
+    result.reduction_seconds += body.seconds;
+    for (const std::string& notice : body.result.notices) result.notices.push_back(body.name + ": " + notice);
   }
-  const multibody::Model& model = input->mechanism->model;
+  result.mechanism = io::build_mechanism(*input, result.reduction);
+  const multibody::Model& model = result.mechanism.model;
   for (const multibody::Body& body : model.bodies) {
     if (body.flexible) result.modes += static_cast<int>(body.flexible->shapes.cols());
   }
-  const io::RunSettings settings = adjust ? adjust(input->mechanism->run) : input->mechanism->run;
+  const io::RunSettings settings = adjust ? adjust(result.mechanism.run) : result.mechanism.run;
   run::check_settings(settings);
 
   // Every sample's reactions on the flexible bodies and deflections, kept in memory.
@@ -83,7 +84,7 @@ CandidateRun run_candidate(const std::string& case_file, const ModeSetCandidate&
     if (on_sample) on_sample(sample);
   };
   try {
-    result.summary = run::run_mechanism(model, input->mechanism->assembly, settings, hooks);
+    result.summary = run::run_mechanism(model, result.mechanism.assembly, settings, hooks);
   } catch (const SelectionInterrupted&) {
     writer.finish(results::RunStatus::kInterrupted, "selection interrupted by a signal");
     throw;
@@ -103,7 +104,7 @@ std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& rank
   for (const RankedComponent& component : ranking) {
     if (component.kept) keys.push_back({component.description(), false, 6 * component.site_index + component.column()});
   }
-  const multibody::Model& model = reference.input->mechanism->model;
+  const multibody::Model& model = reference.mechanism.model;
   const std::vector<int> probed = probed_bodies(model);
   for (std::size_t p = 0; p < probed.size(); ++p) {
     const auto columns = reference.deflections.middleCols(3 * static_cast<Eigen::Index>(p), 3);

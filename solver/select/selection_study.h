@@ -1,8 +1,8 @@
 // Runs the mode sets of a selection (mode_set_candidates.h) and measures each against the
 // richest one, as the seed paper's Fig. 6 compares mode sets (docs/select.md).
 //
-// Every run reads the case afresh with its mode requests (io::ModeOverrides), so the modal
-// reduction and its wall time are part of what a set costs; each writes DIR/results.h5 like
+// Every run reduces the case (read once) with its mode requests (io::ModeOverrides) and builds
+// its model, so the modal reduction and its wall time are part of what a set costs; each writes DIR/results.h5 like
 // `limber run`. A set whose run fails is a row with its message, never a lost selection.
 #pragma once
 
@@ -17,6 +17,8 @@
 #include <Eigen/Core>
 
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 #include "run/run_driver.h"
 #include "select/mode_set_candidates.h"
 #include "select/reaction_ranking.h"
@@ -30,7 +32,9 @@ enum class ErrorNorm { kPeak, kRms };
 // One mode set's run: what it cost and the series the comparison measures.
 struct CandidateRun {
   ModeSetCandidate candidate;
-  std::shared_ptr<const io::Case> input;  // the case as read with the set's modes
+  std::shared_ptr<const io::Case> input;  // the case as read (shared by every run)
+  io::CaseReduction reduction;            // the set's modes
+  io::Mechanism mechanism;                // the model built with them
   int modes = 0;                   // modes of all flexible bodies together
   double reduction_seconds = 0.0;  // wall time of their modal reductions [s]
   std::vector<std::string> notices;  // the reduction's, e.g. a static mode dropped as dependent
@@ -56,11 +60,11 @@ using SettingsAdjustment = std::function<io::RunSettings(const io::RunSettings&)
 // "interrupted" before it leaves run_candidate.
 struct SelectionInterrupted {};
 
-// Runs one set from `case_file` into `directory` (created; locked while written). `on_sample`
+// Runs one set of `input` (which must hold a mechanism) into `directory` (created; locked while written). `on_sample`
 // sees every sample (progress; it may throw SelectionInterrupted). Throws InputError on bad
 // input; a numerical failure is in the returned summary. Any exception closes the results file
 // first ("interrupted" or "failed").
-CandidateRun run_candidate(const std::string& case_file, const ModeSetCandidate& candidate,
+CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
                            const SettingsAdjustment& adjust, const std::filesystem::path& directory,
                            const std::function<void(const integrate::Sample&)>& on_sample = {});
 

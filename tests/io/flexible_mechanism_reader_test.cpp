@@ -2,6 +2,8 @@
 // gets its modes, markers on its FE nodes (by node id, node set or the ground point of a
 // joint), its damping and deflection probe; bad input names file, line and what was expected.
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -53,13 +55,17 @@ std::string edited(const std::string& from, const std::string& to) {
 TEST(FlexibleMechanismReader, BodyMarkersDampingAndProbeLandInTheModel) {
   const Case input = read_case_text(kCase, "test.yaml");
   ASSERT_TRUE(input.mechanism.has_value());
-  const multibody::Model& model = input.mechanism->model;
+  // Reading computes no modes; the reduction computes those of the one entry the mechanism uses.
+  const io::CaseReduction reduction = io::reduce_case(input, io::ReductionScope::kMechanismBodies);
+  const io::Mechanism built = io::build_mechanism(input, reduction);
+  const multibody::Model& model = built.model;
   const multibody::Body& arm = model.bodies[model.find_body("arm")];
   ASSERT_EQ(arm.kind, multibody::BodyKind::kFlexible);
-  // Frame (6) plus 3 modes; its modes are kept with the flexible_bodies entry (computed once).
+  // Frame (6) plus 3 modes, those of the flexible_bodies entry's reduction.
   EXPECT_EQ(arm.nv, 9);
-  ASSERT_TRUE(input.flexible_bodies[0].modes != nullptr);
-  EXPECT_EQ(input.flexible_bodies[0].modes->mode_set.shapes.cols(), 3);
+  ASSERT_EQ(reduction.bodies.size(), 1u);
+  EXPECT_EQ(reduction.bodies[0].name, input.flexible_bodies[0].name);
+  EXPECT_EQ(reduction.bodies[0].result.mode_set.shapes.cols(), 3);
   // Mass rho A L; damping c_i = 2 ζ_i ω_i per mode.
   EXPECT_NEAR(arm.mass, 7820 * 0.01 * 0.02, 1e-9);
   const multibody::FlexibleBody& flexible = *arm.flexible;
@@ -82,6 +88,28 @@ TEST(FlexibleMechanismReader, BodyMarkersDampingAndProbeLandInTheModel) {
   // Drawn as 10 lines, tubes of the section's equal-area radius sqrt(A / pi).
   EXPECT_EQ(flexible.mesh.lines.size(), 10u);
   EXPECT_NEAR(flexible.mesh.beam_radius, std::sqrt(2e-4 / std::numbers::pi), 1e-12);
+}
+
+TEST(FlexibleMechanismReader, StagesReadThenReduceThenBuild) {
+  // Reading computes no modes, so a reference error fails before any reduction; a per-mode
+  // list's length needs the modes and fails in the build, still at its file:line:col.
+  std::string text = edited("node: tip}", "node: 12}");
+  EXPECT_THROW(read_case_text(text, "test.yaml"), InputError);
+  text = edited("[0.01, 0.02, 0.03]", "[0.01, 0.02]");
+  const Case input = read_case_text(text, "test.yaml");
+  const CaseReduction reduction = reduce_case(input, ReductionScope::kMechanismBodies);
+  try {
+    build_mechanism(input, reduction);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().to_string(), location_of(text, "[0.01, 0.02]"));
+  }
+  // The mode requests of `limber select` replace the case's in the reduction only.
+  ModeOverrides overrides{{"beam", input.flexible_bodies[0].request}};
+  overrides["beam"].normal_count = 2;
+  EXPECT_EQ(reduce_case(input, ReductionScope::kAllBodies, overrides).bodies[0].result.mode_set.shapes.cols(), 2);
+  EXPECT_EQ(input.flexible_bodies[0].request.normal_count, 3);
+  EXPECT_THROW(reduce_case(input, ReductionScope::kAllBodies, {{"bar", {}}}), InputError);
 }
 
 TEST(FlexibleMechanismReader, BadInputNamesFileLineAndWhatWasExpected) {

@@ -1,5 +1,6 @@
-// Test helpers: where a piece of text sits in an inline case, and checks that reading a
-// case fails with an InputError at that place with the expected words.
+// Test helpers: where a piece of text sits in an inline case, and checks that a case fails
+// with an InputError at that place with the expected words: in the read stage, or for the
+// checks that need the modes (per-mode list lengths), in the build after the reduction.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,6 +9,8 @@
 
 #include "core/error.h"
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 
 namespace limber::test {
 
@@ -31,11 +34,15 @@ inline std::string location_of(const std::string& text, const std::string& marke
          std::to_string(at - line_start + 1);
 }
 
-// Reads `text`; expects an InputError located at `where` whose message holds `words`.
+// Reads `text` (and reduces and builds its mechanism, if any); expects an InputError
+// located at `where` whose message holds `words`.
 inline ::testing::AssertionResult fails_at(const std::string& text, const std::string& where,
                                            const std::string& words) {
   try {
-    io::read_case_text(text, kCaseName);
+    const io::Case input = io::read_case_text(text, kCaseName);
+    if (input.mechanism) {
+      io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+    }
   } catch (const InputError& error) {
     const std::string got = error.what();
     if (got.rfind(where + ": ", 0) != 0) {

@@ -1,6 +1,8 @@
 // The mechanism sections of a case: values land in the multibody::Model and the run settings;
 // every bad-input class gives file:line:col and an expected/got message.
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -71,7 +73,8 @@ run:
 TEST(MechanismReader, ValuesLandInTheModelAndSettings) {
   const Case input = read_case_text(kMechanism, "test.yaml");
   ASSERT_TRUE(input.mechanism.has_value());
-  const multibody::Model& model = input.mechanism->model;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
   EXPECT_EQ(model.gravity_W, Eigen::Vector3d(0, 0, -9.81));
 
   // Bodies: ground + 2, inertia tensor with products, pose from axis-angle.
@@ -126,7 +129,7 @@ TEST(MechanismReader, ValuesLandInTheModelAndSettings) {
   EXPECT_NEAR(load.scale.evaluate(0.25).value, 0.5, 1e-15);  // linear table
 
   // Assembly and run settings.
-  const MechanismCase& mechanism = *input.mechanism;
+  const io::Mechanism& mechanism = built;
   ASSERT_EQ(mechanism.assembly.held.size(), 1u);
   EXPECT_EQ(mechanism.assembly.held[0].body, model.find_body("block"));
   EXPECT_EQ(mechanism.assembly.held[0].component, 0);
@@ -148,7 +151,7 @@ TEST(MechanismReader, DefaultsWithoutRunSection) {
   EXPECT_EQ(input.mechanism->run.integrator.method, integrate::Method::kIda);
   EXPECT_EQ(input.mechanism->run.t_end, 1.0);
   EXPECT_EQ(input.mechanism->run.sample_interval, 1e-2);
-  EXPECT_EQ(input.mechanism->model.gravity_W, Eigen::Vector3d::Zero());
+  EXPECT_EQ(io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies)).model.gravity_W, Eigen::Vector3d::Zero());
   // A case without mechanism sections has no mechanism.
   EXPECT_FALSE(read_case_text("title: nothing\n", "test.yaml").mechanism.has_value());
 }
@@ -220,7 +223,8 @@ TEST(MechanismReader, HingeLatchesAndStops) {
   std::string text = edited("forces:\n", "forces:\n  lock: {type: latch, joint: hinge, angle: 1.5}\n"
                                           "  limit: {type: stop, joint: hinge, angle: -0.5, stiffness: 200, damping: 0}\n");
   const io::Case input = io::read_case_text(text, test::kCaseName);
-  const multibody::Model& model = input.mechanism->model;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
   const auto& lock = std::get<multibody::HingeLimit>(model.forces[0]);  // in file order
   EXPECT_EQ(lock.kind, multibody::HingeLimitKind::kLatch);
   EXPECT_EQ(model.joints[lock.joint].name, "hinge");
@@ -250,7 +254,8 @@ TEST(MechanismReader, ShippedCaseBuildsTheRedundantSliderCrank) {
   // each) + translational (5) = 20 joint equations, + 1 driver.
   const Case input = read_case_file(std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml");
   ASSERT_TRUE(input.mechanism.has_value());
-  const multibody::Model& model = input.mechanism->model;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
   EXPECT_EQ(model.nv, 18);
   EXPECT_EQ(model.num_equations(), 21);
   // Rod mass rho A L = 7820 * 0.01 * 0.02 * 1.

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 #include "run/run_driver.h"
 
 namespace {
@@ -24,7 +26,7 @@ struct Outcome {
   std::vector<double> deflection;
 };
 
-Outcome run_once(const io::MechanismCase& mechanism, const integrate::IntegratorOptions& options,
+Outcome run_once(const io::Mechanism& mechanism, const integrate::IntegratorOptions& options,
                  int repetitions) {
   io::RunSettings settings = mechanism.run;
   settings.integrator = options;
@@ -74,7 +76,7 @@ void print_row(const char* method, const std::string& setting, const Outcome& ou
 
 int main() {
   const io::Case input = io::read_case_file(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml");
-  const io::MechanismCase& mechanism = *input.mechanism;
+  const io::Mechanism mechanism = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
 
   // Reference: generalized-α at h = 10 µs, checked against IDA at rtol 1e-6.
   const Outcome reference =

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 #include "run/run_driver.h"
 #include "run/sample_record.h"
 #include "run_test_support.h"
@@ -31,18 +33,19 @@ struct WingRun {
 
 WingRun run_wing(const std::string& text, double step, double t_end, double sample_interval) {
   const io::Case input = io::read_case_text(text, kWing);
-  io::RunSettings settings = input.mechanism->run;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  io::RunSettings settings = built.run;
   settings.integrator = integrate::IntegratorOptions::generalized_alpha(step, 0.8);
   settings.t_end = t_end;
   settings.sample_interval = sample_interval;
   WingRun run;
-  run.model = input.mechanism->model;
+  run.model = built.model;
   RunHooks hooks;
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
     run.t.push_back(sample.t);
     run.samples.push_back(record);
   };
-  run.summary = run_mechanism(run.model, input.mechanism->assembly, settings, hooks);
+  run.summary = run_mechanism(run.model, built.assembly, settings, hooks);
   return run;
 }
 

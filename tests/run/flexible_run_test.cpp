@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 #include "multibody/time_function.h"
 #include "run/run_driver.h"
 #include "run/sample_record.h"
@@ -36,12 +38,12 @@ struct FlexibleRun {
 FlexibleRun run_slider_crank(const integrate::IntegratorOptions& integrator, double t_end,
                              bool start_at_speed = false) {
   const io::Case input = io::read_case_file(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml");
-  LIMBER_DEMAND(input.mechanism.has_value());
-  io::RunSettings settings = input.mechanism->run;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  io::RunSettings settings = built.run;
   settings.integrator = integrator;
   settings.t_end = t_end;
   settings.sample_interval = 1e-3;
-  multibody::Model model = input.mechanism->model;
+  multibody::Model model = built.model;
   if (start_at_speed) model.drivers[0].motion = multibody::TimeFunction::constant_speed(0.0, kCrankSpeed);
   const int rod = model.find_body("rod") - 1;  // results index: ground is not recorded
   const int r3 = static_cast<int>(std::find_if(model.joints.begin(), model.joints.end(),
@@ -56,7 +58,7 @@ FlexibleRun run_slider_crank(const integrate::IntegratorOptions& integrator, dou
   };
   hooks.on_start = [&](const PreparedStart& start) { run.start = start.state; };
   run.model = model;
-  run.summary = run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  run.summary = run_mechanism(model, built.assembly, settings, hooks);
   return run;
 }
 
@@ -226,17 +228,18 @@ std::vector<double> coarse_rod_deflection(int modes, double t_end) {
   replace("node: 51", "node: 11");
   replace("normal: 5", "normal: " + std::to_string(modes));
   const io::Case input = io::read_case_text(text, "slider_crank_coarse.yaml");
-  io::RunSettings settings = input.mechanism->run;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  io::RunSettings settings = built.run;
   settings.t_end = t_end;
   settings.sample_interval = 1e-3;
-  const multibody::Model& model = input.mechanism->model;
+  const multibody::Model& model = built.model;
   const int rod = model.find_body("rod") - 1;
   std::vector<double> deflection;
   RunHooks hooks;
   hooks.on_sample = [&](const integrate::Sample&, const results::Sample& record) {
     deflection.push_back(record.bodies[rod].deflection.z());
   };
-  const RunSummary summary = run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  const RunSummary summary = run_mechanism(model, built.assembly, settings, hooks);
   LIMBER_DEMAND(summary.ok);
   return deflection;
 }

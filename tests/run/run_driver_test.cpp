@@ -15,6 +15,8 @@
 
 #include "../results/h5_test_read.h"
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 #include "run_test_support.h"
 
 namespace limber::run {
@@ -59,14 +61,14 @@ struct Recorded {
 
 Recorded run_case(const std::string& path, double t_end, double rtol, double atol) {
   const io::Case input = io::read_case_file(path);
-  LIMBER_DEMAND(input.mechanism.has_value());
-  io::RunSettings settings = input.mechanism->run;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  io::RunSettings settings = built.run;
   settings.integrator.method = integrate::Method::kIda;
   settings.integrator.rtol = rtol;
   settings.integrator.atol = atol;
   settings.t_end = t_end;
   settings.sample_interval = 5e-4;
-  const multibody::Model& model = input.mechanism->model;
+  const multibody::Model& model = built.model;
   const int slider = model.find_body("slider");
   Recorded recorded;
   RunHooks hooks;
@@ -75,7 +77,7 @@ Recorded run_case(const std::string& path, double t_end, double rtol, double ato
     recorded.slider_x.push_back(sample.q(model.bodies[slider].q_offset));
     recorded.samples.push_back(record);
   };
-  recorded.summary = run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  recorded.summary = run_mechanism(model, built.assembly, settings, hooks);
   return recorded;
 }
 
@@ -194,12 +196,13 @@ markers:
   rail: {body: ground, position: [0, 0, 2], orientation: {z_axis: [1, 0, 0], x_axis: [0, 1, 0]}}
   shoe: {body: slider, orientation: {z_axis: [1, 0, 0], x_axis: [0, 1, 0]}})"));
   const io::Case input = io::read_case_file(path);
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   const auto dir = test::fresh_directory("open_loop");
   results::ResultsWriter writer(dir, input.title, input.file);
   RunHooks hooks;
   hooks.writer = &writer;
-  const RunSummary summary = run_mechanism(input.mechanism->model, input.mechanism->assembly,
-                                           input.mechanism->run, hooks);
+  const RunSummary summary = run_mechanism(built.model, built.assembly,
+                                           built.run, hooks);
   EXPECT_FALSE(summary.ok);
   EXPECT_EQ(summary.failure, "assembly");
   // Least-squares assembly spreads the gap over the loop: the worst equation may be any
@@ -224,12 +227,13 @@ TEST(RunDriver, StepBudgetStopsTheRunAndKeepsItsSamples) {
       "budget", test::edited_case(std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml",
                                   "  t_end: 1.0 ", "  max_steps: 50\n  t_end: 0.1 "));
   const io::Case input = io::read_case_file(path);
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   const auto dir = test::fresh_directory("budget");
   results::ResultsWriter writer(dir, input.title, input.file);
   RunHooks hooks;
   hooks.writer = &writer;
-  const RunSummary summary = run_mechanism(input.mechanism->model, input.mechanism->assembly,
-                                           input.mechanism->run, hooks);
+  const RunSummary summary = run_mechanism(built.model, built.assembly,
+                                           built.run, hooks);
   EXPECT_FALSE(summary.ok);
   EXPECT_EQ(summary.failure, "too_many_steps");
   EXPECT_NE(summary.message.find("at t = "), std::string::npos) << summary.message;

@@ -8,6 +8,8 @@
 
 #include "coarse_slider_crank.h"
 #include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
 #include "run/run_driver.h"
 #include "select/reaction_ranking.h"
 
@@ -23,7 +25,8 @@ TEST(ReactionRanking, BodyAxesAgreeWithTheJointFrameFixedToTheRod) {
   // would fail by ~20 N). R3's marker j is on the slider, against which the rod swings by up to
   // asin(a / b) = 0.05 rad: its joint frame is not the rod's, and the mapping must not be it.
   const io::Case input = io::read_case_text(test::coarse_slider_crank_text(), "coarse.yaml");
-  const multibody::Model& model = input.mechanism->model;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
   const std::vector<JointOnFlexibleBody> sites = joints_on_flexible_bodies(model);
   ASSERT_EQ(sites.size(), 2u);  // R2 (rod is body j), R3 (rod is body i)
   EXPECT_EQ(model.joints[static_cast<std::size_t>(sites[0].joint)].name, "R2");
@@ -32,7 +35,7 @@ TEST(ReactionRanking, BodyAxesAgreeWithTheJointFrameFixedToTheRod) {
   EXPECT_EQ(sites[1].sign, -1.0);
   EXPECT_EQ(sites[1].node, 20);
 
-  io::RunSettings settings = input.mechanism->run;
+  io::RunSettings settings = built.run;
   settings.t_end = 0.15;
   double largest = 0.0, worst = 0.0, swing_largest = 0.0;
   run::RunHooks hooks;
@@ -53,7 +56,7 @@ TEST(ReactionRanking, BodyAxesAgreeWithTheJointFrameFixedToTheRod) {
     const Eigen::Vector3d& g = record.joints[static_cast<std::size_t>(sites[1].joint)].force_joint;
     swing_largest = std::max(swing_largest, (at_slider.head<3>() + Eigen::Vector3d(g.x(), g.z(), -g.y())).norm());
   };
-  const run::RunSummary summary = run::run_mechanism(model, input.mechanism->assembly, settings, hooks);
+  const run::RunSummary summary = run::run_mechanism(model, built.assembly, settings, hooks);
   ASSERT_TRUE(summary.ok) << summary.message;
   EXPECT_GT(largest, 1000.0);  // the rod's and slider's inertia load, about 2 kN
   EXPECT_LT(worst, 1e-9 * largest);
@@ -66,7 +69,8 @@ TEST(ReactionRanking, TorquesCountAsForcesAtTheBodysSize) {
   // Fz = 5 N. The rod is 1 m (size = its bounding-box diagonal, 1 m for nodes on a line), so
   // Tz ranks as 30 N: 0.3 of the largest. With keep = 0.1: Fx and Tz kept, Fz (0.05) not.
   const io::Case input = io::read_case_text(test::coarse_slider_crank_text(), "coarse.yaml");
-  const multibody::Model& model = input.mechanism->model;
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
   Eigen::MatrixXd reactions = Eigen::MatrixXd::Zero(3, 12);
   reactions(1, 0) = -100.0;  // R2 Fx, peak 100 at the second sample
   reactions.col(5).setConstant(30.0);  // R2 Tz

@@ -31,16 +31,16 @@ const Selection& selection() {
   static const Selection result = [] {
     Selection s;
     const std::string file = test::coarse_slider_crank_file();
-    const io::Case input = io::read_case_file(file);
+    const auto input = std::make_shared<const io::Case>(io::read_case_file(file));
     const auto root = test::fresh_directory("select");
-    s.runs.push_back(run_candidate(file, {"normal", "normal modes only", normal_only(input), false}, {},
+    s.runs.push_back(run_candidate(input, {"normal", "normal modes only", normal_only(*input), false}, {},
                                    root / "normal"));
     const CandidateRun& normal = s.runs.front();
-    s.ranking = rank_reactions(normal.input->mechanism->model, normal.reactions, normal.indeterminate,
+    s.ranking = rank_reactions(normal.mechanism.model, normal.reactions, normal.indeterminate,
                                RankBy::kPeak, 0.1);
-    s.candidates = mode_set_candidates(*normal.input, s.ranking, {});
+    s.candidates = mode_set_candidates(*input, normal.reduction, s.ranking, {});
     for (std::size_t k = 1; k < s.candidates.size(); ++k) {
-      s.runs.push_back(run_candidate(file, s.candidates[k], {}, root / s.candidates[k].name));
+      s.runs.push_back(run_candidate(input, s.candidates[k], {}, root / s.candidates[k].name));
     }
     s.keys = key_quantities(s.ranking, s.runs.back());
     compare_runs(s.runs, s.keys);
@@ -80,7 +80,8 @@ TEST(Selection, StaticModesAreElasticAndLeaveRigidMotionToTheFrame) {
   // dependency tolerance). Every mode also has a positive frequency (none is rigid).
   const CandidateRun& kept = run_named("kept");
   const io::FlexibleBodyCase& rod = kept.input->flexible_bodies.front();
-  const Eigen::MatrixXd& phi = rod.modes->mode_set.shapes;
+  const modal::ModeSet& modes = kept.reduction.find(rod.name)->result.mode_set;
+  const Eigen::MatrixXd& phi = modes.shapes;
   EXPECT_EQ(phi.cols(), 9);  // 5 normal + 4 attachment modes
   const fe::StructuralMatrices matrices = fe::assemble(rod.model);
   const Eigen::MatrixXd psi = modal::rigid_body_modes(rod.model);
@@ -91,7 +92,7 @@ TEST(Selection, StaticModesAreElasticAndLeaveRigidMotionToTheFrame) {
       EXPECT_LT(std::abs(coupling(i, j)) / std::sqrt(psi_norm(i, i)), 1e-8) << i << ", " << j;
     }
   }
-  EXPECT_GT(rod.modes->mode_set.modal_stiffness.minCoeff(), 0.0);
+  EXPECT_GT(modes.modal_stiffness.minCoeff(), 0.0);
 }
 
 TEST(Selection, TheChosenSetBeatsNormalModesAndAsManyNormalModes) {
@@ -146,7 +147,9 @@ TEST(Selection, TheChosenModesPasteBackIntoTheCase) {
   ASSERT_NE(place, std::string::npos);
   text.replace(place, original.size(), modes);
   const io::Case pasted = io::read_case_text(text, "pasted.yaml");
-  EXPECT_EQ(pasted.mechanism->model.bodies[2].flexible->shapes.cols(), 9);
+  const io::Mechanism built =
+      io::build_mechanism(pasted, io::reduce_case(pasted, io::ReductionScope::kMechanismBodies));
+  EXPECT_EQ(built.model.bodies[2].flexible->shapes.cols(), 9);
   EXPECT_NE(fragment.find("attachment: [{nodes: [1], dofs: [ux, uz]}, {nodes: [21], dofs: [ux, uz]}]"),
             std::string::npos) << fragment;
 }

@@ -1,0 +1,157 @@
+#include "io/mechanism_builder.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+#include <variant>
+
+#include "core/error.h"
+#include "multibody/model_builder.h"
+
+namespace limber::io {
+
+namespace {
+
+using multibody::ModelBuilder;
+
+const FlexibleBodyCase& component_named(const std::vector<FlexibleBodyCase>& components,
+                                        const std::string& name) {
+  const auto found = std::find_if(components.begin(), components.end(),
+                                  [&](const FlexibleBodyCase& c) { return c.name == name; });
+  LIMBER_DEMAND(found != components.end());
+  return *found;
+}
+
+// The FE elements, for drawing; beams as tubes of the largest section's equal-area radius.
+multibody::FlexibleMesh drawing_mesh(const fe::FeModel& model) {
+  multibody::FlexibleMesh mesh;
+  mesh.node_ids = model.node_ids;
+  for (const fe::BeamElement& beam : model.beams) mesh.lines.push_back(beam.nodes);
+  for (const fe::ShellElement& shell : model.shells) mesh.quads.push_back(shell.nodes);
+  for (const fe::BeamProperty& property : model.beam_properties) {
+    mesh.beam_radius = std::max(mesh.beam_radius, std::sqrt(property.section.area / std::numbers::pi));
+  }
+  return mesh;
+}
+
+// Per-mode values of the right length nm (empty stays empty), else an error at the list.
+Eigen::VectorXd per_mode(const PerModeValues& values, Eigen::Index nm) {
+  if (values.values.size() != 0 && values.values.size() != nm) {
+    throw InputError(fmt::format("expected {} values (one per mode) for '{}', got {}", nm, values.key,
+                                 values.values.size()),
+                     values.where);
+  }
+  return values.values;
+}
+
+// The modes of `component`: NumericalError when its reduction failed.
+const modal::ModeSet& mode_set(const CaseReduction& reduction, const FlexibleBodyCase& component) {
+  const BodyReduction* body = reduction.find(component.name);
+  LIMBER_DEMAND(body != nullptr);
+  const modal::ModalResult& result = body->result;
+  if (result.status != modal::ModalStatus::kOk) {
+    throw NumericalError("modes of flexible body '" + component.name + "' (" +
+                         component.modes_where.to_string() + "): " +
+                         (result.status == modal::ModalStatus::kSingular
+                              ? "singular matrix: "
+                              : "eigen-solver did not converge: ") +
+                         result.message);
+  }
+  return result.mode_set;
+}
+
+// A flexible body with its modes, or as an outline when `reduction` is null.
+void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<FlexibleBodyCase>& components,
+                       const CaseReduction* reduction, ModelBuilder& builder) {
+  const FlexibleBodyCase& component = component_named(components, entry.component);
+  multibody::FlexibleBodySpec spec;
+  spec.name = entry.name;
+  spec.node_positions_B = component.model.node_positions;
+  spec.mesh = drawing_mesh(component.model);
+  spec.initial_pose = entry.initial_pose;
+  spec.initial_velocity_W = entry.initial_velocity_W;
+  spec.initial_angular_velocity_B = entry.initial_angular_velocity_B;
+  spec.deflection_probe = entry.deflection_probe;
+  if (!reduction) {
+    builder.add_flexible_body_outline(spec, entry.where);
+    return;
+  }
+  // The modes fix the lengths of the per-mode lists.
+  spec.modes = mode_set(*reduction, component);
+  const Eigen::Index nm = spec.modes.shapes.cols();
+  spec.damping = entry.damping;
+  if (entry.damping_ratios.values.size() != 0) {
+    spec.damping = multibody::ModalDamping::per_mode(per_mode(entry.damping_ratios, nm));
+  }
+  spec.initial_modal_coordinates = per_mode(entry.modal_coordinates, nm);
+  spec.initial_modal_velocities = per_mode(entry.modal_velocities, nm);
+  builder.add_flexible_body(spec, entry.where);
+}
+
+void add_marker(const MarkerEntry& marker, ModelBuilder& builder) {
+  switch (marker.frame) {
+    case MarkerEntry::Frame::kBody:
+      builder.add_marker(marker.name, marker.body, marker.position, marker.rotation, marker.where);
+      break;
+    case MarkerEntry::Frame::kGround:
+      builder.add_marker_at(marker.name, marker.body, marker.position, marker.rotation, marker.where);
+      break;
+    case MarkerEntry::Frame::kNode:
+      builder.add_node_marker(marker.name, marker.body, marker.node, marker.rotation, marker.where);
+      break;
+  }
+}
+
+void add_force(const ForceEntry& force, ModelBuilder& builder) {
+  std::visit(
+      [&](const auto& spec) {
+        using Spec = std::decay_t<decltype(spec)>;
+        if constexpr (std::is_same_v<Spec, multibody::RsdaSpec>) builder.add_rsda(spec, force.where);
+        else if constexpr (std::is_same_v<Spec, multibody::TsdaSpec>) builder.add_tsda(spec, force.where);
+        else if constexpr (std::is_same_v<Spec, multibody::PointLoadSpec>) builder.add_point_load(spec, force.where);
+        else builder.add_hinge_limit(spec, force.where);
+      },
+      force.spec);
+}
+
+// Every entry in the order of the case file's sections (each refers to the ones before).
+void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBodyCase>& components,
+                   const CaseReduction* reduction, ModelBuilder& builder) {
+  if (mechanism.gravity_W) builder.set_gravity(*mechanism.gravity_W);
+  for (const BodyEntry& body : mechanism.bodies) {
+    if (const auto* rigid = std::get_if<RigidBodyEntry>(&body)) {
+      builder.add_rigid_body(rigid->spec, rigid->where);
+    } else {
+      add_flexible_body(std::get<FlexibleBodyEntry>(body), components, reduction, builder);
+    }
+  }
+  for (const MarkerEntry& marker : mechanism.markers) add_marker(marker, builder);
+  for (const JointEntry& joint : mechanism.joints) {
+    for (const MarkerEntry& marker : joint.markers) add_marker(marker, builder);
+    builder.add_joint(joint.name, joint.type, joint.marker_i, joint.marker_j, joint.where);
+  }
+  for (const DriverEntry& driver : mechanism.drivers) {
+    builder.add_driver(driver.name, driver.joint, driver.coordinate, driver.motion, driver.where);
+  }
+  for (const ForceEntry& force : mechanism.forces) add_force(force, builder);
+}
+
+}  // namespace
+
+Mechanism build_mechanism(const Case& input, const CaseReduction& reduction) {
+  LIMBER_DEMAND(input.mechanism.has_value());
+  const MechanismCase& mechanism = *input.mechanism;
+  ModelBuilder builder;
+  add_mechanism(mechanism, input.flexible_bodies, &reduction, builder);
+  return {builder.build(), mechanism.flexible_components, mechanism.assembly, mechanism.run};
+}
+
+void check_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBodyCase>& components) {
+  ModelBuilder builder;
+  add_mechanism(mechanism, components, nullptr, builder);
+}
+
+}  // namespace limber::io
