@@ -15,16 +15,17 @@ namespace {
 // kinetic + gravity + spring + strain + dissipated − driver work − force work (kEnergyNames).
 double energy_balance(const std::vector<double>& e) { return e[0] + e[1] + e[2] + e[3] + e[4] - e[5] - e[6]; }
 
-// Diagonal of the bounding box of the joint points.
-double joint_spread(const results::Sample& sample) {
-  if (sample.joints.empty()) return 0.0;
+// Diagonal of the bounding box of the joint points and the body origins.
+double mechanism_spread(const results::Sample& sample) {
   Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
   Eigen::Vector3d high = -low;
-  for (const results::JointSample& joint : sample.joints) {
-    low = low.cwiseMin(joint.position);
-    high = high.cwiseMax(joint.position);
-  }
-  return (high - low).norm();
+  const auto include = [&](const Eigen::Vector3d& p) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  };
+  for (const results::JointSample& joint : sample.joints) include(joint.position);
+  for (const results::BodySample& body : sample.bodies) include(body.position);
+  return sample.joints.empty() && sample.bodies.empty() ? 0.0 : (high - low).norm();
 }
 
 // The option that would make the run more accurate.
@@ -45,7 +46,7 @@ void AccuracyMonitor::add(const results::Sample& sample) {
     gravity_start_ = e[1];
     term_peaks_.assign(e.size(), 0.0);
     // The mechanism's size, at least 1 mm (a drift check needs a length).
-    size_ = std::max(1e-3, joint_spread(sample));
+    size_ = std::max(1e-3, mechanism_spread(sample));
   }
   residual_ = std::max(residual_, std::abs(energy_balance(e) - balance_start_));
   for (std::size_t k = 0; k < e.size(); ++k) {

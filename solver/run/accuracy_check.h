@@ -7,7 +7,8 @@
 //   local error     generalized-α's estimate of its steps' local error (generalized_alpha.h),
 //                   relative to the largest step increment; IDA controls its own to rtol;
 //   constraint drift  the largest position-constraint violation over the samples, relative to
-//                   the mechanism's size (the spread of its joint points at the start).
+//                   the mechanism's size (the spread of its joint points and body origins at
+//                   the start, at least 1 mm).
 // A measure above its threshold gives a warning that names the option that would fix it; the
 // run's status is then "ok_inaccurate" instead of "ok".
 #pragma once
