@@ -9,7 +9,7 @@
 
 namespace limber::render {
 
-RenderCommand add_render_command(CLI::App& app) {
+cli::Command add_render_command(CLI::App& app) {
   // Options live as long as the app (run() is called after parsing).
   auto options = std::make_shared<RenderOptions>();
   auto size = std::make_shared<std::string>("1280x720");
@@ -66,7 +66,7 @@ RenderCommand add_render_command(CLI::App& app) {
     for (const std::string& warning : summary.warnings) {
       fmt::print(stderr, "limber render: warning: {}\n", warning);
     }
-    return 0;
+    return cli::kExitOk;
   };
   return {command, run};
 }

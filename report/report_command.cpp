@@ -8,7 +8,7 @@
 
 namespace limber::report {
 
-ReportCommand add_report_command(CLI::App& app) {
+cli::Command add_report_command(CLI::App& app) {
   // Options live as long as the app (run() is called after parsing).
   auto options = std::make_shared<ReportOptions>();
   auto no_modes = std::make_shared<bool>(false);
@@ -31,7 +31,7 @@ ReportCommand add_report_command(CLI::App& app) {
             }
             fmt::print("{} plots, {} mode-shape images\n{}\n", summary.plots, summary.mode_images,
                        summary.index.string());
-            return 0;
+            return cli::kExitOk;
           }};
 }
 

@@ -3,24 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-#include <utility>
 #include <vector>
 
 #include "app/command.h"
 #include "core/error.h"
 #include "render_command.h"
 #include "report_command.h"
-
-namespace {
-
-// render/ and report/ declare their own command structs (they do not see solver/app): same
-// fields.
-template <typename ForeignCommand>
-limber::app::Command from_foreign(ForeignCommand command) {
-  return {command.cli, std::move(command.run)};
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace limber::app;
@@ -41,8 +29,8 @@ int main(int argc, char** argv) {
       add_modes_command(app),
       add_run_command(app),
       add_select_command(app),
-      from_foreign(limber::render::add_render_command(app)),
-      from_foreign(limber::report::add_report_command(app)),
+      limber::render::add_render_command(app),
+      limber::report::add_report_command(app),
   };
 
   try {

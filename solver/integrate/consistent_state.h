@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "integrate/mechanical_system.h"
+#include "core/mechanical_system.h"
 #include "integrate/status.h"
 
 namespace limber::integrate {

@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 
 #include "integrate/integrator_options.h"
-#include "integrate/mechanical_system.h"
+#include "core/mechanical_system.h"
 #include "integrate/status.h"
 
 namespace limber::integrate {

@@ -1,5 +1,5 @@
 // A multibody Model seen by the time integrators: implements
-// limber::integrate::MechanicalSystem (integrate/mechanical_system.h) with only the
+// limber::MechanicalSystem (core/mechanical_system.h) with only the
 // independent constraint rows of a ConstraintPartition (redundancy.h), so the integrators
 // never see a rank-deficient G. The partition is re-analysed along the motion when its rows
 // become ill-conditioned (reselect_constraints); partition() always returns the current one.
@@ -8,7 +8,7 @@
 // (State::engaged), switched by the integrators at located events (apply_event).
 #pragma once
 
-#include "integrate/mechanical_system.h"
+#include "core/mechanical_system.h"
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
@@ -16,7 +16,7 @@
 
 namespace limber::multibody {
 
-class MultibodySystem final : public integrate::MechanicalSystem {
+class MultibodySystem final : public MechanicalSystem {
  public:
   MultibodySystem(const Model& model, ConstraintPartition partition);
 

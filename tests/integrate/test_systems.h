@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "integrate/mechanical_system.h"
+#include "core/mechanical_system.h"
 
 namespace limber::integrate::testing {
 

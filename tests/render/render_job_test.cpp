@@ -31,7 +31,7 @@ std::string first_bytes(const std::filesystem::path& file, std::size_t n) {
 // Parses `render args...` and runs the sub-command, as the limber executable does.
 int run_render_command(std::vector<std::string> args) {
   CLI::App app("limber");
-  const RenderCommand command = add_render_command(app);
+  const cli::Command command = add_render_command(app);
   args.insert(args.begin(), "render");
   std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
   app.parse(args);

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   CLI::App app{"limber report driver"};
-  const limber::report::ReportCommand report = limber::report::add_report_command(app);
+  const limber::cli::Command report = limber::report::add_report_command(app);
   app.require_subcommand(1);
   CLI11_PARSE(app, argc, argv);
   try {

@@ -288,7 +288,7 @@ TEST_F(ReportJobTest, CommandParsesDirectoriesOutputAndTitle) {
   ReactionRun run;
   write_reaction_run(dir, run);
   CLI::App app;
-  const ReportCommand command = add_report_command(app);
+  const cli::Command command = add_report_command(app);
   const std::string out = (dir / "page").string();
   // `report --title T -o OUT DIR`; CLI11 takes a vector of arguments in reverse order.
   std::vector<std::string> args = {dir.string(), out, "-o", "My <b>report</b>", "--title", "report"};
@@ -300,7 +300,7 @@ TEST_F(ReportJobTest, CommandParsesDirectoriesOutputAndTitle) {
 
   // A directory without results: InputError, which main turns into exit code 1.
   CLI::App app2;
-  const ReportCommand missing = add_report_command(app2);
+  const cli::Command missing = add_report_command(app2);
   std::vector<std::string> args2 = {(dir / "nothing_here").string(), "report"};
   app2.parse(args2);
   EXPECT_THROW(missing.run(), InputError);

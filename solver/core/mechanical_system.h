@@ -1,4 +1,6 @@
-// The constrained mechanical system every time integrator advances (house style §6):
+// The constrained mechanical system every time integrator advances (house style §6). It lives in
+// core, below both sides: multibody implements it (multibody/multibody_system.h), integrate
+// advances it, and neither library sees the other.
 //
 //   q' = N(q) v                                 kinematics (nq coordinates, nv velocities)
 //   M(t,q) v' + G(t,q)ᵀ λ = Q(t,q,v)            dynamics (λ: nc multipliers)
@@ -12,7 +14,7 @@
 
 #include <Eigen/Core>
 
-namespace limber::integrate {
+namespace limber {
 
 class MechanicalSystem {
  public:
@@ -74,4 +76,4 @@ class MechanicalSystem {
                            const Eigen::VectorXd& /*v*/) const {}
 };
 
-}  // namespace limber::integrate
+}  // namespace limber
