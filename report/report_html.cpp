@@ -59,7 +59,8 @@ std::string plots_of(const RunSection& section, PlotSection kind) {
   return out;
 }
 
-// A red (failed) or amber (did not finish) banner; nothing for a finished run.
+// A red (failed) or amber (did not finish, or finished inaccurate) banner; nothing for a run
+// that finished ok.
 std::string status_banner(const RunData& run) {
   const render::Results& r = run.results;
   if (r.status == "ok") return "";
@@ -68,6 +69,17 @@ std::string status_banner(const RunData& run) {
           ? fmt::format("The report shows the {} samples written, up to t = {} s.", r.sample_count(),
                         number(r.time(r.sample_count() - 1)))
           : std::string("No sample was written.");
+  if (r.status == "ok_inaccurate") {
+    // The run's own accuracy warnings (results.h5 root attribute accuracy_warnings).
+    std::string warnings;
+    for (const auto& [name, value] : run.solver_attributes) {
+      if (name == "accuracy_warnings") warnings = value;
+    }
+    return fmt::format(
+        "<div class=\"banner running\" role=\"alert\">This run finished, but its own accuracy "
+        "estimate says the answer is off: {}</div>\n",
+        html_escape(warnings.empty() ? "(no warning recorded)" : warnings));
+  }
   if (r.status == "failed") {
     return fmt::format("<div class=\"banner failed\" role=\"alert\">This run failed: {} {}</div>\n",
                        html_escape(r.message.empty() ? "(no message)" : r.message), shown);

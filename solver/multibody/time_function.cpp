@@ -104,10 +104,11 @@ FunctionValue TimeFunction::evaluate(double x) const {
               speed_ * s.second / duration_};
     }
     case Kind::kTable: {
-      // Hold the end values outside the table.
-      if (x <= x_.front()) return {y_.front(), 0.0, 0.0};
-      if (x >= x_.back()) return {y_.back(), 0.0, 0.0};
-      const size_t k = std::upper_bound(x_.begin(), x_.end(), x) - x_.begin() - 1;
+      // Hold the end values outside the table; at the end points themselves the derivatives
+      // are those of the end segments, so a motion that starts at x_0 starts with its slope.
+      if (x < x_.front()) return {y_.front(), 0.0, 0.0};
+      if (x > x_.back()) return {y_.back(), 0.0, 0.0};
+      const size_t k = std::min<size_t>(std::upper_bound(x_.begin(), x_.end(), x) - x_.begin() - 1, x_.size() - 2);
       const double h = x_[k + 1] - x_[k];
       const double a = (x_[k + 1] - x) / h, b = (x - x_[k]) / h;
       const double slope = (y_[k + 1] - y_[k]) / h;

@@ -6,7 +6,8 @@
 //                    s(τ) = 3τ² − 2τ³ (cubic) or 10τ³ − 15τ⁴ + 6τ⁵ (quintic, also
 //                    zero acceleration at both ends), then ḟ = ω; f(0) = f0.
 //   table:           points (x_k, y_k), linear or natural cubic spline interpolation,
-//                    held constant (zero slope) outside [x_0, x_n].
+//                    held constant (zero slope) outside [x_0, x_n]; at x_0 and x_n the
+//                    derivatives are those of the end segments (one-sided).
 #pragma once
 
 #include <vector>

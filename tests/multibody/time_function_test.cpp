@@ -60,6 +60,24 @@ TEST(TimeFunction, TablesInterpolate) {
   EXPECT_NEAR(spline.evaluate(1.0 - 1e-9).first, spline.evaluate(1.0 + 1e-9).first, 1e-7);
 }
 
+TEST(TimeFunction, TableEndsTakeTheEndSegmentsSlope) {
+  // A motion table that starts at t = 0 with a slope must start with that slope (a zero there
+  // made the initial velocities disagree with the motion and IDA fail at t = 0); the last point
+  // likewise takes its segment's slope, and only beyond the points is the end value held.
+  const TimeFunction linear = TimeFunction::table({0, 1, 3}, {0, 2, 1}, TableInterpolation::kLinear);
+  EXPECT_DOUBLE_EQ(linear.evaluate(0.0).first, 2.0);
+  EXPECT_DOUBLE_EQ(linear.evaluate(0.0).value, 0.0);
+  EXPECT_DOUBLE_EQ(linear.evaluate(3.0).first, -0.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(3.0).value, 1.0);
+  EXPECT_DOUBLE_EQ(linear.evaluate(-1e-12).first, 0.0);
+  EXPECT_DOUBLE_EQ(linear.evaluate(3.0 + 1e-12).first, 0.0);
+  const TimeFunction spline = TimeFunction::table({0, 1, 2, 4}, {0, 1, 0, 2}, TableInterpolation::kCubic);
+  // The natural spline's end slopes, from just inside.
+  EXPECT_NEAR(spline.evaluate(0.0).first, spline.evaluate(1e-9).first, 1e-7);
+  EXPECT_NEAR(spline.evaluate(4.0).first, spline.evaluate(4.0 - 1e-9).first, 1e-7);
+  EXPECT_NEAR(spline.evaluate(4.0).value, 2.0, 1e-14);
+}
+
 TEST(TimeFunction, BadInputIsRejected) {
   EXPECT_THROW(TimeFunction::ramp(0, 1, 0.0, RampShape::kCubic), InputError);
   EXPECT_THROW(TimeFunction::table({0, 1, 1}, {0, 1, 2}, TableInterpolation::kLinear), InputError);

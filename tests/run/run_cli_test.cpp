@@ -189,6 +189,33 @@ TEST(RunCli, InterferenceIsWarnedWithPairAndTime) {
   EXPECT_NE(run.err.find("limber: warning: bar passes through block at t = 0 s"), std::string::npos) << run.err;
 }
 
+TEST(RunCli, CoarseSettingsAreReportedAsInaccurate) {
+  // The flexible slider-crank at a 10 ms step (50 steps per crank turn where the case uses 250,
+  // against rod modes up to 290 Hz): it finishes, but R2 peaks near 20 kN instead of 2 kN and
+  // the energy balance is off by more than half the energy scale (docs/integrators.md,
+  // "Accuracy check"). The run must say so: exit 5, status "ok_inaccurate", the fix named.
+  const auto dir = test::fresh_directory("cli_inaccurate");
+  const std::string flexible = std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml";
+  const test::CommandRun run = run_limber("run " + flexible + " -o " + dir.string() + " --step 1e-2 --json");
+  EXPECT_EQ(run.exit_code, 5) << run.err;
+  const test::JsonValue json = test::parse_json(run.out);
+  EXPECT_EQ(json["status"].string(), "ok_inaccurate");
+  EXPECT_GT(json["accuracy"]["energy_relative"].number(), 0.1);
+  EXPECT_FALSE(json["accuracy"]["warnings"].array().empty());
+  EXPECT_NE(run.err.find("use a smaller step, e.g. --step 0.0025"), std::string::npos) << run.err;
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "ok_inaccurate");
+  EXPECT_NE(read_string_attribute(file, "/", "accuracy_warnings").find("energy balance"), std::string::npos);
+  H5Fclose(file);
+
+  // The same at the case's own step is accurate: exit 0, status ok. A short run keeps it quick.
+  const test::CommandRun fine = run_limber("run " + flexible + " -o " + dir.string() + " --t-end 0.2 --json");
+  EXPECT_EQ(fine.exit_code, 0) << fine.err;
+  EXPECT_EQ(test::parse_json(fine.out)["status"].string(), "ok");
+  EXPECT_LT(test::parse_json(fine.out)["accuracy"]["energy_relative"].number(), 1e-3);
+}
+
 TEST(RunCli, BadCaseFileGivesFileLineAndExitOne) {
   const std::string path = test::write_case(
       "bad_joint", test::edited_case(kCase, "R2: {type: revolute,", "R2: {type: hinge,"));

@@ -66,7 +66,9 @@ TEST(Selection, RanksTheInPlaneReactionsAtTheRodsPins) {
   std::set<std::string> kept;
   for (const RankedComponent& c : ranking) {
     if (c.kept) kept.insert(c.label());
-    if (!c.kept) EXPECT_LT(c.relative, 1e-3) << c.label();
+    if (!c.kept) {
+      EXPECT_LT(c.relative, 1e-3) << c.label();
+    }
   }
   EXPECT_EQ(kept, (std::set<std::string>{"R2.Fx", "R2.Fz", "R3.Fx", "R3.Fz"}));
   // The crank pin carries the rod's and the slider's inertia, the slider pin the slider's alone.
