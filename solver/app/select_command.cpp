@@ -91,7 +91,7 @@ void print_comparison(std::FILE* out, const std::vector<select::CandidateRun>& r
     const std::string role = run.candidate.reference ? "reference" : (chosen && *chosen == k ? "chosen" : "");
     fmt::print(out, "  {:<22} {:>5} {:>8.3f} s {:>7.3f} s {:>11} {:>11}  {}{}\n", run.candidate.name, run.modes,
                run.reduction_seconds, run.summary.wall_seconds, percent(run.error_peak),
-               percent(run.error_rms), role, run.ok() ? "" : "failed: " + run.summary.message);
+               percent(run.error_rms), role, run.status() == "ok" ? "" : " " + run.status());
   }
 }
 
@@ -120,7 +120,8 @@ std::string json_comparison(const std::vector<select::CandidateRun>& runs, const
         "\"directory\": {}}}",
         k ? ", " : "", json_string(run.candidate.name), json_string(run.candidate.description), run.modes,
         json_number(run.reduction_seconds), json_number(run.summary.wall_seconds),
-        json_string(run.ok() ? "ok" : "failed"), json_string(run.summary.message), json_number(run.error_peak),
+        json_string(run.status().substr(0, run.status().find(':'))), json_string(run.summary.message),
+        json_number(run.error_peak),
         json_number(run.error_rms), json_string(run.worst_quantity),
         json_string(run.directory.lexically_relative(root).generic_string()));
   }
@@ -182,7 +183,7 @@ int select_case(const SelectOptions& options) {
     progress.reset();
     for (const std::string& notice : run.notices) fmt::print(text, "      notice: {}\n", notice);
     fmt::print(text, "      {} modes, reduction {:.3f} s, run {:.3f} s{}\n", run.modes, run.reduction_seconds,
-               run.summary.wall_seconds, run.ok() ? "" : ", FAILED: " + run.summary.message);
+               run.summary.wall_seconds, run.status() == "ok" ? "" : ", " + run.status());
     return run;
   };
 

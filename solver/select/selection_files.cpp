@@ -61,7 +61,7 @@ void write_comparison_csv(const std::filesystem::path& file, const std::vector<C
     out << csv_field(run.candidate.name) << ',' << csv_field(run.candidate.description) << ','
         << run.modes << ',' << number(run.reduction_seconds) << ','
         << number(run.summary.wall_seconds) << ','
-        << csv_field(run.ok() ? "ok" : "failed: " + run.summary.message) << ','
+        << csv_field(run.status()) << ','
         << number(run.error_peak) << ',' << number(run.error_rms) << ','
         << csv_field(run.worst_quantity) << ','
         << csv_field(run.directory.lexically_relative(root).generic_string()) << ',' << role << '\n';

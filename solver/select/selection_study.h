@@ -2,8 +2,9 @@
 // richest one, as the seed paper's Fig. 6 compares mode sets (docs/select.md).
 //
 // Every run reduces the case (read once) with its mode requests (io::ModeOverrides) and builds
-// its model, so the modal reduction and its wall time are part of what a set costs; each writes DIR/results.h5 like
-// `limber run`. A set whose run fails is a row with its message, never a lost selection.
+// its model, so the modal reduction and its wall time are part of what a set costs; each
+// writes DIR/results.h5 like `limber run`. A set whose run fails is a row with its message,
+// never a lost selection.
 #pragma once
 
 #include <filesystem>
@@ -50,6 +51,10 @@ struct CandidateRun {
   std::string worst_quantity;      // the quantity of the larger of the two errors
 
   bool ok() const { return summary.ok; }
+  // "ok", "ok_inaccurate" (its own accuracy check failed) or "failed: <why>".
+  std::string status() const {
+    return !summary.ok ? "failed: " + summary.message : summary.accurate() ? "ok" : "ok_inaccurate";
+  }
   double error(ErrorNorm norm) const { return norm == ErrorNorm::kPeak ? error_peak : error_rms; }
 };
 
@@ -60,8 +65,8 @@ using SettingsAdjustment = std::function<io::RunSettings(const io::RunSettings&)
 // "interrupted" before it leaves run_candidate.
 struct SelectionInterrupted {};
 
-// Runs one set of `input` (which must hold a mechanism) into `directory` (created; locked while written). `on_sample`
-// sees every sample (progress; it may throw SelectionInterrupted). Throws InputError on bad
+// Runs one set of `input` (which must hold a mechanism) into `directory` (created; locked while
+// written). `on_sample` sees every sample (progress; it may throw SelectionInterrupted). Throws InputError on bad
 // input; a numerical failure is in the returned summary. Any exception closes the results file
 // first ("interrupted" or "failed").
 CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
