@@ -10,6 +10,9 @@ void SettingsOverrides::add_options(CLI::App& command) {
   command.add_option("--atol", atol, "IDA absolute tolerance (> 0)");
   command.add_option("--step", step, "generalized-alpha step [s] (> 0)");
   command.add_option("--t-end", t_end, "End time [s] (>= 0)");
+  command.add_option("--max-wall", max_wall,
+                     "Wall-clock budget of the integration [s] (> 0; default: none): a run that has "
+                     "not finished by then stops as failed, keeping its samples");
 }
 
 io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
@@ -20,6 +23,7 @@ io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
   if (atol) options.atol = *atol;
   if (step) options.step = *step;
   if (t_end) settings.t_end = *t_end;
+  if (max_wall) options.max_wall_seconds = *max_wall;
   return settings;
 }
 

@@ -60,6 +60,7 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   halvings_ = 0;
   failed_ = false;
   stats_ = {};
+  budget_.start(options.max_wall_seconds);
   largest_increment_ = 0.0;
   largest_error_ = 0.0;
   jacobian_h_ = 0.0;
@@ -127,6 +128,10 @@ Status GeneralizedAlpha::take_step() {
         ++grid_index_;
         h_try_ = options_.step;
         halvings_ = 0;
+      }
+      if (budget_.spent()) {
+        return failure(StatusCode::kWallClock,
+                       fmt::format("the wall-clock budget of {:g} s is spent", options_.max_wall_seconds));
       }
       if (stats_.steps > options_.max_steps) {
         return failure(StatusCode::kTooManySteps,

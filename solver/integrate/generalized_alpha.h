@@ -52,6 +52,7 @@
 #include <Eigen/Dense>
 
 #include "integrate/integrator.h"
+#include "integrate/wall_clock_budget.h"
 
 namespace limber::integrate {
 
@@ -135,6 +136,7 @@ class GeneralizedAlpha final : public Integrator {
   StepState probe_;
 
   Statistics stats_;
+  WallClockBudget budget_;  // IntegratorOptions::max_wall_seconds
   double largest_increment_ = 0.0;  // largest |ξ| of the run (estimate_local_error)
   double largest_error_ = 0.0;      // largest local error estimate of the run
 };

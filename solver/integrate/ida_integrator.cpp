@@ -1,4 +1,5 @@
 #include "integrate/ida_integrator.h"
+#include "integrate/wall_clock_budget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,6 +61,7 @@ double initial_step(const MechanicalSystem& system, const InitialState& x0,
 }  // namespace
 
 struct IdaIntegrator::Impl {
+  WallClockBudget budget;  // IntegratorOptions::max_wall_seconds
   // Layout of y = [q, v, λ, μ, z].
   int nq = 0, nv = 0, nc = 0, nh = 0, nz = 0;
   int iv = 0, ilambda = 0, imu = 0, iz = 0, n = 0;
@@ -301,6 +303,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.release();
   s.system = &system;
   s.options = options;
+  s.budget.start(options.max_wall_seconds);
   s.t0 = x0.t;
   s.stepped = false;
   s.failed = false;
@@ -442,6 +445,14 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
         s.failure = {status_code(flag), t_fail,
                      fmt::format("at t = {:.6g} s: IDA failed with flag {} ({})", t_fail, flag,
                                  s.last_message)};
+        return s.failure;
+      }
+      if (s.budget.spent()) {
+        s.failed = true;
+        s.failure = {StatusCode::kWallClock, t_current,
+                     fmt::format("at t = {:.6g} s: the wall-clock budget of {:g} s is spent (last step "
+                                 "{:.3g} s)",
+                                 t_current, s.options.max_wall_seconds, stats_.last_step)};
         return s.failure;
       }
       if (stats_.steps > s.options.max_steps) {

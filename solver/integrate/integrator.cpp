@@ -49,6 +49,7 @@ IntegratorOptions IntegratorOptions::trapezoidal(double step) {
 void IntegratorOptions::validate() const {
   demand_input(rtol > 0.0 && rtol < 1.0, "integrator rtol", "0 < rtol < 1", rtol);
   demand_input(atol > 0.0 && std::isfinite(atol), "integrator atol", "atol > 0", atol);
+  demand_input(max_wall_seconds > 0.0, "integrator max_wall", "> 0 s", max_wall_seconds);
   demand_input(max_step >= 0.0, "integrator max_step", "max_step ≥ 0 (0: none)", max_step);
   demand_input(initial_step >= 0.0, "integrator initial_step", "initial_step ≥ 0 (0: automatic)",
                initial_step);

@@ -64,6 +64,9 @@ struct IntegratorOptions {
   // Both: budget of accepted steps, and the time not to step beyond (set by `simulate` to
   // the last sample, so a model is never evaluated past the end of the run).
   long max_steps = 10'000'000;
+  // Both: wall-clock budget of the integration [s], checked after every step: a run that asks
+  // for more than it can do in that time fails with kWallClock (and keeps its samples).
+  double max_wall_seconds = std::numeric_limits<double>::infinity();
   double t_stop = std::numeric_limits<double>::infinity();
 
   Quadrature quadrature;

@@ -10,6 +10,7 @@ const char* to_string(StatusCode code) {
     case StatusCode::kSingularJacobian: return "singular_jacobian";
     case StatusCode::kNaN: return "nan";
     case StatusCode::kTooManySteps: return "too_many_steps";
+    case StatusCode::kWallClock: return "wall_clock";
   }
   return "unknown";
 }

@@ -13,6 +13,7 @@ enum class StatusCode {
   kSingularJacobian,     // the iteration matrix could not be factorised
   kNaN,                  // the model returned non-finite values
   kTooManySteps,         // the step budget (IntegratorOptions::max_steps) ran out
+  kWallClock,            // the wall-clock budget (IntegratorOptions::max_wall_seconds) ran out
 };
 
 // "ok", "error_test_failures", ... (stable names, used in results files and --json).

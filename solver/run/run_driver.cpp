@@ -1,9 +1,12 @@
 #include "run/run_driver.h"
 
 #include <algorithm>
+
+#include <fmt/format.h>
 #include <chrono>
 #include <set>
 
+#include "core/error.h"
 #include "integrate/simulate.h"
 #include "multibody/clearance.h"
 #include "multibody/linear_range.h"
@@ -14,6 +17,21 @@ namespace limber::run {
 
 void check_settings(const io::RunSettings& settings) {
   settings.integrator.validate();
+  // Below these IDA asks for more digits than its Newton corrector (a finite-difference matrix,
+  // double precision) delivers on a mechanism: it fails mid-run instead of finishing (the rigid
+  // slider-crank fails at rtol 1e-12 and runs at 1e-11, docs/integrators.md).
+  if (settings.integrator.method == integrate::Method::kIda) {
+    if (settings.integrator.rtol < kMinimumRtol) {
+      throw InputError(fmt::format("expected rtol >= {:g} for IDA on a mechanism (tighter asks for more "
+                                   "digits than double precision delivers), got {:g}",
+                                   kMinimumRtol, settings.integrator.rtol));
+    }
+    if (settings.integrator.atol < kMinimumAtol) {
+      throw InputError(fmt::format("expected atol >= {:g} for IDA on a mechanism (tighter asks for more "
+                                   "digits than double precision delivers), got {:g}",
+                                   kMinimumAtol, settings.integrator.atol));
+    }
+  }
   integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval);
 }
 

@@ -68,8 +68,12 @@ struct RunHooks {
   std::function<void(const multibody::HingeEvent&)> on_event;
 };
 
+// The tightest IDA tolerances `limber run` accepts (check_settings).
+inline constexpr double kMinimumRtol = 1e-11;
+inline constexpr double kMinimumAtol = 1e-14;
+
 // Throws InputError when the settings cannot run (integrator options out of range, sample
-// interval not positive).
+// interval not positive, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
 // Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings or held

@@ -7,6 +7,7 @@
 #include <hdf5.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <set>
 #include <string>
@@ -214,6 +215,32 @@ TEST(RunCli, CoarseSettingsAreReportedAsInaccurate) {
   EXPECT_EQ(fine.exit_code, 0) << fine.err;
   EXPECT_EQ(test::parse_json(fine.out)["status"].string(), "ok");
   EXPECT_LT(test::parse_json(fine.out)["accuracy"]["energy_relative"].number(), 1e-3);
+}
+
+TEST(RunCli, BudgetsAndToleranceFloorStopRunsThatCannotFinish) {
+  // IDA tighter than double precision delivers on a mechanism is refused up front (exit 1,
+  // nothing written); a wall-clock budget stops a run that has not finished by then (exit 2,
+  // status "failed" with the reason, every sample before it kept). The deployment needs ~4 s
+  // for its 6 s at its own step, so 0.3 s of wall clock cannot be enough on any machine.
+  const auto dir = test::fresh_directory("cli_budgets");
+  const test::CommandRun tight = run_limber("run " + kCase + " -o " + dir.string() + " --rtol 1e-12");
+  EXPECT_EQ(tight.exit_code, 1);
+  EXPECT_NE(tight.err.find("expected rtol >= 1e-11 for IDA on a mechanism"), std::string::npos) << tight.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.h5"));
+
+  const std::string deployment = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
+  const test::CommandRun budget =
+      run_limber("run " + deployment + " -o " + dir.string() + " --max-wall 0.3 --json");
+  EXPECT_EQ(budget.exit_code, 2) << budget.err;
+  const test::JsonValue json = test::parse_json(budget.out);
+  EXPECT_EQ(json["status"].string(), "failed");
+  EXPECT_NE(json["message"].string().find("the wall-clock budget of 0.3 s is spent"), std::string::npos);
+  EXPECT_GT(json["samples"].number(), 0.0);
+  EXPECT_LT(json["t_reached"].number(), 6.0);
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "failed");
+  H5Fclose(file);
 }
 
 TEST(RunCli, BadCaseFileGivesFileLineAndExitOne) {
