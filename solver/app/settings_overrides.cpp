@@ -6,8 +6,8 @@ void SettingsOverrides::add_options(CLI::App& command) {
   command.add_option("--integrator", integrator,
                      "ida (variable-step BDF, error control) or galpha (fixed-step generalized-alpha)")
       ->check(CLI::IsMember({"ida", "galpha"}));
-  command.add_option("--rtol", rtol, "IDA relative tolerance (> 0)");
-  command.add_option("--atol", atol, "IDA absolute tolerance (> 0)");
+  command.add_option("--rtol", rtol, "IDA relative tolerance (>= 1e-11 on a mechanism)");
+  command.add_option("--atol", atol, "IDA absolute tolerance (>= 1e-14 on a mechanism)");
   command.add_option("--step", step, "generalized-alpha step [s] (> 0)");
   command.add_option("--t-end", t_end, "End time [s] (>= 0)");
   command.add_option("--max-wall", max_wall,

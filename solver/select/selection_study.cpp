@@ -165,7 +165,8 @@ std::optional<std::size_t> choose_run(const std::vector<CandidateRun>& runs,
       if (run.candidate.name == "kept") return k;
       continue;
     }
-    if (run.candidate.reference || !run.ok() || !(run.error(norm) <= *target)) continue;
+    // A set whose own accuracy check failed is never the answer.
+    if (run.candidate.reference || !run.summary.accurate() || !(run.error(norm) <= *target)) continue;
     if (!chosen || run.modes < runs[*chosen].modes ||
         (run.modes == runs[*chosen].modes && run.summary.wall_seconds < runs[*chosen].summary.wall_seconds)) {
       chosen = k;

@@ -92,8 +92,9 @@ Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity)
 // reference (largest error over `keys`), on their common samples.
 void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity>& keys);
 
-// The set to use: with a target, the finished non-reference set with the fewest modes (then the
-// shortest run) whose error is at most `target`, or none; without one, the procedure's answer
+// The set to use: with a target, the finished, accurate (its own accuracy check passed)
+// non-reference set with the fewest modes (then the shortest run) whose error is at most
+// `target`, or none; without one, the procedure's answer
 // ("kept"). Returns an index into `runs`, or nullopt.
 std::optional<std::size_t> choose_run(const std::vector<CandidateRun>& runs,
                                       std::optional<double> target, ErrorNorm norm);
