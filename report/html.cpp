@@ -48,4 +48,15 @@ std::string relative_url(const std::filesystem::path& from, const std::filesyste
   return url;
 }
 
+std::string readable_stem(const std::string& text) {
+  std::string out = text;
+  for (char& c : out) {
+    const auto u = static_cast<unsigned char>(c);
+    const bool keep = (u >= 'A' && u <= 'Z') || (u >= 'a' && u <= 'z') || (u >= '0' && u <= '9') ||
+                      u == '_' || u == '-';
+    if (!keep) c = '_';
+  }
+  return out.empty() ? "_" : out;
+}
+
 }  // namespace limber::report

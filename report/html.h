@@ -20,4 +20,8 @@ std::string relative_url(const std::filesystem::path& from, const std::filesyste
 // (render/file_stem.h, shared with render's VTU files).
 using render::file_stem;
 
+// A readable file name part from arbitrary text: [A-Za-z0-9_-], other bytes become '_'. Safe
+// but not injective: only for texts numbered apart (selection quantities); names use file_stem.
+std::string readable_stem(const std::string& text);
+
 }  // namespace limber::report

@@ -26,5 +26,11 @@ TEST(FileStem, KeepsOnlySafeCharacters) {
   EXPECT_NE(file_stem("a b"), file_stem("a_b"));
 }
 
+TEST(ReadableStem, KeepsSafeCharactersAndBlanksTheRest) {
+  EXPECT_EQ(readable_stem("R3 force z [N]"), "R3_force_z__N_");
+  EXPECT_EQ(readable_stem("../a b<c>"), "___a_b_c_");
+  EXPECT_EQ(readable_stem(""), "_");
+}
+
 }  // namespace
 }  // namespace limber::report
