@@ -1,6 +1,7 @@
 #include "mode_animation.h"
 
 #include "core/error.h"
+#include "file_stem.h"
 #include "frame_renderer.h"
 #include "png_frame_writer.h"
 #include "progress_bar.h"
@@ -115,7 +116,7 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
       const Results results = mode_results(body, mode, options);
       const double period = results.time(results.time.size() - 1);
       const std::filesystem::path frames =
-          root / body.name / fmt::format("mode_{:02d}", mode + 1);
+          root / file_stem(body.name) / fmt::format("mode_{:02d}", mode + 1);
       std::filesystem::create_directories(frames);
       FrameRenderer renderer(results, view, 0.0, period);
       PngFrameWriter writer;

@@ -1,6 +1,7 @@
 #include "modes_reader.h"
 
 #include "h5_reader.h"
+#include "results/link_name.h"
 
 namespace limber::render {
 
@@ -14,9 +15,11 @@ ModeShapes read_mode_shapes(const std::filesystem::path& modes_file) {
   if (format != "limber-modes") r.fail("format 'limber-modes'", "'" + format + "'");
   shapes.title = r.string_attribute("/", "title", false);
   for (const std::string& name : r.strings("/body_names")) {
+    // The names are text; each body's group is at its link name.
+    if (name.empty()) r.fail("non-empty names in /body_names", "\"\"");
     BodyModeShapes body;
     body.name = name;
-    const std::string group = "/bodies/" + name;
+    const std::string group = "/bodies/" + results::link_name(name);
     body.mesh = read_flexible_mesh(r, group);
     body.kinds = r.strings(group + "/modes/kinds");
     body.labels = r.strings(group + "/modes/labels");

@@ -1,6 +1,7 @@
 #include "results_reader.h"
 
 #include "h5_reader.h"
+#include "results/link_name.h"
 
 #include <algorithm>
 #include <utility>
@@ -86,16 +87,16 @@ Results read_results(const std::filesystem::path& directory) {
 
   // ns: the smallest row count over every per-sample dataset read.
   hsize_t ns = r.rows("/time", 0);
-  const std::vector<std::string> body_names = r.members("/bodies");
-  const std::vector<std::string> joint_names = r.members("/joints");
-  for (const std::string& body : body_names) {
+  const std::vector<std::string> body_links = r.members("/bodies");
+  const std::vector<std::string> joint_links = r.members("/joints");
+  for (const std::string& body : body_links) {
     const std::string g = "/bodies/" + body;
     ns = std::min({ns, r.rows(g + "/position", 3), r.rows(g + "/orientation", 4)});
     if (r.exists(g + "/modal_coordinates")) {
       ns = std::min(ns, r.dims(g + "/modal_coordinates").at(0));
     }
   }
-  for (const std::string& joint : joint_names) {
+  for (const std::string& joint : joint_links) {
     ns = std::min(ns, r.rows("/joints/" + joint + "/position", 3));
   }
   const auto n = static_cast<Eigen::Index>(ns);
@@ -105,10 +106,11 @@ Results read_results(const std::filesystem::path& directory) {
   results.time = Eigen::Map<const Eigen::VectorXd>(time.data(), n);
 
   // Bodies: kind, shapes, pose track, mesh and modal coordinates.
-  for (const std::string& body : body_names) {
+  for (const std::string& body : body_links) {
     const std::string g = "/bodies/" + body;
     BodyTrack track;
-    track.name = body;
+    track.name = r.string_attribute(g, results::kNameAttribute, false, body);
+    track.group = g;
     const std::string kind = r.string_attribute(g, "kind");
     if (kind != "rigid" && kind != "flexible") r.fail("kind rigid or flexible on " + g, "'" + kind + "'");
     track.flexible = kind == "flexible";
@@ -138,10 +140,11 @@ Results read_results(const std::filesystem::path& directory) {
   }
 
   // Joints: type, bodies and the joint point track.
-  for (const std::string& joint : joint_names) {
+  for (const std::string& joint : joint_links) {
     const std::string g = "/joints/" + joint;
     JointTrack track;
-    track.name = joint;
+    track.name = r.string_attribute(g, results::kNameAttribute, false, joint);
+    track.group = g;
     track.type = r.string_attribute(g, "type", false);
     track.body_i = r.string_attribute(g, "body_i", false);
     track.body_j = r.string_attribute(g, "body_j", false);

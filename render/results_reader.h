@@ -36,8 +36,12 @@ struct FlexibleMesh {
   Eigen::VectorXd frequencies_hz;     // nm
 };
 
+// Names are the case's text (the attribute `name`, else the link name of an older file); `group`
+// is the HDF5 path of the body's or joint's group, e.g. "/bodies/arm%2Fleft" for "arm/left"
+// (results/link_name.h): build paths from it, never from the name.
 struct BodyTrack {
   std::string name;
+  std::string group;
   bool flexible = false;
   std::vector<Shape> shapes;
   RowMatrix3d position;                                           // ns x 3 [m]
@@ -48,6 +52,7 @@ struct BodyTrack {
 
 struct JointTrack {
   std::string name, type, body_i, body_j;
+  std::string group;  // "/joints/<link name>"
   RowMatrix3d position;  // ns x 3, joint point in ground [m]
 };
 

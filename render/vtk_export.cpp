@@ -1,6 +1,7 @@
 #include "vtk_export.h"
 
 #include "body_pose.h"
+#include "file_stem.h"
 
 #include <vtkAppendFilter.h>
 #include <vtkCellType.h>
@@ -114,10 +115,11 @@ vtkSmartPointer<vtkUnstructuredGrid> rigid_grid(const BodyTrack& body, const Bod
   return grid;
 }
 
+// "<body>_<sample>.vtu", the body's name made safe and distinct (file_stem.h).
 std::string file_name(const std::string& body, Eigen::Index sample) {
   char index[32];
   std::snprintf(index, sizeof index, "%05ld", static_cast<long>(sample));
-  return body + "_" + index + ".vtu";
+  return file_stem(body) + "_" + index + ".vtu";
 }
 
 std::string xml_escape(const std::string& text) {

@@ -48,7 +48,7 @@ std::string relative_url(const std::filesystem::path& from, const std::filesyste
   return url;
 }
 
-std::string file_stem(const std::string& text) {
+std::string readable_stem(const std::string& text) {
   std::string out = text;
   for (char& c : out) {
     const auto u = static_cast<unsigned char>(c);

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include "file_stem.h"
+
 namespace limber::report {
 
 // Escapes & < > " ' so any text (titles, names, messages from results files) is shown as text,
@@ -14,7 +16,12 @@ std::string html_escape(const std::string& text);
 // every byte outside [A-Za-z0-9._~-] percent-encoded.
 std::string relative_url(const std::filesystem::path& from, const std::filesystem::path& to);
 
-// A file name made of [A-Za-z0-9_-] from arbitrary text (other bytes become '_').
-std::string file_stem(const std::string& text);
+// A file name part from arbitrary text, injective and made of [A-Za-z0-9_~-]
+// (render/file_stem.h, shared with render's VTU files).
+using render::file_stem;
+
+// A readable file name part from arbitrary text: [A-Za-z0-9_-], other bytes become '_'. Safe
+// but not injective: only for texts numbered apart (selection quantities); names use file_stem.
+std::string readable_stem(const std::string& text);
 
 }  // namespace limber::report

@@ -207,7 +207,7 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
     const std::string& quantity = order[k];
     std::vector<Curve>& set_curves = curves[quantity];
     const std::size_t sets = set_curves.size();
-    const std::string stem = prefix + "selection_" + std::to_string(k + 1) + "_" + file_stem(quantity);
+    const std::string stem = prefix + "selection_" + std::to_string(k + 1) + "_" + readable_stem(quantity);
     plots.push_back({PlotSection::kSelection, stem + ".png",
                      quantity + " in each of the " + std::to_string(sets) +
                          " mode sets run by limber select (selection/key_series.csv).",

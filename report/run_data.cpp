@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "modes_reader.h"
 #include "results/h5_handle.h"
+#include "results/link_name.h"
 
 #include <hdf5.h>
 
@@ -160,6 +161,15 @@ std::vector<std::pair<std::string, std::string>> attributes(hid_t file, const st
   return out;
 }
 
+// The name of the group or dataset at `path`: its attribute `name`, else (a file written
+// before names had one) its link name `link`.
+std::string display_name(hid_t file, const std::string& path, const std::string& link) {
+  for (const auto& [key, value] : attributes(file, path, {})) {
+    if (key == results::kNameAttribute) return value;
+  }
+  return link;
+}
+
 RowMatrix3d as_rows3(const std::vector<double>& values, hsize_t rows) {
   return Eigen::Map<const RowMatrix3d>(values.data(), static_cast<Eigen::Index>(rows), 3);
 }
@@ -208,7 +218,7 @@ hsize_t read_series(hid_t file, RunData& run) {
   // Joint reactions (joint frame, and ground axes when written); a joint without joint-frame
   // forces has no plot.
   for (const render::JointTrack& joint : run.results.joints) {
-    const std::string g = "/joints/" + joint.name + "/";
+    const std::string g = joint.group + "/";
     hsize_t torque_rows = 0;
     const std::vector<double> force = read_doubles(file, g + "force_joint", 3, rows);
     const std::vector<double> torque = read_doubles(file, g + "torque_joint", 3, torque_rows);
@@ -230,30 +240,33 @@ hsize_t read_series(hid_t file, RunData& run) {
     run.joints.push_back(std::move(reactions));
   }
 
-  // Driver efforts and energies.
+  // Driver efforts and energies, listed by link name, shown by name.
   for (const std::string& driver : members(file, "/drivers")) {
-    const std::vector<double> v = read_doubles(file, "/drivers/" + driver + "/effort", 0, rows);
+    const std::string g = "/drivers/" + driver;
+    const std::vector<double> v = read_doubles(file, g + "/effort", 0, rows);
     if (v.empty()) continue;
-    run.drivers.push_back({driver, as_vector(v)});
+    run.drivers.push_back({display_name(file, g, driver), as_vector(v)});
     ns = std::min(ns, rows);
   }
   for (const std::string& energy : members(file, "/energy")) {
-    const std::vector<double> v = read_doubles(file, "/energy/" + energy, 0, rows);
+    const std::string path = "/energy/" + energy;
+    const std::vector<double> v = read_doubles(file, path, 0, rows);
     if (v.empty()) continue;
-    run.energies.push_back({energy, as_vector(v)});
+    run.energies.push_back({display_name(file, path, energy), as_vector(v)});
     ns = std::min(ns, rows);
   }
 
   // Hinge latches and stops in the model's order, and their events.
-  for (const std::string& name : members(file, "/hinge_limits")) {
-    const std::string g = "/hinge_limits/" + name;
+  for (const std::string& link : members(file, "/hinge_limits")) {
+    const std::string g = "/hinge_limits/" + link;
     hsize_t torque_rows = 0;
     const std::vector<double> angle = read_doubles(file, g + "/angle", 0, rows);
     const std::vector<double> torque = read_doubles(file, g + "/torque", 0, torque_rows);
     if (angle.empty() || torque.empty()) continue;
-    HingeLimitTrack track{name, "", "", 0.0, as_vector(angle), as_vector(torque)};
+    HingeLimitTrack track{link, "", "", 0.0, as_vector(angle), as_vector(torque)};
     int index = static_cast<int>(run.hinge_limits.size());
     for (const auto& [key, value] : attributes(file, g, {})) {
+      if (key == results::kNameAttribute) track.name = value;
       if (key == "kind") track.kind = value;
       if (key == "joint") track.joint = value;
       if (key == "angle") track.limit_angle = std::stod(value);

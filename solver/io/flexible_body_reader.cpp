@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/names.h"
 #include "fe/fe_model_builder.h"
 #include "fe/mesh_generators.h"
 
@@ -287,6 +288,7 @@ modal::ModeRequest read_modes(const YamlValue& modes, const fe::FeModelBuilder& 
 
 FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& entry,
                                     const CaseLibrary& library) {
+  check_name_text("flexible body", name, entry.key_where());
   if (!entry.is_map()) entry.fail("expected a map {beams: ..., modes: ...} for '" + name + "'");
   entry.allow_only({"beams", "plates", "point_masses", "node_sets", "fixed", "modes"});
   FlexibleBodyCase body;

@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "core/names.h"
 #include "io/case_reader.h"
 #include "io/flexible_mechanism_body.h"
 #include "io/mechanism_values.h"
@@ -317,7 +318,9 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
   MechanismCase result;
   if (const auto gravity = root.find("gravity")) result.gravity_W = gravity->as_vector3();
   FlexibleBodies flexible;
+  // Names are checked at their keys here (core/names.h), before anything is named after them.
   for (const auto& [name, entry] : root.at("bodies").entries()) {
+    check_name_text("body", name, entry.key_where());
     if (entry.is_map() && entry.find("flexible")) {
       FlexibleBodyEntry body = read_flexible_mechanism_body(name, entry, components);
       flexible[name] = place(body, components);
@@ -329,23 +332,29 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
   }
   if (const auto markers = root.find("markers")) {
     for (const auto& [name, entry] : markers->entries()) {
+      check_name_text("marker", name, entry.key_where());
       result.markers.push_back(read_marker(name, entry, flexible));
     }
   }
   std::map<std::string, JointType> joint_types;
   if (const auto joints = root.find("joints")) {
     for (const auto& [name, entry] : joints->entries()) {
+      check_name_text("joint", name, entry.key_where());
       result.joints.push_back(read_joint(name, entry, flexible));
       joint_types[name] = result.joints.back().type;
     }
   }
   if (const auto drivers = root.find("drivers")) {
     for (const auto& [name, entry] : drivers->entries()) {
+      check_name_text("driver", name, entry.key_where());
       result.drivers.push_back(read_driver(name, entry, joint_types));
     }
   }
   if (const auto forces = root.find("forces")) {
-    for (const auto& [name, entry] : forces->entries()) result.forces.push_back(read_force(name, entry));
+    for (const auto& [name, entry] : forces->entries()) {
+      check_name_text("force", name, entry.key_where());
+      result.forces.push_back(read_force(name, entry));
+    }
   }
 
   // What to do with the model.

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "io/hdf5_file.h"
+#include "results/link_name.h"
 
 namespace limber::io {
 
@@ -157,7 +158,9 @@ void write_body(const H5Group& bodies, const BodyModesRef& body) {
   LIMBER_DEMAND(set.shapes.rows() == model.dof_count());
   LIMBER_DEMAND(static_cast<std::size_t>(nm) == set.modes.size());
 
-  const H5Group group = bodies.create_group(body.name);
+  // The group at the name's link (results/link_name.h, as in results.h5), the name beside it.
+  const H5Group group = bodies.create_group(results::link_name(body.name));
+  group.write_attribute(results::kNameAttribute, body.name);
   group.write_attribute("dof_count", model.dof_count());
   group.write_attribute("mode_count", static_cast<int>(nm));
   write_mesh(group.create_group("mesh"), model);
@@ -258,7 +261,10 @@ ModesFile read_modes_file(const std::string& path) {
   result.case_file = file.read_string_attribute("case_file");
   const H5Group bodies = file.open_group("bodies");
   for (const std::string& name : file.read_strings("body_names")) {
-    result.bodies.push_back(read_body(bodies.open_group(name), name));
+    if (name.empty()) {
+      throw InputError("expected non-empty body names in '" + path + "', got \"\"");
+    }
+    result.bodies.push_back(read_body(bodies.open_group(results::link_name(name)), name));
   }
   return result;
 }

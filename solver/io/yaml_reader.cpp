@@ -60,6 +60,10 @@ SourceLocation YamlValue::where() const {
   return location_of(mark, *file_);
 }
 
+SourceLocation YamlValue::key_where() const {
+  return key_mark_.is_null() ? where() : location_of(key_mark_, *file_);
+}
+
 void YamlValue::fail(const std::string& message) const { throw InputError(message, where()); }
 
 std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {

@@ -33,6 +33,8 @@ class YamlValue {
 
   const std::string& name() const { return name_; }
   SourceLocation where() const;
+  // Where the key of a map entry is (entries()), e.g. to point at a bad name; where() otherwise.
+  SourceLocation key_where() const;
   // Throws InputError(message) at this value's location.
   [[noreturn]] void fail(const std::string& message) const;
 

@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
+#include "core/names.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -98,7 +99,7 @@ int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation
 }
 
 void ModelBuilder::check_new_body(const std::string& name, const Pose& pose, const SourceLocation& where) const {
-  if (name.empty()) throw InputError("body name: expected a non-empty name, got \"\"", where);
+  check_name_text("body", name, where);
   if (model_.find_body(name) >= 0) {
     throw InputError(fmt::format("body \"{}\": expected a unique name, got a duplicate", name), where);
   }
@@ -132,7 +133,7 @@ int ModelBuilder::add_marker(const std::string& name, const std::string& body,
 
 int ModelBuilder::check_new_marker(const std::string& name, const std::string& body,
                                    const Eigen::Matrix3d& R_BM, const SourceLocation& where) const {
-  if (name.empty()) throw InputError("marker name: expected a non-empty name, got \"\"", where);
+  check_name_text("marker", name, where);
   for (const Marker& m : model_.markers) {
     if (m.name == name) {
       throw InputError(fmt::format("marker \"{}\": expected a unique name, got a duplicate", name), where);
@@ -165,8 +166,9 @@ int ModelBuilder::marker_index(const std::string& name, const SourceLocation& wh
   throw InputError(fmt::format("marker: expected an existing marker, got \"{}\"", name), where);
 }
 
-void ModelBuilder::claim_element_name(const std::string& name, const SourceLocation& where) {
-  if (name.empty()) throw InputError("element name: expected a non-empty name, got \"\"", where);
+void ModelBuilder::claim_element_name(const char* kind, const std::string& name,
+                                      const SourceLocation& where) {
+  check_name_text(kind, name, where);
   if (std::find(element_names_.begin(), element_names_.end(), name) != element_names_.end()) {
     throw InputError(fmt::format("\"{}\": expected a unique joint/driver/force name, got a duplicate", name),
                      where);
@@ -176,12 +178,14 @@ void ModelBuilder::claim_element_name(const std::string& name, const SourceLocat
 
 int ModelBuilder::add_joint(const std::string& name, JointType type, const std::string& marker_i,
                             const std::string& marker_j, const SourceLocation& where) {
+  // The name first: messages below quote it.
+  check_name_text("joint", name, where);
   const int mi = marker_index(marker_i, where), mj = marker_index(marker_j, where);
   if (model_.markers[mi].body == model_.markers[mj].body) {
     throw InputError(fmt::format("joint \"{}\": expected markers on two different bodies, got both on \"{}\"",
                                  name, model_.bodies[model_.markers[mi].body].name), where);
   }
-  claim_element_name(name, where);
+  claim_element_name("joint", name, where);
   model_.joints.push_back(Joint{name, type, mi, mj, 0, 0});
   return static_cast<int>(model_.joints.size()) - 1;
 }
@@ -189,6 +193,8 @@ int ModelBuilder::add_joint(const std::string& name, JointType type, const std::
 int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
                              DriverCoordinate coordinate, TimeFunction motion,
                              const SourceLocation& where) {
+  // The name first: messages below quote it.
+  check_name_text("driver", name, where);
   const int j = model_.find_joint(joint);
   if (j < 0) throw InputError(fmt::format("driver \"{}\": expected an existing joint, got \"{}\"", name, joint), where);
   // The joint must leave the driven coordinate free.
@@ -209,7 +215,7 @@ int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
                                    "on joint \"{}\" (first: \"{}\")", name, joint, d.name), where);
     }
   }
-  claim_element_name(name, where);
+  claim_element_name("driver", name, where);
   model_.drivers.push_back(Driver{name, j, coordinate, std::move(motion), 0});
   return static_cast<int>(model_.drivers.size()) - 1;
 }
@@ -220,7 +226,7 @@ void ModelBuilder::add_rsda(const RsdaSpec& spec, const SourceLocation& where) {
     throw InputError(fmt::format("RSDA \"{}\": expected stiffness and damping ≥ 0, got k = {}, c = {}",
                                  spec.name, spec.stiffness, spec.damping), where);
   }
-  claim_element_name(spec.name, where);
+  claim_element_name("RSDA", spec.name, where);
   // Reference angle for unwrapping: θ of the markers at the initial poses.
   Eigen::Vector3d p_i, p_j;
   Eigen::Matrix3d R_i, R_j;
@@ -260,7 +266,7 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
                                  "angle {:.6g} rad and not equal to it (0 < |angle − {:.6g}| < 2π), "
                                  "got {:.6g} rad", kind, spec.name, theta0, theta0, spec.angle), where);
   }
-  claim_element_name(spec.name, where);
+  claim_element_name(kind, spec.name, where);
   // Unwrap about the middle of the travel: start and limit both lie within ±π of it.
   model_.forces.push_back(HingeLimit{spec.name, spec.kind, j, joint.marker_i, joint.marker_j,
                                      spec.angle, travel > 0.0 ? 1.0 : -1.0, spec.stiffness,
@@ -274,14 +280,14 @@ void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
                                  "got k = {}, c = {}, l0 = {}", spec.name, spec.stiffness, spec.damping,
                                  spec.free_length), where);
   }
-  claim_element_name(spec.name, where);
+  claim_element_name("TSDA", spec.name, where);
   model_.forces.push_back(Tsda{spec.name, mi, mj, spec.stiffness, spec.damping, spec.free_length,
                                spec.actuator});
 }
 
 void ModelBuilder::add_point_load(const PointLoadSpec& spec, const SourceLocation& where) {
   const int m = marker_index(spec.marker, where);
-  claim_element_name(spec.name, where);
+  claim_element_name("point load", spec.name, where);
   model_.forces.push_back(PointLoad{spec.name, m, spec.force, spec.torque, spec.scale, spec.frame});
 }
 

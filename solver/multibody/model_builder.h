@@ -1,7 +1,8 @@
 // Mutable, checked construction of a multibody Model (house style §2). Every add_* call
 // validates its input at once and throws InputError (expected/got, with the caller's
 // SourceLocation, e.g. a case-file line); build() returns the frozen Model.
-// Body 0 is "ground". Names of joints, drivers and force elements share one namespace.
+// Body 0 is "ground". Names of joints, drivers and force elements share one namespace. Names
+// are free text, but neither empty nor holding control characters (core/names.h: InputError).
 #pragma once
 
 #include <memory>
@@ -141,7 +142,9 @@ class ModelBuilder {
   int check_new_marker(const std::string& name, const std::string& body, const Eigen::Matrix3d& R_BM,
                        const SourceLocation& where) const;
   int append_body(Body body);
-  void claim_element_name(const std::string& name, const SourceLocation& where);
+  // Checks the text of a joint/driver/force name (core/names.h; `kind` for messages, e.g.
+  // "joint") and that no element has it yet.
+  void claim_element_name(const char* kind, const std::string& name, const SourceLocation& where);
 
   // The frame-independent part of a flexible body: node positions, mesh, checked probe.
   std::shared_ptr<FlexibleBody> flexible_outline(const FlexibleBodySpec& spec, const SourceLocation& where) const;

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "results/directory_lock.h"
 #include "results/h5_handle.h"
+#include "results/link_name.h"
 
 #include <algorithm>
 #include <set>
@@ -116,9 +117,19 @@ void write_string_dataset(hid_t parent, const char* name, const std::vector<std:
   write_dataset(parent, name, type.get(), type.get(), {values.size()}, packed.data());
 }
 
-void demand_new_name(std::set<std::string>& names, const std::string& name) {
-  LIMBER_DEMAND(!name.empty() && name.find('/') == std::string::npos);
-  LIMBER_DEMAND(names.insert(name).second);
+// The link of a declared name (results/link_name.h), new within its kind: names are unique on
+// input and the mapping is injective, so a repeat is a caller bug.
+std::string new_link(std::set<std::string>& links, const std::string& name) {
+  std::string link = link_name(name);
+  LIMBER_DEMAND(links.insert(link).second);
+  return link;
+}
+
+// A group named by a free-text name: its link, and the name itself in the attribute `name`.
+H5Handle create_named_group(hid_t parent, std::set<std::string>& links, const std::string& name) {
+  H5Handle group = create_group(parent, new_link(links, name));
+  write_string_attribute(group.get(), kNameAttribute, name);
+  return group;
 }
 
 // A per-sample dataset: [ns] (width 0) or [ns, width], grown by one row per sample.
@@ -139,7 +150,7 @@ struct ResultsWriter::Impl {
   H5Handle drivers_group;
   H5Handle energy_group;
   H5Handle limits_group;
-  std::set<std::string> body_names, joint_names, driver_names, energy_names, limit_names;
+  std::set<std::string> body_links, joint_links, driver_links, energy_links, limit_links;
   // Per hinge limit: angle, torque and engaged; the event table and its row count.
   std::vector<std::array<Series, 3>> limit_series;
   H5Handle events_group;
@@ -215,8 +226,7 @@ struct ResultsWriter::Impl {
   H5Handle begin_body(const std::string& name, const char* kind,
                       const std::vector<ShapeSpec>& shapes) {
     demand_declaring();
-    demand_new_name(body_names, name);
-    H5Handle body = create_group(bodies_group.get(), name);
+    H5Handle body = create_named_group(bodies_group.get(), body_links, name);
     write_string_attribute(body.get(), "kind", kind);
     write_shapes(body.get(), shapes);
     std::vector<Series> series;
@@ -335,9 +345,8 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
 
 int ResultsWriter::add_joint(const JointSpec& joint) {
   impl_->demand_declaring();
-  demand_new_name(impl_->joint_names, joint.name);
-  H5Handle group =
-      create_group(impl_->group(impl_->joints_group, "joints"), joint.name);
+  H5Handle group = create_named_group(impl_->group(impl_->joints_group, "joints"),
+                                      impl_->joint_links, joint.name);
   write_string_attribute(group.get(), "type", joint.type);
   write_string_attribute(group.get(), "body_i", joint.body_i);
   write_string_attribute(group.get(), "body_j", joint.body_j);
@@ -355,8 +364,8 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
 
 int ResultsWriter::add_driver(const std::string& name) {
   impl_->demand_declaring();
-  demand_new_name(impl_->driver_names, name);
-  H5Handle group = create_group(impl_->group(impl_->drivers_group, "drivers"), name);
+  H5Handle group =
+      create_named_group(impl_->group(impl_->drivers_group, "drivers"), impl_->driver_links, name);
   impl_->driver_series.push_back(
       impl_->create_series(group.get(), "effort", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
   return static_cast<int>(impl_->driver_series.size()) - 1;
@@ -364,18 +373,20 @@ int ResultsWriter::add_driver(const std::string& name) {
 
 int ResultsWriter::add_energy(const std::string& name) {
   impl_->demand_declaring();
-  demand_new_name(impl_->energy_names, name);
+  // A dataset per energy, its name in its `name` attribute as for groups.
+  const std::string link = new_link(impl_->energy_links, name);
   impl_->energy_series.push_back(impl_->create_series(impl_->group(impl_->energy_group, "energy"),
-                                                      name.c_str(), H5T_IEEE_F64LE,
+                                                      link.c_str(), H5T_IEEE_F64LE,
                                                       H5T_NATIVE_DOUBLE, 0));
+  write_string_attribute(impl_->energy_series.back().dataset.get(), kNameAttribute, name);
   return static_cast<int>(impl_->energy_series.size()) - 1;
 }
 
 int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
   Impl& m = *impl_;
   m.demand_declaring();
-  demand_new_name(m.limit_names, limit.name);
-  H5Handle group = create_group(m.group(m.limits_group, "hinge_limits"), limit.name);
+  H5Handle group =
+      create_named_group(m.group(m.limits_group, "hinge_limits"), m.limit_links, limit.name);
   write_string_attribute(group.get(), "kind", limit.kind);
   write_string_attribute(group.get(), "joint", limit.joint);
   write_doubles_attribute(group.get(), "angle", &limit.angle, 1);

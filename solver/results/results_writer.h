@@ -145,8 +145,10 @@ class ResultsWriter {
   ResultsWriter& operator=(const ResultsWriter&) = delete;
 
   // Declarations, allowed only before the first sample (else aborts: a caller bug).
-  // Names must be unique within their kind and must not contain '/'. Returns the index the
-  // body/joint/driver/energy takes in Sample's vectors.
+  // Names are free text, non-empty and unique within their kind (else aborts: case names are
+  // checked on input, core/names.h). Each becomes the link of its group (its dataset for an
+  // energy) through results/link_name.h, which keeps the text in the attribute `name`. Returns
+  // the index the body/joint/driver/energy takes in Sample's vectors.
   int add_rigid_body(const RigidBodySpec& body);
   int add_flexible_body(const FlexibleBodySpec& body);
   int add_joint(const JointSpec& joint);

@@ -143,6 +143,46 @@ TEST(ModesFile, LayoutHoldsTheDocumentedAttributes) {
   std::filesystem::remove(path);
 }
 
+// Body names are free text: each group sits at the name's link name (results/link_name.h),
+// the name in its attribute `name`, and the bodies read back by name.
+TEST(ModesFile, BodyNamesWithSlashesAndDotsRoundTrip) {
+  const fe::FeModel model = small_model();
+  const modal::ModeSet set = synthetic_modes(model.dof_count(), 3);
+  const std::string path = scratch_path("modes_names.h5");
+  write_modes_file(path, "names", "small.yaml",
+                   {{"beam/1", &model, &set}, {"beam%2F1", &model, &set}, {".", &model, &set}});
+  const ModesFile file = read_modes_file(path);
+  ASSERT_EQ(file.bodies.size(), 3u);
+  EXPECT_EQ(file.bodies[0].name, "beam/1");
+  EXPECT_EQ(file.bodies[1].name, "beam%2F1");
+  EXPECT_EQ(file.bodies[2].name, ".");
+  EXPECT_EQ(file.bodies[2].mode_set.shapes, set.shapes);
+  const H5Group bodies = H5Group::open_file(path).open_group("bodies");
+  EXPECT_EQ(bodies.open_group("beam%2F1").read_string_attribute("name"), "beam/1");
+  EXPECT_EQ(bodies.open_group("beam%252F1").read_string_attribute("name"), "beam%2F1");
+  EXPECT_EQ(bodies.open_group("%2E").read_string_attribute("name"), ".");
+  std::filesystem::remove(path);
+}
+
+// A flexible body's name with a control character is refused at its key.
+TEST(ModesFile, ControlCharactersInNamesAreInputErrors) {
+  const std::string text = "materials: {steel: {E: 2e11, nu: 0.3, rho: 7800}}\n"
+                           "sections: {s: {shape: circle, diameter: 0.01}}\n"
+                           "flexible_bodies:\n"
+                           "  \"b\\0eam\":\n"
+                           "    beams: [{from: [0, 0, 0], to: [1, 0, 0], elements: 2, section: s, "
+                           "material: steel}]\n"
+                           "    modes: {normal: 3}\n";
+  try {
+    read_case_text(text, "nul.yaml");
+    FAIL() << "a NUL in a name was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "nul.yaml:4:3: flexible body name: expected text without control characters, got "
+              "\"b\\x00eam\" (byte 0x00 at 1)");
+  }
+}
+
 TEST(ModesFile, ReadingSomethingElseIsAnInputError) {
   EXPECT_THROW(read_modes_file(scratch_path("does_not_exist.h5")), InputError);
   const std::string path = scratch_path("not_modes.h5");

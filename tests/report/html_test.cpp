@@ -18,10 +18,18 @@ TEST(RelativeUrl, PercentEncodesAndWalksUp) {
   EXPECT_EQ(relative_url("/tmp/out", "/tmp/out/x\"<.png"), "x%22%3C.png");
 }
 
+// Safe characters only, and distinct texts give distinct stems (render/file_stem.h).
 TEST(FileStem, KeepsOnlySafeCharacters) {
   EXPECT_EQ(file_stem("R3"), "R3");
-  EXPECT_EQ(file_stem("../a b<c>"), "___a_b_c_");
-  EXPECT_EQ(file_stem(""), "_");
+  EXPECT_EQ(file_stem("../a b<c>"), "~2E~2E~2Fa~20b~3Cc~3E");
+  EXPECT_EQ(file_stem(""), "~");
+  EXPECT_NE(file_stem("a b"), file_stem("a_b"));
+}
+
+TEST(ReadableStem, KeepsSafeCharactersAndBlanksTheRest) {
+  EXPECT_EQ(readable_stem("R3 force z [N]"), "R3_force_z__N_");
+  EXPECT_EQ(readable_stem("../a b<c>"), "___a_b_c_");
+  EXPECT_EQ(readable_stem(""), "_");
 }
 
 }  // namespace
