@@ -10,7 +10,9 @@
 //                   the mechanism's size (the spread of its joint points and body origins at
 //                   the start, at least 1 mm).
 // A measure above its threshold gives a warning that names the option that would fix it; the
-// run's status is then "ok_inaccurate" instead of "ok".
+// run's status is then "ok_inaccurate" instead of "ok". So does a flexible body leaving the
+// linear range (multibody/linear_range.h; added by run_mechanism): the integration may be
+// accurate, but the linear model's answer is not the physical one.
 #pragma once
 
 #include <string>

@@ -146,6 +146,11 @@ RunSummary run_mechanism(const multibody::Model& model,
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);
+  // A body outside the linear range makes the linear floating-frame answer unphysical however
+  // accurately it was integrated: the run is not "ok" either.
+  for (const std::string& warning : summary.warnings) {
+    summary.accuracy.warnings.push_back(warning + " (the linear modal body's answer is not the physical one there)");
+  }
   if (hooks.writer) {
     std::string warnings;
     for (const std::string& w : summary.accuracy.warnings) warnings += (warnings.empty() ? "" : "\n") + w;
