@@ -14,7 +14,7 @@ namespace limber::run {
 
 void check_settings(const io::RunSettings& settings) {
   settings.integrator.validate();
-  integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval);
+  integrate::check_sample_times(0.0, settings.t_end, settings.sample_interval);
 }
 
 RunSummary run_mechanism(const multibody::Model& model,
