@@ -10,7 +10,7 @@
 
 namespace limber::integrate {
 
-std::vector<double> uniform_sample_times(double t0, double t_end, double dt) {
+void check_sample_times(double t0, double t_end, double dt) {
   if (!(dt > 0.0)) throw InputError(fmt::format("sample interval: expected > 0, got {}", dt));
   if (!(t_end >= t0) || !std::isfinite(t_end)) {
     throw InputError(fmt::format("end time: expected a finite time ≥ {} (the start), got {}", t0, t_end));
@@ -23,6 +23,10 @@ std::vector<double> uniform_sample_times(double t0, double t_end, double dt) {
                                  "at most {:g}, got {:g}; choose a larger sample interval",
                                  t_end - t0, dt, kMaxSamples, count));
   }
+}
+
+std::vector<double> uniform_sample_times(double t0, double t_end, double dt) {
+  check_sample_times(t0, t_end, dt);
   // Multiples of dt (no accumulated round-off); a last interval shorter than 1e-9 dt is merged.
   std::vector<double> times;
   const long n = static_cast<long>(std::floor((t_end - t0) / dt * (1.0 + 1e-12)));

@@ -23,6 +23,10 @@ inline constexpr double kMaxSamples = 1e8;
 // number at most kMaxSamples.
 std::vector<double> uniform_sample_times(double t0, double t_end, double dt);
 
+// The checks of uniform_sample_times without building the times (a settings check must not
+// allocate 800 MB). Throws InputError (no location: callers that have one catch and place it).
+void check_sample_times(double t0, double t_end, double dt);
+
 // Integrates from `start` with the integrator `options.method` and calls on_sample at each of
 // `sample_times` (strictly increasing, all ≥ start.t; the run ends at the last one, which
 // becomes options.t_stop). Samples are interpolated inside the integrator's steps, never forced

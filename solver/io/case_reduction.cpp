@@ -40,7 +40,9 @@ double CaseReduction::seconds() const {
 
 CaseReduction reduce_case(const Case& input, ReductionScope scope, const ModeOverrides& overrides) {
   // Every override must name an entry.
-  for (const auto& [name, request] : overrides) {
+  for (const auto& override_entry : overrides) {
+    // A named reference, not a structured binding: clang 14 cannot capture those in a lambda.
+    const std::string& name = override_entry.first;
     const bool known = std::any_of(input.flexible_bodies.begin(), input.flexible_bodies.end(),
                                    [&](const FlexibleBodyCase& b) { return b.name == name; });
     if (!known) {

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "integrate/simulate.h"
+
 namespace limber::io {
 
 RunSettings read_run_settings(const YamlValue& entry) {
@@ -15,7 +17,12 @@ RunSettings read_run_settings(const YamlValue& entry) {
                          ? integrate::Method::kGeneralizedAlpha
                          : integrate::Method::kIda;
   }
-  if (const auto rtol = entry.find("rtol")) options.rtol = rtol->as_positive();
+  if (const auto rtol = entry.find("rtol")) {
+    options.rtol = rtol->as_positive();
+    if (!(options.rtol < 1.0)) {
+      rtol->fail("expected 0 < rtol < 1 for 'rtol', got '" + rtol->node().Scalar() + "'");
+    }
+  }
   if (const auto atol = entry.find("atol")) options.atol = atol->as_positive();
   if (const auto max_step = entry.find("max_step")) options.max_step = max_step->as_non_negative();
   if (const auto step = entry.find("step")) options.step = step->as_positive();
@@ -36,8 +43,14 @@ RunSettings read_run_settings(const YamlValue& entry) {
   if (const auto events = entry.find("event_tolerance")) options.event_tolerance = events->as_positive();
   // Time span and output.
   if (const auto t_end = entry.find("t_end")) settings.t_end = t_end->as_non_negative();
-  if (const auto interval = entry.find("sample_interval")) {
-    settings.sample_interval = interval->as_positive();
+  const auto interval = entry.find("sample_interval");
+  if (interval) settings.sample_interval = interval->as_positive();
+  // The number of samples, bounded (integrate::kMaxSamples): at the interval, else the end time.
+  try {
+    integrate::check_sample_times(0.0, settings.t_end, settings.sample_interval);
+  } catch (const InputError& e) {
+    const auto t_end = entry.find("t_end");
+    (interval ? *interval : t_end ? *t_end : entry).fail(e.message());
   }
   return settings;
 }

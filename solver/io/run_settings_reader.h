@@ -1,7 +1,8 @@
 // Reads the `run` section of a case file (docs/case-format.md, "run"): the integrator
 // (ida | galpha) with its tolerances or step, the step budget, the end time and the output
 // sample interval of `limber run`. Unknown keys and out-of-range values throw InputError at
-// file:line:col; ranges are those of integrate::IntegratorOptions::validate.
+// file:line:col; ranges are those of integrate::IntegratorOptions::validate, and the samples
+// (t_end / sample_interval) number at most integrate::kMaxSamples.
 #pragma once
 
 #include "io/mechanism_reader.h"

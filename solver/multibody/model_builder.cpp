@@ -14,6 +14,10 @@ namespace limber::multibody {
 
 namespace {
 
+// Largest m |c|² / I1 of a rigid body (centre of mass c from the body origin, I1 the smallest
+// principal moment about the centre): see add_rigid_body.
+constexpr double kMaxComLever = 1e10;
+
 // One scalar equation of a joint: primitive, axes and component name (docs/multibody.md).
 struct EquationTemplate {
   EquationKind kind;
@@ -81,6 +85,17 @@ int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation
     throw InputError(fmt::format("body \"{}\" inertia: expected positive principal moments with "
                                  "I1 + I2 ≥ I3, got ({:.6g}, {:.6g}, {:.6g}) kg m²",
                                  spec.name, principal(0), principal(1), principal(2)), where);
+  }
+  // Centre of mass: the mass matrix about the body origin holds J_o = J_c - m c~ c~ (body.cpp),
+  // whose Schur complement J_c the factorisations recover only to eps m |c|² / I1; at
+  // kMaxComLever that keeps six digits of I1 (a needle of radius 1e-4 m held at its end: 5e7).
+  const double com_lever = spec.mass * spec.com_B.squaredNorm() / principal(0);
+  if (!(com_lever <= kMaxComLever)) {
+    throw InputError(fmt::format("body \"{}\" center_of_mass: expected m |c|² / I1 ≤ {:g} (the centre "
+                                 "of mass near the body origin for its inertia), got {:.6g} "
+                                 "(|c| = {:.6g} m, m = {:.6g} kg, I1 = {:.6g} kg m²)",
+                                 spec.name, kMaxComLever, com_lever, spec.com_B.norm(), spec.mass,
+                                 principal(0)), where);
   }
   Body body;
   body.name = spec.name;

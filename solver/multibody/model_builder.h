@@ -89,7 +89,10 @@ class ModelBuilder {
   ModelBuilder();
 
   void set_gravity(const Eigen::Vector3d& g_W);
-  // Returns the body index (ground is 0).
+  // Returns the body index (ground is 0). Throws InputError for a mass that is not positive, an
+  // inertia that is not symmetric positive definite or not realisable (I1 + I2 ≥ I3), and a
+  // centre of mass so far from the origin that the mass matrix about the origin cannot be
+  // factorised reliably (m |c|² / I1 > 1e10).
   int add_rigid_body(const RigidBodySpec& spec, const SourceLocation& where = {});
   // Throws InputError unless the shapes, stiffness and invariants agree in size (nm ≥ 1),
   // the mass is positive, damping values are ≥ 0, and the undeformed mass matrix of frame

@@ -32,7 +32,7 @@ void check_settings(const io::RunSettings& settings) {
                                    kMinimumAtol, settings.integrator.atol));
     }
   }
-  integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval);
+  integrate::check_sample_times(0.0, settings.t_end, settings.sample_interval);
 }
 
 RunSummary run_mechanism(const multibody::Model& model,

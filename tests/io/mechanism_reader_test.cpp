@@ -183,6 +183,10 @@ TEST(MechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // Not positive definite: the builder's message at the body's entry.
   text = edited("[1e-3, 1e-3, 1e-3]", "[1e-3, 1e-3, -1e-3]");
   EXPECT_TRUE(fails_at(text, location_of(text, "mass: 1.0"), "inertia"));
+  // A centre of mass so far from the origin that the mass matrix about the origin loses the
+  // inertia to rounding (a fuzz finding, tests/fuzz/regressions/): at the body's entry.
+  text = edited("center_of_mass: [0.5, 0, 0]", "center_of_mass: [4294967296, 0, 0]");
+  EXPECT_TRUE(fails_at(text, location_of(text, "mass: 2.0"), "center_of_mass: expected m |c|² / I1 ≤ 1e+10"));
   // Two orientation forms at once.
   text = edited("{axis: [0, 0, 1], angle: 0.5}", "{axis: [0, 0, 1], angle: 0.5, quaternion: [1, 0, 0, 0]}");
   EXPECT_TRUE(fails_at(text, location_of(text, "{axis: [0, 0, 1], angle"), "expected exactly one of"));
@@ -209,6 +213,11 @@ TEST(MechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // Run settings out of range.
   text = edited("rho_inf: 0.9", "rho_inf: 1.5");
   EXPECT_TRUE(fails_at(text, location_of(text, "1.5"), "expected 0 <= rho_inf <= 1"));
+  // Settings that used to fail only in run::check_settings, without a place in the file.
+  text = edited("  step: 2e-4\n", "  step: 2e-4\n  rtol: 2.0\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "2.0\n  rho_inf"), "expected 0 < rtol < 1"));
+  text = edited("sample_interval: 0.01", "sample_interval: 1.0e-300");
+  EXPECT_TRUE(fails_at(text, location_of(text, "1.0e-300"), "number of samples"));
   text = edited("integrator: galpha", "integrator: euler");
   EXPECT_TRUE(fails_at(text, location_of(text, "euler"), "expected one of ida, galpha"));
   // Joint with both markers and a position.
