@@ -211,6 +211,8 @@ int run_case(const RunOptions& options) {
       options.output_dir.empty()
           ? std::filesystem::path("out") / std::filesystem::path(options.case_file).stem()
           : std::filesystem::path(options.output_dir);
+  // Signals are caught from before the file exists, so a stop at any moment closes it.
+  const StopSignals stop_signals;
   results::ResultsWriter writer(directory, input.title, input.file);
   const std::string results_path = writer.path().string();
 
@@ -225,7 +227,6 @@ int run_case(const RunOptions& options) {
     std::fflush(text);
     progress.emplace(settings.t_end, true);
   };
-  const StopSignals stop_signals;
   double t_written = 0.0;
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
     if (progress) progress->update(sample.t, sample.statistics.steps);
