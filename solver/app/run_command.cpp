@@ -19,6 +19,7 @@
 #include "app/stop_signal.h"
 #include "core/error.h"
 #include "io/case_reader.h"
+#include "multibody/joint_placement.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
 #include "results/results_writer.h"
@@ -205,6 +206,9 @@ int run_case(const RunOptions& options) {
   fmt::print(text, "limber run: {} ({})\n", input.title, input.file);
   print_model(text, model);
   print_reduction(text, reduction);
+  for (const std::string& warning : multibody::distant_joint_warnings(model)) {
+    fmt::print(stderr, "limber: warning: {}\n", warning);
+  }
 
   // Results file, written while the run goes.
   const std::filesystem::path directory =

@@ -243,6 +243,21 @@ TEST(RunCli, BudgetsAndToleranceFloorStopRunsThatCannotFinish) {
   H5Fclose(file);
 }
 
+TEST(RunCli, JointFarFromItsBodyIsWarned) {
+  // Joints given at ground points put their markers wherever the bodies are at t = 0: a slider
+  // placed 1.95 m off its pin is no assembly error, just another mechanism. The run says so:
+  // the slider's shapes reach 0.061 m from its centre of mass, its pins sit 1.95 m away (32 x).
+  const auto dir = test::fresh_directory("cli_distant_joint");
+  const std::string moved = test::write_case(
+      "distant_joint", test::edited_case(kCase, "position: [1.05, 0, 0]\n    shapes:", "position: [3.0, 0, 0]\n    shapes:"));
+  const test::CommandRun run = run_limber("run " + moved + " -o " + dir.string() + " --t-end 0.01");
+  EXPECT_NE(run.err.find("limber: warning: joint R3 sits 1.95 m from the centre of mass of slider"),
+            std::string::npos) << run.err;
+  // The shipped case is placed right: no such warning.
+  const test::CommandRun shipped = run_limber("run " + kCase + " -o " + dir.string() + " --t-end 0.01");
+  EXPECT_EQ(shipped.err.find("sits"), std::string::npos) << shipped.err;
+}
+
 TEST(RunCli, BadCaseFileGivesFileLineAndExitOne) {
   const std::string path = test::write_case(
       "bad_joint", test::edited_case(kCase, "R2: {type: revolute,", "R2: {type: hinge,"));
