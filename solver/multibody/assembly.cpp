@@ -86,6 +86,14 @@ AssemblyResult assemble_positions(const Model& model, State& state, Workspace& w
                                   const AssemblyOptions& options) {
   AssemblyResult result;
   const Eigen::VectorXd q_given = state.q;
+  // Where the positions as given are off.
+  evaluate_constraints(model, state, Stage::kPosition, ws);
+  if (model.num_equations() > 0) {
+    Eigen::Index worst = 0;
+    result.given_residual = ws.g.cwiseAbs().maxCoeff(&worst);
+    result.given_worst_equation = static_cast<int>(worst);
+  }
+  const double given_value = model.num_equations() > 0 ? ws.g(result.given_worst_equation) : 0.0;
   newton_assembly(model, state, ws, options, free_mask(model, options, false), result);
   // A mechanism that closes only by deforming its flexible bodies: let the modes move.
   if (result.status != AssemblyStatus::kOk && has_flexible_body(model)) {
@@ -94,13 +102,18 @@ AssemblyResult assemble_positions(const Model& model, State& state, Workspace& w
     result.modes_released = true;
   }
   if (result.status == AssemblyStatus::kOk) return result;
+  const auto describe = [&](const ConstraintEquation& e) {
+    return fmt::format("{} ({})", e.name,
+                       e.joint >= 0 ? "joint " + model.joints[e.joint].name : "driver " + model.drivers[e.driver].name);
+  };
+  const auto unit = [](const ConstraintEquation& e) { return e.kind == EquationKind::kDot2 ? "m" : "rad"; };
   const ConstraintEquation& e = model.equations[result.worst_equation];
+  const ConstraintEquation& given = model.equations[result.given_worst_equation];
   result.message = fmt::format(
-      "assembly did not converge in {} iterations: equation {} ({}) does not close, residual "
-      "{:.3e} {} (tolerance {:.1e})",
-      options.max_iterations, e.name,
-      e.joint >= 0 ? "joint " + model.joints[e.joint].name : "driver " + model.drivers[e.driver].name,
-      ws.g(result.worst_equation), e.kind == EquationKind::kDot2 ? "m" : "rad", options.tolerance);
+      "assembly did not converge in {} iterations: equation {} does not close, residual "
+      "{:.3e} {} (tolerance {:.1e}); as given, the largest gap was equation {}, {:.3e} {}",
+      options.max_iterations, describe(e), ws.g(result.worst_equation), unit(e), options.tolerance,
+      describe(given), given_value, unit(given));
   return result;
 }
 

@@ -43,6 +43,10 @@ struct AssemblyResult {
   int iterations = 0;
   double residual = 0.0;    // max |g_k| at the end
   int worst_equation = -1;  // row of that residual
+  // The same at the positions as given, before any iteration: where the input is off (the
+  // iterates of a failed assembly may wander far from it).
+  double given_residual = 0.0;
+  int given_worst_equation = -1;
   bool modes_released = false;  // closed only by deforming flexible bodies
 };
 

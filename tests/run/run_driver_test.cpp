@@ -211,6 +211,11 @@ markers:
   std::smatch match;
   ASSERT_TRUE(std::regex_search(summary.message, match, form)) << summary.message;
   EXPECT_GT(std::abs(std::stod(match[2].str())), 0.95 / 4) << summary.message;
+  // Where the input is off, before any iteration: the rail (T's marker i) is 2 m above the
+  // slider's shoe, and one of T's equations measures that 2 m exactly.
+  const std::regex given(R"(as given, the largest gap was equation T\.\w+ \(joint T\), (\S+) m)");
+  ASSERT_TRUE(std::regex_search(summary.message, match, given)) << summary.message;
+  EXPECT_NEAR(std::abs(std::stod(match[1].str())), 2.0, 1e-9) << summary.message;
   EXPECT_EQ(summary.samples, 0);
   // The file says so.
   const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
