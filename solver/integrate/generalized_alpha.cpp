@@ -110,6 +110,7 @@ Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
 
 Status GeneralizedAlpha::take_step() {
   if (const Status status = apply_pending_events(); !status.ok()) return status;
+  if (const Status status = reselect_constraints(); !status.ok()) return status;
   const double target = std::min(t0_ + static_cast<double>(grid_index_ + 1) * options_.step,
                                  options_.t_stop);
   for (;;) {
@@ -144,6 +145,29 @@ Status GeneralizedAlpha::take_step() {
       ++stats_.newton_failures;
       continue;
     }
+    if (attempt == Attempt::kSingular && !stepped_over_) {
+      // The step ends on a singular configuration (a linkage with its links collinear at a
+      // grid point): step over it with a step half as long again, then back to the grid.
+      ++stats_.rejected_steps;
+      stepped_over_ = true;
+      h_try_ = 1.5 * h;
+      const Attempt over = attempt_step(h_try_);
+      if (over == Attempt::kAccepted) {
+        if (const Status status = locate_events(h_try_); !status.ok()) return status;
+        stats_.last_step = next_.t - curr_.t;
+        prev_ = std::move(curr_);
+        curr_ = next_;
+        ++stats_.steps;
+        estimate_local_error();
+        grid_index_ = static_cast<long>(std::floor((curr_.t - t0_) / options_.step + 1e-9));
+        h_try_ = options_.step;
+        halvings_ = 0;
+        stepped_over_ = false;
+        return Status::success(curr_.t);
+      }
+      h_try_ = h;
+    }
+    stepped_over_ = false;
     if (attempt == Attempt::kSingular) {
       return failure(StatusCode::kSingularJacobian,
                      fmt::format("the iteration matrix of a step h = {:.4g} s is singular "
@@ -327,6 +351,26 @@ Status GeneralizedAlpha::apply_pending_events() {
   curr_.a = curr_.vdot;
   evaluate_integrand(curr_);
   system_->event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
+  prev_ = curr_;
+  xi_last_.setZero();
+  jacobian_h_ = 0.0;
+  return Status::success(curr_.t);
+}
+
+Status GeneralizedAlpha::reselect_constraints() {
+  // As IDA between its steps (ida_integrator.cpp): the system may pick new independent rows
+  // when the current ones turn ill-conditioned along the motion. Their multipliers change
+  // meaning, so the scheme restarts there like after an event: v̇ and λ from the saddle-point
+  // system, a = v̇, no extrapolation across the switch, a fresh iteration matrix.
+  if (!system_->reselect_constraints(curr_.t, curr_.q)) return Status::success(curr_.t);
+  const Status status =
+      solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
+  if (!status.ok()) {
+    return failure(status.code, fmt::format("after new constraint rows were selected, the "
+                                            "accelerations could not be solved: {}", status.message));
+  }
+  curr_.a = curr_.vdot;
+  evaluate_integrand(curr_);
   prev_ = curr_;
   xi_last_.setZero();
   jacobian_h_ = 0.0;

@@ -25,7 +25,13 @@
 // h changes, or it is 20 steps old.
 // A step whose Newton iteration fails (no convergence in max_newton_iterations, divergence or
 // non-finite values) is rejected and retried with h/2, at most max_step_halvings times, then the
-// run stops with kConvergenceFailures (or kNaN). No projection is applied after the step:
+// run stops with kConvergenceFailures (or kNaN).
+// A step whose iteration matrix is singular (it ends on a configuration where the constraints
+// lose rank, e.g. a parallelogram with its links collinear on a grid point) is retried once with
+// 1.5 h, past that instant, and the next step returns to the grid; if that fails too the run
+// stops with kSingularJacobian. Between steps the system may select new independent
+// constraint rows (MechanicalSystem::reselect_constraints, as IDA does); the scheme then
+// restarts there like after an event. No projection is applied after the step:
 // positions satisfy g = 0 to the Newton tolerance, velocities drift from G v + g_t = 0 by O(h²).
 //
 // State events (MechanicalSystem::num_events): a step across which an event function rises
@@ -93,6 +99,9 @@ class GeneralizedAlpha final : public Integrator {
   Status locate_events(double h);
   // Switches the pending events' modes at curr_ and restarts the scheme there.
   Status apply_pending_events();
+  // New independent constraint rows at curr_ (MechanicalSystem::reselect_constraints): the
+  // scheme restarts there (v̇, λ from the saddle-point system, a = v̇).
+  Status reselect_constraints();
   // q, v, v̇ at the end of a step of size h from curr_ whose tangent displacement is ξ.
   void end_of_step_kinematics(double h, const Eigen::VectorXd& xi, StepState& s) const;
   // Scaled residual [βh²(M v̇ − Q) + Gᵀλ̃; g] at the state s with λ̃ = βh²λ.
@@ -119,6 +128,7 @@ class GeneralizedAlpha final : public Integrator {
   long grid_index_ = 0;
   double h_try_ = 0.0;
   int halvings_ = 0;
+  bool stepped_over_ = false;  // a step onto a singular configuration was stretched past it
   bool failed_ = false;
   Status failure_;
   std::vector<int> pending_events_;  // located at curr_.t, applied before the next step

@@ -12,6 +12,7 @@
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/sample_record.h"
+#include "run/singular_passage.h"
 
 namespace limber::run {
 
@@ -111,6 +112,11 @@ RunSummary run_mechanism(const multibody::Model& model,
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
   summary.clearance.checked = !clearance_pairs.empty();
   AccuracyMonitor accuracy;
+  SingularPassageMonitor singular(model, static_cast<int>(start.partition.independent.size()));
+  const auto report_singular = [&] {
+    summary.singular_passages.push_back(singular.last());
+    if (hooks.on_warning) hooks.on_warning(singular.last().message());
+  };
   const auto on_sample = [&](const integrate::Sample& sample) {
     report_events();
     const results::Sample record = recorder.record(sample);
@@ -120,6 +126,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       summary.warnings.push_back(check.warning);
       if (hooks.on_warning) hooks.on_warning(check.warning);
     }
+    if (singular.add({sample.t, sample.q, sample.v})) report_singular();
     if (hooks.writer) hooks.writer->append_sample(record);
     accuracy.add(record);
     summary.t_reached = sample.t;
@@ -143,6 +150,7 @@ RunSummary run_mechanism(const multibody::Model& model,
 
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();
+  if (singular.finish()) report_singular();
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);

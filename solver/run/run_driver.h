@@ -18,6 +18,7 @@
 #include "multibody/model.h"
 #include "results/results_writer.h"
 #include "run/accuracy_check.h"
+#include "run/singular_passage.h"
 #include "run/prepared_start.h"
 
 namespace limber::run {
@@ -45,6 +46,9 @@ struct RunSummary {
   std::vector<RedundantEquationReport> redundant;
   // Linear-range warnings (multibody/linear_range.h), the first per flexible body.
   std::vector<std::string> warnings;
+  // Singular configurations passed (singular_passage.h), in order; each also went to
+  // on_warning. They do not change the status: the run went on, on one branch.
+  std::vector<SingularPassage> singular_passages;
   // Mode switches of hinge latches and stops, in order (located events).
   std::vector<multibody::HingeEvent> events;
   ClearanceMinimum clearance;
@@ -62,7 +66,8 @@ struct RunHooks {
   std::function<void(const PreparedStart&)> on_start;
   // Every sample, after it is written.
   std::function<void(const integrate::Sample&, const results::Sample&)> on_sample;
-  // A flexible body left the linear range (its first time only).
+  // A flexible body left the linear range (its first time only), or the run passed a
+  // singular configuration (RunSummary::singular_passages).
   std::function<void(const std::string&)> on_warning;
   // A hinge latch or stop switched (reported once its time has been passed by a sample).
   std::function<void(const multibody::HingeEvent&)> on_event;
