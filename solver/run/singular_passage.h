@@ -19,7 +19,8 @@ namespace limber::run {
 
 // Below this fraction of its start value the rank-th singular value counts as lost: the
 // parallelograms of tests/run/data fall to 2e-7 - 8e-7 (the floor of the Gram matrix S Sᵀ,
-// √ε) at their singular samples; the shipped slider-cranks, four-bar and satellite deployment report none.
+// √ε) at their singular samples; the shipped slider-cranks, four-bar and satellite deployment
+// report none.
 inline constexpr double kSingularRatio = 1e-2;
 
 struct SingularPassage {
