@@ -39,6 +39,8 @@ std::vector<int> set_difference(const std::vector<int>& all, const std::vector<i
 
 Eigen::MatrixXd gather_rows(const Eigen::MatrixXd& x, const std::vector<int>& dofs) {
   Eigen::MatrixXd result(static_cast<Eigen::Index>(dofs.size()), x.cols());
+  // No columns, no rows to copy (a row of an empty matrix is a null pointer plus an offset).
+  if (x.cols() == 0) return result;
   for (std::size_t i = 0; i < dofs.size(); ++i) result.row(static_cast<Eigen::Index>(i)) = x.row(dofs[i]);
   return result;
 }
@@ -46,6 +48,8 @@ Eigen::MatrixXd gather_rows(const Eigen::MatrixXd& x, const std::vector<int>& do
 Eigen::MatrixXd scatter_rows(const Eigen::MatrixXd& x_sub, const std::vector<int>& dofs, int n) {
   LIMBER_DEMAND(x_sub.rows() == static_cast<Eigen::Index>(dofs.size()));
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(n, x_sub.cols());
+  // No columns (e.g. no rigid-body mode found): nothing to scatter.
+  if (x_sub.cols() == 0) return result;
   for (std::size_t i = 0; i < dofs.size(); ++i) result.row(dofs[i]) = x_sub.row(static_cast<Eigen::Index>(i));
   return result;
 }
