@@ -145,10 +145,7 @@ int run_modes(const ModesOptions& options) {
     BodyOutcome outcome{&body, std::move(reduction.bodies[b].result)};
     if (outcome.result.status != modal::ModalStatus::kOk) {
       failures.push_back(fmt::format("body '{}': {}: {}", body.name,
-                                     outcome.result.status == modal::ModalStatus::kSingular
-                                         ? "singular matrix"
-                                         : "eigen-solver did not converge",
-                                     outcome.result.message));
+                                     modal::to_string(outcome.result.status), outcome.result.message));
       continue;
     }
     print_table(table, outcome);

@@ -55,10 +55,7 @@ const modal::ModeSet& mode_set(const CaseReduction& reduction, const FlexibleBod
   if (result.status != modal::ModalStatus::kOk) {
     throw NumericalError("modes of flexible body '" + component.name + "' (" +
                          component.modes_where.to_string() + "): " +
-                         (result.status == modal::ModalStatus::kSingular
-                              ? "singular matrix: "
-                              : "eigen-solver did not converge: ") +
-                         result.message);
+                         modal::to_string(result.status) + ": " + result.message);
   }
   return result.mode_set;
 }

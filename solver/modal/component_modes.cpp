@@ -186,6 +186,12 @@ ModalResult compute_component_modes(const fe::FeModel& model,
   OrthonormalisedModes combined =
       orthonormalise_modes(k, m, candidates, info, psi_free, request.dependency_tolerance);
   notices.insert(notices.end(), combined.notices.begin(), combined.notices.end());
+  if (combined.mode_set.shapes.cols() == 0) {
+    std::string why;
+    for (const std::string& notice : notices) why += "; " + notice;
+    return failure(ModalStatus::kNoModes, "mode set",
+                   "every candidate was dependent or a rigid-body motion" + why, notices);
+  }
 
   // Invariants of the final set.
   ModalResult result;

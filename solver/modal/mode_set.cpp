@@ -19,6 +19,7 @@ const char* to_string(ModalStatus status) {
     case ModalStatus::kOk: return "ok";
     case ModalStatus::kNotConverged: return "not converged";
     case ModalStatus::kSingular: return "singular factorisation";
+    case ModalStatus::kNoModes: return "no mode left";
   }
   return "unknown";
 }
