@@ -108,6 +108,27 @@ Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
   return Status::success(t_out);
 }
 
+Status GeneralizedAlpha::accept_step(double h) {
+  if (const Status status = locate_events(h); !status.ok()) return status;
+  stats_.last_step = next_.t - curr_.t;
+  prev_ = std::move(curr_);
+  curr_ = next_;
+  ++stats_.steps;
+  estimate_local_error();
+  return Status::success(curr_.t);
+}
+
+Status GeneralizedAlpha::check_budgets() {
+  if (budget_.spent()) {
+    return failure(StatusCode::kWallClock,
+                   fmt::format("the wall-clock budget of {:g} s is spent", options_.max_wall_seconds));
+  }
+  if (stats_.steps > options_.max_steps) {
+    return failure(StatusCode::kTooManySteps, fmt::format("more than {} steps", options_.max_steps));
+  }
+  return Status::success(curr_.t);
+}
+
 Status GeneralizedAlpha::take_step() {
   if (const Status status = apply_pending_events(); !status.ok()) return status;
   if (const Status status = reselect_constraints(); !status.ok()) return status;
@@ -117,12 +138,7 @@ Status GeneralizedAlpha::take_step() {
     const double h = std::min(h_try_, target - curr_.t);
     const Attempt attempt = attempt_step(h);
     if (attempt == Attempt::kAccepted) {
-      if (const Status status = locate_events(h); !status.ok()) return status;
-      stats_.last_step = next_.t - curr_.t;
-      prev_ = std::move(curr_);
-      curr_ = next_;
-      ++stats_.steps;
-      estimate_local_error();
+      if (const Status status = accept_step(h); !status.ok()) return status;
       // Back on the nominal grid: snap the time and restore the nominal step.
       if (target - curr_.t <= time_tolerance(target)) {
         curr_.t = target;
@@ -130,15 +146,7 @@ Status GeneralizedAlpha::take_step() {
         h_try_ = options_.step;
         halvings_ = 0;
       }
-      if (budget_.spent()) {
-        return failure(StatusCode::kWallClock,
-                       fmt::format("the wall-clock budget of {:g} s is spent", options_.max_wall_seconds));
-      }
-      if (stats_.steps > options_.max_steps) {
-        return failure(StatusCode::kTooManySteps,
-                       fmt::format("more than {} steps", options_.max_steps));
-      }
-      return Status::success(curr_.t);
+      return check_budgets();
     }
     if (attempt == Attempt::kStaleJacobian) {
       ++stats_.rejected_steps;
@@ -153,17 +161,12 @@ Status GeneralizedAlpha::take_step() {
       h_try_ = 1.5 * h;
       const Attempt over = attempt_step(h_try_);
       if (over == Attempt::kAccepted) {
-        if (const Status status = locate_events(h_try_); !status.ok()) return status;
-        stats_.last_step = next_.t - curr_.t;
-        prev_ = std::move(curr_);
-        curr_ = next_;
-        ++stats_.steps;
-        estimate_local_error();
+        if (const Status status = accept_step(h_try_); !status.ok()) return status;
         grid_index_ = static_cast<long>(std::floor((curr_.t - t0_) / options_.step + 1e-9));
         h_try_ = options_.step;
         halvings_ = 0;
         stepped_over_ = false;
-        return Status::success(curr_.t);
+        return check_budgets();
       }
       h_try_ = h;
     }

@@ -90,6 +90,10 @@ class GeneralizedAlpha final : public Integrator {
   enum class Attempt { kAccepted, kNewtonFailed, kStaleJacobian, kNaN, kSingular };
 
   Status take_step();
+  // Makes next_ the current state after an accepted step of length h (events located in it).
+  Status accept_step(double h);
+  // The wall-clock and step budgets after a step (failure when one is spent).
+  Status check_budgets();
   // After an accepted step: Statistics::max_local_error.
   void estimate_local_error();
   Attempt attempt_step(double h);
