@@ -146,7 +146,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   };
   const integrate::SimulationResult result = integrate::simulate(
       system, options, {0.0, start.state.q, start.state.v},
-      integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval), on_sample);
+      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample);
 
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();
