@@ -529,6 +529,21 @@ void ResultsWriter::set_accuracy(double energy_relative, double local_error, dou
   write_string_attribute(root, "accuracy_warnings", warnings);
 }
 
+void ResultsWriter::set_singular_passages(const std::vector<double>& time,
+                                          const std::vector<double>& ratio,
+                                          const std::vector<std::string>& joints) {
+  LIMBER_DEMAND(!impl_->finished);
+  LIMBER_DEMAND(time.size() == ratio.size() && time.size() == joints.size());
+  H5Handle constraints =
+      checked(H5Gopen2(impl_->file.get(), "constraints", H5P_DEFAULT), "open /constraints");
+  LIMBER_DEMAND(H5Lexists(constraints.get(), "singular_passages", H5P_DEFAULT) == 0);
+  H5Handle group = create_group(constraints.get(), "singular_passages");
+  const std::vector<hsize_t> dims{time.size()};
+  write_dataset(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, time.data());
+  write_dataset(group.get(), "ratio", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, ratio.data());
+  write_string_dataset(group.get(), "joints", joints);
+}
+
 void ResultsWriter::finish(RunStatus status, const std::string& message) {
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);

@@ -164,6 +164,14 @@ RunSummary run_mechanism(const multibody::Model& model,
     for (const std::string& w : summary.accuracy.warnings) warnings += (warnings.empty() ? "" : "\n") + w;
     hooks.writer->set_accuracy(summary.accuracy.energy_relative, summary.accuracy.local_error,
                                summary.accuracy.drift_relative, warnings);
+    std::vector<double> passage_time, passage_ratio;
+    std::vector<std::string> passage_joints;
+    for (const SingularPassage& passage : summary.singular_passages) {
+      passage_time.push_back(passage.t);
+      passage_ratio.push_back(passage.ratio);
+      passage_joints.push_back(fmt::format("{}", fmt::join(passage.names, ", ")));
+    }
+    hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints);
   }
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);

@@ -6,6 +6,7 @@
 // h = 1 ms 2e-14 (its positions solve g = 0 to Newton's tolerance); the anti-parallelogram
 // turns the coupler by up to pi, so any branch switch is 6 orders above the bound.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +14,11 @@
 #include <string>
 #include <vector>
 
+#include "../results/h5_test_read.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "results/results_writer.h"
 #include "run/run_driver.h"
 #include "run_test_support.h"
 
@@ -29,6 +32,7 @@ struct Trace {
   RunSummary summary;
   std::vector<double> t, coupler_rotation, violation;
   std::vector<std::string> warnings;
+  std::filesystem::path directory;  // holds the run's results.h5
 };
 
 Trace run_case(const std::string& path, integrate::Method method, double step_or_rtol) {
@@ -55,7 +59,12 @@ Trace run_case(const std::string& path, integrate::Method method, double step_or
     trace.violation.push_back(record.position_violation);
   };
   hooks.on_warning = [&](const std::string& w) { trace.warnings.push_back(w); };
-  trace.summary = run_mechanism(model, built.assembly, settings, hooks);
+  trace.directory = test::fresh_directory(std::string("parallelogram_") + integrate::to_string(method));
+  {
+    results::ResultsWriter writer(trace.directory, "parallelogram", path);
+    hooks.writer = &writer;
+    trace.summary = run_mechanism(model, built.assembly, settings, hooks);
+  }
   const RunSummary& s = trace.summary;
   double rot = 0.0, viol = 0.0;
   for (size_t k = 0; k < trace.t.size(); ++k) {
@@ -110,6 +119,20 @@ void expect_singular_passages_reported(const Trace& trace, const std::vector<std
     EXPECT_NE(trace.warnings[k].find("lose rank at t = "), std::string::npos) << trace.warnings[k];
   }
   EXPECT_TRUE(trace.summary.accurate());
+  // results.h5 holds the same passages.
+  const hid_t file = H5Fopen((trace.directory / results::kResultsFileName).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const std::vector<double> time = results::testing::read_doubles(file, "/constraints/singular_passages/time");
+  const std::vector<double> ratio = results::testing::read_doubles(file, "/constraints/singular_passages/ratio");
+  const std::vector<std::string> names = test::read_fixed_strings(file, "/constraints/singular_passages/joints");
+  H5Fclose(file);
+  ASSERT_EQ(time.size(), 3u);
+  ASSERT_EQ(names.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(time[k], passages[k].t);
+    EXPECT_EQ(ratio[k], passages[k].ratio);
+    EXPECT_NE(names[k].find(passages[k].names.front()), std::string::npos) << names[k];
+  }
 }
 
 TEST(Parallelogram, DoubleReportsItsSingularPositions) {
