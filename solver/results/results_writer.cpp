@@ -531,9 +531,11 @@ void ResultsWriter::set_accuracy(double energy_relative, double local_error, dou
 
 void ResultsWriter::set_singular_passages(const std::vector<double>& time,
                                           const std::vector<double>& ratio,
-                                          const std::vector<std::string>& joints) {
+                                          const std::vector<std::string>& joints,
+                                          const std::vector<double>& velocity_jump) {
   LIMBER_DEMAND(!impl_->finished);
-  LIMBER_DEMAND(time.size() == ratio.size() && time.size() == joints.size());
+  LIMBER_DEMAND(time.size() == ratio.size() && time.size() == joints.size() &&
+                time.size() == velocity_jump.size());
   H5Handle constraints =
       checked(H5Gopen2(impl_->file.get(), "constraints", H5P_DEFAULT), "open /constraints");
   LIMBER_DEMAND(H5Lexists(constraints.get(), "singular_passages", H5P_DEFAULT) == 0);
@@ -542,6 +544,8 @@ void ResultsWriter::set_singular_passages(const std::vector<double>& time,
   write_dataset(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, time.data());
   write_dataset(group.get(), "ratio", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, ratio.data());
   write_string_dataset(group.get(), "joints", joints);
+  write_dataset(group.get(), "velocity_jump", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims,
+                velocity_jump.data());
 }
 
 void ResultsWriter::finish(RunStatus status, const std::string& message) {

@@ -182,11 +182,13 @@ class ResultsWriter {
 
   // The singular configurations the run passed (run/singular_passage.h), at most once before
   // finish(): /constraints/singular_passages/time [np] (the sample of the smallest measure, s),
-  // ratio [np] (that measure relative to the start) and joints [np] (the joints and drivers
-  // whose equations carry the lost direction, "R1, R4"). Sizes must match; written also when
-  // empty, so a reader can tell "none" from "not checked".
+  // ratio [np] (that measure relative to the start), joints [np] (the joints and drivers
+  // whose equations carry the lost direction, "R1, R4") and velocity_jump [np] (the branch
+  // check: the frame velocity jump across it, relative; −1 when not checked). Sizes must
+  // match; written also when empty, so a reader can tell "none" from "not checked".
   void set_singular_passages(const std::vector<double>& time, const std::vector<double>& ratio,
-                             const std::vector<std::string>& joints);
+                             const std::vector<std::string>& joints,
+                             const std::vector<double>& velocity_jump);
 
   // Sets the root attributes status ("ok" / "ok_inaccurate" / "failed" / "interrupted") and
   // message, flushes and closes the file.

@@ -65,6 +65,16 @@ RunSummary run_mechanism(const multibody::Model& model,
     summary.message = "assembly failed: " + start.assembly.message;
     return finish(results::RunStatus::kFailed);
   }
+  if (!start.lost_at_singular_start.empty()) {
+    summary.failure = "singular start";
+    summary.message = fmt::format(
+        "the mechanism is assembled at a singular configuration: equation(s) {} depend on the "
+        "others here but not next to it, so no choice of independent equations holds the "
+        "mechanism together once it moves; start it slightly off this position (e.g. a driver's "
+        "initial value, or a body's position, moved by 1e-3)",
+        fmt::join(start.lost_at_singular_start, ", "));
+    return finish(results::RunStatus::kFailed);
+  }
   summary.redundant = start.redundant;
   if (hooks.writer) {
     std::vector<std::string> names, depends_on;
@@ -159,19 +169,24 @@ RunSummary run_mechanism(const multibody::Model& model,
   for (const std::string& warning : summary.warnings) {
     summary.accuracy.warnings.push_back(warning + " (the linear modal body's answer is not the physical one there)");
   }
+  // A change of branch at a singular passage is an impulse no force gave: not accurate.
+  for (const SingularPassage& passage : summary.singular_passages) {
+    if (passage.changed_branch()) summary.accuracy.warnings.push_back(passage.message());
+  }
   if (hooks.writer) {
     std::string warnings;
     for (const std::string& w : summary.accuracy.warnings) warnings += (warnings.empty() ? "" : "\n") + w;
     hooks.writer->set_accuracy(summary.accuracy.energy_relative, summary.accuracy.local_error,
                                summary.accuracy.drift_relative, warnings);
-    std::vector<double> passage_time, passage_ratio;
+    std::vector<double> passage_time, passage_ratio, passage_jump;
     std::vector<std::string> passage_joints;
     for (const SingularPassage& passage : summary.singular_passages) {
       passage_time.push_back(passage.t);
       passage_ratio.push_back(passage.ratio);
       passage_joints.push_back(fmt::format("{}", fmt::join(passage.names, ", ")));
+      passage_jump.push_back(passage.velocity_jump);
     }
-    hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints);
+    hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints, passage_jump);
   }
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);

@@ -26,7 +26,9 @@ namespace {
 const std::string kRigid = std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml";
 const std::string kFlexible = std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml";
 constexpr double kA = 0.05, kB = 1.0;  // crank, rod [m]
-constexpr double kWallBudget = 20.0;   // [s] per run: a hang fails the test instead of CI
+// [s] per run: a hang fails the test instead of CI. A guard, not a speed test: the slowest
+// runs take seconds alone and tripped a 20 s budget with other builds loading the machine.
+constexpr double kWallBudget = 120.0;
 const std::string kRamp =
     "motion: {type: ramp, initial: 0, speed: 125.66370614359172, duration: 0.1, shape: quintic}";
 
