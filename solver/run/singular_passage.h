@@ -13,7 +13,7 @@
 // across the passage. The check extrapolates the last two samples before the passage linearly
 // to the first sample after it and compares, per body, the linear and the angular frame
 // velocity with the prediction, relative to the largest linear / angular frame speed before it.
-// The prediction's own error is O((ω Δt)²) for a passage Δt long at frame rates ω: 7e-4 for the
+// The prediction's own error is O((ω Δt)²) for a passage Δt long at frame rates ω: 5e-4 for the
 // parallelograms of tests/run/data (2 rev/s, 3 ms); a jump above kBranchJump is reported as a
 // change of branch, which is a numerical impulse unless the model holds an impact there.
 #pragma once
