@@ -90,6 +90,20 @@ RunSummary run_mechanism(const multibody::Model& model,
 
   // Integration on the independent rows, energies accumulated by the integrator.
   const multibody::MultibodySystem system(model, start.partition);
+  // A motion whose velocity jumps demands impulses: say where, once.
+  for (const multibody::Driver& driver : model.drivers) {
+    std::vector<double> jumps;
+    for (const double t : driver.motion.slope_jumps()) {
+      if (t > 0.0 && t < settings.t_end) jumps.push_back(t);
+    }
+    if (jumps.empty() || !hooks.on_warning) continue;
+    hooks.on_warning(fmt::format(
+        "driver {}'s motion changes its rate abruptly at t = {} s (the kinks of its table): "
+        "each is applied as an impulse (the integrators stop there and restart with the "
+        "velocities after it), which the reaction and effort histories do not show; use "
+        "`interpolation: cubic` and points that start and end at rest for a smooth motion",
+        driver.name, fmt::join(jumps, ", ")));
+  }
   integrate::IntegratorOptions options = settings.integrator;
   // BDF2 at most when flexible modes are present (integrator_options.h, max_order).
   const bool flexible = std::any_of(model.bodies.begin(), model.bodies.end(), [](const auto& body) {

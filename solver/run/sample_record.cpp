@@ -111,6 +111,16 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
         multibody::energy_rates(model, partition, multibody::State{t, q, v, engaged}, v_dot, lambda, *ws);
     f << rates.dissipation, rates.driver, rates.forces;
   };
+  // At a velocity jump of a prescribed motion the constraint impulses change the kinetic
+  // energy; only the drivers' rows move with time (the joints' impulses do no work, G v = 0
+  // before and after), so the change is the drivers' work.
+  quadrature.jump = [&model, &engaged, ws](double t, const Eigen::VectorXd& q,
+                                           const Eigen::VectorXd& v_before,
+                                           const Eigen::VectorXd& v_after, Eigen::VectorXd& dz) {
+    const double before = multibody::energies(model, multibody::State{t, q, v_before, engaged}, *ws).kinetic;
+    const double after = multibody::energies(model, multibody::State{t, q, v_after, engaged}, *ws).kinetic;
+    dz << 0.0, after - before, 0.0;
+  };
   // Energy scale at the start, for the integrals' absolute tolerance.
   const multibody::EnergyTerms energy = multibody::energies(model, start, *ws);
   const double scale =
