@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "integrate/integrator.h"
@@ -57,6 +58,7 @@ class SampleRecorder {
   const std::vector<unsigned char>& engaged_;
   multibody::Workspace workspace_;
   bool check_clearance_ = false;  // two or more bodies with surfaces
+  std::int64_t recorded_ = 0;     // samples recorded so far (stress history's `every`)
 };
 
 }  // namespace limber::run
