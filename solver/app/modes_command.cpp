@@ -63,6 +63,9 @@ void print_table(std::FILE* out, const BodyOutcome& outcome) {
                  mode.frequency_hz, mode.label);
     }
   }
+  for (const std::string& notice : outcome.body->notices) {
+    fmt::print(out, "  notice: {}\n", notice);
+  }
   for (const std::string& notice : outcome.result.notices) {
     fmt::print(out, "  notice: {}\n", notice);
   }
