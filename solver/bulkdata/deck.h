@@ -94,6 +94,15 @@ struct QuadCard {
   std::array<SourceLocation, 4> grid_where;
 };
 
+// CTRIA3 (3 grids).
+struct TriangleCard {
+  int id = 0;
+  int property = 0;
+  std::array<int, 3> grids{};
+  SourceLocation where, property_where;
+  std::array<SourceLocation, 3> grid_where;
+};
+
 // CONM2 without offset: mass and inertia about the grid in system `system` (-1, 0: basic).
 struct MassCard {
   int id = 0;
@@ -128,6 +137,7 @@ struct Deck {
   std::map<int, ShellPropertyCard> shell_properties;
   std::map<int, BeamCard> beams;
   std::map<int, QuadCard> quads;
+  std::map<int, TriangleCard> triangles;
   std::map<int, MassCard> masses;
   std::vector<SpcEntry> spcs;
   std::map<int, std::vector<int>> spc_sets_added;  // SPCADD: set -> sets

@@ -124,6 +124,7 @@ class Parser {
         {"CORD2S", &Parser::cord2},  {"MAT1", &Parser::mat1},     {"PBAR", &Parser::pbar},
         {"PBARL", &Parser::pbarl},   {"PBEAM", &Parser::pbeam},   {"PSHELL", &Parser::pshell},
         {"CBAR", &Parser::cbar},     {"CBEAM", &Parser::cbar},    {"CQUAD4", &Parser::cquad4},
+        {"CTRIA3", &Parser::ctria3},
         {"CONM2", &Parser::conm2},   {"SPC", &Parser::spc},       {"SPC1", &Parser::spc1},
         {"SPCADD", &Parser::spcadd}, {"SET1", &Parser::set1},     {"PARAM", &Parser::param}};
     if (auto found = handlers.find(card.name); found != handlers.end()) {
@@ -438,6 +439,29 @@ class Parser {
       }
     }
     insert_unique(deck_.quads, std::move(q), f, "element", &element_ids_);
+  }
+
+  void ctria3(const CardFields& f) {
+    TriangleCard t;
+    t.id = f.id(2, "EID");
+    t.property = f.blank(3) ? t.id : f.id(3, "PID");
+    const char* names[] = {"G1", "G2", "G3"};
+    for (int k = 0; k < 3; ++k) {
+      t.grids[k] = f.id(4 + k, names[k]);
+      t.grid_where[k] = f.where(4 + k);
+    }
+    t.where = f.card().where();
+    t.property_where = f.where(3);
+    demand_zero(f, 8, "ZOFFS", "a shell offset is");
+    if (!f.blank(13)) f.fail(13, "TFLAG", "expected blank (corner thicknesses are not supported)");
+    const char* corners[] = {"T1", "T2", "T3"};
+    for (int k = 0; k < 3; ++k) {
+      if (!f.blank(14 + k)) {
+        f.fail(14 + k, corners[k],
+               "expected blank (corner thicknesses are not supported: PSHELL's T is used)");
+      }
+    }
+    insert_unique(deck_.triangles, std::move(t), f, "element", &element_ids_);
   }
 
   void conm2(const CardFields& f) {

@@ -37,6 +37,12 @@ class Translator {
     grids();
     for (const auto& [id, beam] : deck_.beams) add_beam(beam);
     for (const auto& [id, quad] : deck_.quads) add_quad(quad);
+    for (const auto& [id, triangle] : deck_.triangles) add_triangle(triangle);
+    if (!deck_.triangles.empty()) {
+      notices_.push_back(
+          "CTRIA3: limber's triangle is a thin (Kirchhoff, DKT) plate: PSHELL's TS/T has no "
+          "effect on triangles (docs/shell-element.md, \"The triangle\")");
+    }
     for (const auto& [id, mass] : deck_.masses) add_mass(mass);
     permanent_constraints();
     if (options_.spc_set) spc_set(*options_.spc_set);
@@ -168,42 +174,58 @@ class Translator {
     builder_.add_beam(element, beam.where);
   }
 
+  // The builder's index of PSHELL `id`, referred to by `label`'s PID at `where`.
+  int shell_property(int id, const SourceLocation& where, const std::string& label) {
+    const auto found = deck_.shell_properties.find(id);
+    if (found == deck_.shell_properties.end()) {
+      throw InputError(fmt::format("{}, field 3 (PID): expected a defined PSHELL id, got {}{}",
+                                   label, id,
+                                   deck_.beam_properties.contains(id) ? " (a beam property)" : ""),
+                       where);
+    }
+    const ShellPropertyCard& card = found->second;
+    if (auto done = shell_property_index_.find(card.id); done != shell_property_index_.end()) {
+      return done->second;
+    }
+    fe::ShellProperty property;
+    property.name = fmt::format("PSHELL {}", card.id);
+    property.material = material(card.material, card.material_where,
+                                 fmt::format("PSHELL {}, field 3 (MID1)", card.id));
+    property.thickness = card.thickness;
+    property.bending_ratio = card.bending_ratio;
+    property.shear_ratio = card.shear_ratio;
+    property.nonstructural_mass = card.nonstructural_mass * deck_.mass_factor;
+    if (card.no_shear_material) {
+      notices_.push_back(fmt::format(
+          "PSHELL {} ({}:{}): MID3 blank (no transverse shear flexibility in NASTRAN); limber's "
+          "quad is shear-flexible and takes TS/T = {:.4g} with MID1's material",
+          card.id, card.where.file, card.where.line, card.shear_ratio));
+    }
+    const int index = builder_.add_shell_property(property, card.where);
+    shell_property_index_.emplace(card.id, index);
+    return index;
+  }
+
   void add_quad(const QuadCard& quad) {
     const std::string label = fmt::format("CQUAD4 {}", quad.id);
     fe::ShellElement element;
     for (int k = 0; k < 4; ++k) {
-      element.nodes[k] =
-          node(quad.grids[k], quad.grid_where[k], fmt::format("{}, field {} (G{})", label, 4 + k, k + 1));
+      element.nodes[k] = node(quad.grids[k], quad.grid_where[k],
+                              fmt::format("{}, field {} (G{})", label, 4 + k, k + 1));
     }
-    const auto found = deck_.shell_properties.find(quad.property);
-    if (found == deck_.shell_properties.end()) {
-      throw InputError(fmt::format("{}, field 3 (PID): expected a defined PSHELL id, got {}{}",
-                                   label, quad.property,
-                                   deck_.beam_properties.contains(quad.property) ? " (a beam property)" : ""),
-                       quad.property_where);
-    }
-    const ShellPropertyCard& card = found->second;
-    if (auto done = shell_property_index_.find(card.id); done != shell_property_index_.end()) {
-      element.property = done->second;
-    } else {
-      fe::ShellProperty property;
-      property.name = fmt::format("PSHELL {}", card.id);
-      property.material =
-          material(card.material, card.material_where, fmt::format("PSHELL {}, field 3 (MID1)", card.id));
-      property.thickness = card.thickness;
-      property.bending_ratio = card.bending_ratio;
-      property.shear_ratio = card.shear_ratio;
-      property.nonstructural_mass = card.nonstructural_mass * deck_.mass_factor;
-      if (card.no_shear_material) {
-        notices_.push_back(fmt::format(
-            "PSHELL {} ({}:{}): MID3 blank (no transverse shear flexibility in NASTRAN); limber's "
-            "shell is shear-flexible and takes TS/T = {:.4g} with MID1's material",
-            card.id, card.where.file, card.where.line, card.shear_ratio));
-      }
-      element.property = builder_.add_shell_property(property, card.where);
-      shell_property_index_.emplace(card.id, element.property);
-    }
+    element.property = shell_property(quad.property, quad.property_where, label);
     builder_.add_shell(element, quad.where);
+  }
+
+  void add_triangle(const TriangleCard& triangle) {
+    const std::string label = fmt::format("CTRIA3 {}", triangle.id);
+    fe::ShellTriangle element;
+    for (int k = 0; k < 3; ++k) {
+      element.nodes[k] = node(triangle.grids[k], triangle.grid_where[k],
+                              fmt::format("{}, field {} (G{})", label, 4 + k, k + 1));
+    }
+    element.property = shell_property(triangle.property, triangle.property_where, label);
+    builder_.add_triangle(element, triangle.where);
   }
 
   // The size of the model (for tolerances on positions).

@@ -4,6 +4,7 @@
 //   CBAR, CBEAM     2-node beam (fe/beam_element.h); v from G0 or X1-X3 (in GA's CD system
 //                   unless OFFT starts with B); PBAR I1 -> Iz, I2 -> Iy
 //   CQUAD4          flat 4-node shell (fe/shell_element.h) with PSHELL's T, 12I/T³, TS/T, NSM
+//   CTRIA3          flat 3-node shell (fe/shell_triangle.h: CST + DKT), PSHELL's T, 12I/T³, NSM
 //   CONM2           point mass and inertia (about the grid, rotated from CID to basic)
 //   MAT1            E, nu, rho (rho, NSM and CONM2 mass times PARAM,WTMASS)
 //   GRID PS         DOFs held at zero, always (permanent constraints)

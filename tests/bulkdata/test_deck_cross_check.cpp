@@ -168,6 +168,53 @@ TEST(DeckCrossCheck, SmallLargeAndFreeFieldDecksGiveTheSameModel) {
   }
 }
 
+TEST(DeckCrossCheck, TriangleDeckEqualsTheBuildersTriangles) {
+  // A 4 x 3 plate of CTRIA3 (two per square) and CQUAD4 on the last column.
+  std::string text = "MAT1,1,7.+10,,0.3,2700.\nPSHELL,1,1,.002,1,,1\n";
+  fe::FeModelBuilder builder;
+  fe::ShellProperty property;
+  property.material = {"MAT1 1", 7.0e10, 0.3, 2700.0};
+  property.thickness = 0.002;
+  const int pid = builder.add_shell_property(property);
+  for (int j = 0; j <= 3; ++j) {
+    for (int i = 0; i <= 4; ++i) {
+      const int id = 1 + i + 5 * j;
+      text += fmt::format("GRID,{},,{:.1f},{:.1f},0.\n", id, 0.1 * i, 0.1 * j);
+      builder.add_node(id, {0.1 * i, 0.1 * j, 0.0});
+    }
+  }
+  int eid = 1;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      const int n = i + 5 * j;  // index of grid n + 1
+      text += fmt::format("CTRIA3,{},1,{},{},{}\n", eid++, n + 1, n + 2, n + 7);
+      text += fmt::format("CTRIA3,{},1,{},{},{}\n", eid++, n + 1, n + 7, n + 6);
+      builder.add_triangle({{n, n + 1, n + 6}, pid});
+      builder.add_triangle({{n, n + 6, n + 5}, pid});
+    }
+  }
+  for (int j = 0; j < 3; ++j) {
+    const int n = 3 + 5 * j;
+    text += fmt::format("CQUAD4,{},1,{},{},{},{}\n", eid++, n + 1, n + 2, n + 7, n + 6);
+    builder.add_shell({{n, n + 1, n + 6, n + 5}, pid});
+  }
+  const fe::FeModel generated = std::move(builder).build();
+  fe::FeModelBuilder from_deck;
+  const std::vector<std::string> notices =
+      add_deck(parse_deck(read_cards_text(text, "deck.bdf"), "deck.bdf"), {}, from_deck);
+  const fe::FeModel deck = std::move(from_deck).build();
+  ASSERT_EQ(deck.triangles.size(), 18u);
+  ASSERT_EQ(deck.shells.size(), 3u);
+  // Positions print exactly as 0.1 i rounds: the same matrices to round-off.
+  EXPECT_LT(relative_difference(fe::assemble(deck).stiffness, fe::assemble(generated).stiffness),
+            kMatrixTolerance);
+  EXPECT_LT(relative_difference(fe::assemble(deck).mass, fe::assemble(generated).mass),
+            kMatrixTolerance);
+  // The notice says TS/T does not apply to triangles.
+  ASSERT_FALSE(notices.empty());
+  EXPECT_NE(notices.back().find("TS/T has no effect on triangles"), std::string::npos);
+}
+
 // Section formulas against closed forms: the same arithmetic in another order, with the
 // cancellation of r² and bh³ differences (a digit or two): 1e-13 relative.
 #define EXPECT_REL(actual, expected) EXPECT_NEAR(actual, expected, 1e-13 * std::abs(expected))

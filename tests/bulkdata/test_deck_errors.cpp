@@ -112,19 +112,19 @@ TEST(DeckErrors, Mat1TakesTwoOfEGNu) {
 }
 
 TEST(DeckErrors, UnsupportedCardsAreErrorsUnlessAllowed) {
-  const std::string text = kPlate + "CTRIA3,20,1,1,2,5\nRBE2,30,1,123456,2\nCTRIA3,21,1,2,3,6\n"
+  const std::string text = kPlate + "CTRIA6,20,1,1,2,5\nRBE2,30,1,123456,2\nCTRIA6,21,1,2,3,6\n"
                                     "FORCE,1,5,,1.,0.,0.,1.\n";
   DeckOptions options;
   options.where = {"case.yaml", 4, 16};
   // The error is at the case entry and lists each card with its count and lines.
   EXPECT_TRUE(fails_at(text, "case.yaml:4:16",
-                       "CTRIA3 (2 cards: deck.bdf:11, deck.bdf:13); RBE2 (1 card: deck.bdf:12)",
+                       "CTRIA6 (2 cards: deck.bdf:11, deck.bdf:13); RBE2 (1 card: deck.bdf:12)",
                        options));
   // Allowed: a notice with the same list; FORCE (a load) is ignored either way.
   options.unsupported_is_error = false;
   const std::vector<std::string> notices = translate(text, options);
   ASSERT_EQ(notices.size(), 2u);
-  EXPECT_NE(notices[0].find("CTRIA3 (2 cards"), std::string::npos) << notices[0];
+  EXPECT_NE(notices[0].find("CTRIA6 (2 cards"), std::string::npos) << notices[0];
   EXPECT_NE(notices[1].find("FORCE (1 card: deck.bdf:14)"), std::string::npos) << notices[1];
 }
 
