@@ -161,10 +161,10 @@ void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelB
 std::vector<std::string> read_bulk_data(const YamlValue& value, fe::FeModelBuilder& builder) {
   bulkdata::DeckOptions options;
   options.where = value.where();
-  YamlValue file = value;
+  // (A YamlValue is never assigned to: yaml-cpp's Node assignment writes into the document.)
+  const YamlValue file = value.is_map() ? value.at("file") : value;
   if (value.is_map()) {
     value.allow_only({"file", "spc", "unsupported_cards"});
-    file = value.at("file");
     if (auto spc = value.find("spc")) {
       options.spc_set = spc->as_positive_integer();
       options.spc_where = spc->where();
