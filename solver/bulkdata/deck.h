@@ -114,10 +114,18 @@ struct MassCard {
   SourceLocation where, grid_where, system_where;
 };
 
-// One grid's components held by an SPC or SPC1 card of set `set`.
+// Ids from a card: one id (first == last) or an "A THRU B" range. Ranges are kept as such: a
+// range holds the grids of the deck within it (it need not be dense), and a large range costs
+// nothing.
+struct IdRange {
+  int first = 0;
+  int last = 0;
+};
+
+// Grids whose components an SPC or SPC1 card of set `set` holds.
 struct SpcEntry {
   int set = 0;
-  int grid = 0;
+  IdRange grids;
   std::string components;  // digits 1-6
   SourceLocation where;
 };
@@ -140,8 +148,8 @@ struct Deck {
   std::map<int, TriangleCard> triangles;
   std::map<int, MassCard> masses;
   std::vector<SpcEntry> spcs;
-  std::map<int, std::vector<int>> spc_sets_added;  // SPCADD: set -> sets
-  std::map<int, std::vector<int>> sets;            // SET1: id -> members
+  std::map<int, std::vector<IdRange>> spc_sets_added;  // SPCADD: set -> sets
+  std::map<int, std::vector<IdRange>> sets;            // SET1: id -> members
   double mass_factor = 1.0;                        // PARAM,WTMASS
   // Cards without effect on the structure's stiffness and mass (loads, solution requests,
   // output, parameters other than WTMASS).

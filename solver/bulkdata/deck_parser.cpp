@@ -15,8 +15,6 @@ namespace limber::bulkdata {
 namespace {
 
 constexpr std::size_t kTallyPlaces = 5;
-// Largest THRU range accepted (a typo such as 1 THRU 1000000000 would exhaust memory).
-constexpr long kMaxThruRange = 10'000'000;
 
 // Cards that do not change the structure's stiffness or mass.
 const std::set<std::string> kIgnoredCards = {
@@ -64,29 +62,28 @@ std::string components(const CardFields& f, int field, const char* name) {
 }
 
 // Ids from `first` to the card's last field, with "A THRU B" ranges; blanks are skipped.
-std::vector<int> id_list(const CardFields& f, int first, const char* name) {
-  std::vector<int> ids;
+std::vector<IdRange> id_list(const CardFields& f, int first, const char* name) {
+  std::vector<IdRange> ids;
   const int last = f.last_field();
+  const auto skipped = [&](int field) { return field % 10 == 0 || field % 10 == 1 || f.blank(field); };
   for (int field = first; field <= last; ++field) {
-    if (field % 10 == 0 || field % 10 == 1 || f.blank(field)) continue;  // markers, blanks
+    if (skipped(field)) continue;  // continuation markers, blanks
     if (f.text(field) == "THRU") {
       int next = field + 1;
-      while (next <= last && (next % 10 == 0 || next % 10 == 1 || f.blank(next))) ++next;
-      if (ids.empty() || next > last) {
+      while (next <= last && skipped(next)) ++next;
+      if (ids.empty() || ids.back().first != ids.back().last || next > last) {
         f.fail(field, name, "expected 'id THRU id', got THRU without an id on both sides");
       }
-      const int from = ids.back();
       const int to = f.id(next, name);
-      if (to < from || static_cast<long>(to) - from > kMaxThruRange) {
-        f.fail(next, name,
-               fmt::format("expected an end id >= {} (at most {} more), got {}", from,
-                           kMaxThruRange, to));
+      if (to < ids.back().first) {
+        f.fail(next, name, fmt::format("expected an end id >= {}, got {}", ids.back().first, to));
       }
-      for (long id = static_cast<long>(from) + 1; id <= to; ++id) ids.push_back(static_cast<int>(id));
+      ids.back().last = to;
       field = next;
       continue;
     }
-    ids.push_back(f.id(field, name));
+    const int id = f.id(field, name);
+    ids.push_back({id, id});
   }
   if (ids.empty()) f.fail(first, name, "expected at least one id, got none");
   return ids;
@@ -488,7 +485,9 @@ class Parser {
     const int set = f.id(2, "SID");
     const std::string dofs = components(f, 3, "C");
     if (dofs.empty()) f.fail(3, "C", "expected component digits, got blank");
-    for (int grid : id_list(f, 4, "G")) deck_.spcs.push_back({set, grid, dofs, f.card().where()});
+    for (const IdRange& grids : id_list(f, 4, "G")) {
+      deck_.spcs.push_back({set, grids, dofs, f.card().where()});
+    }
   }
 
   void spc(const CardFields& f) {
@@ -498,14 +497,14 @@ class Parser {
       const int grid = f.id(first, "G");
       const std::string dofs = components(f, first + 1, "C");
       demand_zero(f, first + 2, "D", "an enforced displacement is");
-      deck_.spcs.push_back({set, grid, dofs, f.card().where()});
+      deck_.spcs.push_back({set, {grid, grid}, dofs, f.card().where()});
     }
   }
 
   void spcadd(const CardFields& f) {
     const int set = f.id(2, "SID");
-    std::vector<int>& sets = deck_.spc_sets_added[set];
-    for (int s : id_list(f, 3, "S")) sets.push_back(s);
+    std::vector<IdRange>& sets = deck_.spc_sets_added[set];
+    for (const IdRange& range : id_list(f, 3, "S")) sets.push_back(range);
   }
 
   void set1(const CardFields& f) {

@@ -300,12 +300,31 @@ class Translator {
     }
   }
 
-  void spc_set(int set) {
-    // The set and the sets an SPCADD of that id combines.
-    std::set<int> sets = {set};
-    if (auto added = deck_.spc_sets_added.find(set); added != deck_.spc_sets_added.end()) {
-      sets.insert(added->second.begin(), added->second.end());
+  // Whether SPC set `set` is selected: the set itself or one an SPCADD of `selected` names.
+  bool selected(int set, int chosen) const {
+    if (set == chosen) return true;
+    const auto added = deck_.spc_sets_added.find(chosen);
+    if (added == deck_.spc_sets_added.end()) return false;
+    return std::any_of(added->second.begin(), added->second.end(),
+                       [&](const IdRange& r) { return set >= r.first && set <= r.last; });
+  }
+
+  // Calls `action(grid)` for a single id (which must be a GRID) or for each GRID in a range.
+  template <typename Action>
+  void for_each_grid(const IdRange& ids, const SourceLocation& where, const std::string& what,
+                     Action&& action) const {
+    if (ids.first == ids.last) {
+      node(ids.first, where, what);
+      action(ids.first);
+      return;
     }
+    for (auto it = deck_.grids.lower_bound(ids.first);
+         it != deck_.grids.end() && it->first <= ids.last; ++it) {
+      action(it->first);
+    }
+  }
+
+  void spc_set(int set) {
     std::set<int> defined;
     for (const SpcEntry& entry : deck_.spcs) defined.insert(entry.set);
     for (const auto& [id, members] : deck_.spc_sets_added) defined.insert(id);
@@ -316,20 +335,25 @@ class Translator {
                        options_.spc_where);
     }
     for (const SpcEntry& entry : deck_.spcs) {
-      if (sets.contains(entry.set)) {
-        hold(entry.grid, entry.components, entry.where, fmt::format("SPC set {}", entry.set));
-      }
+      if (!selected(entry.set, set)) continue;
+      const std::string what = fmt::format("SPC set {}", entry.set);
+      for_each_grid(entry.grids, entry.where, what,
+                    [&](int grid) { hold(grid, entry.components, entry.where, what); });
     }
   }
 
+  // SET1 cards whose ids are all GRIDs (ranges: the GRIDs within them) become node sets.
   void node_sets() {
     for (const auto& [id, members] : deck_.sets) {
-      const bool grids_only = std::all_of(members.begin(), members.end(),
-                                          [&](int m) { return deck_.grids.contains(m); });
+      const bool grids_only = std::all_of(members.begin(), members.end(), [&](const IdRange& r) {
+        return r.first != r.last || deck_.grids.contains(r.first);
+      });
       if (!grids_only) continue;  // a set of elements or other ids: not a node set
       std::vector<int> nodes;
-      for (int m : members) nodes.push_back(builder_.node_index(m));
-      builder_.add_node_set("set" + std::to_string(id), nodes);
+      for (const IdRange& range : members) {
+        for_each_grid(range, {}, "SET1", [&](int grid) { nodes.push_back(builder_.node_index(grid)); });
+      }
+      if (!nodes.empty()) builder_.add_node_set("set" + std::to_string(id), nodes);
     }
   }
 };

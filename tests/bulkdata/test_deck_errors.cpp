@@ -128,6 +128,23 @@ TEST(DeckErrors, UnsupportedCardsAreErrorsUnlessAllowed) {
   EXPECT_NE(notices[1].find("FORCE (1 card: deck.bdf:14)"), std::string::npos) << notices[1];
 }
 
+TEST(DeckSets, ThruRangesHoldTheGridsWithinThem) {
+  // Grids 1-6 exist; 1 THRU 1000000 holds those six (no expansion of the range), a single id
+  // must be a grid.
+  std::string text = kPlate + "SPC1,1,345,1,THRU,1000000\nSPC,2,4,12\nSPCADD,3,1,2\nSET1,10,2,THRU,5\n";
+  DeckOptions options;
+  options.spc_set = 3;
+  const Deck deck = parse_deck(read_cards_text(text, "deck.bdf"), "deck.bdf");
+  fe::FeModelBuilder builder;
+  add_deck(deck, options, builder);
+  // 6 grids x 3 components from set 1, plus components 1 and 2 of grid 4 from set 2.
+  EXPECT_EQ(builder.peek().fixed_dofs.size(), 6u * 3u + 2u);
+  EXPECT_EQ(builder.peek().node_sets.at("set10").size(), 4u);
+  text = kPlate + "SPC1,1,3,77\n";
+  options.spc_set = 1;
+  EXPECT_TRUE(fails_at(text, deck_location(text, "SPC1"), "expected a defined GRID id, got 77", options));
+}
+
 TEST(DeckErrors, MassOffsetsAndRotatedConstraints) {
   // A CONM2 off its grid (offset, or CID = -1 at another point) is not a point mass.
   std::string text = kPlate + "CONM2,20,5,,2.,0.1\n";
