@@ -206,6 +206,12 @@ int run_case(const RunOptions& options) {
   fmt::print(text, "limber run: {} ({})\n", input.title, input.file);
   print_model(text, model);
   print_reduction(text, reduction);
+  // Notes from reading bulk-data decks (cards ignored, approximations).
+  for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
+    for (const std::string& notice : body.notices) {
+      fmt::print(stderr, "limber: notice: body '{}': {}\n", body.name, notice);
+    }
+  }
   for (const std::string& warning : multibody::distant_joint_warnings(model)) {
     fmt::print(stderr, "limber: warning: {}\n", warning);
   }

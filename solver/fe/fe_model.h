@@ -1,6 +1,6 @@
 // The finite-element model of one flexible component: nodes with 6 DOFs each
 // (ux, uy, uz, rx, ry, rz, in the component frame), beam and shell elements,
-// point masses, named node sets and single-point constraints.
+// point masses, named node sets and single-point constraints (triangles: NASTRAN CTRIA3).
 //
 // Built and checked by FeModelBuilder (fe_model_builder.h); constant afterwards.
 // Units are SI throughout (m, kg, s, N, Pa).
@@ -97,6 +97,13 @@ struct ShellElement {
   int property = 0;  // index into FeModel::shell_properties
 };
 
+// 3-node flat shell (CST membrane + DKT plate, shell_triangle.h); the node order fixes the
+// normal.
+struct ShellTriangle {
+  std::array<int, 3> nodes{};
+  int property = 0;  // index into FeModel::shell_properties
+};
+
 // Concentrated mass and rotary inertia (about the node, component axes) at a node.
 struct PointMass {
   int node = 0;
@@ -117,6 +124,7 @@ struct FeModel {
   std::vector<ShellProperty> shell_properties;
   std::vector<BeamElement> beams;
   std::vector<ShellElement> shells;
+  std::vector<ShellTriangle> triangles;
   std::vector<PointMass> point_masses;
   std::map<std::string, std::vector<int>> node_sets;  // name -> node indices
   std::vector<FixedDof> fixed_dofs;

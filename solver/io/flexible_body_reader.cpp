@@ -4,8 +4,11 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
+#include "bulkdata/deck_parser.h"
+#include "bulkdata/deck_to_fe.h"
 #include "core/names.h"
 #include "fe/fe_model_builder.h"
 #include "fe/mesh_generators.h"
@@ -156,6 +159,29 @@ void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelB
   }
 }
 
+// A NASTRAN deck (docs/bulk-data.md): its path relative to the case file's folder, or
+// {file, spc, unsupported_cards}. Returns the deck's notices.
+std::vector<std::string> read_bulk_data(const YamlValue& value, fe::FeModelBuilder& builder) {
+  bulkdata::DeckOptions options;
+  options.where = value.where();
+  // (A YamlValue is never assigned to: yaml-cpp's Node assignment writes into the document.)
+  const YamlValue file = value.is_map() ? value.at("file") : value;
+  if (value.is_map()) {
+    value.allow_only({"file", "spc", "unsupported_cards"});
+    if (auto spc = value.find("spc")) {
+      options.spc_set = spc->as_positive_integer();
+      options.spc_where = spc->where();
+    }
+    if (auto unsupported = value.find("unsupported_cards")) {
+      options.unsupported_is_error = unsupported->as_choice({"error", "warn"}) == "error";
+    }
+  }
+  const std::filesystem::path path =
+      std::filesystem::path(file.where().file).parent_path() / file.as_string();
+  const bulkdata::Deck deck = bulkdata::read_deck(path.string(), file.where());
+  return bulkdata::add_deck(deck, options, builder);
+}
+
 void read_point_masses(const YamlValue& list, fe::FeModelBuilder& builder) {
   for (const YamlValue& entry : list.items()) {
     entry.allow_only({"node", "mass", "inertia"});
@@ -293,13 +319,22 @@ FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& en
                                     const CaseLibrary& library) {
   check_name_text("flexible body", name, entry.key_where());
   if (!entry.is_map()) entry.fail("expected a map {beams: ..., modes: ...} for '" + name + "'");
-  entry.allow_only({"beams", "plates", "point_masses", "node_sets", "fixed", "modes"});
+  entry.allow_only(
+      {"beams", "plates", "bulk_data", "point_masses", "node_sets", "fixed", "modes"});
   FlexibleBodyCase body;
   body.name = name;
   body.where = entry.where();
 
   // Geometry and mass first: node references below need the nodes.
   fe::FeModelBuilder builder;
+  if (auto deck = entry.find("bulk_data")) {
+    // A deck is the whole mesh: generated meshes would collide with its GRID ids.
+    if (entry.find("beams") || entry.find("plates")) {
+      deck->fail("expected either 'bulk_data' or generated meshes ('beams', 'plates') in '" +
+                 name + "', got both");
+    }
+    body.notices = read_bulk_data(*deck, builder);
+  }
   if (auto beams = entry.find("beams")) read_beams(*beams, library, builder);
   if (auto plates = entry.find("plates")) read_plates(*plates, library, builder);
   if (auto masses = entry.find("point_masses")) read_point_masses(*masses, builder);
@@ -308,7 +343,8 @@ FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& en
 
   // A body needs elements before modes make sense.
   if (builder.peek().beams.empty() && builder.peek().shells.empty()) {
-    entry.fail("expected at least one element ('beams' or 'plates') in '" + name + "', got none");
+    entry.fail("expected at least one element ('beams', 'plates' or 'bulk_data') in '" + name +
+               "', got none");
   }
 
   // The modes wanted, checked against the (fixed) model.

@@ -32,6 +32,10 @@ multibody::FlexibleMesh drawing_mesh(const fe::FeModel& model) {
   mesh.node_ids = model.node_ids;
   for (const fe::BeamElement& beam : model.beams) mesh.lines.push_back(beam.nodes);
   for (const fe::ShellElement& shell : model.shells) mesh.quads.push_back(shell.nodes);
+  // Triangles drawn as quads with the last node repeated.
+  for (const fe::ShellTriangle& t : model.triangles) {
+    mesh.quads.push_back({t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]});
+  }
   for (const fe::BeamProperty& property : model.beam_properties) {
     mesh.beam_radius = std::max(mesh.beam_radius, std::sqrt(property.section.area / std::numbers::pi));
   }
