@@ -65,10 +65,6 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   largest_error_ = 0.0;
   jacobian_h_ = 0.0;
   J_.resize(nv_ + nc_, nv_ + nc_);
-  M_.resize(nv_, nv_);
-  G_.resize(nc_, nv_);
-  Q_.resize(nv_);
-  g_.resize(nc_);
 
   // Consistent start: projected q, v; v̇ and λ from the saddle-point system; a_0 = v̇_0.
   curr_.t = x0.t;
@@ -387,12 +383,12 @@ bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorX
   const double xi_floor = roundoff * (1.0 + curr_.q.lpNorm<Eigen::Infinity>());
   const bool xi_converged =
       delta.head(nv_).lpNorm<Eigen::Infinity>() <= tol * xi.lpNorm<Eigen::Infinity>() + xi_floor;
-  // λ̃ through the force Gᵀλ̃ it applies (M_, G_ from the last evaluation), relative to that
+  // λ̃ through the force Gᵀλ̃ it applies (M, G of eval_, the last evaluation), relative to that
   // force, with the floor the ξ round-off causes in the O(1)-conditioned scaled system.
-  const double force_change = (G_.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
-  const double force = (G_.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
+  const double force_change = (eval_.G.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
+  const double force = (eval_.G.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
   const bool lambda_converged =
-      force_change <= tol * force + M_.lpNorm<Eigen::Infinity>() * xi_floor;
+      force_change <= tol * force + eval_.M.lpNorm<Eigen::Infinity>() * xi_floor;
   return xi_converged && lambda_converged;
 }
 
@@ -410,13 +406,10 @@ void GeneralizedAlpha::scaled_residual(double h, const StepState& s,
                                        const Eigen::VectorXd& lambda_scaled, Eigen::VectorXd& r) {
   const double bh2 = coef_.beta * h * h;
   ++stats_.residual_evaluations;
-  system_->mass_matrix(s.t, s.q, M_);
-  system_->generalized_forces(s.t, s.q, s.v, Q_);
-  system_->constraint_jacobian_v(s.t, s.q, G_);
-  system_->constraints(s.t, s.q, g_);
-  r.head(nv_).noalias() = bh2 * (M_ * s.vdot - Q_);
-  r.head(nv_).noalias() += G_.transpose() * lambda_scaled;
-  r.tail(nc_) = g_;
+  system_->evaluate(s.t, s.q, s.v, false, eval_);
+  r.head(nv_).noalias() = bh2 * (eval_.M * s.vdot - eval_.Q);
+  r.head(nv_).noalias() += eval_.G.transpose() * lambda_scaled;
+  r.tail(nc_) = eval_.g;
 }
 
 bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
@@ -438,8 +431,8 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   }
   // Columns for λ̃ = βh²λ: [Gᵀ; 0] at the current iterate.
   end_of_step_kinematics(h, xi, probe_);
-  system_->constraint_jacobian_v(probe_.t, probe_.q, G_);
-  J_.topRightCorner(nv_, nc_) = G_.transpose();
+  system_->constraint_jacobian_v(probe_.t, probe_.q, eval_.G);
+  J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
   J_.bottomRightCorner(nc_, nc_).setZero();
   if (!J_.allFinite()) return false;
   lu_.compute(J_);

@@ -145,8 +145,9 @@ class GeneralizedAlpha final : public Integrator {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   double jacobian_h_ = 0.0;
   int jacobian_age_ = 0;  // steps accepted since it was built
-  Eigen::MatrixXd J_, M_, G_;
-  Eigen::VectorXd Q_, g_, r_perturbed_;
+  Eigen::MatrixXd J_;
+  SystemEvaluation eval_;  // the last evaluation of the system (M, Q, g, G at one state)
+  Eigen::VectorXd r_perturbed_;
   StepState probe_;
 
   Statistics stats_;

@@ -87,8 +87,9 @@ struct IdaIntegrator::Impl {
   void* ida = nullptr;
 
   // Scratch space for the residual.
-  Eigen::VectorXd q, v, vdot, lambda, mu_g, mu_h, Q, g, g_t, h, f;
-  Eigen::MatrixXd N, M, G, g_q, h_q;
+  Eigen::VectorXd q, v, vdot, lambda, mu_g, mu_h, h, f;
+  Eigen::MatrixXd N, h_q;
+  SystemEvaluation eval;  // M, Q, g, G, g_t, g_q at the residual's (t, q, v)
 
   ~Impl() { release(); }
 
@@ -123,19 +124,17 @@ struct IdaIntegrator::Impl {
     Eigen::Map<Eigen::VectorXd> r(r_data, n);
     Eigen::Map<const Eigen::VectorXd> qdot(yp_data, nq);
     system->kinematic_matrix(q, N);
-    system->mass_matrix(t, q, M);
-    system->generalized_forces(t, q, v, Q);
-    system->constraints(t, q, g);
-    system->constraint_jacobian_q(t, q, g_q);
-    system->constraint_jacobian_v(t, q, G);
-    system->constraint_time_derivative(t, q, g_t);
+    system->evaluate(t, q, v, true, eval);
     system->coordinate_invariants(q, h, h_q);
 
     // Kinematics with the GGL stabilising term, dynamics, velocity and position constraints.
-    r.head(nq) = qdot - N * v + g_q.transpose() * mu_g + h_q.transpose() * mu_h;
-    r.segment(iv, nv) = M * vdot - Q + G.transpose() * lambda;
-    r.segment(ilambda, nc) = G * v + g_t;
-    r.segment(imu, nc) = g;
+    r.head(nq).noalias() = qdot - N * v;
+    r.head(nq).noalias() += eval.g_q.transpose() * mu_g;
+    r.head(nq).noalias() += h_q.transpose() * mu_h;
+    r.segment(iv, nv).noalias() = eval.M * vdot - eval.Q;
+    r.segment(iv, nv).noalias() += eval.G.transpose() * lambda;
+    r.segment(ilambda, nc).noalias() = eval.G * v + eval.g_t;
+    r.segment(imu, nc) = eval.g;
     r.segment(imu + nc, nh) = h;
     // Quadratures.
     if (nz > 0) {
@@ -324,15 +323,9 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.imu = s.ilambda + s.nc;
   s.iz = s.imu + s.nc + s.nh;
   s.n = s.iz + s.nz;
-  s.Q.resize(s.nv);
-  s.g.resize(s.nc);
-  s.g_t.resize(s.nc);
   s.h.resize(s.nh);
   s.f.resize(s.nz);
   s.N.resize(s.nq, s.nv);
-  s.M.resize(s.nv, s.nv);
-  s.G.resize(s.nc, s.nv);
-  s.g_q.resize(s.nc, s.nq);
   s.h_q.resize(s.nh, s.nq);
 
   // Consistent initial state: projected q, v; v̇, λ from the saddle-point system.

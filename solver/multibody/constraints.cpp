@@ -54,7 +54,9 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
       const Eigen::Vector3d b = mj.R_WF.col(e.axis_j);
       const Eigen::Vector3d axb = a.cross(b);
       ws.g(row) = a.dot(b);
-      ws.G.row(row) = axb.transpose() * (mi.J_w - mj.J_w);
+      // Two products into the row: no temporary for the difference of the 3 x nv Jacobians.
+      ws.G.row(row).noalias() = axb.transpose() * mi.J_w;
+      ws.G.row(row).noalias() -= axb.transpose() * mj.J_w;
       if (velocity) {
         const Eigen::Vector3d dw = mi.w_W - mj.w_W;
         const Eigen::Vector3d axb_dot = mi.w_W.cross(a).cross(b) + a.cross(mj.w_W.cross(b));
@@ -66,7 +68,9 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
       const Eigen::Vector3d d = mj.p_W - mi.p_W;
       const Eigen::Vector3d axd = a.cross(d);
       ws.g(row) = a.dot(d) - f.value;
-      ws.G.row(row) = axd.transpose() * mi.J_w + a.transpose() * (mj.J_p - mi.J_p);
+      ws.G.row(row).noalias() = axd.transpose() * mi.J_w;
+      ws.G.row(row).noalias() += a.transpose() * mj.J_p;
+      ws.G.row(row).noalias() -= a.transpose() * mi.J_p;
       if (velocity) {
         const Eigen::Vector3d d_dot = mj.v_W - mi.v_W;
         const Eigen::Vector3d a_dot = mi.w_W.cross(a);
@@ -78,7 +82,8 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
     case EquationKind::kAngle: {
       const RelativeAngle angle = relative_angle(mi, mj, stage);
       ws.g(row) = wrap_angle(angle.theta - f.value);
-      ws.G.row(row) = angle.u.transpose() * (mj.J_w - mi.J_w);
+      ws.G.row(row).noalias() = angle.u.transpose() * mj.J_w;
+      ws.G.row(row).noalias() -= angle.u.transpose() * mi.J_w;
       if (velocity) ws.gamma(row) = -angle.bias + f.second;
       break;
     }
