@@ -9,7 +9,7 @@
 // other jobs on the machine), minimum over the repetitions.
 // Not a test: prints a table for docs/benchmarks.md.
 //
-//   limber_bench_seed_setup [--reps N] [--no-file] [galpha:H ...] [ida:RTOL ...]
+//   limber_bench_seed_setup [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL ...]
 //   (default: galpha:1e-3 galpha:5e-4 galpha:2e-4 ida:1e-4 ida:1e-5 ida:1e-6 ida:1e-7 ida:1e-8;
 //    IDA's atol is rtol / 100)
 #include <fmt/format.h>
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     } else if (arg.rfind("galpha:", 0) == 0 || arg.rfind("ida:", 0) == 0) {
       settings.push_back(arg);
     } else {
-      fmt::print(stderr, "usage: {} [--reps N] [--no-file] [galpha:H ...] [ida:RTOL ...]\n", argv[0]);
+      fmt::print(stderr, "usage: {} [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL ...]\n", argv[0]);
       return 1;
     }
   }
@@ -160,10 +160,14 @@ int main(int argc, char** argv) {
                          repetitions, write_file),
                 reference);
     } else {
-      print_row("gen-α", fmt::format("h {:.1e}, ρ∞ 0.8", value),
-                run_once(mechanism, integrate::IntegratorOptions::generalized_alpha(value, 0.8),
-                         repetitions, write_file),
-                reference);
+      // galpha:H[:NEWTON_TOLERANCE]
+      integrate::IntegratorOptions options = integrate::IntegratorOptions::generalized_alpha(value, 0.8);
+      std::string label = fmt::format("h {:.1e}, ρ∞ 0.8", value);
+      if (const std::size_t colon = setting.find(':', 7); colon != std::string::npos) {
+        options.newton_tolerance = std::stod(setting.substr(colon + 1));
+        label += fmt::format(", Newton tolerance {:.0e}", options.newton_tolerance);
+      }
+      print_row("gen-α", label, run_once(mechanism, options, repetitions, write_file), reference);
     }
   }
   return 0;
