@@ -74,6 +74,14 @@ class MechanicalSystem {
     if (with_g_q) constraint_jacobian_q(t, q, out.g_q);
   }
 
+  // The diagonal parts k ≈ −∂Q/∂q and c ≈ −∂Q/∂v (nv each) that dominate the force
+  // derivatives of a structured iteration matrix (elastic stiffness and damping of modal
+  // coordinates); what they leave out (quadratic-velocity forces, force elements) only slows
+  // Newton, which the integrator watches. Returns false when the system offers none.
+  virtual bool diagonal_stiffness_damping(Eigen::VectorXd& /*k*/, Eigen::VectorXd& /*c*/) const {
+    return false;
+  }
+
   // Which rows of a redundant constraint set are independent depends on the configuration:
   // a loop whose dependency coefficients turn with a crank makes a fixed choice of rows
   // singular twice a turn. A system that can, picks new independent rows (same nc) when its

@@ -65,6 +65,8 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   largest_error_ = 0.0;
   jacobian_h_ = 0.0;
   J_.resize(nv_ + nc_, nv_ + nc_);
+  has_structure_ = system.diagonal_stiffness_damping(stiffness_, damping_);
+  structured_pause_ = 0;
 
   // Consistent start: projected q, v; v̇ and λ from the saddle-point system; a_0 = v̇_0.
   curr_.t = x0.t;
@@ -107,6 +109,7 @@ Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
 Status GeneralizedAlpha::accept_step(double h) {
   if (const Status status = locate_events(h); !status.ok()) return status;
   stats_.last_step = next_.t - curr_.t;
+  if (structured_pause_ > 0) --structured_pause_;
   prev_ = std::move(curr_);
   curr_ = next_;
   ++stats_.steps;
@@ -210,13 +213,24 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
   end_of_step_kinematics(h, xi, next_);
   scaled_residual(h, next_, lambda_scaled, r);
 
+  // Iteration matrices: the structured one first (no residual), rebuilt once when Newton slows
+  // down with it; then differences, which pause the structured one for kMaxJacobianAge steps.
+  // `fresh`: a matrix of differences built in this attempt, the last resort.
+  bool fresh = false, fresh_structured = false;
+  const auto rebuild = [&]() {
+    if (has_structure_ && structured_pause_ == 0 && !fresh_structured) {
+      fresh_structured = true;
+      if (build_structured_jacobian(h)) return true;
+    }
+    if (jacobian_structured_) structured_pause_ = kMaxJacobianAge;
+    fresh = true;
+    return refresh_jacobian(h, xi, lambda_scaled, r);
+  };
   // Reuse the iteration matrix of the previous step when it was built for this h (up to the
   // round-off of t_{n+1} − t_n).
-  bool fresh = false;
   if (!(std::abs(jacobian_h_ - h) <= 1e-9 * h) || jacobian_age_ >= kMaxJacobianAge) {
     if (!r.allFinite()) return Attempt::kNaN;
-    if (!refresh_jacobian(h, xi, lambda_scaled, r)) return Attempt::kSingular;
-    fresh = true;
+    if (!rebuild()) return Attempt::kSingular;
   }
 
   // Newton iteration on (ξ, βh²λ).
@@ -241,8 +255,7 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
       if (!r.allFinite()) return Attempt::kNaN;
       if (rate >= 1.0 && fresh) return Attempt::kNewtonFailed;
       if (rate > kRefreshRate && !fresh) {
-        if (!refresh_jacobian(h, xi, lambda_scaled, r)) return Attempt::kSingular;
-        fresh = true;
+        if (!rebuild()) return Attempt::kSingular;
         previous_norm = std::numeric_limits<double>::infinity();
       }
       continue;
@@ -259,8 +272,10 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
     ++jacobian_age_;
     return Attempt::kAccepted;
   }
-  // Out of iterations: a reused matrix gets one more chance with the same h.
+  // Out of iterations: a reused or structured matrix gets one more chance with the same h, on
+  // differences.
   if (!fresh) {
+    if (jacobian_structured_) structured_pause_ = kMaxJacobianAge;
     jacobian_h_ = 0.0;
     return Attempt::kStaleJacobian;
   }
@@ -438,6 +453,24 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   lu_.compute(J_);
   jacobian_h_ = h;
   jacobian_age_ = 0;
+  jacobian_structured_ = false;
+  return lu_.rcond() > kSingularRcond;
+}
+
+bool GeneralizedAlpha::build_structured_jacobian(double h) {
+  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
+  ++stats_.jacobian_evaluations;
+  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c; ∂g/∂ξ = G.
+  J_.topLeftCorner(nv_, nv_) = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
+  J_.topLeftCorner(nv_, nv_).diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
+  J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
+  J_.bottomLeftCorner(nc_, nv_) = eval_.G;
+  J_.bottomRightCorner(nc_, nc_).setZero();
+  jacobian_structured_ = true;
+  jacobian_h_ = h;
+  jacobian_age_ = 0;
+  if (!J_.allFinite()) return false;
+  lu_.compute(J_);
   return lu_.rcond() > kSingularRcond;
 }
 

@@ -102,6 +102,18 @@ void MultibodySystem::constraint_jacobian_q(double t, const Eigen::VectorXd& q,
   map_to_q(q, scratch_G_, g_q);
 }
 
+bool MultibodySystem::diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const {
+  k.setZero(model_.nv);
+  c.setZero(model_.nv);
+  for (const Body& b : model_.bodies) {
+    if (b.kind != BodyKind::kFlexible) continue;
+    const int nm = b.flexible->mode_count();
+    k.segment(b.v_offset + 6, nm) = b.flexible->stiffness;
+    c.segment(b.v_offset + 6, nm) = b.flexible->damping;
+  }
+  return true;
+}
+
 void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                bool with_g_q, SystemEvaluation& out) const {
   state_.t = t;

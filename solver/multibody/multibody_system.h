@@ -45,6 +45,9 @@ class MultibodySystem final : public MechanicalSystem {
                                   Eigen::VectorXd& g_t) const override;
   void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                         Eigen::VectorXd& gamma) const override;
+  // The modal stiffness ω_i² and damping c_i of every flexible body at its modal velocities,
+  // zero elsewhere.
+  bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
   // One pass: body terms, then the constraint set once (marker kinematics once).
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool with_g_q,
                 SystemEvaluation& out) const override;
