@@ -27,6 +27,8 @@ void node_frame_kinematics(const Model& model, int body, int node, const Eigen::
   // Jacobians over [ṙ, ω, η̇].
   out.J_p.setZero(3, model.nv);
   out.J_w.setZero(3, model.nv);
+  out.body_v_offset = b.v_offset;
+  out.body_nv = b.nv;
   out.J_p.block<3, 3>(0, b.v_offset).setIdentity();
   out.J_p.block<3, 3>(0, b.v_offset + 3) = -A * skew(s);
   out.J_p.middleCols(b.v_offset + 6, nm).noalias() = A * Phi_t;
