@@ -155,7 +155,7 @@ struct IdaIntegrator::Impl {
   // differences of F, y_j and y'_j perturbed together as IDA's own difference quotient does
   // (IDA's increment rule); the others from the structure of F: λ enters the dynamics rows as
   // Gᵀλ and the quadratures through f; μ the kinematic rows as [∂g/∂q; ∂h/∂q]ᵀ μ; z only z'.
-  // Costs nq + nv residuals instead of IDA's n. Returns 0, or 1 (recoverable) on non-finite
+  // Costs nq + nv + 1 residuals instead of IDA's n. Returns 0, or 1 (recoverable) on non-finite
   // values.
   int jacobian(double t, double c_j, double* y_data, double* yp_data, const double* r_data,
                double* J_data, double* r_perturbed, N_Vector weights_vector) {
