@@ -307,7 +307,8 @@ Command add_run_command(CLI::App& app) {
   cli->footer(
       "Prints the model size, the assembly, every redundant constraint equation with the\n"
       "equations it depends on, and a summary; a progress line on a terminal. Writes\n"
-      "DIR/results.h5 one sample at a time (docs/results-format.md): poses, joint reactions,\n"
+      "DIR/results.h5 in blocks of samples, flushed at least every 256 samples or 1 s of wall\n"
+      "time (a SIGKILL loses at most those; docs/results-format.md): poses, joint reactions,\n"
       "driver efforts, energies, constraint violations, steps, hinge latch and stop torques and\n"
       "their located events (each also printed as 'event: ...'), and the minimum clearance between\n"
       "bodies' surfaces (shell quads, shapes) when two or more have one: printed at the end,\n"

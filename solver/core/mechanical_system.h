@@ -18,6 +18,16 @@
 
 namespace limber {
 
+// Everything an implicit integrator's residual needs at one (t, q, v) (sizes as below).
+struct SystemEvaluation {
+  Eigen::MatrixXd M;    // nv x nv
+  Eigen::VectorXd Q;    // nv
+  Eigen::VectorXd g;    // nc
+  Eigen::MatrixXd G;    // nc x nv
+  Eigen::VectorXd g_t;  // nc
+  Eigen::MatrixXd g_q;  // nc x nq, filled only when asked for
+};
+
 class MechanicalSystem {
  public:
   virtual ~MechanicalSystem() = default;
@@ -53,6 +63,27 @@ class MechanicalSystem {
   // γ(t,q,v) with G v' = γ: the acceleration-level right-hand side (nc).
   virtual void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                 Eigen::VectorXd& gamma) const = 0;
+  // M, Q, g, G, g_t (and ∂g/∂q when `with_g_q`) at one (t, q, v), as the calls above return
+  // them. A system overrides it to share the work of one pass (the kinematics of every body
+  // and joint frame once); the default makes the separate calls.
+  virtual void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                        bool with_g_q, SystemEvaluation& out) const {
+    mass_matrix(t, q, out.M);
+    generalized_forces(t, q, v, out.Q);
+    constraints(t, q, out.g);
+    constraint_jacobian_v(t, q, out.G);
+    constraint_time_derivative(t, q, out.g_t);
+    if (with_g_q) constraint_jacobian_q(t, q, out.g_q);
+  }
+
+  // The diagonal parts k ≈ −∂Q/∂q and c ≈ −∂Q/∂v (nv each) that dominate the force
+  // derivatives of a structured iteration matrix (elastic stiffness and damping of modal
+  // coordinates); what they leave out (quadratic-velocity forces, force elements) only slows
+  // Newton, which the integrator watches. Returns false when the system offers none.
+  virtual bool diagonal_stiffness_damping(Eigen::VectorXd& /*k*/, Eigen::VectorXd& /*c*/) const {
+    return false;
+  }
+
   // Which rows of a redundant constraint set are independent depends on the configuration:
   // a loop whose dependency coefficients turn with a crank makes a fixed choice of rows
   // singular twice a turn. A system that can, picks new independent rows (same nc) when its

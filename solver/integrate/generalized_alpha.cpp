@@ -65,10 +65,8 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   largest_error_ = 0.0;
   jacobian_h_ = 0.0;
   J_.resize(nv_ + nc_, nv_ + nc_);
-  M_.resize(nv_, nv_);
-  G_.resize(nc_, nv_);
-  Q_.resize(nv_);
-  g_.resize(nc_);
+  has_structure_ = system.diagonal_stiffness_damping(stiffness_, damping_);
+  structured_pause_ = 0;
 
   // Consistent start: projected q, v; v̇ and λ from the saddle-point system; a_0 = v̇_0.
   curr_.t = x0.t;
@@ -118,6 +116,7 @@ Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
 Status GeneralizedAlpha::accept_step(double h) {
   if (const Status status = locate_events(h); !status.ok()) return status;
   stats_.last_step = next_.t - curr_.t;
+  if (structured_pause_ > 0) --structured_pause_;
   prev_ = std::move(curr_);
   curr_ = next_;
   ++stats_.steps;
@@ -228,13 +227,24 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
   end_of_step_kinematics(h, xi, next_);
   scaled_residual(h, next_, lambda_scaled, r);
 
+  // Iteration matrices: the structured one first (no residual), rebuilt once when Newton slows
+  // down with it; then differences, which pause the structured one for kMaxJacobianAge steps.
+  // `fresh`: a matrix of differences built in this attempt, the last resort.
+  bool fresh = false, fresh_structured = false;
+  const auto rebuild = [&]() {
+    if (has_structure_ && structured_pause_ == 0 && !fresh_structured) {
+      fresh_structured = true;
+      if (build_structured_jacobian(h)) return true;
+    }
+    if (jacobian_structured_) structured_pause_ = kMaxJacobianAge;
+    fresh = true;
+    return refresh_jacobian(h, xi, lambda_scaled, r);
+  };
   // Reuse the iteration matrix of the previous step when it was built for this h (up to the
   // round-off of t_{n+1} − t_n).
-  bool fresh = false;
   if (!(std::abs(jacobian_h_ - h) <= 1e-9 * h) || jacobian_age_ >= kMaxJacobianAge) {
     if (!r.allFinite()) return Attempt::kNaN;
-    if (!refresh_jacobian(h, xi, lambda_scaled, r)) return Attempt::kSingular;
-    fresh = true;
+    if (!rebuild()) return Attempt::kSingular;
   }
 
   // Newton iteration on (ξ, βh²λ).
@@ -259,8 +269,7 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
       if (!r.allFinite()) return Attempt::kNaN;
       if (rate >= 1.0 && fresh) return Attempt::kNewtonFailed;
       if (rate > kRefreshRate && !fresh) {
-        if (!refresh_jacobian(h, xi, lambda_scaled, r)) return Attempt::kSingular;
-        fresh = true;
+        if (!rebuild()) return Attempt::kSingular;
         previous_norm = std::numeric_limits<double>::infinity();
       }
       continue;
@@ -277,8 +286,10 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
     ++jacobian_age_;
     return Attempt::kAccepted;
   }
-  // Out of iterations: a reused matrix gets one more chance with the same h.
+  // Out of iterations: a reused or structured matrix gets one more chance with the same h, on
+  // differences.
   if (!fresh) {
+    if (jacobian_structured_) structured_pause_ = kMaxJacobianAge;
     jacobian_h_ = 0.0;
     return Attempt::kStaleJacobian;
   }
@@ -432,12 +443,12 @@ bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorX
   const double xi_floor = roundoff * (1.0 + curr_.q.lpNorm<Eigen::Infinity>());
   const bool xi_converged =
       delta.head(nv_).lpNorm<Eigen::Infinity>() <= tol * xi.lpNorm<Eigen::Infinity>() + xi_floor;
-  // λ̃ through the force Gᵀλ̃ it applies (M_, G_ from the last evaluation), relative to that
+  // λ̃ through the force Gᵀλ̃ it applies (M, G of eval_, the last evaluation), relative to that
   // force, with the floor the ξ round-off causes in the O(1)-conditioned scaled system.
-  const double force_change = (G_.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
-  const double force = (G_.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
+  const double force_change = (eval_.G.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
+  const double force = (eval_.G.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
   const bool lambda_converged =
-      force_change <= tol * force + M_.lpNorm<Eigen::Infinity>() * xi_floor;
+      force_change <= tol * force + eval_.M.lpNorm<Eigen::Infinity>() * xi_floor;
   return xi_converged && lambda_converged;
 }
 
@@ -455,13 +466,10 @@ void GeneralizedAlpha::scaled_residual(double h, const StepState& s,
                                        const Eigen::VectorXd& lambda_scaled, Eigen::VectorXd& r) {
   const double bh2 = coef_.beta * h * h;
   ++stats_.residual_evaluations;
-  system_->mass_matrix(s.t, s.q, M_);
-  system_->generalized_forces(s.t, s.q, s.v, Q_);
-  system_->constraint_jacobian_v(s.t, s.q, G_);
-  system_->constraints(s.t, s.q, g_);
-  r.head(nv_).noalias() = bh2 * (M_ * s.vdot - Q_);
-  r.head(nv_).noalias() += G_.transpose() * lambda_scaled;
-  r.tail(nc_) = g_;
+  system_->evaluate(s.t, s.q, s.v, false, eval_);
+  r.head(nv_).noalias() = bh2 * (eval_.M * s.vdot - eval_.Q);
+  r.head(nv_).noalias() += eval_.G.transpose() * lambda_scaled;
+  r.tail(nc_) = eval_.g;
 }
 
 bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
@@ -483,13 +491,31 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   }
   // Columns for λ̃ = βh²λ: [Gᵀ; 0] at the current iterate.
   end_of_step_kinematics(h, xi, probe_);
-  system_->constraint_jacobian_v(probe_.t, probe_.q, G_);
-  J_.topRightCorner(nv_, nc_) = G_.transpose();
+  system_->constraint_jacobian_v(probe_.t, probe_.q, eval_.G);
+  J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
   J_.bottomRightCorner(nc_, nc_).setZero();
   if (!J_.allFinite()) return false;
   lu_.compute(J_);
   jacobian_h_ = h;
   jacobian_age_ = 0;
+  jacobian_structured_ = false;
+  return lu_.rcond() > kSingularRcond;
+}
+
+bool GeneralizedAlpha::build_structured_jacobian(double h) {
+  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
+  ++stats_.jacobian_evaluations;
+  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c; ∂g/∂ξ = G.
+  J_.topLeftCorner(nv_, nv_) = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
+  J_.topLeftCorner(nv_, nv_).diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
+  J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
+  J_.bottomLeftCorner(nc_, nv_) = eval_.G;
+  J_.bottomRightCorner(nc_, nc_).setZero();
+  jacobian_structured_ = true;
+  jacobian_h_ = h;
+  jacobian_age_ = 0;
+  if (!J_.allFinite()) return false;
+  lu_.compute(J_);
   return lu_.rcond() > kSingularRcond;
 }
 

@@ -19,10 +19,15 @@
 // the λ error is 9e-6 N/m at h = 250 µs but 2e-5 at 25 µs and 2e-3 at 2.5 µs; prefer IDA when
 // such small steps are needed.)
 // Predictor: v̇ and λ extrapolated linearly from the last step. Convergence: see
-// IntegratorOptions::newton_tolerance; increments stalled at round-off level also end it. The iteration matrix is a forward
-// difference of the scaled residual in ξ (exact tangent operator included) and analytic in λ;
-// it is kept across steps and rebuilt when Newton slows down (contraction rate > 0.1), fails,
-// h changes, or it is 20 steps old.
+// IntegratorOptions::newton_tolerance; increments stalled at round-off level also end it.
+// Iteration matrix: first the structured one, [(1 − α_m)/(1 − α_f) M + βh² k + γh c, Gᵀ; G, 0]
+// with M, G of the last evaluation and the system's diagonal stiffness k and damping c
+// (MechanicalSystem::diagonal_stiffness_damping: the modes' ω² and c), which leaves out the
+// force derivatives of quadratic-velocity forces, force elements and the constraint forces'
+// change with q and costs no residual. When Newton converges slowly with it even fresh
+// (contraction rate > 0.1), a forward difference of the scaled residual in ξ (exact tangent
+// operator included, analytic in λ) replaces it for the next 20 steps. Either is kept across
+// steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old.
 // A step whose Newton iteration fails (no convergence in max_newton_iterations, divergence or
 // non-finite values) is rejected and retried with h/2, at most max_step_halvings times, then the
 // run stops with kConvergenceFailures (or kNaN).
@@ -120,6 +125,10 @@ class GeneralizedAlpha final : public Integrator {
                  const Eigen::VectorXd& delta, double roundoff) const;
   bool refresh_jacobian(double h, const Eigen::VectorXd& xi, const Eigen::VectorXd& lambda_scaled,
                         const Eigen::VectorXd& r);
+  // The structured iteration matrix [(1 − α_m)/(1 − α_f) M + βh² k + γh c, Gᵀ; G, 0] from the
+  // last evaluation (eval_) and the system's diagonal stiffness and damping: no residual.
+  // Returns false when it is singular.
+  bool build_structured_jacobian(double h);
   void evaluate_integrand(StepState& s) const;
   void interpolate(double t_out, Sample& out) const;
   Status failure(StatusCode code, const std::string& why);
@@ -150,8 +159,13 @@ class GeneralizedAlpha final : public Integrator {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   double jacobian_h_ = 0.0;
   int jacobian_age_ = 0;  // steps accepted since it was built
-  Eigen::MatrixXd J_, M_, G_;
-  Eigen::VectorXd Q_, g_, r_perturbed_;
+  bool jacobian_structured_ = false;  // lu_ holds the structured matrix (else differences)
+  bool has_structure_ = false;        // the system offers k and c (diagonal_stiffness_damping)
+  int structured_pause_ = 0;  // accepted steps left on difference matrices after a slow structured one
+  Eigen::VectorXd stiffness_, damping_;  // k and c of the system, nv each
+  Eigen::MatrixXd J_;
+  SystemEvaluation eval_;  // the last evaluation of the system (M, Q, g, G at one state)
+  Eigen::VectorXd r_perturbed_;
   StepState probe_;
 
   Statistics stats_;

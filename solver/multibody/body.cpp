@@ -35,6 +35,8 @@ void body_frame_kinematics(const Model& model, int body, const Eigen::Vector3d& 
   const Body& b = model.bodies[body];
   out.J_p.setZero(3, model.nv);
   out.J_w.setZero(3, model.nv);
+  out.body_v_offset = b.v_offset;
+  out.body_nv = b.kind == BodyKind::kGround ? 0 : b.nv;
   // Ground: a fixed frame.
   if (b.kind == BodyKind::kGround) {
     out.p_W = p_BF;

@@ -42,6 +42,14 @@ RelativeAngle relative_angle(const FrameKinematics& mi, const FrameKinematics& m
 
 namespace {
 
+// Adds uᵀ J (J: a 3 x nv Jacobian of `frame`) to row `row` of G, over the columns of the
+// frame's body only (the rest of J is zero).
+void add_row_product(const FrameKinematics& frame, const Eigen::Vector3d& u, const Eigen::MatrixXd& J,
+                     Eigen::MatrixXd& G, int row) {
+  G.row(row).segment(frame.body_v_offset, frame.body_nv).noalias() +=
+      u.transpose() * J.middleCols(frame.body_v_offset, frame.body_nv);
+}
+
 // One row: value, Jacobian row, g_t and γ of a primitive; f is the driver's function value.
 void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const FrameKinematics& mj,
                   const FunctionValue& f, Stage stage, int row, Workspace& ws) {
@@ -49,12 +57,14 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
   const Eigen::Vector3d a = mi.R_WF.col(e.axis_i);
   ws.g_t(row) = -f.first;
   ws.gamma(row) = 0.0;
+  ws.G.row(row).setZero();
   switch (e.kind) {
     case EquationKind::kDot1: {
       const Eigen::Vector3d b = mj.R_WF.col(e.axis_j);
       const Eigen::Vector3d axb = a.cross(b);
       ws.g(row) = a.dot(b);
-      ws.G.row(row) = axb.transpose() * (mi.J_w - mj.J_w);
+      add_row_product(mi, axb, mi.J_w, ws.G, row);
+      add_row_product(mj, -axb, mj.J_w, ws.G, row);
       if (velocity) {
         const Eigen::Vector3d dw = mi.w_W - mj.w_W;
         const Eigen::Vector3d axb_dot = mi.w_W.cross(a).cross(b) + a.cross(mj.w_W.cross(b));
@@ -66,7 +76,9 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
       const Eigen::Vector3d d = mj.p_W - mi.p_W;
       const Eigen::Vector3d axd = a.cross(d);
       ws.g(row) = a.dot(d) - f.value;
-      ws.G.row(row) = axd.transpose() * mi.J_w + a.transpose() * (mj.J_p - mi.J_p);
+      add_row_product(mi, axd, mi.J_w, ws.G, row);
+      add_row_product(mj, a, mj.J_p, ws.G, row);
+      add_row_product(mi, -a, mi.J_p, ws.G, row);
       if (velocity) {
         const Eigen::Vector3d d_dot = mj.v_W - mi.v_W;
         const Eigen::Vector3d a_dot = mi.w_W.cross(a);
@@ -78,7 +90,8 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
     case EquationKind::kAngle: {
       const RelativeAngle angle = relative_angle(mi, mj, stage);
       ws.g(row) = wrap_angle(angle.theta - f.value);
-      ws.G.row(row) = angle.u.transpose() * (mj.J_w - mi.J_w);
+      add_row_product(mj, angle.u, mj.J_w, ws.G, row);
+      add_row_product(mi, -angle.u, mi.J_w, ws.G, row);
       if (velocity) ws.gamma(row) = -angle.bias + f.second;
       break;
     }

@@ -11,28 +11,37 @@ void node_frame_kinematics(const Model& model, int body, int node, const Eigen::
   LIMBER_DEMAND(b.kind == BodyKind::kFlexible);
   const FlexibleBody& f = *b.flexible;
   const int nm = f.mode_count();
-  const Eigen::MatrixXd Phi_t = f.translation_shapes(node), Phi_r = f.rotation_shapes(node);
+  // Views with 3 rows known at compile time: the products below need no heap temporaries.
+  const auto Phi_t = f.shapes.middleRows<3>(6 * node);
+  const auto Phi_r = f.shapes.middleRows<3>(6 * node + 3);
   // Position stage: deformed node position s and elastic rotation θ.
   const Eigen::Matrix3d A = rotation_matrix(q.segment<4>(b.q_offset + 3));
-  const Eigen::VectorXd eta = q.segment(b.q_offset + 7, nm);
-  const Eigen::Vector3d s = f.node_positions.col(node) + Phi_t * eta;
-  const Eigen::Vector3d theta = Phi_r * eta;
+  const auto eta = q.segment(b.q_offset + 7, nm);
+  Eigen::Vector3d s = f.node_positions.col(node);
+  s.noalias() += Phi_t * eta;
+  Eigen::Vector3d theta;
+  theta.noalias() = Phi_r * eta;
   const Eigen::Matrix3d J_l = so3_left_jacobian(theta);
   out.p_W = q.segment<3>(b.q_offset) + A * s;
   out.R_WF = A * rotation_vector_matrix(theta) * R_BF;
   // Jacobians over [ṙ, ω, η̇].
   out.J_p.setZero(3, model.nv);
   out.J_w.setZero(3, model.nv);
+  out.body_v_offset = b.v_offset;
+  out.body_nv = b.nv;
   out.J_p.block<3, 3>(0, b.v_offset).setIdentity();
   out.J_p.block<3, 3>(0, b.v_offset + 3) = -A * skew(s);
-  out.J_p.middleCols(b.v_offset + 6, nm) = A * Phi_t;
+  out.J_p.middleCols(b.v_offset + 6, nm).noalias() = A * Phi_t;
   out.J_w.block<3, 3>(0, b.v_offset + 3) = A;
-  out.J_w.middleCols(b.v_offset + 6, nm) = A * J_l * Phi_r;
+  const Eigen::Matrix3d A_J_l = A * J_l;
+  out.J_w.middleCols(b.v_offset + 6, nm).noalias() = A_J_l * Phi_r;
   if (v == nullptr) return;
   // Velocity stage and the bias accelerations.
   const Eigen::Vector3d w = v->segment<3>(b.v_offset + 3);
-  const Eigen::VectorXd eta_dot = v->segment(b.v_offset + 6, nm);
-  const Eigen::Vector3d u_dot = Phi_t * eta_dot, theta_dot = Phi_r * eta_dot;
+  const auto eta_dot = v->segment(b.v_offset + 6, nm);
+  Eigen::Vector3d u_dot, theta_dot;
+  u_dot.noalias() = Phi_t * eta_dot;
+  theta_dot.noalias() = Phi_r * eta_dot;
   const Eigen::Vector3d w_elastic = J_l * theta_dot;
   out.v_W = v->segment<3>(b.v_offset) + A * (w.cross(s) + u_dot);
   out.w_W = A * (w + w_elastic);

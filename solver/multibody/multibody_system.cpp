@@ -75,6 +75,17 @@ void MultibodySystem::select_rows(const Eigen::VectorXd& full, Eigen::VectorXd& 
   for (int k = 0; k < nc(); ++k) out(k) = full(partition_.independent[k]);
 }
 
+void MultibodySystem::select_rows(const Eigen::MatrixXd& full, Eigen::MatrixXd& out) const {
+  out.resize(nc(), full.cols());
+  for (int k = 0; k < nc(); ++k) out.row(k) = full.row(partition_.independent[k]);
+}
+
+void MultibodySystem::map_to_q(const Eigen::VectorXd& q, const Eigen::MatrixXd& G,
+                               Eigen::MatrixXd& g_q) const {
+  g_q.setZero(nc(), model_.nq);
+  for (size_t b = 0; b < model_.bodies.size(); ++b) map_body_jacobian_to_q(model_, b, q, G, g_q);
+}
+
 void MultibodySystem::constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const {
   evaluate(t, q, nullptr);
   select_rows(workspace_.g, g);
@@ -83,16 +94,42 @@ void MultibodySystem::constraints(double t, const Eigen::VectorXd& q, Eigen::Vec
 void MultibodySystem::constraint_jacobian_v(double t, const Eigen::VectorXd& q,
                                             Eigen::MatrixXd& G) const {
   evaluate(t, q, nullptr);
-  G.resize(nc(), model_.nv);
-  for (int k = 0; k < nc(); ++k) G.row(k) = workspace_.G.row(partition_.independent[k]);
+  select_rows(workspace_.G, G);
 }
 
 void MultibodySystem::constraint_jacobian_q(double t, const Eigen::VectorXd& q,
                                             Eigen::MatrixXd& g_q) const {
-  Eigen::MatrixXd G;
-  constraint_jacobian_v(t, q, G);
-  g_q.setZero(nc(), model_.nq);
-  for (size_t b = 0; b < model_.bodies.size(); ++b) map_body_jacobian_to_q(model_, b, q, G, g_q);
+  evaluate(t, q, nullptr);
+  select_rows(workspace_.G, scratch_G_);
+  map_to_q(q, scratch_G_, g_q);
+}
+
+bool MultibodySystem::diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const {
+  k.setZero(model_.nv);
+  c.setZero(model_.nv);
+  for (const Body& b : model_.bodies) {
+    if (b.kind != BodyKind::kFlexible) continue;
+    const int nm = b.flexible->mode_count();
+    k.segment(b.v_offset + 6, nm) = b.flexible->stiffness;
+    c.segment(b.v_offset + 6, nm) = b.flexible->damping;
+  }
+  return true;
+}
+
+void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                               bool with_g_q, SystemEvaluation& out) const {
+  state_.t = t;
+  state_.q = q;
+  state_.v = v;
+  multibody::mass_matrix(model_, state_, workspace_);
+  multibody::generalized_forces(model_, state_, workspace_);
+  evaluate_constraints(model_, state_, Stage::kPosition, workspace_);
+  out.M = workspace_.M;
+  out.Q = workspace_.Q;
+  select_rows(workspace_.g, out.g);
+  select_rows(workspace_.G, out.G);
+  select_rows(workspace_.g_t, out.g_t);
+  if (with_g_q) map_to_q(q, out.G, out.g_q);
 }
 
 void MultibodySystem::constraint_time_derivative(double t, const Eigen::VectorXd& q,

@@ -45,6 +45,12 @@ class MultibodySystem final : public MechanicalSystem {
                                   Eigen::VectorXd& g_t) const override;
   void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                         Eigen::VectorXd& gamma) const override;
+  // The modal stiffness ω_i² and damping c_i of every flexible body at its modal velocities,
+  // zero elsewhere.
+  bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
+  // One pass: body terms, then the constraint set once (marker kinematics once).
+  void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool with_g_q,
+                SystemEvaluation& out) const override;
   // New independent rows (redundancy.h) when the smallest pivot of the current rows, unit
   // scaled, has fallen below a tenth of its value when they were chosen, and the fresh choice
   // at (t, q) is better conditioned with the same rank.
@@ -65,6 +71,9 @@ class MultibodySystem final : public MechanicalSystem {
   // Evaluates the full constraint set at (t, q[, v]) into workspace_.
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) const;
   void select_rows(const Eigen::VectorXd& full, Eigen::VectorXd& out) const;
+  void select_rows(const Eigen::MatrixXd& full, Eigen::MatrixXd& out) const;
+  // ∂g/∂q of the independent rows from their G (evaluated at q).
+  void map_to_q(const Eigen::VectorXd& q, const Eigen::MatrixXd& G, Eigen::MatrixXd& g_q) const;
 
   // Smallest pivot of the unit-scaled independent rows of workspace_.G (evaluated).
   double smallest_pivot(const std::vector<int>& rows) const;
@@ -77,6 +86,7 @@ class MultibodySystem final : public MechanicalSystem {
   std::vector<int> limits_;                 // model.forces indices of hinge latches and stops
   mutable std::vector<HingeEvent> events_;  // appended by apply_event
   mutable Workspace workspace_;
+  mutable Eigen::MatrixXd scratch_G_;       // independent rows of G (constraint_jacobian_q)
   mutable State state_;
 };
 

@@ -31,6 +31,7 @@ struct FrameKinematics {
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   Eigen::Matrix3d R_WF = Eigen::Matrix3d::Identity();
   Eigen::MatrixXd J_p, J_w;  // 3 x nv, zero outside the body's columns
+  int body_v_offset = 0, body_nv = 0;  // those columns (none for ground)
   Eigen::Vector3d v_W = Eigen::Vector3d::Zero(), w_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d a_bias = Eigen::Vector3d::Zero(), alpha_bias = Eigen::Vector3d::Zero();
 };

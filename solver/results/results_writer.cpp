@@ -8,6 +8,7 @@
 #include "results/link_name.h"
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 #include <stdexcept>
 #include <system_error>
@@ -132,11 +133,14 @@ H5Handle create_named_group(hid_t parent, std::set<std::string>& links, const st
   return group;
 }
 
-// A per-sample dataset: [ns] (width 0) or [ns, width], grown by one row per sample.
+// A per-sample dataset: [ns] (width 0) or [ns, width], grown by a block of rows at a time; the
+// rows appended since the last block wait in `pending` (row-major, memory type).
 struct Series {
   H5Handle dataset;
   hid_t memory_type = H5T_NATIVE_DOUBLE;
   hsize_t width = 0;
+  std::size_t row_bytes = 0;
+  std::vector<unsigned char> pending;
 };
 
 // /bodies/<body>/stress: the peak at every sample, the history at every `every`-th, and the
@@ -182,7 +186,9 @@ struct ResultsWriter::Impl {
   // /clearance/minimum and /clearance/pair, when pairs were declared.
   Series clearance_minimum, clearance_pair;
   bool has_clearance = false;
-  std::int64_t ns = 0;
+  std::int64_t ns = 0;          // samples appended
+  std::int64_t ns_written = 0;  // samples in the file (the rest wait in the series' buffers)
+  std::chrono::steady_clock::time_point last_flush = std::chrono::steady_clock::now();
   bool finished = false;
 
   // Creates an empty, chunked, unlimited per-sample dataset.
@@ -203,29 +209,67 @@ struct ResultsWriter::Impl {
                              "create a per-sample dataset");
     series.memory_type = memory_type;
     series.width = width;
+    series.row_bytes = H5Tget_size(memory_type) * std::max<std::size_t>(width, 1);
+    series.pending.reserve(kBlockRows * series.row_bytes);
     return series;
   }
 
-  // Extends a series to ns + 1 rows and writes the new last row.
-  void append_row(Series& series, const void* row) { write_row(series, ns, row); }
+  // Buffers one row of a series (written by write_block).
+  void append_row(Series& series, const void* row) {
+    const auto* bytes = static_cast<const unsigned char*>(row);
+    series.pending.insert(series.pending.end(), bytes, bytes + series.row_bytes);
+  }
+  void append_vector3(Series& series, const Eigen::Vector3d& v) { append_row(series, v.data()); }
 
-  // Extends a series to `index` + 1 rows and writes row `index`.
-  void write_row(Series& series, std::int64_t index, const void* row) {
-    const hsize_t new_dims[2] = {static_cast<hsize_t>(index) + 1, series.width};
+  // Extends a series to `first` + `rows` rows and writes `rows` rows from `data` at row `first`.
+  static void write_rows(Series& series, std::int64_t first, std::int64_t rows, const void* data) {
+    if (rows == 0) return;
+    const hsize_t new_dims[2] = {static_cast<hsize_t>(first + rows), series.width};
     check(H5Dset_extent(series.dataset.get(), new_dims), "extend a dataset");
     H5Handle file_space = checked(H5Dget_space(series.dataset.get()), "get a dataspace");
     const int rank = series.width == 0 ? 1 : 2;
-    const hsize_t start[2] = {static_cast<hsize_t>(index), 0};
-    const hsize_t count[2] = {1, series.width};
+    const hsize_t start[2] = {static_cast<hsize_t>(first), 0};
+    const hsize_t count[2] = {static_cast<hsize_t>(rows), series.width};
     check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
-          "select a row");
+          "select rows");
     H5Handle memory_space = checked(H5Screate_simple(rank, count, nullptr), "create a dataspace");
     check(H5Dwrite(series.dataset.get(), series.memory_type, memory_space.get(), file_space.get(),
-                   H5P_DEFAULT, row),
-          "write a row");
+                   H5P_DEFAULT, data),
+          "write rows");
+  }
+  static void write_pending(Series& series, std::int64_t first, std::int64_t rows) {
+    LIMBER_DEMAND(series.pending.size() == static_cast<std::size_t>(rows) * series.row_bytes);
+    write_rows(series, first, rows, series.pending.data());
+    series.pending.clear();
   }
 
-  void append_vector3(Series& series, const Eigen::Vector3d& v) { append_row(series, v.data()); }
+  // Writes the buffered samples to every per-sample dataset, /time last, and flushes the file.
+  void write_block() {
+    const std::int64_t rows = ns - ns_written;
+    for (std::vector<Series>& body : body_series) {
+      for (Series& series : body) write_pending(series, ns_written, rows);
+    }
+    for (std::vector<Series>& joint : joint_series) {
+      for (Series& series : joint) write_pending(series, ns_written, rows);
+    }
+    for (Series& series : driver_series) write_pending(series, ns_written, rows);
+    for (Series& series : energy_series) write_pending(series, ns_written, rows);
+    for (std::array<Series, 3>& limit : limit_series) {
+      for (Series& series : limit) write_pending(series, ns_written, rows);
+    }
+    for (Series* series : {&position_violation, &velocity_violation, &steps}) {
+      write_pending(*series, ns_written, rows);
+    }
+    if (has_clearance) {
+      write_pending(clearance_minimum, ns_written, rows);
+      write_pending(clearance_pair, ns_written, rows);
+    }
+    // Time last: a reader never sees a time without its data.
+    write_pending(time, ns_written, rows);
+    ns_written = ns;
+    check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flush the file");
+    last_flush = std::chrono::steady_clock::now();
+  }
 
   // The stress group of a flexible body: element list, `every`, and its series.
   std::unique_ptr<StressSeries> create_stress(hid_t body_group, const FlexibleBodySpec& body) {
@@ -359,7 +403,16 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 }
 
-ResultsWriter::~ResultsWriter() = default;
+ResultsWriter::~ResultsWriter() {
+  // Not finished (an exception passed by): keep the buffered samples; status stays "running".
+  if (impl_ && !impl_->finished && impl_->file.valid()) {
+    try {
+      impl_->write_block();
+    } catch (const std::exception&) {
+      // The file is unusable; the samples of earlier blocks stay readable.
+    }
+  }
+}
 
 int ResultsWriter::add_rigid_body(const RigidBodySpec& body) {
   impl_->begin_body(body.name, "rigid", body.shapes);
@@ -489,12 +542,12 @@ void ResultsWriter::append_event(const HingeEventRecord& event) {
   LIMBER_DEMAND(event.limit >= 0 && event.limit < static_cast<int>(m.limit_series.size()));
   const std::int32_t limit = event.limit;
   const std::int8_t engaged = event.engaged ? 1 : 0;
-  m.write_row(m.event_limit, m.ne, &limit);
-  m.write_row(m.event_engaged, m.ne, &engaged);
-  m.write_row(m.event_angle, m.ne, &event.angle);
-  m.write_row(m.event_rate, m.ne, &event.rate);
+  m.write_rows(m.event_limit, m.ne, 1, &limit);
+  m.write_rows(m.event_engaged, m.ne, 1, &engaged);
+  m.write_rows(m.event_angle, m.ne, 1, &event.angle);
+  m.write_rows(m.event_rate, m.ne, 1, &event.rate);
   // Time last, as for samples.
-  m.write_row(m.event_time, m.ne, &event.time);
+  m.write_rows(m.event_time, m.ne, 1, &event.time);
   ++m.ne;
   check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
 }
@@ -589,10 +642,18 @@ void ResultsWriter::append_sample(const Sample& sample) {
     m.append_row(m.clearance_pair, &sample.clearance_pair);
   }
 
-  // Time last, then flush: a reader never sees a time without its data.
   m.append_row(m.time, &sample.time);
   ++m.ns;
-  check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
+  // A block per kBlockRows samples or per kFlushInterval of wall time (results_writer.h).
+  if (m.ns - m.ns_written >= static_cast<std::int64_t>(kBlockRows) ||
+      std::chrono::steady_clock::now() - m.last_flush >= kFlushInterval) {
+    m.write_block();
+  }
+}
+
+void ResultsWriter::flush() {
+  LIMBER_DEMAND(!impl_->finished);
+  impl_->write_block();
 }
 
 void ResultsWriter::set_accuracy(double energy_relative, double local_error, double drift_relative,
@@ -628,6 +689,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();
+  m.write_block();
   write_string_attribute(root, "status", status == RunStatus::kOk           ? "ok"
                                          : status == RunStatus::kInaccurate ? "ok_inaccurate"
                                          : status == RunStatus::kFailed     ? "failed"

@@ -2,10 +2,15 @@
 //
 // Use: construct (creates the file, root attributes, status "running"), declare every body,
 // joint, driver and energy, then call append_sample() once per output sample and finish() at the
-// end. Each append extends every per-sample dataset by one row and flushes the file, so a run
-// killed at any moment (even by SIGKILL) leaves a file that opens and holds every sample
-// appended before. The file uses the HDF5 1.8-compatible format (libver bounds "earliest"):
-// no "file open for writing" flag stays behind after a crash (see design/PITFALLS.md).
+// end. Samples are buffered in memory and written in blocks: every per-sample dataset is extended
+// by the block's rows (/time last) and the file is flushed, at the append that makes
+// kBlockRows samples pending or that comes kFlushInterval or more of wall time after the last
+// flush, and at flush(), finish() and destruction. A run killed at any moment (even by SIGKILL)
+// leaves a file that opens and holds every sample of the blocks written before: it loses at
+// most the kBlockRows − 1 samples appended since the last flush, all appended less than
+// kFlushInterval of wall time after it (docs/results-format.md, "Crash safety"). The file uses
+// the HDF5 1.8-compatible format (libver bounds "earliest"): no "file open for writing" flag
+// stays behind after a crash.
 //
 // Units are SI; orientations are unit quaternions (w, x, y, z) rotating body axes into ground.
 // Nothing here depends on solver classes: callers hand plain Eigen values.
@@ -15,6 +20,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -147,6 +153,11 @@ struct HingeEventRecord {
   double rate = 0.0;   // joint angular rate at the switch [rad/s]
 };
 
+// Samples per block written to the file (one HDF5 chunk of the narrow datasets).
+inline constexpr std::size_t kBlockRows = 256;
+// Longest wall time between flushes while samples keep coming.
+inline constexpr std::chrono::milliseconds kFlushInterval{1000};
+
 // How a run ended: finished, finished but its own accuracy estimate says the answer is off
 // ("ok_inaccurate"), failed (numerically or on an error), or stopped by a signal.
 enum class RunStatus { kOk, kInaccurate, kFailed, kInterrupted };
@@ -185,10 +196,12 @@ class ResultsWriter {
   // Root attribute `integrator` ("ida", "galpha"): which method produced the samples.
   void set_integrator(const std::string& name);
 
-  // Appends one row to every per-sample dataset and flushes the file to disk. Precondition:
-  // sample vectors sized as declared, modal_coordinates and modal_velocities sized nm for
-  // flexible bodies (aborts otherwise).
+  // Appends one row to every per-sample dataset: buffered, written and flushed with its block
+  // (see the top of this file). Precondition: sample vectors sized as declared,
+  // modal_coordinates and modal_velocities sized nm for flexible bodies (aborts otherwise).
   void append_sample(const Sample& sample);
+  // Writes the buffered samples and flushes the file now.
+  void flush();
   // Appends one row to /events and flushes (at any time before finish()).
   void append_event(const HingeEventRecord& event);
 
@@ -208,10 +221,11 @@ class ResultsWriter {
                              const std::vector<std::string>& joints,
                              const std::vector<double>& velocity_jump);
 
-  // Sets the root attributes status ("ok" / "ok_inaccurate" / "failed" / "interrupted") and
-  // message, flushes and closes the file.
+  // Writes the buffered samples, sets the root attributes status ("ok" / "ok_inaccurate" /
+  // "failed" / "interrupted") and message, flushes and closes the file.
   void finish(RunStatus status, const std::string& message = "");
 
+  // Samples appended (written or still buffered).
   std::int64_t sample_count() const;
   const std::filesystem::path& path() const;
 

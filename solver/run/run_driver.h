@@ -1,6 +1,7 @@
 // The run of a mechanism (`limber run`, issue 3): assemble, analyse redundancy, integrate with
 // output at a fixed sample interval, and hand every sample to the results file as it comes
-// (flushed per sample: everything before a failure or a kill stays readable).
+// (written in blocks; a failure or a signal writes the rest, a kill loses at most the last block:
+// results_writer.h).
 //
 // Failures are returned, never thrown (house style §11): an assembly that does not close, or an
 // integrator failure ("at t = … s: why"), ends the run with status "failed" and that message in

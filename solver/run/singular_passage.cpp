@@ -48,7 +48,8 @@ bool SingularPassageMonitor::add(const multibody::State& state) {
   const int m = model_.num_equations();
   if (rank_ > m) return false;
   const Eigen::MatrixXd gram = S * S.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  // Eigenvalues only at every sample; the vectors (which joints) only near a singularity.
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram, Eigen::EigenvaluesOnly);
   const double sigma = std::sqrt(std::max(0.0, eigen.eigenvalues()(m - rank_)));
   if (start_ < 0.0) start_ = sigma;
   const double ratio = start_ > 0.0 ? sigma / start_ : 1.0;
@@ -61,6 +62,7 @@ bool SingularPassageMonitor::add(const multibody::State& state) {
       current_.t = state.t;
       current_.ratio = ratio;
       current_.names.clear();
+      eigen.compute(gram, Eigen::ComputeEigenvectors);
       const Eigen::VectorXd u = eigen.eigenvectors().col(m - rank_);
       const double largest = u.cwiseAbs().maxCoeff();
       for (int row = 0; row < model_.num_equations(); ++row) {

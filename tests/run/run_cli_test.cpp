@@ -327,3 +327,35 @@ TEST(RunCli, SigtermClosesTheFileAsInterrupted) {
 
 }  // namespace
 }  // namespace limber
+
+namespace limber {
+namespace {
+
+TEST(RunCli, SigkillLeavesAReadableFileOfWholeBlocks) {
+  // SIGKILL 3 s in: the deployment (2 ms samples, ~500 per second of wall time) has written
+  // several blocks (results_writer.h: 256 samples or 1 s of wall time each) and is mid-run.
+  const auto dir = test::fresh_directory("sigkill");
+  const test::CommandRun run = test::run_command(
+      "timeout", "--preserve-status -s KILL 3 " + std::string(LIMBER_EXE) + " run " +
+                     std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml -o " + dir.string());
+  EXPECT_NE(run.exit_code, 0);
+  // The file opens as it was left: no h5clear, status still "running" (the run did not finish).
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "running");
+  // Whole samples only: every per-sample dataset has the rows of /time, the times the grid's.
+  const std::vector<double> time = read_doubles(file, "/time");
+  ASSERT_GT(time.size(), 0u);
+  EXPECT_LT(time.back(), 6.0);
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    ASSERT_NEAR(time[k], 2e-3 * static_cast<double>(k), 1e-12) << k;
+  }
+  for (const char* path : {"/bodies/bus/position", "/joints/R3/force_ground", "/energy/kinetic",
+                           "/solver/steps", "/constraints/position_violation"}) {
+    EXPECT_EQ(dataset_dims(file, path).at(0), time.size()) << path;
+  }
+  H5Fclose(file);
+}
+
+}  // namespace
+}  // namespace limber
