@@ -46,6 +46,8 @@ struct FlexibleBodySpec {
   std::vector<Shape> shapes;
   FlexibleMesh mesh;                              // for drawing; indices into node_positions_B
   std::optional<DeflectionProbe> deflection_probe;  // output only; node indices
+  GeometricStiffening stiffening = GeometricStiffening::kOff;  // flexible_body.h
+  modal::ModalGeometricStiffness geometric;         // of `modes`, unless kOff
 };
 
 struct RsdaSpec {
