@@ -13,6 +13,8 @@
 //                                  # mechanism_builder.h, once the modes are known)
 //     deflection: {node: 51, chord: [R2, R3]}   # results: a node's elastic displacement
 //                                  # relative to the chord between two nodes (body axes)
+//     geometric_stiffening: inertia_only   # false | inertia_only (default) | true
+//                                  # (docs/geometric-stiffening.md)
 // Markers on a flexible body sit on FE nodes: named by `node:` (an id or a one-node set), or
 // found at the ground point a joint is given at.
 #pragma once
