@@ -113,7 +113,7 @@ void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, con
   // Centrifugal geometric stiffening (geometric_stiffening.h); load cases needing
   // accelerations or joint forces are added by generalized_forces.
   if (f.stiffening != GeometricStiffening::kOff) {
-    Q.segment(o + 6, nm) -= centrifugal_geometric_stiffness(f.geometric, w) * eta;
+    Q.segment(o + 6, nm) -= centrifugal_geometric_force(f.geometric, w, eta);
   }
 }
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
-#include "core/minimum_norm.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/redundancy.h"
@@ -57,12 +57,16 @@ Eigen::MatrixXd load_stiffness(const Model& model, size_t b, const State& state,
 
 }  // namespace
 
-Eigen::MatrixXd centrifugal_geometric_stiffness(const modal::ModalGeometricStiffness& g, const Eigen::Vector3d& w_B) {
+Eigen::VectorXd centrifugal_geometric_force(const modal::ModalGeometricStiffness& g, const Eigen::Vector3d& w_B,
+                                            const Eigen::VectorXd& eta) {
   const double p[6] = {w_B.x() * w_B.x(), w_B.y() * w_B.y(), w_B.z() * w_B.z(),
                        w_B.x() * w_B.y(), w_B.y() * w_B.z(), w_B.z() * w_B.x()};
-  Eigen::MatrixXd K = p[0] * g.centrifugal[0];
-  for (int c = 1; c < 6; ++c) K += p[c] * g.centrifugal[c];
-  return K;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(eta.size());
+  // Matrix-vector products only, skipping the products that vanish (a planar spin has one).
+  for (int c = 0; c < 6; ++c) {
+    if (p[c] != 0.0) f.noalias() += p[c] * (g.centrifugal[c] * eta);
+  }
+  return f;
 }
 
 AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eigen::MatrixXd& G,
@@ -70,16 +74,21 @@ AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eige
   const Eigen::LLT<Eigen::MatrixXd> llt(M);
   const Eigen::VectorXd y0 = llt.matrixL().solve(Q);
   AccelerationEstimate out;
-  if (G.rows() == 0) {
-    out.v_dot = llt.matrixU().solve(y0);
-    out.lambda.resize(0);
+  out.lambda = Eigen::VectorXd::Zero(G.rows());
+  if (G.rows() > 0) {
+    // Whitened rows B; B Bᵀ λ = B y0 − γ, its minimum-norm solution from one eigen-decomposition
+    // (σ(B)² are its eigenvalues: the relative cut on σ is squared).
+    const Eigen::MatrixXd B = llt.matrixL().solve(G.transpose()).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B * B.transpose());
+    const Eigen::VectorXd& mu = eig.eigenvalues();
+    const double cut = kRedundancyThreshold * kRedundancyThreshold * mu.cwiseAbs().maxCoeff();
+    Eigen::VectorXd c = eig.eigenvectors().transpose() * (B * y0 - gamma);
+    for (Eigen::Index i = 0; i < c.size(); ++i) c(i) = mu(i) > cut ? c(i) / mu(i) : 0.0;
+    out.lambda = eig.eigenvectors() * c;
+    out.v_dot = llt.matrixU().solve(y0 - B.transpose() * out.lambda);
     return out;
   }
-  // Whitened constraint rows; the nearest admissible y, then the multipliers.
-  const Eigen::MatrixXd B = llt.matrixL().solve(G.transpose()).transpose();
-  const Eigen::VectorXd y = y0 + minimum_norm_solve(B, gamma - B * y0, kRedundancyThreshold);
-  out.v_dot = llt.matrixU().solve(y);
-  out.lambda = minimum_norm_solve(B.transpose(), y0 - y, kRedundancyThreshold);
+  out.v_dot = llt.matrixU().solve(y0);
   return out;
 }
 

@@ -18,13 +18,16 @@
 
 namespace limber::multibody {
 
-// Σ_c p_c(ω) K_c (nm x nm) for the angular velocity w_B [rad/s], body axes.
-Eigen::MatrixXd centrifugal_geometric_stiffness(const modal::ModalGeometricStiffness& g, const Eigen::Vector3d& w_B);
+// (Σ_c p_c(ω) K_c) η (nm) for the angular velocity w_B [rad/s, body axes] and modal
+// coordinates eta [kg^½ m].
+Eigen::VectorXd centrifugal_geometric_force(const modal::ModalGeometricStiffness& g, const Eigen::Vector3d& w_B,
+                                            const Eigen::VectorXd& eta);
 
 // The instantaneous accelerations and multipliers of M v̇ + Gᵀ λ = Q, G v̇ = γ at one state,
-// for M SPD and any G (redundant rows: the minimum-norm λ, core/minimum_norm.h, with the
-// redundancy analysis' threshold). With L Lᵀ = M and B = G L⁻ᵀ: y = Lᵀ v̇ is the point of
-// {B y = γ} nearest to L⁻¹ Q, and Bᵀ λ = L⁻¹ Q − y (Gauss's principle of least constraint).
+// for M SPD and any G. With L Lᵀ = M and B = G L⁻ᵀ: y = Lᵀ v̇ is the point of {B y = γ}
+// nearest to L⁻¹ Q (Gauss's principle of least constraint), y = L⁻¹Q − Bᵀλ with
+// B Bᵀ λ = B L⁻¹ Q − γ; redundant rows: the minimum-norm λ, singular values of B below the
+// redundancy analysis' threshold (redundancy.h) times the largest taken as zero.
 struct AccelerationEstimate {
   Eigen::VectorXd v_dot;   // nv
   Eigen::VectorXd lambda;  // rows of G
