@@ -122,7 +122,9 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   spec.initial_modal_coordinates = per_mode(entry.modal_coordinates, nm);
   spec.initial_modal_velocities = per_mode(entry.modal_velocities, nm);
   spec.stiffening = entry.stiffening;
-  add_geometric_stiffness(component, marker_nodes(mechanism, entry.name), spec);
+  // Node-force cases only where they are used.
+  const bool full = spec.stiffening == multibody::GeometricStiffening::kFull;
+  add_geometric_stiffness(component, full ? marker_nodes(mechanism, entry.name) : std::vector<int>{}, spec);
   builder.add_flexible_body(spec, entry.where);
 }
 
