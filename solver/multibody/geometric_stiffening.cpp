@@ -1,6 +1,7 @@
 #include "multibody/geometric_stiffening.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -62,9 +63,11 @@ Eigen::VectorXd centrifugal_geometric_force(const modal::ModalGeometricStiffness
   const double p[6] = {w_B.x() * w_B.x(), w_B.y() * w_B.y(), w_B.z() * w_B.z(),
                        w_B.x() * w_B.y(), w_B.y() * w_B.z(), w_B.z() * w_B.x()};
   Eigen::VectorXd f = Eigen::VectorXd::Zero(eta.size());
-  // Matrix-vector products only, skipping the products that vanish (a planar spin has one).
+  // Matrix-vector products only, skipping products below 1e-12 of |ω|² (a planar spin has one
+  // product; the others are round-off of the frame's rotation, far below any tolerance).
+  const double negligible = 1e-12 * w_B.squaredNorm();
   for (int c = 0; c < 6; ++c) {
-    if (p[c] != 0.0) f.noalias() += p[c] * (g.centrifugal[c] * eta);
+    if (std::abs(p[c]) > negligible) f.noalias() += p[c] * (g.centrifugal[c] * eta);
   }
   return f;
 }
