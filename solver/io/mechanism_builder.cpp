@@ -78,15 +78,11 @@ std::vector<int> marker_nodes(const MechanismCase& mechanism, const std::string&
   return nodes;
 }
 
-// The modal geometric stiffness of `component` for `modes` (none for a body without beams:
-// shells carry none, modal/geometric_stiffness.h). NumericalError when the static solve fails.
+// The modal geometric stiffness of `component` for `modes` (modal/geometric_stiffness.h).
+// NumericalError when the static solve fails.
 void add_geometric_stiffness(const FlexibleBodyCase& component, const std::vector<int>& load_nodes,
                              multibody::FlexibleBodySpec& spec) {
   if (spec.stiffening == multibody::GeometricStiffening::kOff) return;
-  if (component.model.beams.empty()) {
-    spec.stiffening = multibody::GeometricStiffening::kOff;
-    return;
-  }
   const modal::ModalGeometricStiffnessResult result = modal::compute_modal_geometric_stiffness(
       component.model, fe::assemble(component.model), spec.modes.shapes, load_nodes);
   if (result.status != modal::ModalStatus::kOk) {

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "fe/beam_geometric_stiffness.h"
+#include "fe/shell_geometric_stiffness.h"
 #include "modal/rigid_body_modes.h"
 #include "modal/static_modes.h"
 
@@ -71,6 +72,19 @@ Eigen::MatrixXd projected_geometric_stiffness(const fe::FeModel& model, const Ei
     const double axial_force = fe::beam_axial_force(p0, p1, property, u_e);
     k += phi_e.transpose() * fe::beam_geometric_stiffness(p0, p1, beam.orientation, property, axial_force) * phi_e;
   }
+  // Shells: membrane forces on the transverse deflection.
+  Eigen::MatrixXd phi_s(24, nm);
+  fe::Vector24d u_s;
+  for (const fe::ShellElement& shell : model.shells) {
+    std::array<Eigen::Vector3d, 4> corners;
+    for (int c = 0; c < 4; ++c) {
+      corners[c] = model.node_positions[static_cast<std::size_t>(shell.nodes[c])];
+      u_s.segment<6>(6 * c) = u.segment<6>(6 * shell.nodes[c]);
+      phi_s.middleRows(6 * c, 6) = shapes.middleRows(6 * shell.nodes[c], 6);
+    }
+    const fe::ShellProperty& property = model.shell_properties[static_cast<std::size_t>(shell.property)];
+    k += phi_s.transpose() * fe::shell_geometric_stiffness(corners, property, u_s) * phi_s;
+  }
   // Symmetric by construction; remove the rounding asymmetry of the products.
   return 0.5 * (k + k.transpose());
 }
@@ -83,7 +97,6 @@ ModalGeometricStiffnessResult compute_modal_geometric_stiffness(const fe::FeMode
   ModalGeometricStiffnessResult result;
   ModalGeometricStiffness& out = result.stiffness;
   out.load_nodes = load_nodes;
-  out.beam_count = static_cast<int>(model.beams.size());
   // Static stress states of the unit load cases (inertia relief for free parts).
   const Eigen::MatrixXd loads = geometric_stiffness_load_cases(model, matrices.mass, load_nodes);
   const StaticModes responses = compute_static_responses(matrices.stiffness, matrices.mass, rigid_body_modes(model),

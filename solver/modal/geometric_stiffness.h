@@ -15,8 +15,9 @@
 //   2. the static response u_k (modal/static_modes.h, compute_static_responses): clamped
 //      parts K_ff u = f_f; free or partly held parts with inertia relief (the load balanced by
 //      the inertia of the free rigid motion, Craig & Chang 1977), as for attachment modes;
-//   3. the axial force of every beam element from u_k and its geometric stiffness
-//      (fe/beam_geometric_stiffness.h), projected on the modes element by element.
+//   3. the axial force of every beam element and the membrane forces of every shell element
+//      from u_k, their geometric stiffness (fe/beam_geometric_stiffness.h,
+//      fe/shell_geometric_stiffness.h), projected on the modes element by element.
 // Load cases, all in body axes (the inertia loads are the d'Alembert forces −M a of the
 // frame's rigid acceleration field a, translational rows; nodal rotational inertia ignored):
 //   centrifugal c (6): a_p = S_c x_p for the products ω_x², ω_y², ω_z², ω_xω_y, ω_yω_z,
@@ -27,9 +28,8 @@
 //   node force (3 per load node): a unit force along e_k at the node's translational DOFs. Per N.
 // For a free-free component the two acceleration cases are rigid-body inertia fields that
 // inertia relief balances exactly: their matrices are zero (to round-off), as they should be.
-// Only beam elements carry geometric stiffness; shells contribute none (their membrane
-// stresses are not computed here), and nodal moments are not load cases (a beam's K_G here
-// depends on its axial force only).
+// Nodal moments are not load cases (a beam's K_G here depends on its axial force only, a
+// shell's on its membrane forces only).
 #pragma once
 
 #include <array>
@@ -52,7 +52,6 @@ struct ModalGeometricStiffness {
   std::array<Eigen::MatrixXd, 3> translational_acceleration;  // per m/s², body axes
   std::vector<int> load_nodes;                              // node indices
   std::vector<std::array<Eigen::MatrixXd, 3>> node_forces;  // per N, body axes, one per load node
-  int beam_count = 0;                                       // beams that contributed
 };
 
 struct ModalGeometricStiffnessResult {
@@ -66,13 +65,14 @@ struct ModalGeometricStiffnessResult {
 Eigen::MatrixXd geometric_stiffness_load_cases(const fe::FeModel& model, const fe::SparseMatrix& mass,
                                                const std::vector<int>& load_nodes);
 
-// Φᵀ K_G(N_e) Φ summed over the beam elements, N_e from the FE displacement `u` (n).
+// Φᵀ K_G Φ summed over the beam and shell elements, their axial and membrane forces from the
+// FE displacement `u` (n).
 Eigen::MatrixXd projected_geometric_stiffness(const fe::FeModel& model, const Eigen::MatrixXd& shapes,
                                               const Eigen::VectorXd& u);
 
 // All cases for the mode shapes `shapes` (n x nm, modal/mode_set.h) of `model`, whose
 // assembled K and M are `matrices`. Preconditions (DEMAND): shapes has n rows, load nodes in
-// range. Throws InputError naming the element when a beam is degenerate (as assemble does).
+// range. Throws InputError for a degenerate element, as fe::assemble does first.
 ModalGeometricStiffnessResult compute_modal_geometric_stiffness(const fe::FeModel& model,
                                                                 const fe::StructuralMatrices& matrices,
                                                                 const Eigen::MatrixXd& shapes,
