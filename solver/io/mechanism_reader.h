@@ -66,6 +66,7 @@ struct FlexibleBodyEntry {
   std::optional<multibody::DeflectionProbe> deflection_probe;  // node indices
   // geometric_stiffening: false | inertia_only | true (docs/geometric-stiffening.md)
   multibody::GeometricStiffening stiffening = multibody::GeometricStiffening::kInertia;
+  std::optional<multibody::StressOutput> stress;                // element numbers 0-based
 };
 
 using BodyEntry = std::variant<RigidBodyEntry, FlexibleBodyEntry>;

@@ -17,6 +17,7 @@
 
 #include "modal/geometric_stiffness.h"
 #include "modal/mode_set.h"
+#include "modal/modal_stress.h"
 
 namespace limber::multibody {
 
@@ -67,6 +68,13 @@ struct DeflectionProbe {
 enum class GeometricStiffening { kOff, kInertia, kFull };
 
 const char* to_string(GeometricStiffening stiffening);
+// Output only: stress recovery of the body's elements (modal/modal_stress.h; docs/stress-recovery.md).
+// The peak over the whole mesh is recorded at every sample; the history of `elements` at every
+// `every`-th sample (the first included).
+struct StressOutput {
+  std::vector<int> elements;  // element numbers, 0-based, beams then shells (modal_stress.h)
+  int every = 1;              // ≥ 1
+};
 
 struct FlexibleBody {
   Eigen::MatrixXd node_positions;  // 3 x nodes: undeformed FE nodes, body frame [m]
@@ -81,6 +89,8 @@ struct FlexibleBody {
   std::optional<DeflectionProbe> deflection_probe;
   GeometricStiffening stiffening = GeometricStiffening::kOff;
   modal::ModalGeometricStiffness geometric;  // nm x nm matrices unless kOff
+  std::optional<StressOutput> stress_output;
+  modal::ModalStress modal_stress;  // with stress_output: every element's resultants per mode
 
   int mode_count() const { return static_cast<int>(shapes.cols()); }
   int node_count() const { return static_cast<int>(node_positions.cols()); }
