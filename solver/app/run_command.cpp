@@ -63,6 +63,29 @@ void print_reduction(std::FILE* out, const io::CaseReduction& reduction) {
   fmt::print(out, "reduction: {}\n", line);
 }
 
+// "geometric stiffening: rod full (2 load nodes), ..." for the bodies that have it
+// (docs/geometric-stiffening.md), with the caveat on the energy balance of full stiffening.
+void print_stiffening(std::FILE* out, const multibody::Model& model) {
+  std::string line;
+  bool full = false;
+  for (const multibody::Body& body : model.bodies) {
+    if (body.kind != multibody::BodyKind::kFlexible || body.flexible->stiffening == multibody::GeometricStiffening::kOff) {
+      continue;
+    }
+    full = full || body.flexible->stiffening == multibody::GeometricStiffening::kFull;
+    line += fmt::format("{}{} {}", line.empty() ? "" : ", ", body.name, multibody::to_string(body.flexible->stiffening));
+    if (body.flexible->stiffening == multibody::GeometricStiffening::kFull) {
+      line += fmt::format(" ({} load nodes)", body.flexible->geometric.load_nodes.size());
+    }
+  }
+  if (line.empty()) return;
+  fmt::print(out, "geometric stiffening: {}\n", line);
+  if (full) {
+    fmt::print(out, "  (first order: the energy balance leaves out the geometric-stiffness work, which a smaller step "
+                    "does not remove)\n");
+  }
+}
+
 void print_start(std::FILE* out, const multibody::Model& model, const run::PreparedStart& start) {
   fmt::print(out,
              "assembly: closed in {} Newton iterations, max residual {:.3g}; velocity "
@@ -206,6 +229,7 @@ int run_case(const RunOptions& options) {
   fmt::print(text, "limber run: {} ({})\n", input.title, input.file);
   print_model(text, model);
   print_reduction(text, reduction);
+  print_stiffening(text, model);
   // Notes from reading bulk-data decks (cards ignored, approximations).
   for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
     for (const std::string& notice : body.notices) {

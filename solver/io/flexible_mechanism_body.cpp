@@ -103,7 +103,8 @@ multibody::StressOutput read_stress_output(const YamlValue& stress, const Flexib
 FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
                                                const std::vector<FlexibleBodyCase>& components) {
   entry.allow_only({"flexible", "position", "orientation", "velocity", "angular_velocity",
-                    "damping", "modal_coordinates", "modal_velocities", "deflection", "stress"});
+                    "damping", "modal_coordinates", "modal_velocities", "deflection", "stress",
+                    "geometric_stiffening"});
   const FlexibleBodyCase& component = find_component(entry.at("flexible"), components);
   FlexibleBodyEntry body;
   body.name = name;
@@ -123,6 +124,13 @@ FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const Ya
   if (const auto eta = entry.find("modal_coordinates")) body.modal_coordinates = read_per_mode(*eta);
   if (const auto eta_dot = entry.find("modal_velocities")) {
     body.modal_velocities = read_per_mode(*eta_dot);
+  }
+  // Geometric stiffening: false, inertia_only (default) or true.
+  if (const auto stiffening = entry.find("geometric_stiffening")) {
+    const std::string choice = stiffening->as_choice({"false", "inertia_only", "true"});
+    body.stiffening = choice == "false"  ? multibody::GeometricStiffening::kOff
+                      : choice == "true" ? multibody::GeometricStiffening::kFull
+                                         : multibody::GeometricStiffening::kInertia;
   }
   // Output: a node's deflection from a chord.
   if (const auto deflection = entry.find("deflection")) {

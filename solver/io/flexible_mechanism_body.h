@@ -13,6 +13,8 @@
 //                                  # mechanism_builder.h, once the modes are known)
 //     deflection: {node: 51, chord: [R2, R3]}   # results: a node's elastic displacement
 //                                  # relative to the chord between two nodes (body axes)
+//     geometric_stiffening: inertia_only   # false | inertia_only (default) | true
+//                                  # (docs/geometric-stiffening.md)
 //     stress: {elements: all, every: 1}   # results: recovered stresses (docs/stress-recovery.md):
 //                                  # the mesh's peak at every sample, the history of `elements`
 //                                  # (all, or a list of element numbers from 1: beams, then

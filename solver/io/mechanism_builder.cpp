@@ -9,6 +9,8 @@
 #include <variant>
 
 #include "core/error.h"
+#include "fe/assembly.h"
+#include "modal/geometric_stiffness.h"
 #include "modal/modal_stress.h"
 #include "multibody/model_builder.h"
 
@@ -65,9 +67,39 @@ const modal::ModeSet& mode_set(const CaseReduction& reduction, const FlexibleBod
   return result.mode_set;
 }
 
+// Nodes of body `name` that carry markers (its joints' and the named ones): the load nodes of
+// the geometric stiffness's node-force cases, ascending.
+std::vector<int> marker_nodes(const MechanismCase& mechanism, const std::string& name) {
+  std::vector<int> nodes;
+  const auto add = [&](const MarkerEntry& m) {
+    if (m.body == name && m.frame == MarkerEntry::Frame::kNode) nodes.push_back(m.node);
+  };
+  for (const MarkerEntry& m : mechanism.markers) add(m);
+  for (const JointEntry& joint : mechanism.joints) {
+    for (const MarkerEntry& m : joint.markers) add(m);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+// The modal geometric stiffness of `component` for `modes` (modal/geometric_stiffness.h).
+// NumericalError when the static solve fails.
+void add_geometric_stiffness(const FlexibleBodyCase& component, const std::vector<int>& load_nodes,
+                             multibody::FlexibleBodySpec& spec) {
+  if (spec.stiffening == multibody::GeometricStiffening::kOff) return;
+  const modal::ModalGeometricStiffnessResult result = modal::compute_modal_geometric_stiffness(
+      component.model, fe::assemble(component.model), spec.modes.shapes, load_nodes);
+  if (result.status != modal::ModalStatus::kOk) {
+    throw NumericalError("geometric stiffness of flexible body '" + component.name + "' (" +
+                         component.where.to_string() + "): " + result.message);
+  }
+  spec.geometric = result.stiffness;
+}
+
 // A flexible body with its modes, or as an outline when `reduction` is null.
 void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<FlexibleBodyCase>& components,
-                       const CaseReduction* reduction, ModelBuilder& builder) {
+                       const MechanismCase& mechanism, const CaseReduction* reduction, ModelBuilder& builder) {
   const FlexibleBodyCase& component = component_named(components, entry.component);
   multibody::FlexibleBodySpec spec;
   spec.name = entry.name;
@@ -91,6 +123,10 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   }
   spec.initial_modal_coordinates = per_mode(entry.modal_coordinates, nm);
   spec.initial_modal_velocities = per_mode(entry.modal_velocities, nm);
+  spec.stiffening = entry.stiffening;
+  // Node-force cases only where they are used.
+  const bool full = spec.stiffening == multibody::GeometricStiffening::kFull;
+  add_geometric_stiffness(component, full ? marker_nodes(mechanism, entry.name) : std::vector<int>{}, spec);
   // Modal stresses of every element, once per mode set.
   if (spec.stress) spec.modal_stress = modal::modal_stress(component.model, spec.modes.shapes);
   builder.add_flexible_body(spec, entry.where);
@@ -130,7 +166,7 @@ void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBod
     if (const auto* rigid = std::get_if<RigidBodyEntry>(&body)) {
       builder.add_rigid_body(rigid->spec, rigid->where);
     } else {
-      add_flexible_body(std::get<FlexibleBodyEntry>(body), components, reduction, builder);
+      add_flexible_body(std::get<FlexibleBodyEntry>(body), components, mechanism, reduction, builder);
     }
   }
   for (const MarkerEntry& marker : mechanism.markers) add_marker(marker, builder);

@@ -64,6 +64,8 @@ struct FlexibleBodyEntry {
   PerModeValues modal_coordinates;  // η at t = 0 [kg^½ m]
   PerModeValues modal_velocities;   // η̇ at t = 0 [kg^½ m/s]
   std::optional<multibody::DeflectionProbe> deflection_probe;  // node indices
+  // geometric_stiffening: false | inertia_only | true (docs/geometric-stiffening.md)
+  multibody::GeometricStiffening stiffening = multibody::GeometricStiffening::kInertia;
   std::optional<multibody::StressOutput> stress;                // element numbers 0-based
 };
 

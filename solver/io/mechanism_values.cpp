@@ -108,7 +108,9 @@ multibody::TimeFunction read_time_function(const YamlValue& value) {
     const double duration = value.at("duration").as_positive();
     multibody::RampShape shape = multibody::RampShape::kQuintic;
     if (const auto name = value.find("shape")) {
-      if (name->as_choice({"quintic", "cubic"}) == "cubic") shape = multibody::RampShape::kCubic;
+      const std::string choice = name->as_choice({"quintic", "cubic", "cycloidal"});
+      if (choice == "cubic") shape = multibody::RampShape::kCubic;
+      if (choice == "cycloidal") shape = multibody::RampShape::kCycloidal;
     }
     return TimeFunction::ramp(initial, speed, duration, shape);
   }

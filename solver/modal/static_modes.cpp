@@ -101,7 +101,6 @@ StaticModes compute_attachment_modes(const SparseMatrix& stiffness, const Sparse
                                      const std::vector<int>& free_dofs,
                                      const std::vector<int>& chosen_dofs) {
   const int n = static_cast<int>(stiffness.rows());
-  StaticModes result;
   const std::vector<int> a = sorted(chosen_dofs);
   LIMBER_DEMAND(set_difference(free_dofs, a).size() + a.size() == free_dofs.size());
 
@@ -110,6 +109,15 @@ StaticModes compute_attachment_modes(const SparseMatrix& stiffness, const Sparse
   for (std::size_t j = 0; j < chosen_dofs.size(); ++j) {
     loads(chosen_dofs[j], static_cast<Eigen::Index>(j)) = 1.0;
   }
+  return compute_static_responses(stiffness, mass, psi, free_dofs, loads, "attachment modes");
+}
+
+StaticModes compute_static_responses(const SparseMatrix& stiffness, const SparseMatrix& mass,
+                                     const Eigen::MatrixXd& psi, const std::vector<int>& free_dofs,
+                                     Eigen::MatrixXd loads, const char* what) {
+  const int n = static_cast<int>(stiffness.rows());
+  LIMBER_DEMAND(loads.rows() == n);
+  StaticModes result;
 
   // Inertia relief: balance each load by the rigid-body inertia forces, P f.
   const Eigen::MatrixXd psi_n = unrestrained_rigid_motion(psi, fixed_dofs_of(n, free_dofs));
@@ -122,8 +130,7 @@ StaticModes compute_attachment_modes(const SparseMatrix& stiffness, const Sparse
   // Solve with the temporary determinate support (none for a restrained component).
   const std::vector<int> unknowns = set_difference(free_dofs, determinate_support(psi_n, free_dofs));
   Eigen::MatrixXd x;
-  if (!solve_restricted(stiffness, unknowns, gather_rows(loads, unknowns), x, result.message,
-                        "attachment modes")) {
+  if (!solve_restricted(stiffness, unknowns, gather_rows(loads, unknowns), x, result.message, what)) {
     result.status = ModalStatus::kSingular;
     return result;
   }

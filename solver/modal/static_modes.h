@@ -58,4 +58,14 @@ StaticModes compute_attachment_modes(const Eigen::SparseMatrix<double>& stiffnes
                                      const std::vector<int>& free_dofs,
                                      const std::vector<int>& chosen_dofs);
 
+// Static responses u to arbitrary loads f (n x k columns, full DOF vectors; entries at fixed
+// DOFs are ignored): the attachment-mode solve above with f in place of unit loads —
+// K_ff u = f_f when restrained, K_ff u = (P f)_f with inertia relief and u M-orthogonal to
+// Psi_N when not. `what` names the solve in the kSingular message.
+StaticModes compute_static_responses(const Eigen::SparseMatrix<double>& stiffness,
+                                     const Eigen::SparseMatrix<double>& mass,
+                                     const Eigen::MatrixXd& psi,
+                                     const std::vector<int>& free_dofs, Eigen::MatrixXd loads,
+                                     const char* what);
+
 }  // namespace limber::modal

@@ -3,6 +3,7 @@
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/flexible_dynamics.h"
+#include "multibody/geometric_stiffening.h"
 #include "multibody/hinge_limit.h"
 
 namespace limber::multibody {
@@ -98,13 +99,16 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
     }
   }
   // Force elements through marker kinematics.
-  if (model.forces.empty()) return;
-  update_marker_kinematics(model, state, Stage::kVelocity, ws);
-  ForceVisitor visitor{state, ws, powers};
-  for (size_t k = 0; k < model.forces.size(); ++k) {
-    visitor.engaged = is_engaged(state, k);
-    std::visit(visitor, model.forces[k]);
+  if (!model.forces.empty()) {
+    update_marker_kinematics(model, state, Stage::kVelocity, ws);
+    ForceVisitor visitor{state, ws, powers};
+    for (size_t k = 0; k < model.forces.size(); ++k) {
+      visitor.engaged = is_engaged(state, k);
+      std::visit(visitor, model.forces[k]);
+    }
   }
+  // Geometric stiffening from joint loads and frame accelerations (bodies asking for it).
+  add_load_geometric_stiffness(model, state, ws);
 }
 
 EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {

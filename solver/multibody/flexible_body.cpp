@@ -6,6 +6,15 @@
 
 namespace limber::multibody {
 
+const char* to_string(GeometricStiffening stiffening) {
+  switch (stiffening) {
+    case GeometricStiffening::kOff: return "off";
+    case GeometricStiffening::kInertia: return "inertia_only";
+    case GeometricStiffening::kFull: return "full";
+  }
+  return "?";
+}
+
 ModalDamping ModalDamping::ratio(double zeta) {
   ModalDamping d;
   d.ratios = Eigen::VectorXd::Constant(1, zeta);

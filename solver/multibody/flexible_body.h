@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "modal/geometric_stiffness.h"
 #include "modal/mode_set.h"
 #include "modal/modal_stress.h"
 
@@ -54,6 +55,19 @@ struct DeflectionProbe {
   int node = 0, chord_start = 0, chord_end = 0;
 };
 
+// Geometric stiffening (softening) of the modes (docs/geometric-stiffening.md): the modal
+// geometric-stiffness matrices of modal/geometric_stiffness.h scaled by the current loads,
+// Q_η −= (Σ_k λ_k K_G,k) η.
+//   kOff:      none (linear modes: a spinning beam diverges past its first bending frequency);
+//   kInertia:  the centrifugal cases, λ = ω_iω_j of the frame's angular velocity (body axes):
+//              an explicit function of the state, no extra solve;
+//   kFull:     kInertia, plus the frame's angular and translational acceleration (gravity
+//              included) and the joint forces at the body's load nodes, from the
+//              instantaneous accelerations and multipliers at (t, q, v)
+//              (geometric_stiffening.h).
+enum class GeometricStiffening { kOff, kInertia, kFull };
+
+const char* to_string(GeometricStiffening stiffening);
 // Output only: stress recovery of the body's elements (modal/modal_stress.h; docs/stress-recovery.md).
 // The peak over the whole mesh is recorded at every sample; the history of `elements` at every
 // `every`-th sample (the first included).
@@ -73,6 +87,8 @@ struct FlexibleBody {
   Eigen::VectorXd initial_modal_velocities;   // nm [kg^½ m/s]
   FlexibleMesh mesh;
   std::optional<DeflectionProbe> deflection_probe;
+  GeometricStiffening stiffening = GeometricStiffening::kOff;
+  modal::ModalGeometricStiffness geometric;  // nm x nm matrices unless kOff
   std::optional<StressOutput> stress_output;
   modal::ModalStress modal_stress;  // with stress_output: every element's resultants per mode
 

@@ -43,6 +43,23 @@ void check_mode_set_sizes(const std::string& name, const modal::ModeSet& set, in
   if (!(inv.mass > 0.0)) fail("mass", "> 0 kg", fmt::format("{}", inv.mass));
 }
 
+// Throws unless the geometric-stiffness matrices are nm x nm, one set per load node in range.
+void check_geometric_stiffness(const std::string& name, const modal::ModalGeometricStiffness& g, Eigen::Index nm,
+                               int nodes, const SourceLocation& where) {
+  const auto square = [&](const Eigen::MatrixXd& k) { return k.rows() == nm && k.cols() == nm; };
+  bool ok = g.node_forces.size() == g.load_nodes.size();
+  for (const Eigen::MatrixXd& k : g.centrifugal) ok = ok && square(k);
+  for (int i = 0; i < 3; ++i) ok = ok && square(g.angular_acceleration[i]) && square(g.translational_acceleration[i]);
+  for (const auto& node : g.node_forces) {
+    for (const Eigen::MatrixXd& k : node) ok = ok && square(k);
+  }
+  for (int node : g.load_nodes) ok = ok && node >= 0 && node < nodes;
+  if (!ok) {
+    throw InputError(fmt::format("flexible body \"{}\" geometric stiffness: expected {} x {} matrices per load case "
+                                 "and load nodes within the {} nodes, got other sizes", name, nm, nm, nodes), where);
+  }
+}
+
 // Throws unless the damping values are ≥ 0 and there are 1 or nm ratios.
 void check_damping(const std::string& name, const ModalDamping& damping, Eigen::Index nm, const SourceLocation& where) {
   if (damping.kind == ModalDamping::Kind::kRayleigh) {
@@ -139,11 +156,14 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
   check_mode_set_sizes(spec.name, spec.modes, nodes, where);
   const Eigen::Index nm = spec.modes.shapes.cols();
   check_damping(spec.name, spec.damping, nm, where);
+  if (spec.stiffening != GeometricStiffening::kOff) check_geometric_stiffness(spec.name, spec.geometric, nm, nodes, where);
   // The body's constant data, shared by every copy of the model.
   flexible->shapes = spec.modes.shapes;
   flexible->stiffness = spec.modes.modal_stiffness;
   flexible->damping = modal_damping_coefficients(spec.damping, flexible->stiffness);
   flexible->invariants = spec.modes.invariants;
+  flexible->stiffening = spec.stiffening;
+  if (spec.stiffening != GeometricStiffening::kOff) flexible->geometric = spec.geometric;
   if (spec.stress) {
     // The modal stresses must be those of this mesh and mode set.
     const modal::ModalStress& stress = spec.modal_stress;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "multibody/geometric_stiffening.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -109,6 +110,11 @@ void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, con
   Q.segment(o + 6, nm) += inv.translation_coupling.transpose() * g_B;
   // Elastic and damping forces of the modes.
   Q.segment(o + 6, nm) -= (f.stiffness.array() * eta.array() + f.damping.array() * eta_dot.array()).matrix();
+  // Centrifugal geometric stiffening (geometric_stiffening.h); load cases needing
+  // accelerations or joint forces are added by generalized_forces.
+  if (f.stiffening != GeometricStiffening::kOff) {
+    Q.segment(o + 6, nm) -= centrifugal_geometric_force(f.geometric, w, eta);
+  }
 }
 
 double flexible_kinetic_energy(const Body& body, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {

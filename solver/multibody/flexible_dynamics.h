@@ -15,7 +15,8 @@
 //   Q_ω = −(J̇ ω + Ṡ η̇ + ω × (J ω + S η̇))
 //   Q_η,k = ½ ωᵀ (∂J/∂η_k) ω + ω·(B_k η̇) − (Ṡᵀ ω)_k
 // with J̇ = Σ η̇_k ∂J/∂η_k, Ṡ = Σ η̇_k B_k; gravity m g, d × Aᵀg, S_tᵀ Aᵀ g; elastic −ω_k² η_k
-// and damping −c_k η̇_k. No geometric stiffening terms.
+// and damping −c_k η̇_k; with geometric stiffening on (flexible_body.h), the centrifugal
+// geometric stiffness −Σ ω_iω_j K_ij η (geometric_stiffening.h).
 #pragma once
 
 #include <Eigen/Dense>

@@ -1,5 +1,8 @@
 #include "multibody/time_function.h"
 
+#include <cmath>
+#include <numbers>
+
 #include <algorithm>
 #include <cmath>
 
@@ -81,6 +84,11 @@ FunctionValue ramp_shape(double tau, RampShape shape) {
   const double t2 = tau * tau, t3 = t2 * tau;
   if (shape == RampShape::kCubic) {
     return {t3 - 0.5 * t3 * tau, 3 * t2 - 2 * t3, 6 * tau - 6 * t2};
+  }
+  if (shape == RampShape::kCycloidal) {
+    const double a = 2.0 * std::numbers::pi * tau;
+    return {0.5 * t2 + (std::cos(a) - 1.0) / (4.0 * std::numbers::pi * std::numbers::pi),
+            tau - std::sin(a) / (2.0 * std::numbers::pi), 1.0 - std::cos(a)};
   }
   return {2.5 * t3 * tau - 3 * t3 * t2 + t3 * t3, 10 * t3 - 15 * t3 * tau + 6 * t3 * t2,
           30 * t2 - 60 * t3 + 30 * t3 * tau};

@@ -4,7 +4,8 @@
 //   constant speed:  f = f0 + ω t
 //   ramp:            spin-up from rest to speed ω over [0, T]: ḟ = ω s(t/T) with
 //                    s(τ) = 3τ² − 2τ³ (cubic) or 10τ³ − 15τ⁴ + 6τ⁵ (quintic, also
-//                    zero acceleration at both ends), then ḟ = ω; f(0) = f0.
+//                    zero acceleration at both ends) or τ − sin(2πτ)/2π (cycloidal: the
+//                    spin-up of Kane, Ryan & Banerjee 1987), then ḟ = ω; f(0) = f0.
 //   table:           points (x_k, y_k), linear or natural cubic spline interpolation,
 //                    held constant (zero slope) outside [x_0, x_n]. The derivatives are
 //                    right-continuous: at x_0 (and at a linear table's interior points) those
@@ -15,7 +16,7 @@
 
 namespace limber::multibody {
 
-enum class RampShape { kCubic, kQuintic };
+enum class RampShape { kCubic, kQuintic, kCycloidal };
 enum class TableInterpolation { kLinear, kCubic };
 
 struct FunctionValue {

@@ -131,9 +131,40 @@ TEST(FlexibleMechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // ... each ≥ 0, the bad one named at its place.
   text = edited("[0.01, 0.02, 0.03]", "[0.01, -0.02, 0.03]");
   EXPECT_TRUE(fails_at(text, location_of(text, "-0.02"), "expected a non-negative number for 'damping[1]'"));
+  // Geometric stiffening: one of three words.
+  text = edited("    damping: [", "    geometric_stiffening: yes please\n    damping: [");
+  EXPECT_TRUE(fails_at(text, location_of(text, "yes please"), "for 'geometric_stiffening', got 'yes please'"));
   // A rigid-body key on a flexible body.
   text = edited("    damping: [", "    mass: 2\n    damping: [");
   EXPECT_TRUE(fails_at(text, location_of(text, "mass: 2"), "unknown key 'mass'"));
+}
+
+TEST(FlexibleMechanismReader, GeometricStiffeningDefaultsToInertiaAndFullUsesTheJointNodes) {
+  // Default: the centrifugal cases, computed from the beam (nonzero for a beam: its tension
+  // under ω_y² is the case index 1).
+  {
+    const Case input = read_case_text(kCase, "test.yaml");
+    const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+    const multibody::FlexibleBody& arm = *built.model.bodies[built.model.find_body("arm")].flexible;
+    EXPECT_EQ(arm.stiffening, multibody::GeometricStiffening::kInertia);
+    EXPECT_GT(arm.geometric.centrifugal[1].norm(), 0.0);
+  }
+  // true: the load nodes are the nodes with markers, the hinge's (index 0) and 'end' (10).
+  {
+    const Case input = read_case_text(edited("    damping: [", "    geometric_stiffening: true\n    damping: ["), "test.yaml");
+    const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+    const multibody::FlexibleBody& arm = *built.model.bodies[built.model.find_body("arm")].flexible;
+    EXPECT_EQ(arm.stiffening, multibody::GeometricStiffening::kFull);
+    EXPECT_EQ(arm.geometric.load_nodes, (std::vector<int>{0, 10}));
+  }
+  // false: nothing computed.
+  {
+    const Case input = read_case_text(edited("    damping: [", "    geometric_stiffening: false\n    damping: ["), "test.yaml");
+    const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+    const multibody::FlexibleBody& arm = *built.model.bodies[built.model.find_body("arm")].flexible;
+    EXPECT_EQ(arm.stiffening, multibody::GeometricStiffening::kOff);
+    EXPECT_EQ(arm.geometric.centrifugal[1].size(), 0);
+  }
 }
 
 TEST(FlexibleMechanismReader, StressOutputLandsInTheModelAndBadInputIsNamed) {

@@ -1,0 +1,113 @@
+#include "multibody/geometric_stiffening.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
+#include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+#include "multibody/redundancy.h"
+#include "multibody/rotation.h"
+
+namespace limber::multibody {
+
+namespace {
+
+bool has_full_stiffening(const Body& b) {
+  return b.kind == BodyKind::kFlexible && b.flexible->stiffening == GeometricStiffening::kFull;
+}
+
+// Force on `body` at a frame on it equivalent to the generalized force Q (its columns), ground axes.
+Eigen::Vector3d frame_force(const Body& body, const FrameKinematics& frame, const Eigen::VectorXd& Q) {
+  Eigen::MatrixXd J(body.nv, 6);
+  J.leftCols<3>() = frame.J_p.middleCols(body.v_offset, body.nv).transpose();
+  J.rightCols<3>() = frame.J_w.middleCols(body.v_offset, body.nv).transpose();
+  return J.colPivHouseholderQr().solve(Q.segment(body.v_offset, body.nv)).head<3>();
+}
+
+// K_geo of one body less its centrifugal part, from the estimate.
+Eigen::MatrixXd load_stiffness(const Model& model, size_t b, const State& state, const Workspace& ws,
+                               const AccelerationEstimate& estimate) {
+  const Body& body = model.bodies[b];
+  const modal::ModalGeometricStiffness& g = body.flexible->geometric;
+  const int o = body.v_offset;
+  const Eigen::Matrix3d A = rotation_matrix(state.q.segment<4>(body.q_offset + 3));
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(body.flexible->mode_count(), body.flexible->mode_count());
+  // The frame's angular and translational acceleration, gravity as an acceleration −g.
+  const Eigen::Vector3d alpha_B = estimate.v_dot.segment<3>(o + 3);
+  const Eigen::Vector3d a_B = A.transpose() * (estimate.v_dot.segment<3>(o) - model.gravity_W);
+  for (int k = 0; k < 3; ++k) K += alpha_B(k) * g.angular_acceleration[k] + a_B(k) * g.translational_acceleration[k];
+  // Joint forces at the load nodes, body axes.
+  for (const Joint& joint : model.joints) {
+    for (const int m : {joint.marker_i, joint.marker_j}) {
+      const Marker& marker = model.markers[m];
+      if (marker.body != static_cast<int>(b) || marker.node < 0) continue;
+      const auto found = std::find(g.load_nodes.begin(), g.load_nodes.end(), marker.node);
+      if (found == g.load_nodes.end()) continue;
+      const Eigen::VectorXd Q_joint = -ws.G.middleRows(joint.first_row, joint.rows).transpose() *
+                                      estimate.lambda.segment(joint.first_row, joint.rows);
+      const Eigen::Vector3d F_B = A.transpose() * frame_force(body, ws.markers[m], Q_joint);
+      const auto& cases = g.node_forces[static_cast<size_t>(found - g.load_nodes.begin())];
+      for (int k = 0; k < 3; ++k) K += F_B(k) * cases[k];
+    }
+  }
+  return K;
+}
+
+}  // namespace
+
+Eigen::VectorXd centrifugal_geometric_force(const modal::ModalGeometricStiffness& g, const Eigen::Vector3d& w_B,
+                                            const Eigen::VectorXd& eta) {
+  const double p[6] = {w_B.x() * w_B.x(), w_B.y() * w_B.y(), w_B.z() * w_B.z(),
+                       w_B.x() * w_B.y(), w_B.y() * w_B.z(), w_B.z() * w_B.x()};
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(eta.size());
+  // Matrix-vector products only, skipping products below 1e-12 of |ω|² (a planar spin has one
+  // product; the others are round-off of the frame's rotation, far below any tolerance).
+  const double negligible = 1e-12 * w_B.squaredNorm();
+  for (int c = 0; c < 6; ++c) {
+    if (std::abs(p[c]) > negligible) f.noalias() += p[c] * (g.centrifugal[c] * eta);
+  }
+  return f;
+}
+
+AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eigen::MatrixXd& G,
+                                            const Eigen::VectorXd& Q, const Eigen::VectorXd& gamma) {
+  const Eigen::LLT<Eigen::MatrixXd> llt(M);
+  const Eigen::VectorXd y0 = llt.matrixL().solve(Q);
+  AccelerationEstimate out;
+  out.lambda = Eigen::VectorXd::Zero(G.rows());
+  if (G.rows() > 0) {
+    // Whitened rows B; B Bᵀ λ = B y0 − γ, its minimum-norm solution from one eigen-decomposition
+    // (σ(B)² are its eigenvalues: the relative cut on σ is squared).
+    const Eigen::MatrixXd B = llt.matrixL().solve(G.transpose()).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B * B.transpose());
+    const Eigen::VectorXd& mu = eig.eigenvalues();
+    const double cut = kRedundancyThreshold * kRedundancyThreshold * mu.cwiseAbs().maxCoeff();
+    Eigen::VectorXd c = eig.eigenvectors().transpose() * (B * y0 - gamma);
+    for (Eigen::Index i = 0; i < c.size(); ++i) c(i) = mu(i) > cut ? c(i) / mu(i) : 0.0;
+    out.lambda = eig.eigenvectors() * c;
+    out.v_dot = llt.matrixU().solve(y0 - B.transpose() * out.lambda);
+    return out;
+  }
+  out.v_dot = llt.matrixU().solve(y0);
+  return out;
+}
+
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws) {
+  if (std::none_of(model.bodies.begin(), model.bodies.end(), has_full_stiffening)) return;
+  // Accelerations and multipliers at this state, from the forces so far.
+  mass_matrix(model, state, ws);
+  evaluate_constraints(model, state, Stage::kVelocity, ws);
+  const AccelerationEstimate estimate = estimate_accelerations(ws.M, ws.G, ws.Q, ws.gamma);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (!has_full_stiffening(body)) continue;
+    const int nm = body.flexible->mode_count();
+    const Eigen::VectorXd eta = state.q.segment(body.q_offset + 7, nm);
+    ws.Q.segment(body.v_offset + 6, nm) -= load_stiffness(model, b, state, ws, estimate) * eta;
+  }
+}
+
+}  // namespace limber::multibody

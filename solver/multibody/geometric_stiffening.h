@@ -1,0 +1,47 @@
+// Run-time geometric stiffening of flexible bodies (docs/geometric-stiffening.md): the
+// modal geometric-stiffness matrices of modal/geometric_stiffness.h, precomputed per unit
+// load case, scaled by the current loads (the SID-file approach of Wallrapp, Mech. Struct.
+// Mach. 22(3), 1994), added to the modal equations as
+//   Q_η −= K_geo η,   K_geo = Σ_c p_c(ω) K_c + Σ_k α_k K_α,k + Σ_k a_k K_a,k + Σ_nodes Σ_k F_k K_F,k
+// with p_c the products ω_x², ω_y², ω_z², ω_xω_y, ω_yω_z, ω_zω_x of the frame's angular
+// velocity, α its angular acceleration, a = Aᵀ(r̈ − g) its translational acceleration less
+// gravity, and F the joint forces on the body at its load nodes, all in body axes.
+// Only the modal equations get the term: the frame equations lack the matching second-order
+// terms, so energy is conserved to first order in the loads only (the SID convention).
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "modal/geometric_stiffness.h"
+#include "multibody/model.h"
+#include "multibody/state.h"
+
+namespace limber::multibody {
+
+// (Σ_c p_c(ω) K_c) η (nm) for the angular velocity w_B [rad/s, body axes] and modal
+// coordinates eta [kg^½ m].
+Eigen::VectorXd centrifugal_geometric_force(const modal::ModalGeometricStiffness& g, const Eigen::Vector3d& w_B,
+                                            const Eigen::VectorXd& eta);
+
+// The instantaneous accelerations and multipliers of M v̇ + Gᵀ λ = Q, G v̇ = γ at one state,
+// for M SPD and any G. With L Lᵀ = M and B = G L⁻ᵀ: y = Lᵀ v̇ is the point of {B y = γ}
+// nearest to L⁻¹ Q (Gauss's principle of least constraint), y = L⁻¹Q − Bᵀλ with
+// B Bᵀ λ = B L⁻¹ Q − γ; redundant rows: the minimum-norm λ, singular values of B below the
+// redundancy analysis' threshold (redundancy.h) times the largest taken as zero.
+struct AccelerationEstimate {
+  Eigen::VectorXd v_dot;   // nv
+  Eigen::VectorXd lambda;  // rows of G
+};
+AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eigen::MatrixXd& G,
+                                            const Eigen::VectorXd& Q, const Eigen::VectorXd& gamma);
+
+// For every flexible body with GeometricStiffening::kFull, adds −(K_geo − centrifugal part) η
+// to ws.Q (the centrifugal part is added with the body's other forces, flexible_dynamics.h):
+// the loads come from estimate_accelerations at `state` with ws.Q as it stands (first order:
+// the load-dependent terms themselves are not in the estimate). Joint forces count at the
+// load nodes only (markers on nodes listed in geometric.load_nodes); driver efforts, force
+// elements and nodal moments are not load cases. Updates ws.M, ws.G, ws.g, ws.g_t, ws.gamma
+// and ws.markers (velocity stage). A no-op (no solve) when no body asks for kFull.
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws);
+
+}  // namespace limber::multibody
