@@ -99,8 +99,9 @@ void print_table(std::FILE* out, const std::vector<sweep::SweepRow>& rows, std::
     std::string note = chosen && *chosen == k ? "chosen" : "";
     if (r.resumed) note += note.empty() ? "resumed" : ", resumed";
     if (!r.finished() && !r.message.empty()) note += (note.empty() ? "" : "; ") + r.message;
-    fmt::print(out, "  {:<28} {:<13} {:>8.3f} {:>7} {:>5} {:>7} {:>6} {:>7.1f} {:>10} {:>10}  {}\n", r.point.name(),
-               r.status, r.wall_s, r.steps, r.rejected_steps, r.newton_iterations, r.jacobian_evaluations,
+    const std::string wall = std::isfinite(r.wall_s) ? fmt::format("{:.3f}", r.wall_s) : "-";
+    fmt::print(out, "  {:<28} {:<13} {:>8} {:>7} {:>5} {:>7} {:>6} {:>7.1f} {:>10} {:>10}  {}\n", r.point.name(),
+               r.status, wall, r.steps, r.rejected_steps, r.newton_iterations, r.jacobian_evaluations,
                r.peak_rss_mib, percent(r.error_rms), percent(r.error_peak), note);
   }
 }
@@ -142,7 +143,8 @@ int sweep_case(const SweepOptions& options) {
   std::string reference_label;
   if (options.reference == "tight") {
     const sweep::SweepPoint point = sweep::tight_reference(points, defaults, options.atol.value_or(input.mechanism->run.integrator.atol));
-    const std::filesystem::path directory = root / "reference";
+    // One folder per reference setting: a changed grid never reuses another setting's reference.
+    const std::filesystem::path directory = root / "reference" / point.name();
     reference_file = directory / results::kResultsFileName;
     reference_label = fmt::format("tight run {} ({})", point.name(), run_command_line(options, point));
     int ok = 1;
@@ -321,7 +323,7 @@ Command add_sweep_command(CLI::App& app) {
       "  limber sweep case.yaml --over integrator=galpha step=1e-3,5e-4,2.5e-4 modes=3,5 --target 0.01\n"
       "Reference 'tight': the grid's most modes with generalized-alpha at 1/8 of its smallest step\n"
       "(IDA at 1/100 of its smallest rtol when the grid has no generalized-alpha point), run once\n"
-      "into DIR/reference and reused on resume.\n"
+      "into DIR/reference/<point> and reused on resume.\n"
       "Exit codes: 0 done (failed points are rows), 1 bad input, 2 the reference run failed,\n"
       "3 internal error, 4 interrupted by SIGINT or SIGTERM (finished points kept; rerun resumes).");
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();

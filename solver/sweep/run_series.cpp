@@ -134,9 +134,10 @@ std::vector<std::string> default_quantities(const RunSeries& reference) {
     double& most = largest[kind_of(reference.names[q])];
     most = std::max(most, peak);
   }
-  // Round-off floor of the reactions: 1e-9 of the largest reaction component (forces in N and
-  // torques in N m compared directly: far below any torque of a mechanism of mm to m size).
-  const double floor = 1e-9 * std::max(largest["force"], largest["torque"]);
+  // Round-off floor of the reactions: 1e-6 of the largest reaction component (forces in N and
+  // torques in N m compared directly). Below it is motion that round-off seeds, e.g. the
+  // out-of-plane torques of a planar slider-crank, ~3e-9 of its 2 kN forces.
+  const double floor = 1e-6 * std::max(largest["force"], largest["torque"]);
   std::vector<std::string> names;
   for (std::size_t q = 0; q < reference.names.size(); ++q) {
     const std::string kind = kind_of(reference.names[q]);

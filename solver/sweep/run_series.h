@@ -38,8 +38,8 @@ bool final_status(const std::string& status);
 // The quantities compared by default: those of `reference` that are determinate (not in
 // `indeterminate`) and whose peak is at least 1 % of the largest peak of their kind (forces,
 // torques, each body's deflection axes); a smaller one is noise on a relative scale (an
-// out-of-plane component of a planar mechanism), and, for reactions, at least 1e-9 of the
-// largest reaction component (round-off: a torque that only balances to zero).
+// out-of-plane component of a planar mechanism), and, for reactions, at least 1e-6 of the
+// largest reaction component (below it: round-off, or motion round-off seeds).
 std::vector<std::string> default_quantities(const RunSeries& reference);
 
 // `requested` (from --quantities) resolved against `reference`: each must name a quantity of
