@@ -3,6 +3,7 @@
 #include "hinge_summary.h"
 #include "html.h"
 #include "selection_html.h"
+#include "sweep_html.h"
 
 #include <fmt/format.h>
 
@@ -312,6 +313,11 @@ std::string run_section(const RunSection& s) {
              "case summary).</p>\n";
     }
     out += subsection(s, "selection", "Mode selection", body);
+  }
+  if (run.sweep) {
+    std::string body = plots_of(s, PlotSection::kSweep) + sweep_table(*run.sweep);
+    if (body.empty()) body = "<p class=\"note\">The sweep folder holds nothing usable (see the notes in the case summary).</p>\n";
+    out += subsection(s, "sweep", "Work-precision sweep", body);
   }
   out += subsection(s, "drivers", "Drivers", plots_of(s, PlotSection::kDrivers));
   out += subsection(s, "energy", "Energy", energy_note(run) + plots_of(s, PlotSection::kEnergy));
