@@ -67,20 +67,21 @@ sweep::CaseDefaults case_defaults(const io::Case& input) {
   return defaults;
 }
 
-// The `limber run` command line of a point.
+// The `limber run` command line of a point (the reference runs without --max-wall: it must finish).
 std::vector<std::string> run_argv(const SweepOptions& options, const std::string& executable,
-                                  const sweep::SweepPoint& point, const std::filesystem::path& directory) {
+                                  const sweep::SweepPoint& point, const std::filesystem::path& directory,
+                                  bool reference) {
   std::vector<std::string> argv = {executable, "run", options.case_file, "-o", directory.string(), "--json"};
   for (const std::string& option : point.run_options()) argv.push_back(option);
   if (options.t_end) argv.insert(argv.end(), {"--t-end", fmt::format("{}", *options.t_end)});
   if (options.atol && !point.atol) argv.insert(argv.end(), {"--atol", fmt::format("{}", *options.atol)});
-  if (options.max_wall) argv.insert(argv.end(), {"--max-wall", fmt::format("{}", *options.max_wall)});
+  if (options.max_wall && !reference) argv.insert(argv.end(), {"--max-wall", fmt::format("{}", *options.max_wall)});
   return argv;
 }
 
 sweep::ChildJob child_job(const SweepOptions& options, const std::string& executable, const sweep::SweepPoint& point,
-                          const std::filesystem::path& directory) {
-  return {run_argv(options, executable, point, directory), directory / "run.json", directory / "run.log"};
+                          const std::filesystem::path& directory, bool reference = false) {
+  return {run_argv(options, executable, point, directory, reference), directory / "run.json", directory / "run.log"};
 }
 
 // The options a user passes to `limber run` for the row's setting.
@@ -100,9 +101,10 @@ void print_table(std::FILE* out, const std::vector<sweep::SweepRow>& rows, std::
     if (r.resumed) note += note.empty() ? "resumed" : ", resumed";
     if (!r.finished() && !r.message.empty()) note += (note.empty() ? "" : "; ") + r.message;
     const std::string wall = std::isfinite(r.wall_s) ? fmt::format("{:.3f}", r.wall_s) : "-";
-    fmt::print(out, "  {:<28} {:<13} {:>8} {:>7} {:>5} {:>7} {:>6} {:>7.1f} {:>10} {:>10}  {}\n", r.point.name(),
+    const std::string memory = std::isfinite(r.peak_rss_mib) ? fmt::format("{:.1f}", r.peak_rss_mib) : "-";
+    fmt::print(out, "  {:<28} {:<13} {:>8} {:>7} {:>5} {:>7} {:>6} {:>7} {:>10} {:>10}  {}\n", r.point.name(),
                r.status, wall, r.steps, r.rejected_steps, r.newton_iterations, r.jacobian_evaluations,
-               r.peak_rss_mib, percent(r.error_rms), percent(r.error_peak), note);
+               memory, percent(r.error_rms), percent(r.error_peak), note);
   }
 }
 
@@ -159,7 +161,7 @@ int sweep_case(const SweepOptions& options) {
         sweep::PoolHooks hooks;
         hooks.on_finish = [&](std::size_t, const sweep::ChildOutcome& o) { outcome = o; };
         hooks.should_stop = [] { return StopSignals::received() != 0; };
-        sweep::run_processes({child_job(options, executable, point, directory)}, 1, hooks);
+        sweep::run_processes({child_job(options, executable, point, directory, true)}, 1, hooks);
         sweep::write_process_record(directory, outcome);
         fmt::print(text, "reference: {:.3f} s\n", outcome.wall_seconds);
         const std::string after = sweep::read_run_status(reference_file);
@@ -349,7 +351,8 @@ Command add_sweep_command(CLI::App& app) {
   cli->add_option("--t-end", options->t_end, "End time of every run [s] (>= 0; default: the case's)");
   cli->add_option("--atol", options->atol, "IDA absolute tolerance of every IDA run (default: the case's)");
   cli->add_option("--max-wall", options->max_wall,
-                  "Wall-clock budget of each run [s]: a point not finished by then fails as a row");
+                  "Wall-clock budget of each point's run [s] (not the reference's): a point not finished by then "
+                  "fails as a row");
   cli->add_flag("--json", options->json,
                 "Print one JSON object on stdout: {\"status\", \"case\", \"reference\": {\"label\", \"results\"}, "
                 "\"quantities\", \"norm\", \"target\", \"target_met\", \"chosen\", \"run_options\", \"points\": "
