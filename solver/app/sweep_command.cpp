@@ -152,7 +152,7 @@ int sweep_case(const SweepOptions& options) {
     int ok = 1;
     if (lead) {
       const std::string status = sweep::read_run_status(reference_file);
-      if (!options.fresh && (status == "ok" || status == "ok_inaccurate")) {
+      if (!options.fresh && status == "ok") {
         fmt::print(text, "reference: {}, reused from {}\n", reference_label, reference_file.string());
       } else {
         fmt::print(text, "reference: {} ...\n", reference_label);
@@ -167,11 +167,20 @@ int sweep_case(const SweepOptions& options) {
         const std::string after = sweep::read_run_status(reference_file);
         ok = after == "ok" || after == "ok_inaccurate" ? 1 : StopSignals::received() != 0 ? 2 : 0;
       }
+      // A reference must pass its own accuracy check: errors against a wrong answer mean nothing.
+      if (ok == 1 && sweep::read_run_status(reference_file) != "ok") ok = 3;
     }
     ok = ranks.broadcast(ok);
     if (ok == 2) {
       if (lead) fmt::print(stderr, "limber: sweep interrupted during the reference run\n");
       return kExitInterrupted;
+    }
+    if (ok == 3) {
+      throw NumericalError(fmt::format("the reference run {} finished, but its own accuracy check failed (status "
+                                       "ok_inaccurate; its warnings are in {}), so errors against it mean nothing; "
+                                       "give --reference RESULTS (a run you trust) or a grid whose richest setting "
+                                       "runs accurately at a tighter step", point.name(),
+                                       (directory / "run.log").string()));
     }
     if (ok == 0) {
       throw NumericalError(fmt::format("the reference run failed ({}); give --reference RESULTS or a grid "
@@ -186,6 +195,10 @@ int sweep_case(const SweepOptions& options) {
     }
     reference_label = "the given file " + reference_file.string();
     if (lead) fmt::print(text, "reference: {}\n", reference_label);
+    if (lead && status != "ok") {
+      fmt::print(stderr, "limber: warning: the reference's own accuracy check failed (status {}): errors against it "
+                         "may mean little\n", status);
+    }
   }
   const sweep::RunSeries reference = sweep::read_run_series(reference_file);
   const std::vector<std::string> quantities = options.quantities.empty()
@@ -311,13 +324,15 @@ Command add_sweep_command(CLI::App& app) {
       "wall time, steps, rejected steps, Newton iterations, Jacobian and residual evaluations, peak\n"
       "memory (the child's), its own accuracy check (status ok or ok_inaccurate) and, against the\n"
       "reference, the peak and rms relative error of each compared quantity on the reference's\n"
-      "samples (default: every joint reaction component, joint frame, and deflection-probe axis\n"
-      "whose peak is at least 1 % of the largest of its kind). Writes DIR/sweep/work_precision.csv\n"
+      "samples (default: every determinate joint reaction component, joint frame, and\n"
+      "deflection-probe axis whose peak is at least 1 % of the largest of its kind, reactions\n"
+      "above 1e-6 of the largest; --quantities names others). Writes DIR/sweep/work_precision.csv\n"
       "and .json, DIR/sweep/errors.csv (per quantity) and DIR/results.h5 (the reference's), so that\n"
       "'limber report DIR' plots error against wall time. A failed or crashed point is a row with\n"
       "its message. Rerunning the same command resumes: points whose results.h5 is finished are\n"
       "not rerun (--fresh reruns all). Under 'mpirun -n N limber sweep ...' the points are shared\n"
       "among the ranks (DIR must be on a filesystem all ranks see) and rank 0 writes the table.\n"
+      "The case comes before --over (which takes every word up to the next option).\n"
       "Axes (--over, docs/sweep.md): integrator (default ida,galpha), rtol (IDA; default\n"
       "1e-3,1e-4,1e-5,1e-6), step (generalized-alpha; default 4,2,1,1/2 x the case's), modes\n"
       "(normal modes per flexible body; default 1/2,1,2 x the case's), e.g.\n"
@@ -326,7 +341,8 @@ Command add_sweep_command(CLI::App& app) {
       "Reference 'tight': the grid's most modes with generalized-alpha at 1/8 of its smallest step\n"
       "(IDA at 1/100 of its smallest rtol when the grid has no generalized-alpha point), run once\n"
       "into DIR/reference/<point> and reused on resume.\n"
-      "Exit codes: 0 done (failed points are rows), 1 bad input, 2 the reference run failed,\n"
+      "Exit codes: 0 done (failed points are rows), 1 bad input, 2 the reference run failed or\n"
+      "its own accuracy check did not pass (status ok_inaccurate),\n"
       "3 internal error, 4 interrupted by SIGINT or SIGTERM (finished points kept; rerun resumes).");
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
   cli->add_option("--over", options->over,

@@ -108,6 +108,22 @@ TEST(SweepCli, FailedPointIsARowAgainstAGivenReference) {
   EXPECT_NE(table.find("galpha_step1e-08,galpha,galpha,,1e-08,,failed,"), std::string::npos) << table;
 }
 
+// `limber run --modes N`, which the modes axis uses: N normal modes on the rod in results.h5.
+TEST(SweepCli, RunModesOption) {
+  const auto dir = test::fresh_directory("sweep_cli_modes");
+  const std::string flexible = std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml";
+  const test::CommandRun run =
+      run_limber("run " + flexible + " --modes 3 --t-end 0.005 --json -o " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const test::JsonValue json = test::parse_json(run.out);
+  EXPECT_GT(json["jacobian_evaluations"].number(), 0.0);
+  EXPECT_GT(json["residual_evaluations"].number(), json["newton_iterations"].number());
+  EXPECT_NE(run.err.find("reduction: rod 3 modes"), std::string::npos) << run.err;
+  const test::CommandRun bad = run_limber("run " + flexible + " --modes -1 -o " + dir.string());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("expected --modes >= 0, got -1"), std::string::npos) << bad.err;
+}
+
 TEST(SweepCli, BadInputNamesTheOption) {
   const auto dir = test::fresh_directory("sweep_cli_bad");
   const auto expect_bad = [&](const std::string& args, const std::string& part) {
