@@ -8,16 +8,15 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "run/run_driver.h"
 
 namespace limber::sweep {
 
 namespace {
 
 constexpr const char* kAxes = "integrator, rtol, step, modes";
-// IDA's tightest tolerances `limber run` accepts (run/run_driver.h's kMinimumRtol, kMinimumAtol).
-constexpr double kMinimumRtol = 1e-11;
-constexpr double kTightestReferenceRtol = 1e-10;
-constexpr double kTightestReferenceAtol = 1e-14;
+// A tight IDA reference stays a decade above the tightest rtol `limber run` accepts.
+constexpr double kTightestReferenceRtol = 10.0 * run::kMinimumRtol;
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -93,7 +92,9 @@ GridSpec parse_over(const std::vector<std::string>& arguments, const CaseDefault
         spec.integrators.push_back(value);
       } else if (name == "rtol") {
         const double rtol = parse_double(argument, value);
-        if (!(rtol >= kMinimumRtol && rtol < 1.0)) bad(argument, "rtol in [1e-11, 1)", "'" + value + "'");
+        if (!(rtol >= run::kMinimumRtol && rtol < 1.0)) {
+          bad(argument, fmt::format("rtol in [{:g}, 1)", run::kMinimumRtol), "'" + value + "'");
+        }
         spec.rtols.push_back(rtol);
       } else if (name == "step") {
         const double step = parse_double(argument, value);
@@ -198,7 +199,7 @@ SweepPoint tight_reference(const std::vector<SweepPoint>& points, const CaseDefa
   } else {
     reference.integrator = "ida";
     reference.rtol = std::max(*smallest_rtol / 100.0, kTightestReferenceRtol);
-    reference.atol = std::max(case_atol / 100.0, kTightestReferenceAtol);
+    reference.atol = std::max(case_atol / 100.0, run::kMinimumAtol);
   }
   return reference;
 }

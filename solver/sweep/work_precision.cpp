@@ -7,12 +7,15 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "select/selection_files.h"
 #include "select/series_error.h"
 #include "sweep/flat_json.h"
 
 namespace limber::sweep {
 
 namespace {
+
+using select::csv_field;
 
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -26,14 +29,6 @@ std::ofstream open_for_writing(const std::filesystem::path& file) {
   std::ofstream out(file, std::ios::binary);
   if (!out) throw InputError("expected a writable file, got '" + file.string() + "'");
   return out;
-}
-
-// CSV text field: quoted when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 std::string number(double value) { return std::isfinite(value) ? fmt::format("{:.9g}", value) : ""; }
