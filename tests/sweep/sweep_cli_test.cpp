@@ -2,8 +2,12 @@
 // convergence check of generalized-alpha, the choice for --target, resume, a failed point as a
 // row, and bad input.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -106,6 +110,54 @@ TEST(SweepCli, FailedPointIsARowAgainstAGivenReference) {
   EXPECT_EQ(failed["error_rms"].value.index(), 0u);  // null: not measured
   const std::string table = test::read_text((dir / "s/sweep/work_precision.csv").string());
   EXPECT_NE(table.find("galpha_step1e-08,galpha,galpha,,1e-08,,failed,"), std::string::npos) << table;
+}
+
+// SIGTERM (a batch system's stop) to a running sweep: the running child is stopped and closes its
+// file as interrupted, the table of what finished is written, exit code 4; the same command
+// again resumes: the finished point is not rerun, the interrupted one is.
+TEST(SweepCli, InterruptedSweepResumes) {
+  const auto dir = test::fresh_directory("sweep_cli_interrupt");
+  const test::CommandRun reference =
+      run_limber("run " + kCase + " --integrator galpha --step 2.5e-4 --t-end 0.1 -o " + (dir / "ref").string());
+  ASSERT_EQ(reference.exit_code, 0) << reference.err;
+  // 1e-7 s steps: 10^6 steps, far longer than the test waits.
+  const std::vector<std::string> args = {LIMBER_EXE, "sweep", kCase, "--over", "integrator=galpha", "step=1e-3,1e-7",
+                                         "--t-end", "0.1", "--jobs", "1", "--reference",
+                                         (dir / "ref/results.h5").string(), "-o", (dir / "s").string()};
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // The child: quiet, then the sweep.
+    std::freopen((dir / "out.txt").c_str(), "w", stdout);
+    std::freopen((dir / "err.txt").c_str(), "w", stderr);
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  // Wait until the slow point runs (its results file exists), then stop the sweep.
+  const auto slow = dir / "s/runs/galpha_step1e-07/results.h5";
+  for (int k = 0; k < 300 && !std::filesystem::exists(slow); ++k) usleep(50000);
+  usleep(300000);
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4) << test::read_text((dir / "err.txt").string());
+  const std::string table = test::read_text((dir / "s/sweep/work_precision.csv").string());
+  EXPECT_NE(table.find("galpha_step0.001,galpha,galpha,,0.001,,ok,"), std::string::npos) << table;
+  EXPECT_NE(table.find("galpha_step1e-07,galpha,galpha,,1e-07,,interrupted,"), std::string::npos) << table;
+
+  // Resume, with a budget so the slow point ends (as a failed row).
+  std::string command;
+  for (std::size_t k = 1; k < args.size(); ++k) command += " '" + args[k] + "'";
+  const test::CommandRun again = run_limber(command + " --max-wall 0.5");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("galpha_step0.001: finished in an earlier sweep, not rerun"), std::string::npos) << again.err;
+  EXPECT_EQ(again.err.find("galpha_step1e-07: finished in an earlier sweep"), std::string::npos) << again.err;
+  const std::string resumed = test::read_text((dir / "s/sweep/work_precision.csv").string());
+  EXPECT_NE(resumed.find("galpha_step1e-07,galpha,galpha,,1e-07,,failed,"), std::string::npos) << resumed;
 }
 
 // `limber run --modes N`, which the modes axis uses: N normal modes on the rod in results.h5.
