@@ -73,6 +73,15 @@ TEST(SweepCli, ConvergenceTargetAndResume) {
   }
   EXPECT_TRUE(has_r1_force_x);
 
+  // `limber report DIR` shows the sweep: its section, the log-log plots, the table.
+  const test::CommandRun report = run_limber("report " + dir.string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string page = test::read_text((dir / "report/index.html").string());
+  EXPECT_NE(page.find("Work-precision sweep"), std::string::npos);
+  EXPECT_NE(page.find("<tr class=\"chosen\"><td>galpha_step0.0005</td>"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "report/images/run1_sweep_rms.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "report/images/run1_sweep_peak.png"));
+
   // The same command again resumes: nothing reruns, the table is the same.
   const auto written = std::filesystem::last_write_time(dir / "runs/galpha_step0.001/results.h5");
   const test::CommandRun second = run_limber(command);
