@@ -1,7 +1,8 @@
 // `limber sweep`: runs a case over a grid of settings (integrator, IDA tolerance or
 // generalized-α step, modes per flexible body), each point as its own `limber run` child
 // process, measures each against a reference and writes the work-precision table
-// (docs/sweep.md). Under MPI the points are shared among the ranks and rank 0 writes the table.
+// (docs/sweep.md). Under MPI the points are shared among the ranks; rank 0 gathers the rows and
+// writes the table.
 #include <fmt/format.h>
 
 #include <unistd.h>
@@ -206,15 +207,15 @@ int sweep_case(const SweepOptions& options) {
                                                   : sweep::named_quantities(reference, options.quantities);
 
   // This rank's points: every size-th from its rank; finished ones are kept unless --fresh.
-  std::vector<int> handled(points.size(), 0), resumed(points.size(), 0);
+  std::vector<std::size_t> mine, resumed;
   std::vector<sweep::ChildJob> jobs;
   std::vector<std::size_t> job_point;
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (static_cast<int>(k % static_cast<std::size_t>(ranks.size())) != ranks.rank()) continue;
-    handled[k] = ranks.rank() + 1;
+    mine.push_back(k);
     const std::filesystem::path directory = root / "runs" / points[k].name();
     if (!options.fresh && sweep::point_finished(directory)) {
-      resumed[k] = 1;
+      resumed.push_back(k);
       fmt::print(stderr, "[sweep] {}: finished in an earlier sweep, not rerun (--fresh reruns it)\n", points[k].name());
       continue;
     }
@@ -245,18 +246,34 @@ int sweep_case(const SweepOptions& options) {
   hooks.should_stop = [] { return StopSignals::received() != 0; };
   sweep::run_processes(jobs, parallel, hooks);
 
-  // Rank 0 gathers which rank ran which point (the rows come from the points' folders).
-  ranks.barrier();
-  const std::vector<int> owner = ranks.max_over_ranks(handled);
-  const std::vector<int> earlier = ranks.max_over_ranks(resumed);
+  // Each rank measures its points; rank 0 gathers the rows (one JSON object a line).
+  std::string my_rows;
+  for (std::size_t k : mine) {
+    sweep::SweepRow row = sweep::read_row(points[k], root / "runs" / points[k].name(), reference, quantities);
+    row.resumed = std::find(resumed.begin(), resumed.end(), k) != resumed.end();
+    row.rank = ranks.rank();
+    my_rows += sweep::row_json(row) + "\n";
+  }
+  const std::vector<std::string> gathered = ranks.gather_to_lead(my_rows);
   const int interrupted = ranks.max_over_ranks({StopSignals::received() != 0 ? 1 : 0}).front();
   if (!lead) return interrupted ? kExitInterrupted : kExitOk;
 
-  std::vector<sweep::SweepRow> rows;
+  // The rows in grid order; a point no rank reported stays "not_run".
+  std::vector<sweep::SweepRow> rows(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
-    rows.push_back(sweep::read_row(points[k], root / "runs" / points[k].name(), reference, quantities));
-    rows.back().resumed = earlier[k] != 0;
-    rows.back().rank = std::max(0, owner[k] - 1);
+    rows[k].point = points[k];
+    rows[k].status = "not_run";
+  }
+  for (const std::string& text : gathered) {
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+      const std::size_t end = text.find('\n', begin);
+      const sweep::SweepRow row = sweep::row_from_json(text.substr(begin, end - begin));
+      begin = end == std::string::npos ? text.size() : end + 1;
+      for (std::size_t k = 0; k < points.size(); ++k) {
+        if (points[k].name() == row.point.name()) rows[k] = row;
+      }
+    }
   }
   const std::optional<std::size_t> chosen =
       options.target ? sweep::cheapest_meeting(rows, *options.target, rms) : std::nullopt;
@@ -331,7 +348,8 @@ Command add_sweep_command(CLI::App& app) {
       "'limber report DIR' plots error against wall time. A failed or crashed point is a row with\n"
       "its message. Rerunning the same command resumes: points whose results.h5 is finished are\n"
       "not rerun (--fresh reruns all). Under 'mpirun -n N limber sweep ...' the points are shared\n"
-      "among the ranks (DIR must be on a filesystem all ranks see) and rank 0 writes the table.\n"
+      "among the ranks (DIR on a filesystem all ranks see: rank 0 makes the reference), each rank\n"
+      "measures its points, and rank 0 gathers the rows and writes the table.\n"
       "The case comes before --over (which takes every word up to the next option).\n"
       "Axes (--over, docs/sweep.md): integrator (default ida,galpha), rtol (IDA; default\n"
       "1e-3,1e-4,1e-5,1e-6), step (generalized-alpha; default 4,2,1,1/2 x the case's), modes\n"

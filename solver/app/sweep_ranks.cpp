@@ -56,6 +56,27 @@ std::vector<int> SweepRanks::max_over_ranks(const std::vector<int>& values) cons
   return result;
 }
 
+std::vector<std::string> SweepRanks::gather_to_lead(const std::string& text) const {
+  if (size_ == 1) return {text};
+  // Lengths first, then the characters of all ranks in one buffer.
+  int length = static_cast<int>(text.size());
+  std::vector<int> lengths(rank_ == 0 ? size_ : 0), offsets(rank_ == 0 ? size_ : 0);
+  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  int total = 0;
+  for (std::size_t r = 0; r < lengths.size(); ++r) {
+    offsets[r] = total;
+    total += lengths[r];
+  }
+  std::string buffer(static_cast<std::size_t>(total), '\0');
+  MPI_Gatherv(text.data(), length, MPI_CHAR, buffer.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
+              MPI_COMM_WORLD);
+  std::vector<std::string> texts;
+  for (std::size_t r = 0; r < lengths.size(); ++r) {
+    texts.push_back(buffer.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(lengths[r])));
+  }
+  return texts;
+}
+
 #else
 
 SweepRanks::SweepRanks() = default;
@@ -63,6 +84,7 @@ SweepRanks::~SweepRanks() = default;
 void SweepRanks::barrier() const {}
 int SweepRanks::broadcast(int value) const { return value; }
 std::vector<int> SweepRanks::max_over_ranks(const std::vector<int>& values) const { return values; }
+std::vector<std::string> SweepRanks::gather_to_lead(const std::string& text) const { return {text}; }
 
 #endif
 

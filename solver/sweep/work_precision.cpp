@@ -191,6 +191,54 @@ void write_errors_csv(const std::filesystem::path& file, const std::vector<Sweep
   if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
 }
 
+std::string row_json(const SweepRow& row) {
+  const std::string array = rows_json({row}, std::nullopt);
+  return array.substr(1, array.size() - 2);
+}
+
+SweepRow row_from_json(const std::string& object) {
+  SweepRow row;
+  const auto number = [&](const char* key) { return json_number_field(object, key); };
+  const auto text = [&](const char* key) { return json_string_field(object, key).value_or(""); };
+  const auto count = [&](const char* key) { return static_cast<long>(number(key).value_or(0)); };
+  row.point.integrator = text("integrator");
+  row.point.rtol = number("rtol");
+  row.point.step = number("step");
+  if (const auto modes = number("modes")) row.point.modes = static_cast<int>(*modes);
+  row.status = text("status");
+  row.message = text("message");
+  row.exit_code = static_cast<int>(number("exit_code").value_or(-1));
+  row.wall_s = number("wall_s").value_or(kNaN);
+  row.process_s = number("process_s").value_or(kNaN);
+  row.steps = count("steps");
+  row.rejected_steps = count("rejected_steps");
+  row.newton_iterations = count("newton_iterations");
+  row.jacobian_evaluations = count("jacobian_evaluations");
+  row.residual_evaluations = count("residual_evaluations");
+  row.peak_rss_mib = number("peak_rss_mib").value_or(kNaN);
+  row.energy_relative = number("energy_relative").value_or(kNaN);
+  row.local_error = number("local_error").value_or(kNaN);
+  row.drift_relative = number("drift_relative").value_or(kNaN);
+  row.error_peak = number("error_peak").value_or(kNaN);
+  row.error_rms = number("error_rms").value_or(kNaN);
+  row.worst_quantity = text("worst_quantity");
+  row.resumed = object.find("\"resumed\": true") != std::string::npos;
+  row.rank = static_cast<int>(number("rank").value_or(0));
+  // "errors": [{"quantity": ..., "peak": ..., "rms": ...}, ...] up to the key after it.
+  const std::string marker = "{\"quantity\": ";
+  const std::size_t begin = object.find("\"errors\": [");
+  const std::size_t end = object.find(", \"resumed\": ", begin);
+  std::size_t at = object.find(marker, begin);
+  while (begin != std::string::npos && at != std::string::npos && at < end) {
+    const std::size_t next = std::min(object.find(marker, at + 1), end);
+    const std::string item = object.substr(at, next - at);
+    row.errors.push_back({json_string_field(item, "quantity").value_or(""),
+                          json_number_field(item, "peak").value_or(kNaN), json_number_field(item, "rms").value_or(kNaN)});
+    at = next == end ? std::string::npos : next;
+  }
+  return row;
+}
+
 std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size_t> chosen) {
   const auto optional_value = [](const std::optional<double>& v) { return v ? json_value(*v) : std::string("null"); };
   std::string text = "[";

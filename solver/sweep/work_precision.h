@@ -80,4 +80,9 @@ void write_errors_csv(const std::filesystem::path& file, const std::vector<Sweep
 // The rows as a JSON array (the same fields as the CSV, per-quantity errors as "errors").
 std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size_t> chosen);
 
+// One row as a JSON object (rows_json's element) and back: how MPI ranks send their rows to
+// rank 0. The point's atol (set only on a tight reference) does not travel.
+std::string row_json(const SweepRow& row);
+SweepRow row_from_json(const std::string& object);
+
 }  // namespace limber::sweep

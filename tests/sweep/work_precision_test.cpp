@@ -75,5 +75,56 @@ TEST(CheapestMeeting, FastestAccuratePointWithinTheTarget) {
   EXPECT_FALSE(sweep::cheapest_meeting(rows, 1e-4, true).has_value());
 }
 
+// How MPI ranks send rows to rank 0: a row survives row_json -> row_from_json field by field.
+TEST(RowJson, RoundTrip) {
+  sweep::SweepRow row;
+  row.point.integrator = "ida";
+  row.point.rtol = 1e-5;
+  row.point.modes = 3;
+  row.status = "ok_inaccurate";
+  row.message = "a \"quoted\", multi\nline message";
+  row.exit_code = 5;
+  row.wall_s = 0.123456789012;
+  row.process_s = 0.5;
+  row.steps = 7099;
+  row.rejected_steps = 553;
+  row.newton_iterations = 10906;
+  row.jacobian_evaluations = 647;
+  row.residual_evaluations = 20000;
+  row.peak_rss_mib = 51.5;
+  row.energy_relative = 0.0107;
+  row.local_error = 0.0;
+  row.error_peak = 0.0576;
+  row.error_rms = 0.0433;
+  row.worst_quantity = "R3 force y [N]";
+  row.errors = {{"R1 force x [N]", 0.01, 0.005}, {"rod deflection z [m]", 0.0576, 0.0433}, {"T force y [N]", sweep::kNaN, sweep::kNaN}};
+  row.resumed = true;
+  row.rank = 3;
+  const sweep::SweepRow back = sweep::row_from_json(sweep::row_json(row));
+  EXPECT_EQ(back.point.name(), "ida_rtol1e-05_m3");
+  EXPECT_FALSE(back.point.step.has_value());
+  EXPECT_EQ(back.status, row.status);
+  EXPECT_EQ(back.message, row.message);
+  EXPECT_EQ(back.exit_code, 5);
+  EXPECT_EQ(back.wall_s, row.wall_s);  // shortest exact text: bit for bit
+  EXPECT_EQ(back.steps, 7099);
+  EXPECT_EQ(back.rejected_steps, 553);
+  EXPECT_EQ(back.newton_iterations, 10906);
+  EXPECT_EQ(back.jacobian_evaluations, 647);
+  EXPECT_EQ(back.residual_evaluations, 20000);
+  EXPECT_EQ(back.peak_rss_mib, 51.5);
+  EXPECT_EQ(back.energy_relative, 0.0107);
+  EXPECT_TRUE(std::isnan(back.drift_relative));
+  EXPECT_EQ(back.error_peak, 0.0576);
+  EXPECT_EQ(back.error_rms, 0.0433);
+  EXPECT_EQ(back.worst_quantity, row.worst_quantity);
+  ASSERT_EQ(back.errors.size(), 3u);
+  EXPECT_EQ(back.errors[1].quantity, "rod deflection z [m]");
+  EXPECT_EQ(back.errors[1].peak, 0.0576);
+  EXPECT_TRUE(std::isnan(back.errors[2].rms));
+  EXPECT_TRUE(back.resumed);
+  EXPECT_EQ(back.rank, 3);
+}
+
 }  // namespace
 }  // namespace limber
