@@ -153,7 +153,8 @@ int sweep_case(const SweepOptions& options) {
     int ok = 1;
     if (lead) {
       const std::string status = sweep::read_run_status(reference_file);
-      if (!options.fresh && status == "ok") {
+      // A finished reference is reused (an inaccurate one is refused below without a rerun).
+      if (!options.fresh && (status == "ok" || status == "ok_inaccurate")) {
         fmt::print(text, "reference: {}, reused from {}\n", reference_label, reference_file.string());
       } else {
         fmt::print(text, "reference: {} ...\n", reference_label);
