@@ -316,7 +316,10 @@ std::string run_section(const RunSection& s) {
   }
   if (run.sweep) {
     std::string body = plots_of(s, PlotSection::kSweep) + sweep_table(*run.sweep);
-    if (body.empty()) body = "<p class=\"note\">The sweep folder holds nothing usable (see the notes in the case summary).</p>\n";
+    if (body.empty()) {
+      body = "<p class=\"note\">The sweep folder holds nothing usable (see the notes in the case "
+             "summary).</p>\n";
+    }
     out += subsection(s, "sweep", "Work-precision sweep", body);
   }
   out += subsection(s, "drivers", "Drivers", plots_of(s, PlotSection::kDrivers));

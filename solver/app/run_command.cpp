@@ -196,7 +196,8 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
       summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
-      s.jacobian_evaluations, s.residual_evaluations, json_number(summary.wall_seconds), json_number(summary.max_position_violation),
+      s.jacobian_evaluations, s.residual_evaluations, json_number(summary.wall_seconds),
+      json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
       json_string_list(details), json_events(model, summary.events),
       json_clearance(summary.clearance), json_accuracy(summary.accuracy), json_string(results_path));
@@ -342,7 +343,8 @@ Command add_run_command(CLI::App& app) {
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"message\", \"integrator\", "
                 "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", \"newton_failures\", "
-                "\"newton_iterations\", \"jacobian_evaluations\", \"residual_evaluations\", \"wall_s\", \"max_constraint_violation\", "
+                "\"newton_iterations\", \"jacobian_evaluations\", \"residual_evaluations\", \"wall_s\", "
+                "\"max_constraint_violation\", "
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
                 "\"redundant_details\", \"events\": [{\"t\", \"name\", \"kind\", \"joint\", "
                 "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"clearance\": "

@@ -115,15 +115,20 @@ int sweep_case(const SweepOptions& options) {
   if (options.target && !(*options.target > 0.0)) {
     throw InputError(fmt::format("expected --target > 0 (a fraction, 0.01 = 1 %), got {:g}", *options.target));
   }
-  if (options.jobs < 0) throw InputError(fmt::format("expected --jobs >= 1 (0: the number of cores), got {}", options.jobs));
-  if (options.t_end && !(*options.t_end >= 0.0)) throw InputError(fmt::format("expected --t-end >= 0, got {:g}", *options.t_end));
+  if (options.jobs < 0) {
+    throw InputError(fmt::format("expected --jobs >= 1 (0: the number of cores), got {}", options.jobs));
+  }
+  if (options.t_end && !(*options.t_end >= 0.0)) {
+    throw InputError(fmt::format("expected --t-end >= 0, got {:g}", *options.t_end));
+  }
   const io::Case input = io::read_case_file(options.case_file);
   if (!input.mechanism) {
     throw InputError("expected a mechanism (a 'bodies' section), got none", SourceLocation{options.case_file, 0, 0});
   }
   const sweep::CaseDefaults defaults = case_defaults(input);
   const std::vector<sweep::SweepPoint> points = sweep::expand_grid(sweep::parse_over(options.over, defaults), defaults);
-  const int parallel = options.jobs > 0 ? options.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int parallel = options.jobs > 0 ? options.jobs : cores;
   const bool rms = options.norm == "rms";
 
   std::FILE* text = options.json ? stderr : stdout;
@@ -145,7 +150,8 @@ int sweep_case(const SweepOptions& options) {
   std::filesystem::path reference_file;
   std::string reference_label;
   if (options.reference == "tight") {
-    const sweep::SweepPoint point = sweep::tight_reference(points, defaults, options.atol.value_or(input.mechanism->run.integrator.atol));
+    const double case_atol = options.atol.value_or(input.mechanism->run.integrator.atol);
+    const sweep::SweepPoint point = sweep::tight_reference(points, defaults, case_atol);
     // One folder per reference setting: a changed grid never reuses another setting's reference.
     const std::filesystem::path directory = root / "reference" / point.name();
     reference_file = directory / results::kResultsFileName;
@@ -193,7 +199,8 @@ int sweep_case(const SweepOptions& options) {
     const std::string status = sweep::read_run_status(reference_file);
     if (status != "ok" && status != "ok_inaccurate") {
       throw InputError(fmt::format("--reference: expected 'tight' or a finished results.h5 (status ok), got '{}'{}",
-                                   options.reference, status.empty() ? " (no readable results file)" : " with status " + status));
+                                   options.reference,
+                                   status.empty() ? " (no readable results file)" : " with status " + status));
     }
     reference_label = "the given file " + reference_file.string();
     if (lead) fmt::print(text, "reference: {}\n", reference_label);

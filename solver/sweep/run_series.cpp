@@ -100,7 +100,8 @@ RunSeries read_run_series(const std::filesystem::path& file) {
     for (int axis = 0; axis < 3; ++axis) {
       series.names.push_back(fmt::format("{} {} [{}]", blocks[b].first, kAxisNames[axis], units[b]));
       for (Eigen::Index k = 0; k < ns; ++k) {
-        series.values(k, 3 * static_cast<Eigen::Index>(b) + axis) = blocks[b].second[3 * static_cast<std::size_t>(k) + axis];
+        const std::size_t at = 3 * static_cast<std::size_t>(k) + static_cast<std::size_t>(axis);
+        series.values(k, 3 * static_cast<Eigen::Index>(b) + axis) = blocks[b].second[at];
       }
     }
   }
@@ -129,7 +130,8 @@ std::vector<std::string> default_quantities(const RunSeries& reference) {
       peaks.push_back(0.0);
       continue;
     }
-    const double peak = reference.values.rows() ? reference.values.col(static_cast<Eigen::Index>(q)).cwiseAbs().maxCoeff() : 0.0;
+    const auto column = reference.values.col(static_cast<Eigen::Index>(q));
+    const double peak = column.size() > 0 ? column.cwiseAbs().maxCoeff() : 0.0;
     peaks.push_back(peak);
     double& most = largest[kind_of(reference.names[q])];
     most = std::max(most, peak);

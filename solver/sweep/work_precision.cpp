@@ -233,7 +233,8 @@ SweepRow row_from_json(const std::string& object) {
     const std::size_t next = std::min(object.find(marker, at + 1), end);
     const std::string item = object.substr(at, next - at);
     row.errors.push_back({json_string_field(item, "quantity").value_or(""),
-                          json_number_field(item, "peak").value_or(kNaN), json_number_field(item, "rms").value_or(kNaN)});
+                          json_number_field(item, "peak").value_or(kNaN),
+                          json_number_field(item, "rms").value_or(kNaN)});
     at = next == end ? std::string::npos : next;
   }
   return row;

@@ -97,7 +97,9 @@ TEST(RowJson, RoundTrip) {
   row.error_peak = 0.0576;
   row.error_rms = 0.0433;
   row.worst_quantity = "R3 force y [N]";
-  row.errors = {{"R1 force x [N]", 0.01, 0.005}, {"rod deflection z [m]", 0.0576, 0.0433}, {"T force y [N]", sweep::kNaN, sweep::kNaN}};
+  row.errors = {{"R1 force x [N]", 0.01, 0.005},
+                {"rod deflection z [m]", 0.0576, 0.0433},
+                {"T force y [N]", sweep::kNaN, sweep::kNaN}};
   row.resumed = true;
   row.rank = 3;
   const sweep::SweepRow back = sweep::row_from_json(sweep::row_json(row));
