@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -145,6 +146,10 @@ int sweep_case(const SweepOptions& options) {
                parallel, ranks.size() > 1 ? fmt::format(" on each of {} MPI ranks", ranks.size()) : "");
   }
   const StopSignals stop_signals;
+  // Each child single-threaded: OpenBLAS (pthread build) and OpenMP would otherwise start a thread
+  // per core in every child (the modal reduction); a value the user set is kept.
+  setenv("OPENBLAS_NUM_THREADS", "1", 0);
+  setenv("OMP_NUM_THREADS", "1", 0);
 
   // The reference: one tight run, made once (rank 0) and reused on resume, or a given file.
   std::filesystem::path reference_file;
