@@ -94,6 +94,15 @@ TEST(SweepCli, ConvergenceTargetAndResume) {
     EXPECT_TRUE(std::get<bool>(point["resumed"].value)) << name;
     EXPECT_EQ(point["error_rms"].number(), points.at(name)["error_rms"].number()) << name;
   }
+  // --fresh reruns every point and the reference: the same errors again (deterministic runs).
+  const test::CommandRun fresh = run_limber(command + " --fresh");
+  ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
+  EXPECT_EQ(fresh.err.find("not rerun"), std::string::npos) << fresh.err;
+  EXPECT_NE(std::filesystem::last_write_time(dir / "runs/galpha_step0.001/results.h5"), written);
+  for (const auto& [name, point] : points_by_name(test::parse_json(fresh.out))) {
+    EXPECT_FALSE(std::get<bool>(point["resumed"].value)) << name;
+    EXPECT_EQ(point["error_rms"].number(), points.at(name)["error_rms"].number()) << name;
+  }
 }
 
 TEST(SweepCli, FailedPointIsARowAgainstAGivenReference) {
