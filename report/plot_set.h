@@ -16,7 +16,7 @@ namespace limber::report {
 
 enum class PlotSection {
   kReactions, kSelection, kDrivers, kEnergy, kHinges, kClearance, kDeflection, kViolation,
-  kComparison, kSweep
+  kComparison, kStress, kSweep
 };
 
 struct NamedPlot {
