@@ -30,6 +30,13 @@ target_link_libraries(limber_cholmod INTERFACE
 # render/ and its tests, then report/'s charts. Debian's ChartsCore pulls VTK::mpi, whose link
 # interface names MPI::MPI_C, so MPI must be found first.
 find_package(MPI REQUIRED COMPONENTS C)
+# `limber sweep` shares its grid among MPI ranks (docs/sweep.md) when built with MPI: on by
+# default where MPI is found (Debian's Open MPI: openmpi-bin, libopenmpi-dev).
+if(MPI_C_FOUND)
+  option(LIMBER_WITH_MPI "limber sweep distributes its grid points over MPI ranks" ON)
+else()
+  set(LIMBER_WITH_MPI OFF)
+endif()
 find_package(VTK REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel FiltersCore FiltersSources FiltersGeneral
   IOImage IOXML IOXMLParser RenderingCore RenderingOpenGL2 RenderingAnnotation

@@ -13,6 +13,7 @@
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPlot.h>
+#include <vtkPlotPoints.h>
 #include <vtkPointData.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
@@ -96,7 +97,8 @@ void set_nice_ticks(vtkAxis* axis, double lo, double hi) {
 }  // namespace
 
 Eigen::Vector2d PlotFrame::to_pixel(double x, double y) const {
-  const double fx = (x - x_min) / (x_max - x_min);
+  const double fx = log_x ? (std::log10(x) - std::log10(x_min)) / (std::log10(x_max) - std::log10(x_min))
+                          : (x - x_min) / (x_max - x_min);
   const double fy = log_y ? (std::log10(y) - std::log10(y_min)) /
                                 (std::log10(y_max) - std::log10(y_min))
                           : (y - y_min) / (y_max - y_min);
@@ -168,6 +170,12 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
   // Time axes start where the data start: no padding before the first sample.
   frame.x_min = has_points && b.x_lo < b.x_hi ? b.x_lo : xr[0];
   frame.x_max = has_points && b.x_lo < b.x_hi ? b.x_hi : xr[1];
+  frame.log_x = plot.log_x && has_points && b.x_lo > 0.0;
+  if (frame.log_x) {
+    const std::array<double, 2> decades = decade_range(b.x_lo, b.x_hi);
+    frame.x_min = decades[0];
+    frame.x_max = decades[1];
+  }
   const std::array<double, 2> yr = !has_points ? std::array<double, 2>{0.0, 1.0}
                                    : frame.log_y ? decade_range(b.y_lo, b.y_hi)
                                                  : nice_range(b.y_lo, b.y_hi);
@@ -181,8 +189,8 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     x->SetName("x");
     y->SetName(curve.label.c_str());
     const Eigen::Index n = std::min(curve.x.size(), curve.y.size());
-    // A line needs two points (VTK logs an error otherwise).
-    if (n < 2) continue;
+    // A line needs two points (VTK logs an error otherwise); a marked curve of one is a point.
+    if (n < (plot.markers ? 1 : 2)) continue;
     for (Eigen::Index k = 0; k < n; ++k) {
       x->InsertNextValue(curve.x(k));
       y->InsertNextValue(curve.y(k));
@@ -190,20 +198,30 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     vtkNew<vtkTable> table;
     table->AddColumn(x);
     table->AddColumn(y);
-    vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+    vtkPlot* line = chart->AddPlot(n < 2 ? vtkChart::POINTS : vtkChart::LINE);
     line->SetInputData(table, 0, 1);
     const auto& rgb = kCurveColors[i % kCurveColors.size()];
     line->SetColor(rgb[0], rgb[1], rgb[2], 255);
     line->SetWidth(kLineWidth);
     line->SetLabel(curve.label);
+    if (plot.markers) {
+      vtkPlotPoints::SafeDownCast(line)->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+      vtkPlotPoints::SafeDownCast(line)->SetMarkerSize(8.0);
+    }
   }
 
   vtkAxis* x_axis = chart->GetAxis(vtkAxis::BOTTOM);
   vtkAxis* y_axis = chart->GetAxis(vtkAxis::LEFT);
   style_axis(x_axis, plot.x_label);
   style_axis(y_axis, plot.y_label);
-  x_axis->SetRange(frame.x_min, frame.x_max);
-  set_nice_ticks(x_axis, frame.x_min, frame.x_max);
+  x_axis->SetLogScale(frame.log_x);
+  if (frame.log_x) {
+    x_axis->SetCustomTickPositions(nullptr);
+    x_axis->SetUnscaledRange(frame.x_min, frame.x_max);
+  } else {
+    x_axis->SetRange(frame.x_min, frame.x_max);
+    set_nice_ticks(x_axis, frame.x_min, frame.x_max);
+  }
   y_axis->SetLogScale(frame.log_y);
   if (frame.log_y) {
     y_axis->SetCustomTickPositions(nullptr);

@@ -26,6 +26,8 @@ struct PlotSpec {
   std::string y_label;  // with units, e.g. "force [N]"
   std::vector<Curve> curves;
   bool log_y = false;   // logarithmic y axis; needs every y > 0 (else drawn linear)
+  bool log_x = false;   // logarithmic x axis; needs every x > 0 (else drawn linear)
+  bool markers = false; // a circle at every point (work-precision curves of few points)
 };
 
 // Where the plot area landed in the PNG: data ranges and their pixel positions, so a data point
@@ -35,6 +37,7 @@ struct PlotFrame {
   double left_px = 0, right_px = 0;                    // columns of x_min and x_max
   double bottom_px = 0, top_px = 0;                    // rows of y_min and y_max
   bool log_y = false;
+  bool log_x = false;
 
   // Pixel (column, row from the top) of the data point (x, y).
   Eigen::Vector2d to_pixel(double x, double y) const;

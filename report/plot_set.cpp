@@ -3,6 +3,7 @@
 #include "hinge_summary.h"
 #include "html.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <numbers>
@@ -86,6 +87,11 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
   // The mode sets `limber select` compared.
   if (run.selection) {
     for (NamedPlot& plot : selection_plots(*run.selection, prefix)) plots.push_back(std::move(plot));
+  }
+
+  // The grid points `limber sweep` ran.
+  if (run.sweep) {
+    for (NamedPlot& plot : sweep_plots(*run.sweep, prefix)) plots.push_back(std::move(plot));
   }
 
   // Driver efforts and energies.
@@ -234,6 +240,46 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
                        {"Difference to the reference: " + quantity, kTimeLabel, "difference",
                         std::move(differences[quantity]), false}});
     }
+  }
+  return plots;
+}
+
+std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& prefix) {
+  // Finished points with a measured error, by curve in first-seen order, each curve in the
+  // table's order (coarse to fine setting), as work-precision diagrams join them.
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const SweepPointRow*>> members;
+  for (const SweepPointRow& row : sweep.points) {
+    if (row.status != "ok" && row.status != "ok_inaccurate") continue;
+    if (!row.wall_s || !(*row.wall_s > 0.0) || !row.error_rms || !row.error_peak) continue;
+    if (members.count(row.curve) == 0) order.push_back(row.curve);
+    members[row.curve].push_back(&row);
+  }
+  std::vector<NamedPlot> plots;
+  for (const bool rms : {true, false}) {
+    std::vector<Curve> curves;
+    for (const std::string& curve : order) {
+      const std::vector<const SweepPointRow*>& rows = members[curve];
+      Curve c{curve, Eigen::VectorXd(static_cast<Eigen::Index>(rows.size())),
+              Eigen::VectorXd(static_cast<Eigen::Index>(rows.size()))};
+      for (std::size_t k = 0; k < rows.size(); ++k) {
+        c.x(static_cast<Eigen::Index>(k)) = *rows[k]->wall_s;
+        // A point equal to the reference has no error to show on a log axis: 1e-12 stands for it.
+        c.y(static_cast<Eigen::Index>(k)) = std::max(rms ? *rows[k]->error_rms : *rows[k]->error_peak, 1e-12);
+      }
+      curves.push_back(std::move(c));
+    }
+    if (curves.empty()) return plots;
+    const std::string which = rms ? "rms" : "peak";
+    PlotSpec spec{"Work precision: " + which + " error against wall time", "wall time of the run [s]",
+                  which + " error against the reference (relative)", std::move(curves), true};
+    spec.log_x = true;
+    spec.markers = true;
+    plots.push_back({PlotSection::kSweep, prefix + "sweep_" + which + ".png",
+                     "The " + which + " error of each finished grid point (the largest over the compared "
+                     "quantities) against its run's wall time, one curve per integrator and mode count "
+                     "(sweep/work_precision.csv). Down and to the left is better.",
+                     std::move(spec)});
   }
   return plots;
 }

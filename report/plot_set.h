@@ -2,8 +2,8 @@
 // ground axes and in the joint frame (seed paper Figs. 4, 5, 9), comparisons of one reaction
 // component over several runs (Figs. 6, 10), driver efforts, energies and the balance's
 // residual, hinge angles and latch torques, clearance between bodies, deflections, modal
-// coordinates and constraint violations versus time, and the key quantities of each mode set
-// `limber select` ran (Fig. 6).
+// coordinates and constraint violations versus time, the key quantities of each mode set
+// `limber select` ran (Fig. 6), and the work-precision curves of a `limber sweep`.
 #pragma once
 
 #include "plot.h"
@@ -16,7 +16,7 @@ namespace limber::report {
 
 enum class PlotSection {
   kReactions, kSelection, kDrivers, kEnergy, kHinges, kClearance, kDeflection, kViolation,
-  kComparison, kStress
+  kComparison, kStress, kSweep
 };
 
 struct NamedPlot {
@@ -34,6 +34,11 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix);
 // appended from comparison.csv
 // (unless the set is named after its role). File names start with `prefix`.
 std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std::string& prefix);
+
+// Work precision of a `limber sweep` (sweep/work_precision.csv): rms and peak error against
+// wall time, log-log, one curve per integrator / mode count, finished points only, joined in
+// the table's order (coarse to fine setting). File names start with `prefix`.
+std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& prefix);
 
 // One plot per joint name present in two or more runs and per force component (joint frame),
 // overlaying that component of every run holding the joint; legend entries are `labels`.

@@ -4,6 +4,7 @@
 #include "html.h"
 #include "selection_html.h"
 #include "stress_summary.h"
+#include "sweep_html.h"
 
 #include <fmt/format.h>
 
@@ -332,6 +333,14 @@ std::string run_section(const RunSection& s) {
              "case summary).</p>\n";
     }
     out += subsection(s, "selection", "Mode selection", body);
+  }
+  if (run.sweep) {
+    std::string body = plots_of(s, PlotSection::kSweep) + sweep_table(*run.sweep);
+    if (body.empty()) {
+      body = "<p class=\"note\">The sweep folder holds nothing usable (see the notes in the case "
+             "summary).</p>\n";
+    }
+    out += subsection(s, "sweep", "Work-precision sweep", body);
   }
   out += subsection(s, "drivers", "Drivers", plots_of(s, PlotSection::kDrivers));
   out += subsection(s, "energy", "Energy", energy_note(run) + plots_of(s, PlotSection::kEnergy));

@@ -414,6 +414,7 @@ RunData read_run_data(const std::filesystem::path& directory) {
   read_mode_tables(run);
   find_media(run);
   run.selection = read_selection(directory, run.notes);
+  run.sweep = read_sweep(directory, run.notes);
   return run;
 }
 

@@ -2,12 +2,14 @@
 // DIR/results.h5 (docs/results-format.md) through render's reader plus the per-sample series
 // render does not need (reactions, drivers, energies, violations, steps), DIR/modes.h5
 // (docs/modes-format.md) for mode kinds and labels, the media `limber render` left in DIR, and
-// the CSV files `limber select` left in DIR/selection (selection_data.h).
+// the CSV files `limber select` left in DIR/selection (selection_data.h) and `limber sweep`'s
+// work-precision table in DIR/sweep (sweep_data.h).
 #pragma once
 
 #include "results_reader.h"
 #include "selection_data.h"
 #include "stress_reader.h"
+#include "sweep_data.h"
 
 #include <Eigen/Core>
 
@@ -93,6 +95,7 @@ struct RunData {
   std::vector<std::filesystem::path> frames;  // DIR/frames/*.png, sorted
   std::optional<std::filesystem::path> video; // DIR/animation.mp4
   std::optional<SelectionData> selection;     // DIR/selection from `limber select`
+  std::optional<SweepData> sweep;             // DIR/sweep from `limber sweep`
   std::vector<std::string> notes;       // what was found but could not be used, and why
 
   Eigen::Index sample_count() const { return results.sample_count(); }

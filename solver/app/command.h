@@ -22,6 +22,10 @@ Command add_modes_command(CLI::App& app);
 // `limber select CASE [-o DIR] [--keep F] [--target E] [--json] ...` (select_command.cpp).
 Command add_select_command(CLI::App& app);
 
+// `limber sweep CASE --over AXES [-o DIR] [--reference tight|RESULTS] [--target E] [--json]`
+// (sweep_command.cpp).
+Command add_sweep_command(CLI::App& app);
+
 // `limber run CASE [-o DIR] [--integrator ida|galpha] [--rtol R] [--atol A] [--step H]
 // [--t-end T] [--json]`.
 Command add_run_command(CLI::App& app);

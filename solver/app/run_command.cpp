@@ -33,8 +33,24 @@ struct RunOptions {
   std::string case_file;
   std::string output_dir;
   SettingsOverrides overrides;
+  std::optional<int> modes;  // normal modes of every flexible body (--modes)
   bool json = false;
 };
+
+// --modes N: every flexible body's request with N normal modes (its static modes kept, a
+// cut-off frequency dropped), so that `limber sweep` can vary the mode count of a case.
+io::ModeOverrides normal_mode_overrides(const io::Case& input, std::optional<int> modes) {
+  io::ModeOverrides overrides;
+  if (!modes) return overrides;
+  if (*modes < 0) throw InputError(fmt::format("expected --modes >= 0, got {}", *modes));
+  for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
+    modal::ModeRequest request = body.request;
+    request.normal_count = *modes;
+    request.max_frequency_hz.reset();
+    overrides[body.name] = request;
+  }
+  return overrides;
+}
 
 std::string describe_integrator(const integrate::IntegratorOptions& options) {
   if (options.method == integrate::Method::kIda) {
@@ -195,7 +211,7 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
   return fmt::format(
       "{{\"status\": {}, \"message\": {}, \"integrator\": {}, \"t_end\": {}, \"t_reached\": {}, "
       "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_failures\": {}, "
-      "\"newton_iterations\": {}, "
+      "\"newton_iterations\": {}, \"jacobian_evaluations\": {}, \"residual_evaluations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
       "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"clearance\": {}, "
       "\"accuracy\": {}, \"results\": {}}}",
@@ -203,7 +219,8 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
       summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
-      json_number(summary.wall_seconds), json_number(summary.max_position_violation),
+      s.jacobian_evaluations, s.residual_evaluations, json_number(summary.wall_seconds),
+      json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
       json_string_list(details), json_events(model, summary.events),
       json_clearance(summary.clearance), json_accuracy(summary.accuracy), json_string(results_path));
@@ -220,7 +237,8 @@ int run_case(const RunOptions& options) {
   }
   const io::RunSettings settings = options.overrides.apply(input.mechanism->run);
   run::check_settings(settings);
-  const io::CaseReduction reduction = io::reduce_case(input, io::ReductionScope::kMechanismBodies);
+  const io::CaseReduction reduction =
+      io::reduce_case(input, io::ReductionScope::kMechanismBodies, normal_mode_overrides(input, options.modes));
   const io::Mechanism mechanism = io::build_mechanism(input, reduction);
   const multibody::Model& model = mechanism.model;
 
@@ -352,10 +370,14 @@ Command add_run_command(CLI::App& app) {
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>)");
   options->overrides.add_options(*cli);
+  cli->add_option("--modes", options->modes,
+                  "Normal modes of every flexible body (N >= 0) in place of the case's; its static "
+                  "modes are kept (limber sweep varies this)");
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"message\", \"integrator\", "
                 "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", \"newton_failures\", "
-                "\"newton_iterations\", \"wall_s\", \"max_constraint_violation\", "
+                "\"newton_iterations\", \"jacobian_evaluations\", \"residual_evaluations\", \"wall_s\", "
+                "\"max_constraint_violation\", "
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
                 "\"redundant_details\", \"events\": [{\"t\", \"name\", \"kind\", \"joint\", "
                 "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"clearance\": "

@@ -140,6 +140,18 @@ bool H5Group::has(const std::string& name) const {
   return H5Lexists(self_->id, name.c_str(), H5P_DEFAULT) > 0;
 }
 
+std::vector<std::string> H5Group::links() const {
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    return 0;
+  };
+  if (H5Literate(self_->id, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0) {
+    fail("cannot list", path_);
+  }
+  return names;
+}
+
 void H5Group::write_doubles(const std::string& name, const H5Dims& dims, const double* data) const {
   write_dataset(self_->id, name, path_, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data);
 }
@@ -190,6 +202,21 @@ std::vector<std::string> H5Group::read_strings(const std::string& name) const {
   if (!dataset.ok()) fail("missing dataset", path_ + "/" + name);
   Scoped space(H5Dget_space(dataset.get()), H5Sclose);
   const auto count = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+  // Fixed-length strings (results.h5's string datasets): read as stored, each up to its first NUL.
+  Scoped file_type(H5Dget_type(dataset.get()), H5Tclose);
+  if (H5Tget_class(file_type.get()) == H5T_STRING && H5Tis_variable_str(file_type.get()) == 0) {
+    const std::size_t size = H5Tget_size(file_type.get());
+    std::string buffer(count * size, '\0');
+    if (count > 0 && H5Dread(dataset.get(), file_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) {
+      fail("cannot read strings", path_ + "/" + name);
+    }
+    std::vector<std::string> values;
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::string text = buffer.substr(k * size, size);
+      values.push_back(text.substr(0, text.find('\0')));
+    }
+    return values;
+  }
   std::vector<char*> pointers(count, nullptr);
   Scoped type = string_type();
   if (count > 0 &&
@@ -206,6 +233,13 @@ std::vector<std::string> H5Group::read_strings(const std::string& name) const {
 std::string H5Group::read_string_attribute(const std::string& name) const {
   Scoped attribute(H5Aopen(self_->id, name.c_str(), H5P_DEFAULT), H5Aclose);
   if (!attribute.ok()) fail("missing attribute", path_ + "@" + name);
+  // Fixed-length strings (results.h5's attributes): read as stored, up to the first NUL.
+  Scoped file_type(H5Aget_type(attribute.get()), H5Tclose);
+  if (H5Tget_class(file_type.get()) == H5T_STRING && H5Tis_variable_str(file_type.get()) == 0) {
+    std::string fixed(H5Tget_size(file_type.get()), '\0');
+    if (H5Aread(attribute.get(), file_type.get(), fixed.data()) < 0) fail("cannot read attribute", path_ + "@" + name);
+    return fixed.substr(0, fixed.find('\0'));
+  }
   Scoped type = string_type();
   char* text = nullptr;
   if (H5Aread(attribute.get(), type.get(), &text) < 0) {

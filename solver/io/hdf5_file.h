@@ -29,6 +29,8 @@ class H5Group {
   H5Group create_group(const std::string& name) const;
   H5Group open_group(const std::string& name) const;
   bool has(const std::string& name) const;
+  // Names of the links (groups, datasets) directly in this group, in name order.
+  std::vector<std::string> links() const;
 
   // Datasets: `data` holds product(dims) values, row-major. An empty `dims` writes a scalar.
   void write_doubles(const std::string& name, const H5Dims& dims, const double* data) const;
@@ -41,7 +43,7 @@ class H5Group {
   std::vector<double> read_doubles(const std::string& name, H5Dims* dims = nullptr) const;
   std::vector<int> read_ints(const std::string& name, H5Dims* dims = nullptr) const;
   std::vector<std::string> read_strings(const std::string& name) const;
-  std::string read_string_attribute(const std::string& name) const;
+  std::string read_string_attribute(const std::string& name) const;  // variable or fixed length
   int read_int_attribute(const std::string& name) const;
 
   const std::string& path() const { return path_; }  // "file.h5:/bodies/rod"

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "results/results_writer.h"
+#include "select/series_error.h"
 
 namespace limber::select {
 
@@ -132,20 +133,16 @@ void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity
   if (reference == runs.end() || !reference->ok()) return;
   for (CandidateRun& run : runs) {
     if (run.candidate.reference || !run.ok()) continue;
-    // The same sample times: both runs share the case's settings.
-    const Eigen::Index n = std::min(run.time.size(), reference->time.size());
-    if (n == 0) continue;
+    if (run.time.size() == 0) continue;
     run.error_peak = run.error_rms = 0.0;
     double worst = -1.0;
     for (const KeyQuantity& key : keys) {
-      const Eigen::VectorXd x = key_series(run, key).head(n);
-      const Eigen::VectorXd x_ref = key_series(*reference, key).head(n);
-      const Eigen::VectorXd difference = x - x_ref;
-      const double scale_peak = x_ref.cwiseAbs().maxCoeff();
-      const double scale_rms = x_ref.norm();
-      if (scale_peak <= 0.0) continue;
-      const double peak = difference.cwiseAbs().maxCoeff() / scale_peak;
-      const double rms = difference.norm() / scale_rms;
+      // On the reference's samples (the same times: both runs share the case's settings).
+      const SeriesError error = series_error(run.time, key_series(run, key), reference->time,
+                                             key_series(*reference, key));
+      if (std::isnan(error.peak)) continue;
+      const double peak = error.peak;
+      const double rms = error.rms;
       run.error_peak = std::max(run.error_peak, peak);
       run.error_rms = std::max(run.error_rms, rms);
       if (std::max(peak, rms) > worst) {

@@ -27,7 +27,8 @@
 namespace limber::select {
 
 // How a set's difference to the reference is measured, per quantity x over the samples:
-// peak: max |x − x_ref| / max |x_ref|; rms: rms(x − x_ref) / rms(x_ref).
+// peak: max |x − x_ref| / max |x_ref|; rms: rms(x − x_ref) / rms(x_ref) (series_error.h, the
+// measure `limber sweep` uses too).
 enum class ErrorNorm { kPeak, kRms };
 
 // One mode set's run: what it cost and the series the comparison measures.

@@ -115,5 +115,32 @@ TEST(ChartCanvas, LogarithmicAxisSpansWholeDecades) {
   }
 }
 
+// The work-precision plot of `limber sweep`: both axes logarithmic over whole decades, markers,
+// and every point where y = 1e-3 x^-2 maps (a second-order method's error against cost).
+TEST(ChartCanvas, LogLogAxesWithMarkers) {
+  const Eigen::Vector4d x(0.1, 0.2, 0.4, 0.8);
+  const Eigen::Vector4d y = 1e-3 * x.array().pow(-2.0);  // 0.1 ... 1.5625e-3
+  PlotSpec spec{"work precision", "wall time [s]", "error", {{"galpha", x, y}}, true};
+  spec.log_x = true;
+  spec.markers = true;
+  const auto dir = testing::fresh_directory("plot_loglog");
+  ChartCanvas canvas(kWidth, kHeight);
+  const PlotFrame frame = canvas.draw(spec, dir / "loglog.png");
+  EXPECT_TRUE(frame.log_x);
+  EXPECT_TRUE(frame.log_y);
+  EXPECT_NEAR(std::log10(frame.x_min), -1.0, 1e-12);
+  EXPECT_NEAR(std::log10(frame.x_max), 0.0, 1e-12);
+  EXPECT_NEAR(std::log10(frame.y_min), -3.0, 1e-12);
+  EXPECT_NEAR(std::log10(frame.y_max), -1.0, 1e-12);
+  const testing::Png png(dir / "loglog.png");
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    EXPECT_TRUE(color_near_pixel(png, frame.to_pixel(x(k), y(k)), kCurveColors[0])) << k;
+  }
+  // Equal ratios are equal distances on both axes: x doubles between points.
+  const double step_01 = frame.to_pixel(x(1), y(1)).x() - frame.to_pixel(x(0), y(0)).x();
+  const double step_23 = frame.to_pixel(x(3), y(3)).x() - frame.to_pixel(x(2), y(2)).x();
+  EXPECT_NEAR(step_01, step_23, 1e-9);
+}
+
 }  // namespace
 }  // namespace limber::report

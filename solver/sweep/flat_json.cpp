@@ -1,0 +1,78 @@
+#include "sweep/flat_json.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+namespace limber::sweep {
+
+namespace {
+
+// Position just after `"key":` and its spaces, or npos.
+std::size_t value_start(const std::string& text, const std::string& key) {
+  const std::string needle = "\"" + key + "\":";
+  std::size_t at = text.find(needle);
+  if (at == std::string::npos) return at;
+  at += needle.size();
+  while (at < text.size() && (text[at] == ' ' || text[at] == '\n' || text[at] == '\t')) ++at;
+  return at;
+}
+
+}  // namespace
+
+std::optional<double> json_number_field(const std::string& text, const std::string& key) {
+  const std::size_t at = value_start(text, key);
+  if (at == std::string::npos || at >= text.size()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str() + at, &end);
+  if (end == text.c_str() + at) return std::nullopt;  // null or not a number
+  return value;
+}
+
+std::optional<std::string> json_string_field(const std::string& text, const std::string& key) {
+  std::size_t at = value_start(text, key);
+  if (at == std::string::npos || at >= text.size() || text[at] != '"') return std::nullopt;
+  std::string value;
+  for (++at; at < text.size() && text[at] != '"'; ++at) {
+    if (text[at] != '\\' || at + 1 >= text.size()) {
+      value += text[at];
+      continue;
+    }
+    const char escaped = text[++at];
+    switch (escaped) {
+      case 'n': value += '\n'; break;
+      case 't': value += '\t'; break;
+      case 'r': value += '\r'; break;
+      case 'b': value += '\b'; break;
+      case 'f': value += '\f'; break;
+      case 'u': {
+        const long code = at + 4 < text.size() ? std::strtol(text.substr(at + 1, 4).c_str(), nullptr, 16) : 0;
+        value += code > 0 && code < 128 ? static_cast<char>(code) : '?';
+        at += 4;
+        break;
+      }
+      default: value += escaped;  // \" \\ \/
+    }
+  }
+  return value;
+}
+
+std::string json_quote(const std::string& text) {
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      quoted += '\\';
+      quoted += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      quoted += fmt::format("\\u{:04x}", static_cast<int>(c));
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted + "\"";
+}
+
+std::string json_value(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
+
+}  // namespace limber::sweep
