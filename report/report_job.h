@@ -1,5 +1,5 @@
-// `limber report`: one or more run directories -> OUT/index.html and OUT/images/*.png
-// (docs/report.md).
+// `limber report`: one or more run directories -> OUT/index.html, OUT/images/*.png (figures),
+// OUT/data/*.csv (every plotted curve) and OUT/media (the runs' videos) (docs/report.md).
 #pragma once
 
 #include <filesystem>
@@ -17,11 +17,17 @@ struct ReportOptions {
   int mode_image_width = 480;    // mode-shape pictures [pixels]
   int mode_image_height = 320;
   bool mode_shapes = true;       // draw the mode shapes of flexible bodies
+  // The plotting library inlined for interactive plots (interactive.h); a missing file gives
+  // static figures with a note on the page.
+  std::filesystem::path dygraphs_script = "/usr/share/javascript/dygraphs/dygraph.min.js";
+  // Pixel columns the interactive view's curves are decimated to (decimate.h).
+  int interactive_columns = 1000;
 };
 
 struct ReportSummary {
   std::filesystem::path index;    // OUT/index.html
-  int plots = 0;                  // PNG plots written
+  int plots = 0;                  // PNG plots written (each with its CSV)
+  bool interactive = false;       // the plotting library was inlined
   int mode_images = 0;
   std::vector<std::string> runs_not_ok;  // "<dir>: <status>" of failed or unfinished runs
 };

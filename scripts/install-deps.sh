@@ -10,6 +10,7 @@ packages=(
   libyaml-cpp-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libvtk9-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
+  libjs-dygraphs
   ffmpeg
   chromium
 )

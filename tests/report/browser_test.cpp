@@ -106,6 +106,17 @@ TEST(Browser, HeadlessChromiumRendersTheReportWithoutConsoleErrors) {
   const std::string dom = testing::read_text(root / "dom.html");
   EXPECT_NE(dom.find("Case summary"), std::string::npos) << testing::read_text(root / "dom.err");
   EXPECT_NE(dom.find("id=\"comparison\""), std::string::npos);
+  // The charts were built: <body> marked interactive, and each plot's div holds canvases.
+  EXPECT_NE(dom.find("<body class=\"interactive\">"), std::string::npos);
+  std::size_t plots = 0, charts = 0;
+  for (std::size_t at = dom.find("class=\"dygraph-plot\""); at != std::string::npos;
+       at = dom.find("class=\"dygraph-plot\"", at + 1)) {
+    ++plots;
+    const std::size_t next = dom.find("class=\"plot-legend\"", at);
+    if (dom.substr(at, next - at).find("<canvas") != std::string::npos) ++charts;
+  }
+  EXPECT_GT(plots, 10u);
+  EXPECT_EQ(charts, plots);
   const std::vector<std::string> console = console_lines(testing::read_text(root / "dom.err"));
   EXPECT_TRUE(console.empty()) << console.front();
 }

@@ -84,7 +84,8 @@ TEST(GroundReactionPlots, ComeBeforeTheJointFrameAndHoldTheStoredForces) {
   ASSERT_NE(joint_at, std::string::npos);
   EXPECT_LT(ground_at, joint_at);
   EXPECT_NE(html.find("<figcaption>Reaction force at joint R3 on slider, components in ground axes "
-                      "(X = ground x, Y = ground y, Z = ground z).</figcaption>"),
+                      "(X = ground x, Y = ground y, Z = ground z). "
+                      "<a class=\"csv\" href=\"data/run1_reaction_R3_force_ground.csv\">"),
             std::string::npos);
   PlotFrame frame;
   {
