@@ -96,7 +96,7 @@ std::string curve_json(const PlotSpec& plot, const CurveTable& table) {
   }
   out += "],\"colors\":[";
   for (std::size_t i = 0; i < table.labels.size(); ++i) {
-    const auto& rgb = kCurveColors[i % kCurveColors.size()];
+    const auto& rgb = i < plot.curves.size() ? curve_color(plot.curves[i], i) : kCurveColors[i % kCurveColors.size()];
     out += fmt::format("{}\"#{:02x}{:02x}{:02x}\"", i > 0 ? "," : "", rgb[0], rgb[1], rgb[2]);
   }
   out += "],\"data\":[";

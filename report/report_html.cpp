@@ -38,6 +38,8 @@ tr.kept td, .kept-key, tr.chosen td, .chosen-key { background: #e3f2e1; }
 tr.kept td { font-weight: bold; }
 tr.reference td, .reference-key { background: #eef2f7; font-style: italic; }
 .indeterminate { color: #8a5a00; }
+.plot-warning { background: #fff4d6; border-left: 4px solid #e09b00; padding: .4em .8em;
+                margin: .3em 0; color: #6d4c00; }
 td.failed { color: #8e0000; font-weight: bold; }
 @media print { nav { display: none; } h2 { page-break-before: always; } }
 )";
@@ -60,6 +62,9 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
         "data-legend=\"legend-{0}\" data-run=\"{1}\"></div><div class=\"plot-legend\" "
         "id=\"legend-{0}\"></div>\n",
         id, run_anchor);
+  }
+  if (!plot.warning.empty()) {
+    out += "<p class=\"plot-warning\" role=\"note\">" + html_escape(plot.warning) + "</p>\n";
   }
   out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>{}", kImageFolder,
                      plot.file, caption, caption);
@@ -169,10 +174,21 @@ std::string bodies_table(const RunData& run) {
 
 std::string joints_table(const RunData& run) {
   if (run.results.joints.empty()) return "<p class=\"note\">No joints in the results.</p>\n";
-  std::string out = "<table><tr><th>joint</th><th>type</th><th>body i</th><th>body j</th></tr>\n";
+  std::string out =
+      "<table><tr><th>joint</th><th>type</th><th>body i</th><th>body j</th><th>reaction</th></tr>\n";
   for (const render::JointTrack& j : run.results.joints) {
-    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", html_escape(j.name),
-                       html_escape(j.type), html_escape(j.body_i), html_escape(j.body_j));
+    const auto reactions = std::find_if(run.joints.begin(), run.joints.end(),
+                                        [&](const JointReactions& r) { return r.name == j.name; });
+    const Indeterminacy which =
+        reactions != run.joints.end() ? indeterminacy(run, *reactions) : Indeterminacy{};
+    const char* what = which.force && which.torque ? "force and torque minimum-norm (indeterminate)"
+                       : which.force               ? "force minimum-norm (indeterminate)"
+                       : which.torque ? "torque minimum-norm (indeterminate); force determined"
+                                      : "determined";
+    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td{}>{}</td></tr>\n",
+                       html_escape(j.name), html_escape(j.type), html_escape(j.body_i),
+                       html_escape(j.body_j),
+                       which.force || which.torque ? " class=\"indeterminate\"" : "", what);
   }
   return out + "</table>\n";
 }

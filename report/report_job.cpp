@@ -40,7 +40,7 @@ WrittenPlot write_plot(ChartCanvas& canvas, NamedPlot plot, const std::filesyste
   file << curve_csv(curve_table(plot.spec.curves), plot.spec.x_label, plot.spec.y_label);
   file.close();
   if (!file) throw std::runtime_error("cannot write '" + csv.string() + "'");
-  if (interactive) {
+  if (interactive && !plot.spec.curves.empty()) {
     const CurveTable table = curve_table(plot.spec.curves, columns);
     written.interactive_json = curve_json(plot.spec, table);
     written.interactive_rows = table.x.size();
@@ -49,12 +49,33 @@ WrittenPlot write_plot(ChartCanvas& canvas, NamedPlot plot, const std::filesyste
   return written;
 }
 
+PlotOptions plot_options(const ReportOptions& options) {
+  PlotOptions plot;
+  plot.frames.clear();
+  for (const std::string& frame : options.frames) {
+    if (frame == "ground") {
+      plot.frames.push_back(ReactionFrame::kGround);
+    } else if (frame == "joint") {
+      plot.frames.push_back(ReactionFrame::kJoint);
+    } else {
+      throw InputError("expected --frame ground or joint, got '" + frame + "'");
+    }
+  }
+  if (plot.frames.empty()) plot.frames.push_back(ReactionFrame::kGround);
+  if (!(options.zero_fraction >= 0.0 && options.zero_fraction < 1.0)) {
+    throw InputError("expected a zero fraction in [0, 1), got " + std::to_string(options.zero_fraction));
+  }
+  plot.zero_fraction = options.zero_fraction;
+  return plot;
+}
+
 }  // namespace
 
 ReportSummary generate_report(const ReportOptions& options) {
   if (options.directories.empty()) {
     throw InputError("expected at least one results directory, got none");
   }
+  const PlotOptions plot_settings = plot_options(options);
   // Read every run first: a bad directory stops the report before anything is written.
   std::vector<RunData> runs;
   for (const std::filesystem::path& dir : options.directories) runs.push_back(read_run_data(dir));
@@ -95,14 +116,14 @@ ReportSummary generate_report(const ReportOptions& options) {
       section.run = &runs[k];
       section.label = labels[k];
       section.anchor = "run" + std::to_string(k + 1);
-      for (NamedPlot& plot : run_plots(runs[k], section.anchor + "_")) {
+      for (NamedPlot& plot : run_plots(runs[k], section.anchor + "_", plot_settings)) {
         section.plots.push_back(
             write_plot(canvas, std::move(plot), out, summary.interactive, options.interactive_columns));
       }
       summary.plots += static_cast<int>(section.plots.size());
       content.runs.push_back(std::move(section));
     }
-    for (NamedPlot& plot : comparison_plots(runs, labels)) {
+    for (NamedPlot& plot : comparison_plots(runs, labels, plot_settings)) {
       content.comparisons.push_back(
           write_plot(canvas, std::move(plot), out, summary.interactive, options.interactive_columns));
     }

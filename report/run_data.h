@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,6 +28,16 @@ struct JointReactions {
   RowMatrix3d torque_joint;  // joint frame [N m]
   RowMatrix3d force_ground;  // ground axes [N] (empty when the file has none)
   RowMatrix3d torque_ground; // ground axes, about the joint point [N m] (empty when none)
+  Eigen::VectorXd indeterminate;  // ns, 1 where redundancy made the reaction minimum-norm (empty: none)
+
+  bool is_indeterminate() const { return indeterminate.size() > 0 && indeterminate.maxCoeff() > 0.0; }
+};
+
+// A flexible body's deflection probe (case key `deflection`): a node's elastic displacement
+// relative to a chord, body axes [m], ns x 3.
+struct DeflectionProbe {
+  std::string body;
+  RowMatrix3d values;
 };
 
 // A named per-sample series (driver effort, energy, violation).
@@ -72,6 +83,11 @@ struct RunData {
   render::Results results;              // title, status, bodies, meshes, joints, time (ns)
   std::vector<JointReactions> joints;   // in the order of results.joints
   std::vector<Series> drivers;          // efforts [N or N m]
+  std::vector<std::string> driver_units;  // per driver: "N", "N m", or "" when the file does not say
+  // Names of the ground axes x, y, z (root attribute axis_names, case key `axis_names`).
+  std::array<std::string, 3> axis_names{"X", "Y", "Z"};
+  bool axis_names_from_case = false;
+  std::vector<DeflectionProbe> deflections;
   std::vector<Series> energies;         // [J]
   std::vector<HingeLimitTrack> hinge_limits;  // in the model's order
   std::vector<HingeEventRow> events;

@@ -131,17 +131,17 @@ TEST(CurveExport, CsvBesideTheReportReadsBackToTheResultsFile) {
   options.mode_shapes = false;
   const ReportSummary summary = generate_report(options);
 
-  // Parse the CSV of the ground-axes force: header, then time and X, Y, Z.
+  // Parse the CSV of the ground-axes force: header, then time, X, Y, Z and |F|.
   const std::string csv = testing::read_text(dir / "report/data/run1_reaction_R3_force_ground.csv");
   std::vector<std::vector<double>> rows;
   std::size_t at = csv.find('\n') + 1;
-  EXPECT_EQ(csv.substr(0, at), "time [s],X [N],Y [N],Z [N]\n");
+  EXPECT_EQ(csv.substr(0, at), "time [s],X [N],Y [N],Z [N],|F| [N]\n");
   while (at < csv.size()) {
     const std::size_t end = csv.find('\n', at);
     std::vector<double>& row = rows.emplace_back();
     const char* p = csv.c_str() + at;
     char* next = nullptr;
-    for (int c = 0; c < 4; ++c, p = next + 1) row.push_back(std::strtod(p, &next));
+    for (int c = 0; c < 5; ++c, p = next + 1) row.push_back(std::strtod(p, &next));
     at = end + 1;
   }
 
@@ -152,6 +152,7 @@ TEST(CurveExport, CsvBesideTheReportReadsBackToTheResultsFile) {
     const auto i = static_cast<Eigen::Index>(k);
     ASSERT_EQ(rows[k][0], data.results.time(i)) << k;
     for (int c = 0; c < 3; ++c) ASSERT_EQ(rows[k][1 + c], data.joints[0].force_ground(i, c)) << k;
+    ASSERT_DOUBLE_EQ(rows[k][4], data.joints[0].force_ground.row(i).norm()) << k;
   }
 
   // The plot links it and says it is decimated on screen.

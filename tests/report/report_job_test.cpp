@@ -168,7 +168,7 @@ TEST_F(ReportJobTest, FailedRunShowsBannerAndWhatExists) {
   EXPECT_NE(html.find("<div class=\"banner failed\" role=\"alert\">This run failed: Newton failed "
                       "at t = 0.5 s &lt;step too small&gt; The report shows the 101 samples"),
             std::string::npos);
-  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "report/images/run1_reaction_R3_force.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "report/images/run1_reaction_R3_force_ground.png"));
   ASSERT_EQ(summary.runs_not_ok.size(), 1u);
   expect_links_resolve(summary.index);
 }
@@ -215,9 +215,10 @@ TEST_F(ReportJobTest, SeveralRunsGetComparisonPlotsAndRunStatistics) {
   expect_links_resolve(summary.index);
   const std::string html = testing::read_text(summary.index);
   EXPECT_NE(html.find("id=\"comparison\""), std::string::npos);
-  for (const char* c : {"Fx", "Fy", "Fz"}) {
+  // Ground axes (the default frame) X, Y, Z.
+  for (const char* c : {"x", "y", "z"}) {
     EXPECT_TRUE(std::filesystem::is_regular_file(root / "out/images" /
-                                                 (std::string("compare_R3_") + c + ".png")));
+                                                 (std::string("compare_R3_ground_") + c + ".png")));
   }
   for (const char* s : {"run1-reactions", "run1-drivers", "run1-energy", "run1-violation",
                         "run2-reactions"}) {
