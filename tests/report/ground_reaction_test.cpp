@@ -225,5 +225,46 @@ TEST(GroundReactionPlots, NoiseIsListedAsZeroAndMinimumNormReactionsSayTheyAreIn
             std::string::npos);
 }
 
+TEST(GroundReactionPlots, AxisNamesAndDriverUnitsComeFromTheFile) {
+  unsetenv("DISPLAY");
+  // The case named its axes (root attribute axis_names) and the writer gave each driver its
+  // unit; force (1, 2, 3) N on joint "pin", a rotation driver and a translation driver.
+  const auto dir = testing::fresh_directory("axis_names");
+  {
+    results::ResultsWriter writer(dir, "named axes", "ground_reaction_test.cpp");
+    writer.set_axis_names({"X (rail)", "Y (pin)", "Z (up)"});
+    writer.add_rigid_body({"arm", {}});
+    writer.add_joint({"pin", "revolute", "ground", "arm"});
+    writer.add_driver("motor", "N m");
+    writer.add_driver("jack", "N");
+    for (int k = 0; k <= 4; ++k) {
+      results::Sample sample;
+      sample.time = 0.25 * k;
+      sample.bodies.emplace_back();
+      results::JointSample pin;
+      pin.force_ground = pin.force_joint = Eigen::Vector3d(1.0, 2.0, 3.0);
+      sample.joints = {pin};
+      sample.driver_efforts = {1.0, 2.0};
+      writer.append_sample(sample);
+    }
+    writer.finish(results::RunStatus::kOk);
+  }
+  const RunData data = read_run_data(dir);
+  EXPECT_TRUE(data.axis_names_from_case);
+  const std::vector<NamedPlot> plots = run_plots(data, "");
+  const NamedPlot& force = plot_named(plots, "reaction_pin_force_ground.png");
+  ASSERT_EQ(force.spec.curves.size(), 4u);
+  EXPECT_EQ(force.spec.curves[0].label, "X (rail)");
+  EXPECT_EQ(force.spec.curves[2].label, "Z (up)");
+  EXPECT_NE(force.caption.find("ground axes (X (rail) = ground x, Y (pin) = ground y, Z (up) = "
+                               "ground z, names from the case)"),
+            std::string::npos)
+      << force.caption;
+  // One effort plot per unit.
+  EXPECT_EQ(plot_named(plots, "driver_efforts_N_m.png").spec.y_label, "effort [N m]");
+  EXPECT_EQ(plot_named(plots, "driver_efforts_N.png").spec.y_label, "effort [N]");
+  EXPECT_EQ(plot_named(plots, "driver_efforts_N_m.png").spec.curves[0].label, "motor");
+}
+
 }  // namespace
 }  // namespace limber::report
