@@ -499,8 +499,13 @@ void Scene::update(double t) {
   }
 
   // Time stamp and, for a follow camera, the centroid of the body frames.
-  char stamp[64];
-  std::snprintf(stamp, sizeof stamp, "t = %.4f s", t);
+  char stamp[96];
+  const double slow = slow_motion(s.options);
+  if (std::abs(slow - 1.0) < 1e-9) {
+    std::snprintf(stamp, sizeof stamp, "t = %.4f s", t);
+  } else {
+    std::snprintf(stamp, sizeof stamp, "t = %.4f s  (%.3gx slow motion)", t, slow);
+  }
   s.time_text->SetInput(stamp);
   if (s.options.follow && !s.results.bodies.empty()) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
