@@ -34,6 +34,7 @@ struct RenderOptions {
   std::optional<double> t1;
   bool ground = true;         // draw a ground plane under the scene
   bool time_stamp = true;     // "t = ... s" bottom left (off for mode shapes)
+  bool world_triad = true;    // ground x, y, z arrows of a round length (world_triad.h)
   AntiAliasing anti_aliasing = AntiAliasing::kFxaa;  // ~2 ms per 1280 x 720 frame
   bool write_png = true;      // DIR/frames/frame_00000.png ...
   bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample

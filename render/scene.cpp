@@ -3,6 +3,7 @@
 #include "body_pose.h"
 #include "core/error.h"
 #include "relative_deflection.h"
+#include "world_triad.h"
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
@@ -336,6 +337,15 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     }
   }
   if (all.empty()) all.add(Eigen::Vector3d::Zero(), 1.0);
+  // The world triad (also the length scale) beside the motion, below its lowest corner, inside
+  // the camera's fit.
+  const double triad_length = round_length(0.25 * std::max(all.radius(), 1e-6));
+  const Eigen::Vector3d triad_origin =
+      all.lo - Eigen::Vector3d(1.5 * triad_length, 0.0, 0.0);
+  if (options.world_triad) {
+    all.add(triad_origin, 0.4 * triad_length);
+    all.add(triad_origin + 1.3 * triad_length * Eigen::Vector3d::Ones());
+  }
   const double radius = std::max(all.radius(), 1e-6);
   frame_radius = std::max(frame_radius, 1e-6);
   const double range_max = s.umax > 0.0 ? s.umax : 1.0;
@@ -382,6 +392,10 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     actor->GetProperty()->SetColor(kGroundColor[0], kGroundColor[1], kGroundColor[2]);
     actor->GetProperty()->SetAmbient(0.3);
     s.renderer->AddActor(actor);
+  }
+
+  if (options.world_triad) {
+    add_world_triad(s.renderer, triad_origin, triad_length, std::max(10, options.height / 45));
   }
 
   // Colour bar with units, only when something is coloured.

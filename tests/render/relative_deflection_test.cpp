@@ -2,6 +2,7 @@
 // a rigidly moved body has none, a known bending shape between two joint nodes comes back
 // exactly, and the joint nodes are the mesh nodes nearest the joints on the body.
 #include "relative_deflection.h"
+#include "world_triad.h"
 
 #include <gtest/gtest.h>
 
@@ -89,6 +90,14 @@ TEST(RelativeDeflection, JointNodesAreTheNodesNearestTheJointsOnTheBody) {
   std::vector<std::string> names;
   EXPECT_EQ(joint_nodes(results, results.bodies[0], &names), (std::vector<Eigen::Index>{10, 0}));
   EXPECT_EQ(names, (std::vector<std::string>{"end", "start"}));
+}
+
+TEST(WorldTriad, ArrowLengthIsTheSmallestRoundLengthAboveSevenTenthsOfTheWish) {
+  EXPECT_DOUBLE_EQ(round_length(0.15), 0.2);   // 0.105 -> 0.2 (0.1 is below)
+  EXPECT_DOUBLE_EQ(round_length(0.07), 0.05);  // 0.049 -> 0.05
+  EXPECT_DOUBLE_EQ(round_length(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(round_length(3.0), 5.0);    // 2.1 -> 5
+  EXPECT_DOUBLE_EQ(round_length(9.0), 10.0);   // 6.3 -> 10
 }
 
 }  // namespace
