@@ -28,6 +28,19 @@ std::vector<std::string> run_labels(const std::vector<RunData>& runs) {
   return labels;
 }
 
+// Removes the files an earlier report wrote into `folder` (names starting "run<digit>" or
+// "compare_"), so a report never links or ships stale plots, data or media; other files stay.
+void remove_earlier_outputs(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const bool ours = (name.size() > 3 && name.rfind("run", 0) == 0 && name[3] >= '0' && name[3] <= '9') ||
+                      name.rfind("compare_", 0) == 0;
+    if (ours && entry.is_regular_file()) std::filesystem::remove(entry.path(), error);
+  }
+}
+
 // Draws `plot` into images/, writes its curves to data/<stem>.csv and, when the page is
 // interactive, keeps their decimated JSON.
 WrittenPlot write_plot(ChartCanvas& canvas, NamedPlot plot, const std::filesystem::path& out,
@@ -85,6 +98,7 @@ ReportSummary generate_report(const ReportOptions& options) {
       options.output.empty() ? options.directories.front() / "report" : options.output;
   const std::filesystem::path images = out / kImageFolder;
   std::error_code error;
+  for (const char* folder : {kImageFolder, kDataFolder, kMediaFolder}) remove_earlier_outputs(out / folder);
   std::filesystem::create_directories(images, error);
   if (!error) std::filesystem::create_directories(out / kDataFolder, error);
   if (error) {

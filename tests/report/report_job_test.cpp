@@ -260,6 +260,24 @@ TEST_F(ReportJobTest, StillsStripAndVideoFromRenderOutputs) {
   expect_links_resolve(summary.index);
 }
 
+TEST_F(ReportJobTest, EarlierReportsFilesAreRemovedOthersKept) {
+  const auto dir = testing::fresh_directory("stale");
+  write_reaction_run(dir, ReactionRun{});
+  // What an earlier report (another frame, another run count) left, and a file of the user's.
+  std::filesystem::create_directories(dir / "report/images");
+  std::filesystem::create_directories(dir / "report/data");
+  std::ofstream(dir / "report/images/run1_reaction_R3_force.png") << "old";
+  std::ofstream(dir / "report/data/run2_energy.csv") << "old";
+  std::ofstream(dir / "report/data/notes.csv") << "mine";
+  ReportOptions options = options_for({dir});
+  options.mode_shapes = false;
+  generate_report(options);
+  EXPECT_FALSE(std::filesystem::exists(dir / "report/images/run1_reaction_R3_force.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "report/data/run2_energy.csv"));
+  EXPECT_EQ(testing::read_text(dir / "report/data/notes.csv"), "mine");
+  EXPECT_TRUE(std::filesystem::exists(dir / "report/data/run1_reaction_R3_force_ground.csv"));
+}
+
 TEST(PickStills, FirstAndLastIncludedEvenlySpread) {
   std::vector<std::filesystem::path> frames;
   for (int k = 0; k < 11; ++k) frames.emplace_back(std::to_string(k));
