@@ -293,15 +293,25 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
 
   // Deflections: the largest elastic displacement of each flexible body, then its modal
   // coordinates.
+  // Relative to a rigid fit through each body's joint nodes (as the animation colours it):
+  // the floating frame lets u carry a rigid part, which is not deflection.
   std::vector<Curve> deflections;
+  std::string fitted;
   for (const render::BodyTrack& body : run.results.bodies) {
-    if (body.flexible) deflections.push_back({body.name, t, max_deflection(body)});
+    if (!body.flexible) continue;
+    std::vector<std::string> joints;
+    deflections.push_back({body.name, t, max_relative_deflection(run.results, body, &joints)});
+    std::string names;
+    for (const std::string& j : joints) names += (names.empty() ? "" : ", ") + j;
+    fitted += (fitted.empty() ? " " : "; ") + body.name +
+              (names.empty() ? ": u in its floating frame (no joints)" : ": relative to a rigid fit through " + names);
   }
   if (!deflections.empty()) {
     plots.push_back({PlotSection::kDeflection, prefix + "deflection.png",
-                     "Largest elastic displacement |u| over the nodes of each flexible body "
-                     "(u = sum of mode shapes times modal coordinates).",
-                     {"Elastic deflection (largest over nodes)", kTimeLabel, "max |u| [m]",
+                     "Largest elastic displacement over the nodes of each flexible body, "
+                     "relative to the rigid motion that best carries its joint nodes (u = sum of "
+                     "mode shapes times modal coordinates, minus that rigid fit):" + fitted + ".",
+                     {"Elastic deflection (largest over nodes)", kTimeLabel, "max |u rel.| [m]",
                       deflections, false}});
   }
   for (const DeflectionProbe& probe : run.deflections) {

@@ -1,7 +1,9 @@
 #include "run_data.h"
 
 #include "core/error.h"
+#include "body_pose.h"
 #include "modes_reader.h"
+#include "relative_deflection.h"
 #include "results/h5_handle.h"
 #include "results/link_name.h"
 
@@ -448,6 +450,22 @@ RunData read_run_data(const std::filesystem::path& directory) {
   find_media(run);
   run.selection = read_selection(directory, run.notes);
   return run;
+}
+
+Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
+                                        std::vector<std::string>* joints) {
+  const render::RigidFitBasis fit =
+      render::rigid_fit_basis(body.mesh.nodes, render::joint_nodes(results, body, joints));
+  if (fit.anchors.empty()) return max_deflection(body);
+  const Eigen::Index ns = body.modal_coordinates.rows();
+  Eigen::VectorXd largest = Eigen::VectorXd::Zero(ns);
+  if (body.mesh.mode_translations.cols() == 0) return largest;
+  for (Eigen::Index s = 0; s < ns; ++s) {
+    const render::RowMatrix3d u =
+        render::elastic_displacements(body.mesh, body.modal_coordinates.row(s).transpose());
+    largest(s) = render::relative_displacements(fit, body.mesh.nodes, u).rowwise().norm().maxCoeff();
+  }
+  return largest;
 }
 
 Eigen::VectorXd max_deflection(const render::BodyTrack& body) {

@@ -121,4 +121,10 @@ RunData read_run_data(const std::filesystem::path& directory);
 // Largest elastic displacement max_n |u_n| of a flexible body per sample [m], u = Phi eta.
 Eigen::VectorXd max_deflection(const render::BodyTrack& body);
 
+// Largest elastic displacement relative to the rigid fit through the body's joint nodes,
+// max_n |u_rel,n| per sample [m] (render/relative_deflection.h: what the animation scales and
+// colours); max_deflection when the body has no joints. `joints` receives the joints' names.
+Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
+                                        std::vector<std::string>* joints = nullptr);
+
 }  // namespace limber::report
