@@ -117,6 +117,22 @@ TEST(Browser, HeadlessChromiumRendersTheReportWithoutConsoleErrors) {
   }
   EXPECT_GT(plots, 10u);
   EXPECT_EQ(charts, plots);
+
+  // Printed (PDF): the PNG figures, not the charts: one image per plot plus the mode-shape
+  // pictures (the print style sheet hides the charts' canvases, which would print as images).
+  const std::filesystem::path pdf = root / "report.pdf";
+  run_chromium(chromium, root / "profile", "--print-to-pdf='" + pdf.string() + "'", page,
+               root / "pdf.out", root / "pdf.err");
+  const std::string printed = testing::read_text(pdf);
+  std::size_t images = 0;
+  for (std::size_t at = printed.find("/Subtype /Image"); at != std::string::npos;
+       at = printed.find("/Subtype /Image", at + 1)) {
+    ++images;
+  }
+  const std::string html = testing::read_text(page);
+  std::size_t img_tags = 0;
+  for (std::size_t at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1)) ++img_tags;
+  EXPECT_EQ(images, img_tags) << "charts printed, or figures missing";
   const std::vector<std::string> console = console_lines(testing::read_text(root / "dom.err"));
   EXPECT_TRUE(console.empty()) << console.front();
 }
