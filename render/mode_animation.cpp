@@ -91,6 +91,7 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
   view.camera = options.camera;
   view.ground = false;  // mode shapes float in the body frame
   view.time_stamp = false;
+  view.world_triad = false;  // body-frame pictures: ground axes would mislead
   validate(view);
   const ModeShapes shapes = read_mode_shapes(modes_file);
 

@@ -25,7 +25,18 @@ cli::Command add_render_command(CLI::App& app) {
       "render", "Render DIR/results.h5 offscreen: PNG frames, MP4 (and GIF), VTU/PVD for ParaView");
   command->add_option("DIR", options->directory, "run directory holding results.h5")
       ->required();
-  command->add_option("--fps", options->fps, "frames per second of simulated time")
+  auto slow_motion = std::make_shared<double>(1.0);
+  CLI::Option* fps_option =
+      command->add_option("--fps", options->fps,
+                          "frames rendered per second of simulated time (default: slow motion "
+                          "x playback rate)");
+  command->add_option("--slow-motion", *slow_motion,
+                          "seconds of video per second of simulated time (e.g. 50: 0.1 s of "
+                          "motion lasts 5 s); sets --fps to this x the playback rate")
+          ->capture_default_str()
+          ->excludes(fps_option);
+  command->add_option("--playback-fps", options->playback_fps,
+                      "frames per second of the video (MP4, GIF)")
       ->capture_default_str();
   command->add_option("--size", *size, "frame size WIDTHxHEIGHT in pixels")->capture_default_str();
   command->add_option("--camera", *camera, "view: iso, front, top or side")->capture_default_str();
@@ -56,6 +67,7 @@ cli::Command add_render_command(CLI::App& app) {
     options->camera = parse_camera_preset(*camera);
     options->color = parse_color_by(*color);
     options->anti_aliasing = *no_fxaa ? AntiAliasing::kNone : parse_anti_aliasing(*anti_aliasing);
+    if (fps_option->count() == 0) options->fps = *slow_motion * options->playback_fps;
     if (t0_option->count() > 0) options->t0 = *t0;
     if (t1_option->count() > 0) options->t1 = *t1;
     options->write_video = !*no_video;
@@ -63,6 +75,10 @@ cli::Command add_render_command(CLI::App& app) {
     fmt::print("rendered {} frames of t = [{}, {}] s at {}x{} ({}); {} VTU files\n",
                summary.frames, summary.t0, summary.t1, options->width, options->height,
                summary.backend, summary.vtu_files);
+    fmt::print("  {:g} frames per simulated second played at {:g} frames/s: {:g}x slow motion, "
+               "{:.2f} s of video\n",
+               options->fps, options->playback_fps, render::slow_motion(*options),
+               summary.frames / options->playback_fps);
     if (summary.frames > 0) {
       fmt::print("  {:.1f} frames/s wall clock; {}\n",
                  summary.frames / std::max(summary.wall_seconds, 1e-9),

@@ -116,7 +116,7 @@ RenderSummary render_results(const RenderOptions& options) {
             std::tuple{options.write_gif, "animation.gif", &summary.gif}}) {
         if (!wanted) continue;
         const std::filesystem::path output = options.directory / name;
-        const std::string problem = encode_video(*ffmpeg, frames, options.fps, output);
+        const std::string problem = encode_video(*ffmpeg, frames, options.playback_fps, output);
         if (problem.empty()) *target = output;
         else summary.warnings.push_back(problem);
       }

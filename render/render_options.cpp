@@ -46,9 +46,14 @@ AntiAliasing parse_anti_aliasing(const std::string& text) {
 }
 
 void validate(const RenderOptions& options) {
-  if (!(options.fps > 0.0) || !std::isfinite(options.fps) || options.fps > 1000.0) {
-    throw InputError("--fps: expected a frame rate in (0, 1000] frames/s, got " +
-                     std::to_string(options.fps));
+  if (!(options.playback_fps > 0.0) || !std::isfinite(options.playback_fps) ||
+      options.playback_fps > 1000.0) {
+    throw InputError("--playback-fps: expected a frame rate in (0, 1000] frames/s, got " +
+                     std::to_string(options.playback_fps));
+  }
+  if (!(options.fps > 0.0) || !std::isfinite(options.fps) || options.fps > 1e6) {
+    throw InputError("--fps/--slow-motion: expected a sampling rate in (0, 1e6] frames per "
+                     "simulated second, got " + std::to_string(options.fps));
   }
   if (options.width < kMinFrameSize || options.height < kMinFrameSize ||
       options.width > kMaxFrameSize || options.height > kMaxFrameSize) {

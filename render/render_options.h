@@ -25,7 +25,11 @@ enum class ColorBy { kDeflection, kVonMises };
 
 struct RenderOptions {
   std::filesystem::path directory;  // run directory holding results.h5; outputs go there
+  // Sampling and playback are separate: `fps` frames are rendered per second of simulated time,
+  // played at `playback_fps`, so one simulated second lasts fps / playback_fps seconds of video
+  // (the slow-motion factor; `--slow-motion F` sets fps = F x playback_fps).
   double fps = 30.0;                // frames per second of simulated time [1/s]
+  double playback_fps = 30.0;       // frames per second of video [1/s]
   int width = 1280;                 // frame size [pixels]
   int height = 720;
   CameraPreset camera = CameraPreset::kIso;
@@ -36,6 +40,7 @@ struct RenderOptions {
   std::optional<double> t1;
   bool ground = true;         // draw a ground plane under the scene
   bool time_stamp = true;     // "t = ... s" bottom left (off for mode shapes)
+  bool world_triad = true;    // ground x, y, z arrows of a round length (world_triad.h)
   AntiAliasing anti_aliasing = AntiAliasing::kFxaa;  // ~2 ms per 1280 x 720 frame
   bool write_png = true;      // DIR/frames/frame_00000.png ...
   bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample
@@ -61,7 +66,10 @@ ColorBy parse_color_by(const std::string& text);
 // Parses "fxaa", "gl-fxaa" or "none"; throws InputError otherwise.
 AntiAliasing parse_anti_aliasing(const std::string& text);
 
-// Checks fps > 0, a valid size, a finite scale and t0 <= t1 when both are given; throws
+// fps / playback_fps: how many times slower than real time the video runs (< 1: faster).
+inline double slow_motion(const RenderOptions& options) { return options.fps / options.playback_fps; }
+
+// Checks fps and playback_fps in (0, 1000] (fps up to 1e6: slow motion of fast events), a valid size, a finite scale and t0 <= t1 when both are given; throws
 // InputError naming the option.
 void validate(const RenderOptions& options);
 

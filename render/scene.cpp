@@ -3,6 +3,8 @@
 #include "body_pose.h"
 #include "stress_reader.h"
 #include "core/error.h"
+#include "relative_deflection.h"
+#include "world_triad.h"
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
@@ -125,6 +127,7 @@ struct Bounds {
 // A flexible body: points in ground updated per frame, quads as a surface, lines as tubes.
 struct FlexibleView {
   const BodyTrack* body = nullptr;
+  std::size_t index = 0;  // in results.bodies
   vtkSmartPointer<vtkPoints> points;
   vtkSmartPointer<vtkDoubleArray> magnitude;
   vtkSmartPointer<vtkPolyData> surface;
@@ -159,22 +162,39 @@ struct Scene::Impl {
   double follow_distance = 1.0;
   Eigen::Vector3d direction;
 
-  Impl(const Results& r, const RenderOptions& o) : results(r), options(o) {}
+  // Per body (results.bodies order): the rigid fit through its joint nodes (relative_deflection.h;
+  // empty for rigid bodies and flexible ones without joints) and those joints' names.
+  std::vector<RigidFitBasis> fits;
+  std::vector<std::vector<std::string>> fit_joints;
 
-  // Ground positions of a flexible body's nodes and their displacement magnitudes.
-  void deformed_nodes(const BodyTrack& body, const BodyState& state, RowMatrix3d& x_W,
+  Impl(const Results& r, const RenderOptions& o) : results(r), options(o) {
+    for (const BodyTrack& body : results.bodies) {
+      std::vector<std::string> names;
+      const std::vector<Eigen::Index> anchors = joint_nodes(results, body, &names);
+      fits.push_back(rigid_fit_basis(body.mesh.nodes, anchors));
+      fit_joints.push_back(std::move(names));
+    }
+  }
+
+  // Ground positions of a flexible body's nodes, the elastic displacement relative to the
+  // rigid fit through its joint nodes scaled (the fitted rigid part at true size, so joints
+  // stay connected), and that relative displacement's magnitudes [m].
+  void deformed_nodes(std::size_t b, const BodyState& state, RowMatrix3d& x_W,
                       Eigen::VectorXd& u_norm) const {
+    const BodyTrack& body = results.bodies[b];
     const RowMatrix3d u = elastic_displacements(body.mesh, state.modal_coordinates);
+    const RowMatrix3d u_rel = relative_displacements(fits[b], body.mesh.nodes, u);
     const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
-    x_W = ((body.mesh.nodes + options.scale * u) * R.transpose()).rowwise() +
+    x_W = ((body.mesh.nodes + (u - u_rel) + options.scale * u_rel) * R.transpose()).rowwise() +
           state.position.transpose();
-    u_norm = u.rowwise().norm();
+    u_norm = u_rel.rowwise().norm();
   }
 
   // Bounds of everything drawn at one time.
   Bounds bounds_at(const SampleBracket& at) const {
     Bounds b;
-    for (const BodyTrack& body : results.bodies) {
+    for (std::size_t index = 0; index < results.bodies.size(); ++index) {
+      const BodyTrack& body = results.bodies[index];
       const BodyState state = body_state(body, at);
       const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
       for (const Shape& shape : body.shapes) {
@@ -183,7 +203,7 @@ struct Scene::Impl {
       if (body.flexible) {
         RowMatrix3d x_W;
         Eigen::VectorXd u_norm;
-        deformed_nodes(body, state, x_W, u_norm);
+        deformed_nodes(index, state, x_W, u_norm);
         for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
           b.add(x_W.row(k).transpose(), body.mesh.beam_radius);
         }
@@ -205,9 +225,10 @@ struct Scene::Impl {
     return values;
   }
 
-  void add_flexible(const BodyTrack& body, const StressTrack* stress) {
+  void add_flexible(const BodyTrack& body, std::size_t index, const StressTrack* stress) {
     FlexibleView view;
     view.body = &body;
+    view.index = index;
     view.stress = stress;
     const auto nn = static_cast<vtkIdType>(body.mesh.nodes.rows());
     view.points = vtkSmartPointer<vtkPoints>::New();
@@ -339,9 +360,11 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     all.add(b.lo);
     all.add(b.hi);
     frame_radius = std::max(frame_radius, b.radius());
-    for (const BodyTrack& body : results.bodies) {
+    for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+      const BodyTrack& body = results.bodies[b];
       if (!body.flexible) continue;
-      const RowMatrix3d u = elastic_displacements(body.mesh, body_state(body, at).modal_coordinates);
+      const RowMatrix3d u = relative_displacements(
+          s.fits[b], body.mesh.nodes, elastic_displacements(body.mesh, body_state(body, at).modal_coordinates));
       if (u.rows() > 0) s.umax = std::max(s.umax, u.rowwise().norm().maxCoeff());
     }
   }
@@ -364,6 +387,15 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     }
   }
   if (all.empty()) all.add(Eigen::Vector3d::Zero(), 1.0);
+  // The world triad (also the length scale) beside the motion, below its lowest corner, inside
+  // the camera's fit.
+  const double triad_length = round_length(0.25 * std::max(all.radius(), 1e-6));
+  const Eigen::Vector3d triad_origin =
+      all.lo - Eigen::Vector3d(1.5 * triad_length, 0.0, 0.0);
+  if (options.world_triad) {
+    all.add(triad_origin, 0.4 * triad_length);
+    all.add(triad_origin + 1.3 * triad_length * Eigen::Vector3d::Ones());
+  }
   const double radius = std::max(all.radius(), 1e-6);
   frame_radius = std::max(frame_radius, 1e-6);
   const double range_max = s.umax > 0.0 ? s.umax : 1.0;
@@ -379,7 +411,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   for (std::size_t b = 0; b < results.bodies.size(); ++b) {
     const BodyTrack& body = results.bodies[b];
     const StressTrack* stress = b < s.stresses.size() && s.stresses[b] ? &*s.stresses[b] : nullptr;
-    if (body.flexible) s.add_flexible(body, stress);
+    if (body.flexible) s.add_flexible(body, b, stress);
     for (const Shape& shape : body.shapes) s.add_shape(body, shape);
   }
   for (std::size_t j = 0; j < results.joints.size(); ++j) {
@@ -414,21 +446,31 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     s.renderer->AddActor(actor);
   }
 
+  if (options.world_triad) {
+    add_world_triad(s.renderer, triad_origin, triad_length, std::max(10, options.height / 45));
+  }
+
   // Colour bar with units, only when something is coloured.
   if (!s.flexible.empty()) {
     auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
     bar->SetLookupTable(s.lut);
-    bar->SetTitle(s.by_stress() ? "von Mises [MPa]" : "|u| [m]");
+    bool relative = false;
+    for (const RigidFitBasis& fit : s.fits) relative = relative || !fit.anchors.empty();
+    bar->SetTitle(s.by_stress() ? "von Mises [MPa]" : relative ? "|u rel.| [m]" : "|u| [m]");
     bar->SetLabelFormat(s.by_stress() ? "%.3g" : "%.2e");
     bar->SetNumberOfLabels(5);
     bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     bar->GetPositionCoordinate()->SetValue(kColorBarBox[0], kColorBarBox[1]);
     bar->SetWidth(kColorBarBox[2]);
     bar->SetHeight(kColorBarBox[3]);
-    bar->SetBarRatio(0.45);
-    bar->SetTextPositionToPrecedeScalarBar();
+    bar->SetBarRatio(0.3);
+    bar->SetTextPositionToSucceedScalarBar();
     bar->UnconstrainedFontSizeOn();
     s.bar_font = std::max(10, options.height / 50);
+    // Labels clear of the bar and the title clear of the top label (VTK's defaults let them
+    // touch).
+    bar->SetTextPad(std::max(4, s.bar_font / 2));
+    bar->SetVerticalTitleSeparation(s.bar_font);
     for (vtkTextProperty* text : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
       text->SetColor(0.1, 0.1, 0.15);
       text->SetFontSize(s.bar_font);
@@ -443,10 +485,22 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // Title, deformation scale note, time stamp.
   const int font = std::max(10, options.height / 36);
   s.add_text(results.title, font, 0.02, 0.93, false);
-  if (options.scale != 1.0) {
+  // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
+  // fit through each flexible body's joint nodes (those without joints: relative to their
+  // floating frame).
+  std::string legend;
+  for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+    if (!results.bodies[b].flexible) continue;
+    std::string joints;
+    for (const std::string& name : s.fit_joints[b]) joints += (joints.empty() ? "" : ", ") + name;
+    legend += "\n" + results.bodies[b].name + ": elastic displacement " +
+              (joints.empty() ? "in its floating frame" : "relative to a rigid fit through " + joints);
+  }
+  if (options.scale != 1.0 || !legend.empty()) {
     char note[64];
     std::snprintf(note, sizeof note, "deformation x %g", options.scale);
-    s.add_text(note, font, 0.98, 0.93, true);
+    s.add_text(note + legend, std::max(10, font * 2 / 3), 0.98, 0.975, true);
+    s.texts.back()->GetTextProperty()->SetVerticalJustificationToTop();
   }
   s.time_text->GetTextProperty()->SetFontSize(font);
   s.time_text->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
@@ -523,7 +577,7 @@ void Scene::update(double t) {
   RowMatrix3d x_W;
   Eigen::VectorXd u_norm;
   for (FlexibleView& view : s.flexible) {
-    s.deformed_nodes(*view.body, body_state(*view.body, at), x_W, u_norm);
+    s.deformed_nodes(view.index, body_state(*view.body, at), x_W, u_norm);
     for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
       view.points->SetPoint(k, x_W(k, 0), x_W(k, 1), x_W(k, 2));
       view.magnitude->SetValue(k, u_norm(k));
@@ -566,8 +620,13 @@ void Scene::update(double t) {
   }
 
   // Time stamp and, for a follow camera, the centroid of the body frames.
-  char stamp[64];
-  std::snprintf(stamp, sizeof stamp, "t = %.4f s", t);
+  char stamp[96];
+  const double slow = slow_motion(s.options);
+  if (std::abs(slow - 1.0) < 1e-9) {
+    std::snprintf(stamp, sizeof stamp, "t = %.4f s", t);
+  } else {
+    std::snprintf(stamp, sizeof stamp, "t = %.4f s  (%.3gx slow motion)", t, slow);
+  }
   s.time_text->SetInput(stamp);
   if (s.options.follow && !s.results.bodies.empty()) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();

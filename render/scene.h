@@ -23,7 +23,8 @@ inline constexpr std::array<double, 3> kBackgroundColor{0.86, 0.89, 0.93};
 inline constexpr std::array<double, 3> kJointColor{0.25, 0.25, 0.30};
 inline constexpr std::array<double, 3> kGroundColor{0.72, 0.72, 0.68};
 // Colour bar placement in normalised viewport coordinates (x, y, width, height).
-inline constexpr std::array<double, 4> kColorBarBox{0.88, 0.10, 0.08, 0.74};
+// Wide enough that the labels ("7.51e-03" at height/50 pixels) fit beside the bar with a gap.
+inline constexpr std::array<double, 4> kColorBarBox{0.85, 0.10, 0.12, 0.74};
 
 class Scene {
  public:

@@ -25,4 +25,15 @@ std::vector<std::string> copy_stills(const std::vector<std::filesystem::path>& s
   return names;
 }
 
+std::string place_video(const std::filesystem::path& video, const std::filesystem::path& folder,
+                        const std::string& prefix) {
+  const std::string name = prefix + "animation.mp4";
+  const std::filesystem::path target = folder / name;
+  std::filesystem::remove(target);
+  std::error_code error;
+  std::filesystem::create_hard_link(video, target, error);
+  if (error) std::filesystem::copy_file(video, target);
+  return name;
+}
+
 }  // namespace limber::report

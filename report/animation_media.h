@@ -1,5 +1,5 @@
 // The pictures `limber render` left in a run directory, as the report shows them: a strip of
-// stills picked from DIR/frames and a link to DIR/animation.mp4.
+// stills picked from DIR/frames and DIR/animation.mp4, both put inside the report folder.
 #pragma once
 
 #include <filesystem>
@@ -19,5 +19,11 @@ std::vector<std::filesystem::path> pick_stills(const std::vector<std::filesystem
 // returns the new file names. Throws std::filesystem::filesystem_error when a copy fails.
 std::vector<std::string> copy_stills(const std::vector<std::filesystem::path>& stills,
                                      const std::filesystem::path& images, const std::string& prefix);
+
+// Puts `video` into the report folder as `folder`/<prefix>animation.mp4 — a hard link when
+// both sit on one file system, else a copy — so the report can be zipped and mailed; returns
+// the new file name. Throws std::filesystem::filesystem_error when neither works.
+std::string place_video(const std::filesystem::path& video, const std::filesystem::path& folder,
+                        const std::string& prefix);
 
 }  // namespace limber::report

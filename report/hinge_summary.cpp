@@ -49,6 +49,30 @@ std::vector<LatchUpPeaks> latch_up_peaks(const RunData& run) {
   return out;
 }
 
+std::optional<EnergyBalance> energy_balance(const RunData& run) {
+  const Eigen::Index ns = run.results.time.size();
+  // The sum of the named series, or nothing when one is missing or short.
+  auto sum = [&](std::initializer_list<const char*> names) -> std::optional<Eigen::VectorXd> {
+    Eigen::VectorXd total = Eigen::VectorXd::Zero(ns);
+    for (const char* name : names) {
+      const Series* s = find_series(run.energies, name);
+      if (!s || s->values.size() != ns) return std::nullopt;
+      total += s->values;
+    }
+    return total;
+  };
+  const auto stored = sum({"kinetic", "gravity", "spring", "strain"});
+  const auto work = sum({"driver_work", "force_work"});
+  const auto dissipated = sum({"dissipated"});
+  if (!stored || !work || !dissipated || ns == 0) return std::nullopt;
+  EnergyBalance b;
+  b.stored_change = stored->array() - (*stored)(0);
+  b.work = work->array() - (*work)(0);
+  b.dissipated = dissipated->array() - (*dissipated)(0);
+  b.residual = b.stored_change + b.dissipated - b.work;
+  return b;
+}
+
 std::optional<Series> energy_residual(const RunData& run) {
   const char* stored[] = {"kinetic", "gravity", "spring", "strain", "dissipated"};
   const char* work[] = {"driver_work", "force_work"};

@@ -39,6 +39,7 @@ std::vector<ModeImage> draw_mode_shapes(const RunData& run, const std::filesyste
   options.width = width;
   options.height = height;
   options.ground = false;
+  options.world_triad = false;
   render::PngFrameWriter writer;
   for (const render::BodyTrack& body : run.results.bodies) {
     const Eigen::MatrixXd& phi = body.mesh.mode_translations;

@@ -200,7 +200,7 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     table->AddColumn(y);
     vtkPlot* line = chart->AddPlot(n < 2 ? vtkChart::POINTS : vtkChart::LINE);
     line->SetInputData(table, 0, 1);
-    const auto& rgb = kCurveColors[i % kCurveColors.size()];
+    const auto& rgb = curve_color(curve, i);
     line->SetColor(rgb[0], rgb[1], rgb[2], 255);
     line->SetWidth(kLineWidth);
     line->SetLabel(curve.label);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace limber::report {
@@ -18,6 +19,11 @@ struct Curve {
   std::string label;  // legend entry
   Eigen::VectorXd x;
   Eigen::VectorXd y;
+  int color = -1;     // index into kCurveColors; -1: the curve's place in its plot
+
+  Curve() = default;
+  Curve(std::string label_, Eigen::VectorXd x_, Eigen::VectorXd y_, int color_ = -1)
+      : label(std::move(label_)), x(std::move(x_)), y(std::move(y_)), color(color_) {}
 };
 
 struct PlotSpec {
@@ -43,10 +49,15 @@ struct PlotFrame {
   Eigen::Vector2d to_pixel(double x, double y) const;
 };
 
-// Line colours in curve order (RGB 0..255), repeated past the end.
+// Line colours in curve order (RGB 0..255), repeated past the end (curve_color picks).
 inline constexpr std::array<std::array<unsigned char, 3>, 8> kCurveColors{{
     {31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
     {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}}};
+// The colour of curve `index` of a plot: its own when set, else by its place.
+inline const std::array<unsigned char, 3>& curve_color(const Curve& curve, std::size_t index) {
+  const std::size_t k = curve.color >= 0 ? static_cast<std::size_t>(curve.color) : index;
+  return kCurveColors[k % kCurveColors.size()];
+}
 // The page colour behind the chart (white, as printed).
 inline constexpr std::array<unsigned char, 3> kPlotBackground{255, 255, 255};
 

@@ -3,9 +3,12 @@
 #include "hinge_summary.h"
 #include "html.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <numbers>
 
 namespace limber::report {
@@ -13,8 +16,6 @@ namespace {
 
 constexpr const char* kTimeLabel = "time [s]";
 constexpr std::array<const char*, 3> kAxes{"x", "y", "z"};
-constexpr std::array<const char*, 3> kGroundAxes{"X", "Y", "Z"};
-constexpr const char* kGroundAxesNote = "ground axes (X = ground x, Y = ground y, Z = ground z)";
 
 // The name of body_j of a joint (the body the reaction acts on), "" when unknown.
 std::string reaction_body(const RunData& run, const std::string& joint) {
@@ -24,19 +25,102 @@ std::string reaction_body(const RunData& run, const std::string& joint) {
   return "";
 }
 
-// Curves "<symbol>x", "<symbol>y", "<symbol>z" of the columns of `values`.
-std::vector<Curve> component_curves(const Eigen::VectorXd& time, const RowMatrix3d& values,
-                                    const std::string& symbol) {
-  std::vector<Curve> curves;
-  for (int c = 0; c < 3; ++c) curves.push_back({symbol + kAxes[c], time, values.col(c)});
-  return curves;
+// One frame's view of a joint's reactions: what the components are called and hold.
+struct FrameView {
+  std::string tag;    // file name part: "_ground" or ""
+  std::string title;  // "(ground axes)"
+  std::string note;   // caption text after "components in "
+  std::array<std::string, 3> force_names, torque_names;
+  const RowMatrix3d* force = nullptr;
+  const RowMatrix3d* torque = nullptr;
+};
+
+std::optional<FrameView> frame_view(const RunData& run, const JointReactions& joint,
+                                    ReactionFrame frame) {
+  const Eigen::Index ns = run.sample_count();
+  if (frame == ReactionFrame::kGround) {
+    if (joint.force_ground.rows() != ns || ns == 0) return std::nullopt;
+    return FrameView{"_ground", "(ground axes)", ground_axes_note(run), run.axis_names,
+                     run.axis_names, &joint.force_ground,
+                     joint.torque_ground.rows() == ns ? &joint.torque_ground : nullptr};
+  }
+  return FrameView{"", "(joint frame)", "the joint frame", {"Fx", "Fy", "Fz"}, {"Tx", "Ty", "Tz"},
+                   &joint.force_joint, joint.torque_joint.rows() == ns ? &joint.torque_joint : nullptr};
 }
 
-// Curves "X", "Y", "Z" of the columns of `values` (ground axes; see kGroundAxesNote).
-std::vector<Curve> ground_curves(const Eigen::VectorXd& time, const RowMatrix3d& values) {
+// The note an indeterminate joint's force or torque plot carries ("" when that quantity is
+// determined): which redundancy, and at how many samples.
+std::string indeterminate_note(const RunData& run, const JointReactions& joint, bool torque) {
+  const Indeterminacy which = indeterminacy(run, joint);
+  if (!(torque ? which.torque : which.force)) return "";
+  const auto samples = static_cast<Eigen::Index>((joint.indeterminate.array() > 0.0).count());
+  return "Indeterminate: joint " + joint.name + " is in a redundant set of constraints" +
+         (which.sets.empty() ? std::string() : " (" + which.sets + ")") + ". Its reaction " +
+         (torque ? "torque" : "force") +
+         " is the minimum-norm split of the load over that set, one of infinitely many that "
+         "satisfy the equations; the model does not determine it" +
+         (samples < joint.indeterminate.size()
+              ? fmt::format(" (at {} of {} samples)", samples, joint.indeterminate.size())
+              : std::string()) +
+         ".";
+}
+
+// Largest distance between two joint points over the run [m] (1 m with fewer than two
+// joints): the lever arm that makes a torque comparable with a force.
+double mechanism_size(const RunData& run) {
+  double size = 0.0;
+  const auto& joints = run.results.joints;
+  for (std::size_t a = 0; a < joints.size(); ++a) {
+    for (std::size_t b = a + 1; b < joints.size(); ++b) {
+      const Eigen::Index n = std::min(joints[a].position.rows(), joints[b].position.rows());
+      for (Eigen::Index k = 0; k < n; ++k) {
+        size = std::max(size, (joints[a].position.row(k) - joints[b].position.row(k)).norm());
+      }
+    }
+  }
+  return size > 0.0 ? size : 1.0;
+}
+
+// A reaction plot in one frame: the components above the noise floor, the magnitude, and the
+// others listed as "≈ 0 (peak …)".
+NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const FrameView& frame,
+                        bool torque, const std::string& stem, const PlotOptions& options) {
+  const Eigen::VectorXd& t = run.results.time;
+  const RowMatrix3d& values = torque ? *frame.torque : *frame.force;
+  const std::array<std::string, 3>& names = torque ? frame.torque_names : frame.force_names;
+  const std::string quantity = torque ? "torque" : "force";
+  const std::string unit = torque ? "N m" : "N";
+  const Eigen::Vector3d peak = values.cwiseAbs().colwise().maxCoeff().transpose();
+  const double floor = options.zero_fraction * peak.maxCoeff();
   std::vector<Curve> curves;
-  for (int c = 0; c < 3; ++c) curves.push_back({kGroundAxes[c], time, values.col(c)});
-  return curves;
+  std::string zeros;
+  for (int c = 0; c < 3; ++c) {
+    if (peak(c) > floor) {
+      curves.push_back({names[static_cast<std::size_t>(c)], t, values.col(c), c});
+    } else {
+      zeros += fmt::format("{}{} ≈ 0 (peak {:.3g} {})", zeros.empty() ? "" : ", ",
+                           names[static_cast<std::size_t>(c)], peak(c), unit);
+    }
+  }
+  const std::string symbol = torque ? "T" : "F";
+  curves.push_back({"|" + symbol + "|", t, values.rowwise().norm(), 3});
+
+  const std::string body = reaction_body(run, joint.name);
+  std::string caption = "Reaction " + quantity + " at joint " + joint.name +
+                        (body.empty() ? "" : " on " + body) +
+                        (torque ? " about the joint point" : "") + ", components in " + frame.note +
+                        ", and its magnitude |" + symbol + "|.";
+  if (!zeros.empty()) {
+    caption += fmt::format(" Not drawn, below {:g} of the largest component: {}.",
+                           options.zero_fraction, zeros);
+  }
+  const std::string warning = indeterminate_note(run, joint, torque);
+  return NamedPlot(PlotSection::kReactions,
+                   stem + "_" + quantity + frame.tag + ".png", caption,
+                   {"Joint " + joint.name + ": reaction " + quantity + " " + frame.title +
+                        (warning.empty() ? "" : ", minimum-norm"),
+                    kTimeLabel, quantity + " [" + unit + "]", curves, false},
+                   warning);
 }
 
 std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<Series>& series) {
@@ -47,40 +131,82 @@ std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<
 
 }  // namespace
 
-std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) {
+Indeterminacy indeterminacy(const RunData& run, const JointReactions& joint) {
+  Indeterminacy which;
+  if (!joint.is_indeterminate()) return which;
+  // The joint's equations named in the redundant sets: "R2.rot_x" is a torque equation,
+  // "R2.x" a force one. None named: both are reported indeterminate.
+  const std::string prefix = joint.name + ".";
+  bool named = false;
+  auto scan = [&](const std::string& list) {
+    std::size_t at = 0;
+    while (at < list.size()) {
+      const std::size_t end = std::min(list.find(", ", at), list.size());
+      const std::string equation = list.substr(at, end - at);
+      if (equation.rfind(prefix, 0) == 0) {
+        named = true;
+        const std::string component = equation.substr(prefix.size());
+        const bool rotation = component.rfind("rot", 0) == 0 || component.rfind("angle", 0) == 0;
+        (rotation ? which.torque : which.force) = true;
+      }
+      at = end + 2;
+    }
+  };
+  for (const auto& [equation, with] : run.redundant_equations) {
+    const std::size_t before = which.sets.size();
+    const bool was_named = named;
+    named = false;
+    scan(equation);
+    scan(with);
+    if (named) which.sets += (before > 0 ? "; " : "") + equation + " depends on " + with;
+    named = named || was_named;
+  }
+  if (!named) which.force = which.torque = true;
+  return which;
+}
+
+std::string ground_axes_note(const RunData& run) {
+  const auto& n = run.axis_names;
+  return "ground axes (" + n[0] + " = ground x, " + n[1] + " = ground y, " + n[2] + " = ground z" +
+         (run.axis_names_from_case ? ", names from the case" : "") + ")";
+}
+
+std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
+                                 const PlotOptions& options) {
   std::vector<NamedPlot> plots;
   const Eigen::VectorXd& t = run.results.time;
 
-  // Reactions: in ground axes first when written (seed paper Figs. 4, 5), then in the joint
-  // frame; forces always, torques when the joint transmits any.
+  // Reactions in the frames asked for (ground axes by default, seed paper Figs. 4, 5); forces
+  // always, torques when the joint transmits any. Without ground-axes data (older files) the
+  // joint frame stands in.
   for (const JointReactions& joint : run.joints) {
-    const std::string body = reaction_body(run, joint.name);
-    const std::string on = body.empty() ? "" : " on " + body;
     const std::string stem = prefix + "reaction_" + file_stem(joint.name);
-    if (joint.force_ground.rows() == t.size() && t.size() > 0) {
-      plots.push_back({PlotSection::kReactions, stem + "_force_ground.png",
-                       "Reaction force at joint " + joint.name + on + ", components in " +
-                           kGroundAxesNote + ".",
-                       {"Joint " + joint.name + ": reaction force (ground axes)", kTimeLabel,
-                        "force [N]", ground_curves(t, joint.force_ground), false}});
+    std::vector<ReactionFrame> frames = options.frames;
+    if (!frame_view(run, joint, ReactionFrame::kGround) &&
+        std::find(frames.begin(), frames.end(), ReactionFrame::kJoint) == frames.end()) {
+      frames.push_back(ReactionFrame::kJoint);
     }
-    if (joint.torque_ground.rows() == t.size() && t.size() > 0 &&
-        joint.torque_ground.cwiseAbs().maxCoeff() > 0.0) {
-      plots.push_back({PlotSection::kReactions, stem + "_torque_ground.png",
-                       "Reaction torque at joint " + joint.name + on + " about the joint point, "
-                       "components in " + kGroundAxesNote + ".",
-                       {"Joint " + joint.name + ": reaction torque (ground axes)", kTimeLabel,
-                        "torque [N m]", ground_curves(t, joint.torque_ground), false}});
-    }
-    plots.push_back({PlotSection::kReactions, stem + "_force.png",
-                     "Reaction force at joint " + joint.name + on + ", components in the joint frame.",
-                     {"Joint " + joint.name + ": reaction force (joint frame)", kTimeLabel,
-                      "force [N]", component_curves(t, joint.force_joint, "F"), false}});
-    if (joint.torque_joint.size() > 0 && joint.torque_joint.cwiseAbs().maxCoeff() > 0.0) {
-      plots.push_back({PlotSection::kReactions, stem + "_torque.png",
-                       "Reaction torque at joint " + joint.name + on + ", components in the joint frame.",
-                       {"Joint " + joint.name + ": reaction torque (joint frame)", kTimeLabel,
-                        "torque [N m]", component_curves(t, joint.torque_joint, "T"), false}});
+    for (ReactionFrame frame : frames) {
+      const std::optional<FrameView> view = frame_view(run, joint, frame);
+      if (!view) continue;
+      NamedPlot force = reaction_plot(run, joint, *view, false, stem, options);
+      // The torque is noise when even the largest force, at the mechanism's size as lever
+      // arm, makes it look small: then one line in the force's caption instead of a plot.
+      const double torque_peak =
+          view->torque != nullptr ? view->torque->rowwise().norm().maxCoeff() : 0.0;
+      const double force_peak = view->force->rowwise().norm().maxCoeff();
+      const double lever = mechanism_size(run);
+      const bool torque_noise = torque_peak <= options.zero_fraction * force_peak * lever;
+      if (view->torque != nullptr && torque_peak > 0.0 && torque_noise) {
+        force.caption += fmt::format(
+            " Reaction torque ≈ 0 (peak |T| {:.3g} N m, below {:g} × the peak |F| {:.4g} N × the "
+            "mechanism's size {:.3g} m): not drawn.",
+            torque_peak, options.zero_fraction, force_peak, lever);
+      }
+      plots.push_back(std::move(force));
+      if (view->torque != nullptr && torque_peak > 0.0 && !torque_noise) {
+        plots.push_back(reaction_plot(run, joint, *view, true, stem, options));
+      }
     }
   }
 
@@ -95,17 +221,47 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
   }
 
   // Driver efforts and energies.
-  if (!run.drivers.empty()) {
-    plots.push_back({PlotSection::kDrivers, prefix + "driver_efforts.png",
-                     "Driving force or torque of each driver.",
-                     {"Driver efforts", kTimeLabel, "effort [N or N m]",
-                      series_curves(t, run.drivers), false}});
+  // Driver efforts, one plot per unit the file states (N for a translation, N m for a
+  // rotation), those without one together.
+  std::vector<std::string> units;
+  for (std::size_t d = 0; d < run.drivers.size(); ++d) {
+    const std::string unit = d < run.driver_units.size() ? run.driver_units[d] : "";
+    if (std::find(units.begin(), units.end(), unit) == units.end()) units.push_back(unit);
+  }
+  for (const std::string& unit : units) {
+    std::vector<Curve> curves;
+    for (std::size_t d = 0; d < run.drivers.size(); ++d) {
+      if ((d < run.driver_units.size() ? run.driver_units[d] : "") == unit) {
+        curves.push_back({run.drivers[d].name, t, run.drivers[d].values});
+      }
+    }
+    const std::string what = unit == "N" ? "force" : unit == "N m" ? "torque" : "force or torque";
+    const std::string file = units.size() == 1 ? "driver_efforts.png"
+                             : unit.empty()    ? "driver_efforts_other.png"
+                                               : "driver_efforts_" + readable_stem(unit) + ".png";
+    plots.push_back({PlotSection::kDrivers, prefix + file, "Driving " + what + " of each driver.",
+                     {"Driver efforts", kTimeLabel,
+                      "effort [" + (unit.empty() ? std::string("N or N m") : unit) + "]", curves,
+                      false}});
   }
   if (!run.energies.empty()) {
     plots.push_back({PlotSection::kEnergy, prefix + "energy.png",
                      "Energies and work: kinetic, potential (gravity, spring, strain), dissipated, "
                      "work of drivers and forces.",
                      {"Energy", kTimeLabel, "energy [J]", series_curves(t, run.energies), false}});
+  }
+  if (const std::optional<EnergyBalance> balance = energy_balance(run)) {
+    plots.push_back({PlotSection::kEnergy, prefix + "energy_balance_terms.png",
+                     "Energy balance: the change of the stored energy (kinetic + gravity + spring + "
+                     "strain) equals the work put in (drivers + applied forces) minus the energy "
+                     "dissipated (dampers, modal damping); the residual is what the balance "
+                     "misses.",
+                     {"Energy balance", kTimeLabel, "energy [J]",
+                      {{"stored − stored at start", t, balance->stored_change},
+                       {"work in (drivers + forces)", t, balance->work},
+                       {"dissipated", t, balance->dissipated},
+                       {"residual", t, balance->residual}},
+                      false}});
   }
   if (const std::optional<Series> residual = energy_residual(run)) {
     plots.push_back({PlotSection::kEnergy, prefix + "energy_balance.png",
@@ -142,16 +298,47 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
 
   // Deflections: the largest elastic displacement of each flexible body, then its modal
   // coordinates.
+  // Relative to a rigid fit through each body's joint nodes (as the animation colours it):
+  // the floating frame lets u carry a rigid part, which is not deflection.
   std::vector<Curve> deflections;
+  std::string fitted;
   for (const render::BodyTrack& body : run.results.bodies) {
-    if (body.flexible) deflections.push_back({body.name, t, max_deflection(body)});
+    if (!body.flexible) continue;
+    std::vector<std::string> joints;
+    deflections.push_back({body.name, t, max_relative_deflection(run.results, body, &joints)});
+    std::string names;
+    for (const std::string& j : joints) names += (names.empty() ? "" : ", ") + j;
+    fitted += (fitted.empty() ? " " : "; ") + body.name +
+              (names.empty() ? ": u in its floating frame (no joints)" : ": relative to a rigid fit through " + names);
   }
   if (!deflections.empty()) {
     plots.push_back({PlotSection::kDeflection, prefix + "deflection.png",
-                     "Largest elastic displacement |u| over the nodes of each flexible body "
-                     "(u = sum of mode shapes times modal coordinates).",
-                     {"Elastic deflection (largest over nodes)", kTimeLabel, "max |u| [m]",
+                     "Largest elastic displacement over the nodes of each flexible body, "
+                     "relative to the rigid motion that best carries its joint nodes (u = sum of "
+                     "mode shapes times modal coordinates, minus that rigid fit):" + fitted + ".",
+                     {"Elastic deflection (largest over nodes)", kTimeLabel, "max |u rel.| [m]",
                       deflections, false}});
+  }
+  for (const DeflectionProbe& probe : run.deflections) {
+    if (probe.values.rows() != t.size() || t.size() == 0) continue;
+    const Eigen::Vector3d peak = probe.values.cwiseAbs().colwise().maxCoeff().transpose();
+    std::vector<Curve> curves;
+    std::string zeros;
+    for (int c = 0; c < 3; ++c) {
+      if (peak(c) > options.zero_fraction * peak.maxCoeff()) {
+        curves.push_back({std::string("u") + kAxes[c], t, probe.values.col(c)});
+      } else {
+        zeros += fmt::format("{}u{} ≈ 0 (peak {:.3g} m)", zeros.empty() ? "" : ", ", kAxes[c], peak(c));
+      }
+    }
+    plots.push_back({PlotSection::kDeflection, prefix + "probe_" + file_stem(probe.body) + ".png",
+                     "Deflection probe of " + probe.body + " (case key deflection): the probe "
+                     "node's elastic displacement relative to the chord between its two chord "
+                     "nodes, components in the body axes x, y, z." +
+                         (zeros.empty() ? std::string()
+                                        : fmt::format(" Not drawn, below {:g} of the largest: {}.",
+                                                      options.zero_fraction, zeros)),
+                     {"Deflection probe of " + probe.body, kTimeLabel, "deflection [m]", curves, false}});
   }
   for (const render::BodyTrack& body : run.results.bodies) {
     if (!body.flexible || body.modal_coordinates.cols() == 0) continue;
@@ -160,8 +347,9 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
       eta.push_back({"eta" + std::to_string(i + 1), t, body.modal_coordinates.col(i)});
     }
     plots.push_back({PlotSection::kDeflection, prefix + "modal_" + file_stem(body.name) + ".png",
-                     "Modal coordinates of " + body.name + " (mode numbers as in the mode table).",
-                     {"Modal coordinates of " + body.name, kTimeLabel, "modal coordinate eta [-]",
+                     "Modal coordinates of " + body.name + " (mode numbers as in the mode table; mass-"
+                     "normalised modes, so eta is in kg^½ m).",
+                     {"Modal coordinates of " + body.name, kTimeLabel, "modal coordinate eta [kg^½ m]",
                       eta, false}});
   }
 
@@ -181,13 +369,35 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
   }
 
   // Constraint violations on a logarithmic scale (they span decades) when all are positive.
+  // Constraint violations on a logarithmic axis (they span decades); samples at exactly zero
+  // have no logarithm and are left out, said in the caption.
   std::vector<Curve> violations;
-  if (run.position_violation) violations.push_back({"position", t, run.position_violation->values});
-  if (run.velocity_violation) violations.push_back({"velocity", t, run.velocity_violation->values});
+  Eigen::Index zeros = 0;
+  for (const auto& [name, series] : {std::pair{"position [m, rad]", &run.position_violation},
+                                     std::pair{"velocity [m/s, rad/s]", &run.velocity_violation}}) {
+    if (!*series) continue;
+    Curve& curve = violations.emplace_back(Curve{name, {}, {}});
+    std::vector<double> x, y;
+    for (Eigen::Index k = 0; k < t.size() && k < (*series)->values.size(); ++k) {
+      const double v = (*series)->values(k);
+      if (v > 0.0) {
+        x.push_back(t(k));
+        y.push_back(v);
+      } else {
+        ++zeros;
+      }
+    }
+    curve.x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+    curve.y = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
+    if (x.empty()) violations.pop_back();  // exactly 0 throughout: the summary table says so
+  }
   if (!violations.empty()) {
     plots.push_back({PlotSection::kViolation, prefix + "constraint_violation.png",
                      "Largest norm of the position constraints [m, rad] and of the velocity "
-                     "constraints [m/s, rad/s]; logarithmic axis when every value is positive.",
+                     "constraints [m/s, rad/s], logarithmic axis." +
+                         (zeros > 0 ? fmt::format(" {} samples at exactly 0 are left out (no "
+                                                  "logarithm).", zeros)
+                                    : std::string()),
                      {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
   }
   return plots;
@@ -285,7 +495,8 @@ std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& pr
 }
 
 std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
-                                        const std::vector<std::string>& labels) {
+                                        const std::vector<std::string>& labels,
+                                        const PlotOptions& options) {
   // Joint name -> runs holding its reactions, in first-seen order.
   std::vector<std::string> order;
   std::map<std::string, std::vector<std::pair<std::size_t, const JointReactions*>>> holders;
@@ -300,17 +511,28 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
   for (const std::string& name : order) {
     const auto& held = holders[name];
     if (held.size() < 2) continue;
+    // Ground axes when asked first and every run has them, else the joint frame.
+    bool ground = options.frames.front() == ReactionFrame::kGround;
+    for (const auto& [r, joint] : held) {
+      ground = ground && joint->force_ground.rows() == runs[r].sample_count();
+    }
+    const RunData& first = runs[held.front().first];
     for (int c = 0; c < 3; ++c) {
       std::vector<Curve> curves;
       for (const auto& [r, joint] : held) {
-        curves.push_back({labels[r], runs[r].results.time, joint->force_joint.col(c)});
+        const RowMatrix3d& force = ground ? joint->force_ground : joint->force_joint;
+        curves.push_back({labels[r], runs[r].results.time, force.col(c)});
       }
-      const std::string component = std::string("F") + kAxes[c];
+      const std::string component =
+          ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
+      const std::string frame = ground ? "ground axes" : "joint frame";
       plots.push_back({PlotSection::kComparison,
-                       "compare_" + file_stem(name) + "_" + component + ".png",
-                       "Reaction " + component + " at joint " + name + " (joint frame) in " +
+                       "compare_" + file_stem(name) + "_" +
+                           (ground ? std::string("ground_") + kAxes[c] : component) + ".png",
+                       "Reaction " + component + " at joint " + name + " (" +
+                           (ground ? ground_axes_note(first) : frame) + ") in " +
                            std::to_string(held.size()) + " runs.",
-                       {"Joint " + name + ": " + component + " (joint frame)", kTimeLabel,
+                       {"Joint " + name + ": " + component + " (" + frame + ")", kTimeLabel,
                         "force [N]", curves, false}});
     }
   }

@@ -24,10 +24,29 @@ struct NamedPlot {
   std::string file;     // PNG file name inside the report's images/ folder
   std::string caption;  // plain text (escaped when written)
   PlotSpec spec;
+  std::string warning;  // plain text shown as a visible note with the plot ("" for none)
+
+  NamedPlot() = default;
+  NamedPlot(PlotSection section_, std::string file_, std::string caption_, PlotSpec spec_,
+            std::string warning_ = "")
+      : section(section_), file(std::move(file_)), caption(std::move(caption_)),
+        spec(std::move(spec_)), warning(std::move(warning_)) {}
+};
+
+// The frames reaction components are plotted in.
+enum class ReactionFrame { kGround, kJoint };
+
+struct PlotOptions {
+  std::vector<ReactionFrame> frames{ReactionFrame::kGround};  // in this order, per joint
+  // A reaction component whose peak |value| is below this fraction of the largest component
+  // of the same quantity (force or torque) at that joint and frame is listed as "≈ 0 (peak …)"
+  // instead of drawn: numerical noise, not a signal.
+  double zero_fraction = 1e-4;
 };
 
 // The plots of one run; file names start with `prefix` (e.g. "run1_").
-std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix);
+std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
+                                 const PlotOptions& options = {});
 
 // One plot per quantity of selection/key_series.csv, in the file's order, overlaying that
 // quantity of every mode set; legend entries are the set names, "(chosen)" or "(reference)"
@@ -40,9 +59,23 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
 // the table's order (coarse to fine setting). File names start with `prefix`.
 std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& prefix);
 
-// One plot per joint name present in two or more runs and per force component (joint frame),
-// overlaying that component of every run holding the joint; legend entries are `labels`.
+// One plot per joint name present in two or more runs and per force component (in the first
+// of `options.frames`: ground axes when every run has them, else the joint frame), overlaying
+// that component of every run holding the joint; legend entries are `labels`.
 std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
-                                        const std::vector<std::string>& labels);
+                                        const std::vector<std::string>& labels,
+                                        const PlotOptions& options = {});
+
+// Which of a joint's reactions are minimum-norm (indeterminate): those whose equations sit in
+// a redundant set (results.h5 /constraints/redundant, redundant_with: "R2.rot_x" is a torque
+// equation, "R2.x" a force one); both when the joint is flagged but no set names it.
+struct Indeterminacy {
+  bool force = false, torque = false;
+  std::string sets;  // "R2.rot_x depends on R1.rot_x, R3.rot_x" for the sets naming the joint
+};
+Indeterminacy indeterminacy(const RunData& run, const JointReactions& joint);
+
+// "X", "Y", "Z" (the run's axis names) with what they are ("X = ground x, ...").
+std::string ground_axes_note(const RunData& run);
 
 }  // namespace limber::report

@@ -22,6 +22,14 @@ cli::Command add_report_command(CLI::App& app) {
   command->add_option("-o,--output", options->output, "report folder (default: DIR/report)");
   command->add_option("--title", options->title, "page title (default: the case title)");
   command->add_flag("--no-mode-shapes", *no_modes, "do not draw the mode shapes");
+  command->add_option("--frame", options->frames,
+                      "frame of the reaction plots, repeatable, in order: ground (default; the "
+                      "case's axis names) or joint (marker i's axes)")
+      ->check(CLI::IsMember({"ground", "joint"}));
+  command->add_option("--zero-fraction", options->zero_fraction,
+                      "a reaction component whose peak is below this fraction of the joint's "
+                      "largest is listed as '≈ 0 (peak …)' instead of drawn (default 1e-4)")
+      ->check(CLI::Range(0.0, 1.0));
 
   return {command, [options, no_modes] {
             options->mode_shapes = !*no_modes;

@@ -40,23 +40,61 @@ tr.kept td, .kept-key, tr.chosen td, .chosen-key { background: #e3f2e1; }
 tr.kept td { font-weight: bold; }
 tr.reference td, .reference-key { background: #eef2f7; font-style: italic; }
 .indeterminate { color: #8a5a00; }
+.plot-warning { background: #fff4d6; border-left: 4px solid #e09b00; padding: .4em .8em;
+                margin: .3em 0; color: #6d4c00; }
 td.failed { color: #8e0000; font-weight: bold; }
 @media print { nav { display: none; } h2 { page-break-before: always; } }
 )";
 
 std::string number(double value) { return fmt::format("{:.6g}", value); }
 
-std::string figure(const NamedPlot& plot) {
+// The file name without its extension (made of [A-Za-z0-9_~-]: an HTML id as it is).
+std::string stem_of(const std::string& file) { return file.substr(0, file.rfind('.')); }
+
+// One plot: the interactive chart (when its JSON is there), the PNG (for print, and on screen
+// without scripts), the caption with the link to the CSV of every sample.
+std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
+  const NamedPlot& plot = written.plot;
   const std::string caption = html_escape(plot.caption);
-  return fmt::format(
-      "<figure><img src=\"{}/{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
-      kImageFolder, plot.file, caption, caption);
+  const std::string id = stem_of(plot.file);
+  std::string out = "<figure class=\"plot\">\n";
+  if (!written.interactive_json.empty()) {
+    out += fmt::format(
+        "<div class=\"dygraph-plot\" id=\"plot-{0}\" data-source=\"json-{0}\" "
+        "data-legend=\"legend-{0}\" data-run=\"{1}\"></div><div class=\"plot-legend\" "
+        "id=\"legend-{0}\"></div>\n",
+        id, run_anchor);
+  }
+  if (!plot.warning.empty()) {
+    out += "<p class=\"plot-warning\" role=\"note\">" + html_escape(plot.warning) + "</p>\n";
+  }
+  out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>{}", kImageFolder,
+                     plot.file, caption, caption);
+  if (!written.csv_file.empty()) {
+    out += fmt::format(" <a class=\"csv\" href=\"{}/{}\">Data (CSV)</a>", kDataFolder, written.csv_file);
+  }
+  if (!written.interactive_json.empty()) {
+    std::size_t samples = 0;
+    for (const Curve& c : plot.spec.curves) samples = std::max<std::size_t>(samples, c.x.size());
+    if (written.interactive_rows < samples) {
+      out += fmt::format(
+          " <span class=\"note decimated\">Interactive view: {} of {} samples, the first, last, "
+          "smallest and largest of each pixel column (peaks exact); the CSV holds all.</span>",
+          written.interactive_rows, samples);
+    }
+  }
+  out += "</figcaption>\n";
+  if (!written.interactive_json.empty()) {
+    out += fmt::format("<script type=\"application/json\" id=\"json-{}\">{}</script>\n", id,
+                       written.interactive_json);
+  }
+  return out + "</figure>\n";
 }
 
 std::string plots_of(const RunSection& section, PlotSection kind) {
   std::string out;
-  for (const NamedPlot& plot : section.plots) {
-    if (plot.section == kind) out += figure(plot);
+  for (const WrittenPlot& plot : section.plots) {
+    if (plot.plot.section == kind) out += figure(plot, section.anchor);
   }
   return out;
 }
@@ -138,10 +176,21 @@ std::string bodies_table(const RunData& run) {
 
 std::string joints_table(const RunData& run) {
   if (run.results.joints.empty()) return "<p class=\"note\">No joints in the results.</p>\n";
-  std::string out = "<table><tr><th>joint</th><th>type</th><th>body i</th><th>body j</th></tr>\n";
+  std::string out =
+      "<table><tr><th>joint</th><th>type</th><th>body i</th><th>body j</th><th>reaction</th></tr>\n";
   for (const render::JointTrack& j : run.results.joints) {
-    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", html_escape(j.name),
-                       html_escape(j.type), html_escape(j.body_i), html_escape(j.body_j));
+    const auto reactions = std::find_if(run.joints.begin(), run.joints.end(),
+                                        [&](const JointReactions& r) { return r.name == j.name; });
+    const Indeterminacy which =
+        reactions != run.joints.end() ? indeterminacy(run, *reactions) : Indeterminacy{};
+    const char* what = which.force && which.torque ? "force and torque minimum-norm (indeterminate)"
+                       : which.force               ? "force minimum-norm (indeterminate)"
+                       : which.torque ? "torque minimum-norm (indeterminate); force determined"
+                                      : "determined";
+    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td{}>{}</td></tr>\n",
+                       html_escape(j.name), html_escape(j.type), html_escape(j.body_i),
+                       html_escape(j.body_j),
+                       which.force || which.torque ? " class=\"indeterminate\"" : "", what);
   }
   return out + "</table>\n";
 }
@@ -196,7 +245,7 @@ std::string media(const RunSection& section) {
   if (!section.video_url.empty()) {
     out += fmt::format(
         "<p><video controls preload=\"none\" width=\"640\" src=\"{0}\"></video><br>"
-        "<a href=\"{0}\">animation.mp4</a></p>\n",
+        "<a href=\"{0}\">the video (MP4)</a></p>\n",
         section.video_url);
   }
   if (out.empty()) {
@@ -317,7 +366,7 @@ std::string subsection(const RunSection& s, const std::string& id, const std::st
   return fmt::format("<h3 id=\"{}-{}\">{}</h3>\n{}", s.anchor, id, heading, body);
 }
 
-std::string run_section(const RunSection& s) {
+std::string run_section(const RunSection& s, bool interactive) {
   const RunData& run = *s.run;
   std::string out = fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n", s.anchor, html_escape(s.label));
   out += status_banner(run);
@@ -325,6 +374,7 @@ std::string run_section(const RunSection& s) {
                     summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) +
                         "<h4>Joints</h4>\n" + joints_table(run) + redundancy_table(run) +
                         mode_tables(run) + notes(run));
+  if (interactive && !s.plots.empty()) out += time_window_form(s.anchor);
   out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
   if (run.selection) {
     std::string body = selection_tables(*run.selection) + plots_of(s, PlotSection::kSelection);
@@ -360,8 +410,13 @@ std::string report_html(const ReportContent& content) {
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-      "<title>{0}</title>\n<style>{1}</style>\n</head>\n<body>\n<h1>{0}</h1>\n",
-      html_escape(content.title), kStyle);
+      "<title>{0}</title>\n<style>{1}{2}{3}</style>\n</head>\n<body>\n<h1>{0}</h1>\n",
+      html_escape(content.title), kStyle, interactive_style(),
+      content.interactive ? content.interactive->style : std::string());
+  if (!content.interactive) {
+    out += "<p class=\"banner running\" role=\"note\">" + html_escape(content.interactive_note) +
+           "</p>\n";
+  }
 
   // Contents.
   out += "<nav><ul>\n";
@@ -372,15 +427,18 @@ std::string report_html(const ReportContent& content) {
   if (!content.comparisons.empty()) out += "<li><a href=\"#comparison\">Comparison</a></li>\n";
   out += "</ul></nav>\n";
 
-  for (const RunSection& s : content.runs) out += run_section(s);
+  for (const RunSection& s : content.runs) out += run_section(s, content.interactive.has_value());
 
   // Several runs: one reaction component overlaid (seed paper Figs. 6 and 10).
   if (!content.comparisons.empty()) {
     out += "<section id=\"comparison\">\n<h2>Comparison of runs</h2>\n";
-    for (const NamedPlot& plot : content.comparisons) out += figure(plot);
+    if (content.interactive) out += time_window_form("comparison");
+    for (const WrittenPlot& plot : content.comparisons) out += figure(plot, "comparison");
     out += "</section>\n";
   }
-  return out + "<footer class=\"note\">Generated by limber report.</footer>\n</body>\n</html>\n";
+  out += "<footer class=\"note\">Generated by limber report.</footer>\n";
+  if (content.interactive) out += interactive_scripts(*content.interactive);
+  return out + "</body>\n</html>\n";
 }
 
 }  // namespace limber::report

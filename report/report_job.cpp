@@ -2,6 +2,8 @@
 
 #include "animation_media.h"
 #include "core/error.h"
+#include "curve_export.h"
+#include "decimate.h"
 #include "html.h"
 #include "mode_shape_images.h"
 #include "plot.h"
@@ -26,12 +28,67 @@ std::vector<std::string> run_labels(const std::vector<RunData>& runs) {
   return labels;
 }
 
+// Removes the files an earlier report wrote into `folder` (names starting "run<digit>" or
+// "compare_"), so a report never links or ships stale plots, data or media; other files stay.
+void remove_earlier_outputs(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const bool ours = (name.size() > 3 && name.rfind("run", 0) == 0 && name[3] >= '0' && name[3] <= '9') ||
+                      name.rfind("compare_", 0) == 0;
+    if (ours && entry.is_regular_file()) std::filesystem::remove(entry.path(), error);
+  }
+}
+
+// Draws `plot` into images/, writes its curves to data/<stem>.csv and, when the page is
+// interactive, keeps their decimated JSON.
+WrittenPlot write_plot(ChartCanvas& canvas, NamedPlot plot, const std::filesystem::path& out,
+                       bool interactive, int columns) {
+  canvas.draw(plot.spec, out / kImageFolder / plot.file);
+  WrittenPlot written;
+  written.csv_file = plot.file.substr(0, plot.file.rfind('.')) + ".csv";
+  const std::filesystem::path csv = out / kDataFolder / written.csv_file;
+  std::ofstream file(csv, std::ios::binary);
+  file << curve_csv(curve_table(plot.spec.curves), plot.spec.x_label, plot.spec.y_label);
+  file.close();
+  if (!file) throw std::runtime_error("cannot write '" + csv.string() + "'");
+  if (interactive && !plot.spec.curves.empty()) {
+    const CurveTable table = curve_table(plot.spec.curves, columns);
+    written.interactive_json = curve_json(plot.spec, table);
+    written.interactive_rows = table.x.size();
+  }
+  written.plot = std::move(plot);
+  return written;
+}
+
+PlotOptions plot_options(const ReportOptions& options) {
+  PlotOptions plot;
+  plot.frames.clear();
+  for (const std::string& frame : options.frames) {
+    if (frame == "ground") {
+      plot.frames.push_back(ReactionFrame::kGround);
+    } else if (frame == "joint") {
+      plot.frames.push_back(ReactionFrame::kJoint);
+    } else {
+      throw InputError("expected --frame ground or joint, got '" + frame + "'");
+    }
+  }
+  if (plot.frames.empty()) plot.frames.push_back(ReactionFrame::kGround);
+  if (!(options.zero_fraction >= 0.0 && options.zero_fraction < 1.0)) {
+    throw InputError("expected a zero fraction in [0, 1), got " + std::to_string(options.zero_fraction));
+  }
+  plot.zero_fraction = options.zero_fraction;
+  return plot;
+}
+
 }  // namespace
 
 ReportSummary generate_report(const ReportOptions& options) {
   if (options.directories.empty()) {
     throw InputError("expected at least one results directory, got none");
   }
+  const PlotOptions plot_settings = plot_options(options);
   // Read every run first: a bad directory stops the report before anything is written.
   std::vector<RunData> runs;
   for (const std::filesystem::path& dir : options.directories) runs.push_back(read_run_data(dir));
@@ -41,7 +98,9 @@ ReportSummary generate_report(const ReportOptions& options) {
       options.output.empty() ? options.directories.front() / "report" : options.output;
   const std::filesystem::path images = out / kImageFolder;
   std::error_code error;
+  for (const char* folder : {kImageFolder, kDataFolder, kMediaFolder}) remove_earlier_outputs(out / folder);
   std::filesystem::create_directories(images, error);
+  if (!error) std::filesystem::create_directories(out / kDataFolder, error);
   if (error) {
     throw InputError("expected a report folder that can be created, got '" + out.string() + "' (" +
                      error.message() + ")");
@@ -53,6 +112,15 @@ ReportSummary generate_report(const ReportOptions& options) {
                                                         : "limber report";
   const std::vector<std::string> labels = run_labels(runs);
   ReportSummary summary;
+  content.interactive = load_interactive_library(options.dygraphs_script,
+                                                 options.dygraphs_script.parent_path() / "dygraph.min.css");
+  summary.interactive = content.interactive.has_value();
+  if (!content.interactive) {
+    content.interactive_note =
+        "Interactive plots are off: the plotting library " + options.dygraphs_script.string() +
+        " (Debian package libjs-dygraphs) was not found when this report was written. The "
+        "figures below are static; the CSV beside each holds its curves.";
+  }
 
   // Plots of every run, then the comparisons, all in one chart canvas.
   {
@@ -62,13 +130,17 @@ ReportSummary generate_report(const ReportOptions& options) {
       section.run = &runs[k];
       section.label = labels[k];
       section.anchor = "run" + std::to_string(k + 1);
-      section.plots = run_plots(runs[k], section.anchor + "_");
-      for (const NamedPlot& plot : section.plots) canvas.draw(plot.spec, images / plot.file);
+      for (NamedPlot& plot : run_plots(runs[k], section.anchor + "_", plot_settings)) {
+        section.plots.push_back(
+            write_plot(canvas, std::move(plot), out, summary.interactive, options.interactive_columns));
+      }
       summary.plots += static_cast<int>(section.plots.size());
       content.runs.push_back(std::move(section));
     }
-    content.comparisons = comparison_plots(runs, labels);
-    for (const NamedPlot& plot : content.comparisons) canvas.draw(plot.spec, images / plot.file);
+    for (NamedPlot& plot : comparison_plots(runs, labels, plot_settings)) {
+      content.comparisons.push_back(
+          write_plot(canvas, std::move(plot), out, summary.interactive, options.interactive_columns));
+    }
     summary.plots += static_cast<int>(content.comparisons.size());
   }
 
@@ -76,7 +148,11 @@ ReportSummary generate_report(const ReportOptions& options) {
   for (RunSection& section : content.runs) {
     const RunData& run = *section.run;
     section.stills = copy_stills(pick_stills(run.frames), images, section.anchor + "_");
-    if (run.video) section.video_url = relative_url(out, *run.video);
+    if (run.video) {
+      std::filesystem::create_directories(out / kMediaFolder);
+      section.video_url = std::string(kMediaFolder) + "/" +
+                          place_video(*run.video, out / kMediaFolder, section.anchor + "_");
+    }
     if (options.mode_shapes) {
       section.mode_images = draw_mode_shapes(run, images, section.anchor + "_",
                                              options.mode_image_width, options.mode_image_height);

@@ -1,7 +1,9 @@
 #include "run_data.h"
 
 #include "core/error.h"
+#include "body_pose.h"
 #include "modes_reader.h"
+#include "relative_deflection.h"
 #include "results/h5_handle.h"
 #include "results/link_name.h"
 
@@ -19,7 +21,7 @@ using results::SilentHdf5Errors;
 
 // Root attributes shown elsewhere in the report (not as solver settings).
 const std::set<std::string> kKnownRootAttributes = {"format", "version", "title",
-                                                    "case_file", "status", "message"};
+                                                    "case_file", "status", "message", "axis_names"};
 
 bool exists(hid_t file, const std::string& path) {
   // Check each link on the way: H5Lexists fails on a path through a missing group.
@@ -195,7 +197,9 @@ void truncate(RunData& run, Eigen::Index n) {
     joint.torque_joint.conservativeResize(n, 3);
     if (joint.force_ground.rows() > n) joint.force_ground.conservativeResize(n, 3);
     if (joint.torque_ground.rows() > n) joint.torque_ground.conservativeResize(n, 3);
+    if (joint.indeterminate.size() > n) joint.indeterminate.conservativeResize(n);
   }
+  for (DeflectionProbe& probe : run.deflections) probe.values.conservativeResize(n, 3);
   for (HingeLimitTrack& limit : run.hinge_limits) {
     limit.angle.conservativeResize(n);
     limit.torque.conservativeResize(n);
@@ -223,7 +227,7 @@ hsize_t read_series(hid_t file, RunData& run) {
     const std::vector<double> force = read_doubles(file, g + "force_joint", 3, rows);
     const std::vector<double> torque = read_doubles(file, g + "torque_joint", 3, torque_rows);
     if (force.empty()) continue;
-    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3), {}, {}};
+    JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3), {}, {}, {}};
     if (!torque.empty()) reactions.torque_joint = as_rows3(torque, torque_rows);
     ns = std::min({ns, rows, torque.empty() ? rows : torque_rows});
     hsize_t ground_rows = 0;
@@ -237,7 +241,21 @@ hsize_t read_series(hid_t file, RunData& run) {
       reactions.torque_ground = as_rows3(ground_torque, ground_rows);
       ns = std::min(ns, ground_rows);
     }
+    const std::vector<double> indeterminate = read_doubles(file, g + "indeterminate", 0, ground_rows);
+    if (!indeterminate.empty()) {
+      reactions.indeterminate = as_vector(indeterminate);
+      ns = std::min(ns, ground_rows);
+    }
     run.joints.push_back(std::move(reactions));
+  }
+
+  // Deflection probes of flexible bodies.
+  for (const render::BodyTrack& body : run.results.bodies) {
+    if (!body.flexible) continue;
+    const std::vector<double> probe = read_doubles(file, body.group + "/deflection", 3, rows);
+    if (probe.empty()) continue;
+    run.deflections.push_back({body.name, as_rows3(probe, rows)});
+    ns = std::min(ns, rows);
   }
 
   // Driver efforts and energies, listed by link name, shown by name.
@@ -246,6 +264,11 @@ hsize_t read_series(hid_t file, RunData& run) {
     const std::vector<double> v = read_doubles(file, g + "/effort", 0, rows);
     if (v.empty()) continue;
     run.drivers.push_back({display_name(file, g, driver), as_vector(v)});
+    std::string unit;
+    for (const auto& [key, value] : attributes(file, g, {})) {
+      if (key == "unit") unit = value;
+    }
+    run.driver_units.push_back(unit);
     ns = std::min(ns, rows);
   }
   for (const std::string& energy : members(file, "/energy")) {
@@ -331,6 +354,23 @@ hsize_t read_series(hid_t file, RunData& run) {
   return ns;
 }
 
+// Root attribute axis_names: "X, Y, Z" (three names, ", "-separated); the default otherwise.
+void read_axis_names(hid_t file, RunData& run) {
+  for (const auto& [key, value] : attributes(file, "/", {})) {
+    if (key != "axis_names") continue;
+    std::array<std::string, 3> names;
+    std::size_t at = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t end = value.find(", ", at);
+      if ((end == std::string::npos) != (k == 2)) return;  // not three names: keep the default
+      names[static_cast<std::size_t>(k)] = value.substr(at, end == std::string::npos ? end : end - at);
+      at = end + 2;
+    }
+    run.axis_names = names;
+    run.axis_names_from_case = true;
+  }
+}
+
 // Mode tables: modes.h5 beside the results when it holds the body (kinds and labels), else the
 // frequencies in results.h5. A damaged modes.h5 is noted, not fatal: the results still report.
 void read_mode_tables(RunData& run) {
@@ -401,6 +441,7 @@ RunData read_run_data(const std::filesystem::path& directory) {
     const hsize_t ns = read_series(file.get(), run);
     truncate(run, static_cast<Eigen::Index>(ns));
     run.solver_attributes = attributes(file.get(), "/", kKnownRootAttributes);
+    read_axis_names(file.get(), run);
     for (auto& attribute : attributes(file.get(), "/solver", {})) {
       run.solver_attributes.push_back(std::move(attribute));
     }
@@ -416,6 +457,22 @@ RunData read_run_data(const std::filesystem::path& directory) {
   run.selection = read_selection(directory, run.notes);
   run.sweep = read_sweep(directory, run.notes);
   return run;
+}
+
+Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
+                                        std::vector<std::string>* joints) {
+  const render::RigidFitBasis fit =
+      render::rigid_fit_basis(body.mesh.nodes, render::joint_nodes(results, body, joints));
+  if (fit.anchors.empty()) return max_deflection(body);
+  const Eigen::Index ns = body.modal_coordinates.rows();
+  Eigen::VectorXd largest = Eigen::VectorXd::Zero(ns);
+  if (body.mesh.mode_translations.cols() == 0) return largest;
+  for (Eigen::Index s = 0; s < ns; ++s) {
+    const render::RowMatrix3d u =
+        render::elastic_displacements(body.mesh, body.modal_coordinates.row(s).transpose());
+    largest(s) = render::relative_displacements(fit, body.mesh.nodes, u).rowwise().norm().maxCoeff();
+  }
+  return largest;
 }
 
 Eigen::VectorXd max_deflection(const render::BodyTrack& body) {

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -30,6 +31,16 @@ struct JointReactions {
   RowMatrix3d torque_joint;  // joint frame [N m]
   RowMatrix3d force_ground;  // ground axes [N] (empty when the file has none)
   RowMatrix3d torque_ground; // ground axes, about the joint point [N m] (empty when none)
+  Eigen::VectorXd indeterminate;  // ns, 1 where redundancy made the reaction minimum-norm (empty: none)
+
+  bool is_indeterminate() const { return indeterminate.size() > 0 && indeterminate.maxCoeff() > 0.0; }
+};
+
+// A flexible body's deflection probe (case key `deflection`): a node's elastic displacement
+// relative to a chord, body axes [m], ns x 3.
+struct DeflectionProbe {
+  std::string body;
+  RowMatrix3d values;
 };
 
 // A named per-sample series (driver effort, energy, violation).
@@ -75,6 +86,11 @@ struct RunData {
   render::Results results;              // title, status, bodies, meshes, joints, time (ns)
   std::vector<JointReactions> joints;   // in the order of results.joints
   std::vector<Series> drivers;          // efforts [N or N m]
+  std::vector<std::string> driver_units;  // per driver: "N", "N m", or "" when the file does not say
+  // Names of the ground axes x, y, z (root attribute axis_names, case key `axis_names`).
+  std::array<std::string, 3> axis_names{"X", "Y", "Z"};
+  bool axis_names_from_case = false;
+  std::vector<DeflectionProbe> deflections;
   std::vector<Series> energies;         // [J]
   std::vector<HingeLimitTrack> hinge_limits;  // in the model's order
   std::vector<HingeEventRow> events;
@@ -110,5 +126,11 @@ RunData read_run_data(const std::filesystem::path& directory);
 
 // Largest elastic displacement max_n |u_n| of a flexible body per sample [m], u = Phi eta.
 Eigen::VectorXd max_deflection(const render::BodyTrack& body);
+
+// Largest elastic displacement relative to the rigid fit through the body's joint nodes,
+// max_n |u_rel,n| per sample [m] (render/relative_deflection.h: what the animation scales and
+// colours); max_deflection when the body has no joints. `joints` receives the joints' names.
+Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
+                                        std::vector<std::string>* joints = nullptr);
 
 }  // namespace limber::report

@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libvtk9-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
   openmpi-bin libopenmpi-dev
+  libjs-dygraphs
   ffmpeg
   chromium
 )

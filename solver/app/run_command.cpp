@@ -266,6 +266,9 @@ int run_case(const RunOptions& options) {
   // Signals are caught from before the file exists, so a stop at any moment closes it.
   const StopSignals stop_signals;
   results::ResultsWriter writer(directory, input.title, input.file);
+  if (input.axis_names.size() == 3) {
+    writer.set_axis_names({input.axis_names[0], input.axis_names[1], input.axis_names[2]});
+  }
   const std::string results_path = writer.path().string();
 
   // The run, with a progress line on a terminal.

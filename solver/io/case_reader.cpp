@@ -1,5 +1,6 @@
 #include "io/case_reader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <string_view>
 
@@ -17,12 +18,12 @@ namespace {
 // The mechanism sections are those of kMechanismSections (mechanism_reader.h).
 const std::initializer_list<std::string_view> kCaseSections = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
-    "markers", "joints",   "drivers",  "forces",          "assembly", "run"};
+    "markers", "joints",   "drivers",  "forces",          "assembly", "run", "axis_names"};
 // A case may also name a `base` case whose sections it takes where it has none: a variant
 // (another mode set, other settings) without copying the mechanism.
 const std::initializer_list<std::string_view> kCaseSectionsAndBase = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
-    "markers", "joints",   "drivers",  "forces",          "assembly", "run", "base"};
+    "markers", "joints",   "drivers",  "forces",          "assembly", "run", "base", "axis_names"};
 
 // A case's `base`: the file (relative to the case's folder) whose sections this case takes
 // where it has none of its own. One level only: a base has no base.
@@ -40,6 +41,27 @@ YamlValue with_base_case(const YamlValue& root, const std::string& file) {
   return root.with_base(base_root);
 }
 
+// `axis_names`: three distinct short names of the ground axes x, y, z (reports name the
+// ground-axes components with them).
+std::vector<std::string> read_axis_names(const YamlValue& value) {
+  const std::vector<YamlValue> items = value.items();
+  if (items.size() != 3) {
+    value.fail("expected three names for 'axis_names' (ground x, y, z), got " +
+               std::to_string(items.size()));
+  }
+  std::vector<std::string> names;
+  for (const YamlValue& item : items) {
+    const std::string name = item.as_string();
+    if (name.size() > 24 || name.find(',') != std::string::npos ||
+        std::find(names.begin(), names.end(), name) != names.end()) {
+      item.fail("expected a distinct name of at most 24 characters without a comma, got '" +
+                name + "'");
+    }
+    names.push_back(name);
+  }
+  return names;
+}
+
 Case read_case(const YamlDocument& document) {
   if (document.root().is_null()) {
     document.root().fail("expected a case (a map of sections), got an empty file");
@@ -51,6 +73,7 @@ Case read_case(const YamlDocument& document) {
   result.file = document.file();
   result.title = std::filesystem::path(document.file()).stem().string();
   if (auto title = root.find("title")) result.title = title->as_string();
+  if (auto axes = root.find("axis_names")) result.axis_names = read_axis_names(*axes);
 
   // Shared definitions first, whatever their place in the file, then what refers to them.
   const CaseLibrary library = CaseLibrary::read(root);

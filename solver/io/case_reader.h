@@ -4,6 +4,7 @@
 //
 // Top-level sections, each read by its own reader:
 //   title            text (default: the file's stem)
+//   axis_names       three names of the ground axes x, y, z for reports (optional)
 //   materials        case_library.h
 //   sections         case_library.h
 //   flexible_bodies  flexible_body_reader.h -> one FeModel + ModeRequest per body
@@ -42,6 +43,7 @@ struct FlexibleBodyCase {
 struct Case {
   std::string file;  // path as given
   std::string title;
+  std::vector<std::string> axis_names;            // ground x, y, z for reports; empty: X, Y, Z
   std::vector<FlexibleBodyCase> flexible_bodies;  // in file order
   std::optional<MechanismCase> mechanism;         // when the case has mechanism sections
 };

@@ -490,10 +490,11 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
   return static_cast<int>(impl_->joint_series.size()) - 1;
 }
 
-int ResultsWriter::add_driver(const std::string& name) {
+int ResultsWriter::add_driver(const std::string& name, const std::string& unit) {
   impl_->demand_declaring();
   H5Handle group =
       create_named_group(impl_->group(impl_->drivers_group, "drivers"), impl_->driver_links, name);
+  if (!unit.empty()) write_string_attribute(group.get(), "unit", unit);
   impl_->driver_series.push_back(
       impl_->create_series(group.get(), "effort", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
   return static_cast<int>(impl_->driver_series.size()) - 1;
@@ -578,6 +579,11 @@ void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
 void ResultsWriter::set_integrator(const std::string& name) {
   impl_->demand_declaring();
   write_string_attribute(impl_->file.get(), "integrator", name);
+}
+
+void ResultsWriter::set_axis_names(const std::array<std::string, 3>& names) {
+  impl_->demand_declaring();
+  write_string_attribute(impl_->file.get(), "axis_names", names[0] + ", " + names[1] + ", " + names[2]);
 }
 
 void ResultsWriter::append_sample(const Sample& sample) {

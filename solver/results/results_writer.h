@@ -181,7 +181,9 @@ class ResultsWriter {
   int add_rigid_body(const RigidBodySpec& body);
   int add_flexible_body(const FlexibleBodySpec& body);
   int add_joint(const JointSpec& joint);
-  int add_driver(const std::string& name);
+  // `unit` ("N" for a translation driver, "N m" for a rotation) becomes the attribute `unit`
+  // of /drivers/<driver> (none when empty).
+  int add_driver(const std::string& name, const std::string& unit = "");
   int add_energy(const std::string& name);
   int add_hinge_limit(const HingeLimitSpec& limit);
   // The redundant constraint equations found at the start (at most once, before the first
@@ -195,6 +197,8 @@ class ResultsWriter {
   void set_clearance_pairs(const std::vector<std::string>& pairs);
   // Root attribute `integrator` ("ida", "galpha"): which method produced the samples.
   void set_integrator(const std::string& name);
+  // Root attribute `axis_names`: the case's names of the ground axes x, y, z ("X, Y, Z").
+  void set_axis_names(const std::array<std::string, 3>& names);
 
   // Appends one row to every per-sample dataset: buffered, written and flushed with its block
   // (see the top of this file). Precondition: sample vectors sized as declared,

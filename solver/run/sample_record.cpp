@@ -82,7 +82,10 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
                       model.bodies[model.markers[joint.marker_i].body].name,
                       model.bodies[model.markers[joint.marker_j].body].name});
   }
-  for (const multibody::Driver& driver : model.drivers) writer.add_driver(driver.name);
+  for (const multibody::Driver& driver : model.drivers) {
+    writer.add_driver(driver.name,
+                      driver.coordinate == multibody::DriverCoordinate::kRotation ? "N m" : "N");
+  }
   for (const char* name : kEnergyNames) writer.add_energy(name);
   for (const multibody::ForceElement& force : model.forces) {
     if (const auto* limit = std::get_if<multibody::HingeLimit>(&force)) {

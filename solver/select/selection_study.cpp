@@ -66,6 +66,9 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   std::vector<double> times;
   std::vector<Eigen::VectorXd> reactions, deflections;
   results::ResultsWriter writer(directory, input->title + " [" + candidate.name + "]", input->file);
+  if (input->axis_names.size() == 3) {
+    writer.set_axis_names({input->axis_names[0], input->axis_names[1], input->axis_names[2]});
+  }
   run::RunHooks hooks;
   hooks.writer = &writer;
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {

@@ -186,6 +186,19 @@ TEST(CaseReaderErrors, UnknownKeys) {
                        "materials, sections, flexible_bodies"));
 }
 
+TEST(CaseReader, AxisNamesForReports) {
+  EXPECT_TRUE(read_case_text(rod_case(kGoodBeam), "test.yaml").axis_names.empty());
+  const std::string named = "axis_names: [X (rail), Y (pin), Z (up)]\n" + rod_case(kGoodBeam);
+  EXPECT_EQ(read_case_text(named, "test.yaml").axis_names,
+            (std::vector<std::string>{"X (rail)", "Y (pin)", "Z (up)"}));
+  const std::string two = "axis_names: [X, Z]\n" + rod_case(kGoodBeam);
+  EXPECT_TRUE(fails_at(two, location_of(two, "[X, Z]"),
+                       "expected three names for 'axis_names' (ground x, y, z), got 2"));
+  const std::string twice = "axis_names: [X, Y, X]\n" + rod_case(kGoodBeam);
+  EXPECT_TRUE(fails_at(twice, location_of(twice, "X]"),
+                       "expected a distinct name of at most 24 characters without a comma, got 'X'"));
+}
+
 TEST(CaseReaderErrors, MissingKeys) {
   const std::string text = rod_case(
       "{from: [0, 0, 0], to: [1, 0, 0], section: bar, "

@@ -113,6 +113,47 @@ TEST_F(FrameRendererTest, BackgroundBoxAndColorBar) {
   EXPECT_NEAR(renderer.color_range_max(), umax, 1e-12 * umax);
 }
 
+TEST_F(FrameRendererTest, ColorBarLabelsAndTitleKeepClearOfTheBar) {
+  // At the main job's frame size: in the colour bar's box, the bar's coloured columns and the
+  // labels' dark columns are at least 3 px apart, and the title and the five labels are six
+  // separate bands of rows (the title does not run into the top label).
+  const Results results = scene_results(TestScene{}, "bar_labels");
+  RenderOptions o = options(CameraPreset::kFront);
+  o.width = 1280;
+  o.height = 720;
+  o.anti_aliasing = AntiAliasing::kNone;
+  FrameRenderer renderer(results, o, 0.0, 1.0);
+  const Image image = renderer.render(0.5);
+  const int x0 = static_cast<int>(kColorBarBox[0] * o.width);
+  const int y0 = static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * o.height) - o.height / 20;
+  const int y1 = static_cast<int>((1.0 - kColorBarBox[1]) * o.height) + o.height / 50;
+  int bar_right = -1, label_left = o.width;
+  std::vector<bool> dark_row(static_cast<std::size_t>(o.height), false);
+  // The bar: saturated colours (its colour table); then text: near black (0.1, 0.1, 0.15),
+  // anti-aliased, anywhere in the box (labels on the bar's left would count as overlapping).
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int y = std::max(0, y0); y < std::min(o.height, y1); ++y) {
+      for (int x = x0; x < o.width; ++x) {
+        const auto c = image.pixel(x, y);
+        const int lo = std::min({c[0], c[1], c[2]}), hi = std::max({c[0], c[1], c[2]});
+        if (pass == 0 && hi - lo > 120) bar_right = std::max(bar_right, x);
+        if (pass == 1 && hi < 110) {
+          dark_row[static_cast<std::size_t>(y)] = true;
+          // The title sits above the bar, centred over it: only rows beside the bar count.
+          const bool beside = y >= static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * o.height);
+          if (beside) label_left = std::min(label_left, x);
+        }
+      }
+    }
+  }
+  ASSERT_GT(bar_right, x0);
+  ASSERT_LT(label_left, o.width);
+  EXPECT_GE(label_left - bar_right, 3) << "labels touch the bar";
+  int bands = 0;
+  for (int y = 1; y < o.height; ++y) bands += dark_row[static_cast<std::size_t>(y)] && !dark_row[static_cast<std::size_t>(y - 1)];
+  EXPECT_EQ(bands, 6) << "title and labels overlap";
+}
+
 TEST_F(FrameRendererTest, NoColorBarWithoutFlexibleBodies) {
   TestScene scene;
   scene.plates = 0;

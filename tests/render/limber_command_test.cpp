@@ -23,21 +23,27 @@ namespace {
 
 struct CommandRun {
   int exit_code = -1;
-  std::string err;
+  std::string out, err;
 };
 
-// Runs `limber ARGS` with DISPLAY unset; stdout is discarded, stderr kept.
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs `limber ARGS` with DISPLAY unset; stdout and stderr kept.
 CommandRun run_limber(const std::string& args, const std::filesystem::path& dir) {
+  const std::filesystem::path out = dir / "stdout.txt";
   const std::filesystem::path err = dir / "stderr.txt";
-  const std::string command =
-      "env -u DISPLAY " + std::string(LIMBER_EXE) + " " + args + " >/dev/null 2>" + err.string();
+  const std::string command = "env -u DISPLAY " + std::string(LIMBER_EXE) + " " + args + " >" +
+                              out.string() + " 2>" + err.string();
   const int status = std::system(command.c_str());
   CommandRun run;
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  std::stringstream text;
-  text << in.rdbuf();
-  run.err = text.str();
+  run.out = file_text(out);
+  run.err = file_text(err);
   return run;
 }
 
@@ -103,6 +109,31 @@ TEST(LimberRender, RendersTheTestSceneAndRejectsAMissingFile) {
   const CommandRun both =
       run_limber("render " + dir.string() + " --no-fxaa --anti-aliasing gl-fxaa", dir);
   EXPECT_EQ(both.exit_code, 1);
+}
+
+TEST(LimberRender, SlowMotionSetsTheSamplingAndThePlaybackRateStays) {
+  const auto dir = testing::fresh_directory("cli_slow_motion");
+  testing::write_test_results(dir, testing::TestScene{});
+  // [0.2, 0.3] s at 10x slow motion and 20 frames/s playback: 200 frames per simulated second,
+  // 21 frames, 1.05 s of video.
+  const CommandRun slow = run_limber("render " + dir.string() +
+                                         " --size 160x120 --t0 0.2 --t1 0.3 --slow-motion 10 "
+                                         "--playback-fps 20 --no-video --no-vtk --no-progress",
+                                     dir);
+  ASSERT_EQ(slow.exit_code, 0) << slow.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "frame_00020.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "frame_00021.png"));
+  EXPECT_NE(slow.out.find("200 frames per simulated second played at 20 frames/s: 10x slow "
+                          "motion, 1.05 s of video"),
+            std::string::npos)
+      << slow.out;
+  // --fps and --slow-motion both set the sampling: one or the other.
+  const CommandRun both = run_limber("render " + dir.string() + " --fps 10 --slow-motion 2", dir);
+  EXPECT_EQ(both.exit_code, 1);
+  const CommandRun playback = run_limber("render " + dir.string() + " --playback-fps 0", dir);
+  EXPECT_EQ(playback.exit_code, 1);
+  EXPECT_NE(playback.err.find("--playback-fps: expected a frame rate in (0, 1000]"), std::string::npos)
+      << playback.err;
 }
 
 TEST(LimberModes, AnimatesEveryModeOfThePlate) {

@@ -106,6 +106,33 @@ TEST(Browser, HeadlessChromiumRendersTheReportWithoutConsoleErrors) {
   const std::string dom = testing::read_text(root / "dom.html");
   EXPECT_NE(dom.find("Case summary"), std::string::npos) << testing::read_text(root / "dom.err");
   EXPECT_NE(dom.find("id=\"comparison\""), std::string::npos);
+  // The charts were built: <body> marked interactive, and each plot's div holds canvases.
+  EXPECT_NE(dom.find("<body class=\"interactive\">"), std::string::npos);
+  std::size_t plots = 0, charts = 0;
+  for (std::size_t at = dom.find("class=\"dygraph-plot\""); at != std::string::npos;
+       at = dom.find("class=\"dygraph-plot\"", at + 1)) {
+    ++plots;
+    const std::size_t next = dom.find("class=\"plot-legend\"", at);
+    if (dom.substr(at, next - at).find("<canvas") != std::string::npos) ++charts;
+  }
+  EXPECT_GT(plots, 10u);
+  EXPECT_EQ(charts, plots);
+
+  // Printed (PDF): the PNG figures, not the charts: one image per plot plus the mode-shape
+  // pictures (the print style sheet hides the charts' canvases, which would print as images).
+  const std::filesystem::path pdf = root / "report.pdf";
+  run_chromium(chromium, root / "profile", "--print-to-pdf='" + pdf.string() + "'", page,
+               root / "pdf.out", root / "pdf.err");
+  const std::string printed = testing::read_text(pdf);
+  std::size_t images = 0;
+  for (std::size_t at = printed.find("/Subtype /Image"); at != std::string::npos;
+       at = printed.find("/Subtype /Image", at + 1)) {
+    ++images;
+  }
+  const std::string html = testing::read_text(page);
+  std::size_t img_tags = 0;
+  for (std::size_t at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1)) ++img_tags;
+  EXPECT_EQ(images, img_tags) << "charts printed, or figures missing";
   const std::vector<std::string> console = console_lines(testing::read_text(root / "dom.err"));
   EXPECT_TRUE(console.empty()) << console.front();
 }

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <numbers>
 
 namespace limber::report {
 namespace {
@@ -40,9 +41,11 @@ TEST(GroundReactionPlots, ComeBeforeTheJointFrameAndHoldTheStoredForces) {
   const ReactionRun run;
   write_reaction_run(dir, run);
   const RunData data = read_run_data(dir);
-  const std::vector<NamedPlot> plots = run_plots(data, "run1_");
+  PlotOptions both;
+  both.frames = {ReactionFrame::kGround, ReactionFrame::kJoint};
+  const std::vector<NamedPlot> plots = run_plots(data, "run1_", both);
 
-  // Ground axes, then joint frame; no torque plots (the torques are zero).
+  // Ground axes, then joint frame (as asked); no torque plots (the torques are zero).
   EXPECT_EQ(reaction_files(plots),
             (std::vector<std::string>{"run1_reaction_R3_force_ground.png", "run1_reaction_R3_force.png"}));
   const NamedPlot& ground = plot_named(plots, "run1_reaction_R3_force_ground.png");
@@ -51,7 +54,12 @@ TEST(GroundReactionPlots, ComeBeforeTheJointFrameAndHoldTheStoredForces) {
       << ground.caption;
   EXPECT_NE(ground.caption.find("joint R3 on slider"), std::string::npos) << ground.caption;
   EXPECT_EQ(ground.spec.y_label, "force [N]");
-  ASSERT_EQ(ground.spec.curves.size(), 3u);
+  // X, Y, Z, then the magnitude |F|, the norm of each stored row.
+  ASSERT_EQ(ground.spec.curves.size(), 4u);
+  EXPECT_EQ(ground.spec.curves[3].label, "|F|");
+  for (int k = 0; k < run.samples; ++k) {
+    EXPECT_DOUBLE_EQ(ground.spec.curves[3].y(k), data.joints[0].force_ground.row(k).norm());
+  }
 
   // Each curve is the stored force_ground column, and that is G(t) as written (exact: the
   // float64 values pass through HDF5 unchanged; 1e-12 A covers the sin/cos evaluation only).
@@ -77,6 +85,7 @@ TEST(GroundReactionPlots, ComeBeforeTheJointFrameAndHoldTheStoredForces) {
   ReportOptions options;
   options.directories = {dir};
   options.mode_shapes = false;
+  options.frames = {"ground", "joint"};
   const std::string html = testing::read_text(generate_report(options).index);
   const std::size_t ground_at = html.find("src=\"images/run1_reaction_R3_force_ground.png\"");
   const std::size_t joint_at = html.find("src=\"images/run1_reaction_R3_force.png\"");
@@ -84,7 +93,8 @@ TEST(GroundReactionPlots, ComeBeforeTheJointFrameAndHoldTheStoredForces) {
   ASSERT_NE(joint_at, std::string::npos);
   EXPECT_LT(ground_at, joint_at);
   EXPECT_NE(html.find("<figcaption>Reaction force at joint R3 on slider, components in ground axes "
-                      "(X = ground x, Y = ground y, Z = ground z).</figcaption>"),
+                      "(X = ground x, Y = ground y, Z = ground z), and its magnitude |F|. "
+                      "<a class=\"csv\" href=\"data/run1_reaction_R3_force_ground.csv\">"),
             std::string::npos);
   PlotFrame frame;
   {
@@ -122,20 +132,138 @@ TEST(GroundReactionPlots, TorqueInGroundAxesWhenTheJointTransmitsOne) {
     writer.finish(results::RunStatus::kOk);
   }
   const RunData data = read_run_data(dir);
-  const std::vector<NamedPlot> plots = run_plots(data, "");
+  PlotOptions both;
+  both.frames = {ReactionFrame::kGround, ReactionFrame::kJoint};
+  const std::vector<NamedPlot> plots = run_plots(data, "", both);
   EXPECT_EQ(reaction_files(plots),
             (std::vector<std::string>{"reaction_weld_force_ground.png", "reaction_weld_torque_ground.png",
                                       "reaction_weld_force.png", "reaction_weld_torque.png"}));
   const NamedPlot& torque = plot_named(plots, "reaction_weld_torque_ground.png");
   EXPECT_EQ(torque.spec.y_label, "torque [N m]");
   EXPECT_NE(torque.caption.find("about the joint point"), std::string::npos);
-  ASSERT_EQ(torque.spec.curves.size(), 3u);
+  ASSERT_EQ(torque.spec.curves.size(), 4u);  // and |T|
   for (int c = 0; c < 3; ++c) {
     for (Eigen::Index k = 0; k < data.sample_count(); ++k) {
       EXPECT_EQ(torque.spec.curves[c].y(k), data.joints[0].torque_ground(k, c));
       EXPECT_DOUBLE_EQ(torque.spec.curves[c].y(k), data.results.time(k) * (4.0 + c));
     }
   }
+}
+
+TEST(GroundReactionPlots, NoiseIsListedAsZeroAndMinimumNormReactionsSayTheyAreIndeterminate) {
+  unsetenv("DISPLAY");
+  // Joint "R2": ground force (1000 sin 2πt, 1e-9 cos 2πt, 500 cos 2πt) N, flagged minimum-norm
+  // at every sample, its equation x redundant with R1's x (a force equation, so the force is
+  // what is indeterminate); joint "R1" not flagged: determined.
+  const auto dir = testing::fresh_directory("indeterminate");
+  {
+    results::ResultsWriter writer(dir, "redundant", "ground_reaction_test.cpp");
+    writer.add_rigid_body({"rod", {}});
+    writer.add_joint({"R1", "revolute", "ground", "rod"});
+    writer.add_joint({"R2", "revolute", "ground", "rod"});
+    writer.set_redundant_equations({"R2.x"}, {"R1.x"});
+    for (int k = 0; k <= 100; ++k) {
+      results::Sample sample;
+      sample.time = 0.01 * k;
+      sample.bodies.emplace_back();
+      const double w = 2.0 * std::numbers::pi * sample.time;
+      results::JointSample r1, r2;
+      r1.force_ground = r1.force_joint = Eigen::Vector3d(1.0, 2.0, 3.0);
+      r2.force_ground = r2.force_joint = Eigen::Vector3d(1000.0 * std::sin(w), 1e-9 * std::cos(w), 500.0 * std::cos(w));
+      r2.torque_ground = r2.torque_joint = Eigen::Vector3d(1e-6, 1e-6, 1e-6);  // noise
+      r1.torque_ground = r1.torque_joint = Eigen::Vector3d(0.0, 0.0, 0.1);      // a real one
+      r2.indeterminate = true;
+      sample.joints = {r1, r2};
+      writer.append_sample(sample);
+    }
+    writer.finish(results::RunStatus::kOk);
+  }
+  const RunData data = read_run_data(dir);
+  const std::vector<NamedPlot> plots = run_plots(data, "");
+  const NamedPlot& r2 = plot_named(plots, "reaction_R2_force_ground.png");
+  // Y's peak is 1e-12 of X's, below the default 1e-4: listed, not drawn.
+  ASSERT_EQ(r2.spec.curves.size(), 3u);
+  EXPECT_EQ(r2.spec.curves[0].label, "X");
+  EXPECT_EQ(r2.spec.curves[1].label, "Z");
+  EXPECT_NE(r2.caption.find("Not drawn, below 0.0001 of the largest component: Y ≈ 0 (peak 1e-09 N)."),
+            std::string::npos)
+      << r2.caption;
+  EXPECT_NE(r2.warning.find("Indeterminate: joint R2 is in a redundant set of constraints (R2.x "
+                            "depends on R1.x). Its reaction force is the minimum-norm split"),
+            std::string::npos)
+      << r2.warning;
+  EXPECT_NE(r2.spec.title.find("minimum-norm"), std::string::npos);
+  // R2's torque, 1.7e-6 N m, is below 1e-4 x its peak force 1000 N x 1 m (both joints at the
+  // origin: the 1 m default lever): a line in the caption, no plot. R1's 0.1 N m is above
+  // 1e-4 x 3.74 N x 1 m: plotted.
+  EXPECT_NE(r2.caption.find("Reaction torque ≈ 0 (peak |T| 1.73e-06 N m, below 0.0001 × the peak "
+                            "|F| 1000 N × the mechanism's size 1 m): not drawn."),
+            std::string::npos)
+      << r2.caption;
+  EXPECT_EQ(reaction_files(plots),
+            (std::vector<std::string>{"reaction_R1_force_ground.png", "reaction_R1_torque_ground.png",
+                                      "reaction_R2_force_ground.png"}));
+  EXPECT_TRUE(plot_named(plots, "reaction_R1_force_ground.png").warning.empty());
+  // A rotation equation in the set makes the torque, not the force, indeterminate.
+  RunData rotation = data;
+  rotation.redundant_equations = {{"R2.rot_x", "R1.rot_x"}};
+  const Indeterminacy which = indeterminacy(rotation, rotation.joints[1]);
+  EXPECT_FALSE(which.force);
+  EXPECT_TRUE(which.torque);
+  EXPECT_EQ(which.sets, "R2.rot_x depends on R1.rot_x");
+
+  // On the page: the note beside the plot, and the joints table says which is which.
+  ReportOptions options;
+  options.directories = {dir};
+  options.mode_shapes = false;
+  const std::string html = testing::read_text(generate_report(options).index);
+  EXPECT_NE(html.find("<p class=\"plot-warning\" role=\"note\">Indeterminate: joint R2"), std::string::npos);
+  EXPECT_NE(html.find("<td>R2</td><td>revolute</td><td>ground</td><td>rod</td><td class=\"indeterminate\">"
+                      "force minimum-norm (indeterminate)</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td>R1</td><td>revolute</td><td>ground</td><td>rod</td><td>determined</td>"),
+            std::string::npos);
+}
+
+TEST(GroundReactionPlots, AxisNamesAndDriverUnitsComeFromTheFile) {
+  unsetenv("DISPLAY");
+  // The case named its axes (root attribute axis_names) and the writer gave each driver its
+  // unit; force (1, 2, 3) N on joint "pin", a rotation driver and a translation driver.
+  const auto dir = testing::fresh_directory("axis_names");
+  {
+    results::ResultsWriter writer(dir, "named axes", "ground_reaction_test.cpp");
+    writer.set_axis_names({"X (rail)", "Y (pin)", "Z (up)"});
+    writer.add_rigid_body({"arm", {}});
+    writer.add_joint({"pin", "revolute", "ground", "arm"});
+    writer.add_driver("motor", "N m");
+    writer.add_driver("jack", "N");
+    for (int k = 0; k <= 4; ++k) {
+      results::Sample sample;
+      sample.time = 0.25 * k;
+      sample.bodies.emplace_back();
+      results::JointSample pin;
+      pin.force_ground = pin.force_joint = Eigen::Vector3d(1.0, 2.0, 3.0);
+      sample.joints = {pin};
+      sample.driver_efforts = {1.0, 2.0};
+      writer.append_sample(sample);
+    }
+    writer.finish(results::RunStatus::kOk);
+  }
+  const RunData data = read_run_data(dir);
+  EXPECT_TRUE(data.axis_names_from_case);
+  const std::vector<NamedPlot> plots = run_plots(data, "");
+  const NamedPlot& force = plot_named(plots, "reaction_pin_force_ground.png");
+  ASSERT_EQ(force.spec.curves.size(), 4u);
+  EXPECT_EQ(force.spec.curves[0].label, "X (rail)");
+  EXPECT_EQ(force.spec.curves[2].label, "Z (up)");
+  EXPECT_NE(force.caption.find("ground axes (X (rail) = ground x, Y (pin) = ground y, Z (up) = "
+                               "ground z, names from the case)"),
+            std::string::npos)
+      << force.caption;
+  // One effort plot per unit.
+  EXPECT_EQ(plot_named(plots, "driver_efforts_N_m.png").spec.y_label, "effort [N m]");
+  EXPECT_EQ(plot_named(plots, "driver_efforts_N.png").spec.y_label, "effort [N]");
+  EXPECT_EQ(plot_named(plots, "driver_efforts_N_m.png").spec.curves[0].label, "motor");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Test driver for `limber report` until main.cpp registers the sub-command:
 //   limber_report_driver scene DIR              writes the render test scene to DIR
-//   limber_report_driver reactions DIR [A]      writes a reaction run (amplitude A [N])
+//   limber_report_driver reactions DIR [A [NS]] writes a reaction run (amplitude A [N], NS
+//                                               samples: long runs for the interactive plots)
 //   limber_report_driver report DIR... [opts]   runs the sub-command as `limber report`
 #include "core/error.h"
 #include "reaction_runs.h"
@@ -16,9 +17,10 @@ int main(int argc, char** argv) {
     limber::render::testing::write_test_results(argv[2], {});
     return 0;
   }
-  if (what == "reactions" && (argc == 3 || argc == 4)) {
+  if (what == "reactions" && argc >= 3 && argc <= 5) {
     limber::report::testing::ReactionRun run;
-    if (argc == 4) run.amplitude = std::stod(argv[3]);
+    if (argc >= 4) run.amplitude = std::stod(argv[3]);
+    if (argc == 5) run.samples = std::stoi(argv[4]);
     limber::report::testing::write_reaction_run(argv[2], run);
     return 0;
   }

@@ -32,7 +32,8 @@ ReportOptions options_for(std::vector<std::filesystem::path> dirs) {
   return o;
 }
 
-// Every link of the page that is not an anchor resolves to an existing file, and none is remote.
+// Every link of the page that is not an anchor resolves to an existing file inside the report
+// folder, and none is remote.
 void expect_links_resolve(const std::filesystem::path& index) {
   const std::string html = testing::read_text(index);
   int files = 0;
@@ -40,6 +41,7 @@ void expect_links_resolve(const std::filesystem::path& index) {
     ASSERT_FALSE(link.empty());
     if (link[0] == '#') continue;
     EXPECT_EQ(link.find("//"), std::string::npos) << "remote or absolute link " << link;
+    EXPECT_EQ(link.find(".."), std::string::npos) << "link out of the report folder " << link;
     // Undo the percent-encoding of relative_url.
     std::string path;
     for (std::size_t k = 0; k < link.size(); ++k) {
@@ -87,9 +89,18 @@ TEST_F(ReportJobTest, SceneReportHasSectionsAndOnlyLinksToExistingFiles) {
   EXPECT_NE(html.find("Modes of plate0"), std::string::npos);
   EXPECT_NE(html.find("<td class=\"number\">30</td>"), std::string::npos);
   EXPECT_EQ(summary.mode_images, 4);
-  // No banner for a finished run, no script at all.
+  // No banner for a finished run (the plotting library is installed: install-deps.sh); the
+  // only scripts are the library, the chart code and one JSON block per plot.
+  ASSERT_TRUE(summary.interactive) << "libjs-dygraphs missing: run scripts/install-deps.sh";
   EXPECT_EQ(html.find("class=\"banner"), std::string::npos);
-  EXPECT_EQ(html.find("<script"), std::string::npos);
+  const std::string json_open = "<script type=\"application/json\" id=\"";
+  std::size_t scripts = 0, json = 0;
+  for (std::size_t at = html.find("<script"); at != std::string::npos; at = html.find("<script", at + 1)) {
+    ++scripts;
+    if (html.compare(at, json_open.size(), json_open) == 0) ++json;
+  }
+  EXPECT_EQ(json, static_cast<std::size_t>(summary.plots));
+  EXPECT_EQ(scripts, json + 2);
 }
 
 TEST_F(ReportJobTest, ModalCoordinatePlotShowsTheBeamsClosedForm) {
@@ -141,7 +152,7 @@ TEST_F(ReportJobTest, CaseTitleWithMarkupIsEscaped) {
   ReportOptions options = options_for({dir});
   options.mode_shapes = false;
   const std::string html = testing::read_text(generate_report(options).index);
-  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<script>alert"), std::string::npos);
   EXPECT_NE(html.find("<h1>&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; co</h1>"),
             std::string::npos);
 }
@@ -157,7 +168,7 @@ TEST_F(ReportJobTest, FailedRunShowsBannerAndWhatExists) {
   EXPECT_NE(html.find("<div class=\"banner failed\" role=\"alert\">This run failed: Newton failed "
                       "at t = 0.5 s &lt;step too small&gt; The report shows the 101 samples"),
             std::string::npos);
-  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "report/images/run1_reaction_R3_force.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "report/images/run1_reaction_R3_force_ground.png"));
   ASSERT_EQ(summary.runs_not_ok.size(), 1u);
   expect_links_resolve(summary.index);
 }
@@ -204,9 +215,10 @@ TEST_F(ReportJobTest, SeveralRunsGetComparisonPlotsAndRunStatistics) {
   expect_links_resolve(summary.index);
   const std::string html = testing::read_text(summary.index);
   EXPECT_NE(html.find("id=\"comparison\""), std::string::npos);
-  for (const char* c : {"Fx", "Fy", "Fz"}) {
+  // Ground axes (the default frame) X, Y, Z.
+  for (const char* c : {"x", "y", "z"}) {
     EXPECT_TRUE(std::filesystem::is_regular_file(root / "out/images" /
-                                                 (std::string("compare_R3_") + c + ".png")));
+                                                 (std::string("compare_R3_ground_") + c + ".png")));
   }
   for (const char* s : {"run1-reactions", "run1-drivers", "run1-energy", "run1-violation",
                         "run2-reactions"}) {
@@ -242,8 +254,28 @@ TEST_F(ReportJobTest, StillsStripAndVideoFromRenderOutputs) {
                                                  ("run1_still_" + std::to_string(k) + ".png")));
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "report/images/run1_still_6.png"));
-  EXPECT_NE(html.find("src=\"../animation.mp4\""), std::string::npos);
+  // The video inside the report folder (zip and mail): same bytes as the run's.
+  EXPECT_NE(html.find("src=\"media/run1_animation.mp4\""), std::string::npos);
+  EXPECT_EQ(testing::read_text(dir / "report/media/run1_animation.mp4"), "not a real video");
   expect_links_resolve(summary.index);
+}
+
+TEST_F(ReportJobTest, EarlierReportsFilesAreRemovedOthersKept) {
+  const auto dir = testing::fresh_directory("stale");
+  write_reaction_run(dir, ReactionRun{});
+  // What an earlier report (another frame, another run count) left, and a file of the user's.
+  std::filesystem::create_directories(dir / "report/images");
+  std::filesystem::create_directories(dir / "report/data");
+  std::ofstream(dir / "report/images/run1_reaction_R3_force.png") << "old";
+  std::ofstream(dir / "report/data/run2_energy.csv") << "old";
+  std::ofstream(dir / "report/data/notes.csv") << "mine";
+  ReportOptions options = options_for({dir});
+  options.mode_shapes = false;
+  generate_report(options);
+  EXPECT_FALSE(std::filesystem::exists(dir / "report/images/run1_reaction_R3_force.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "report/data/run2_energy.csv"));
+  EXPECT_EQ(testing::read_text(dir / "report/data/notes.csv"), "mine");
+  EXPECT_TRUE(std::filesystem::exists(dir / "report/data/run1_reaction_R3_force_ground.csv"));
 }
 
 TEST(PickStills, FirstAndLastIncludedEvenlySpread) {

@@ -72,9 +72,27 @@ inline bool color_near(const Png& png, double column, double row, const std::arr
   return false;
 }
 
-// Every src="..." and href="..." value of a page.
-inline std::vector<std::string> links(const std::string& html) {
+// The page without the contents of its <script> elements (the inlined library and the plots'
+// JSON are code and data, not markup).
+inline std::string without_scripts(const std::string& html) {
+  std::string out;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t open = html.find("<script", at);
+    if (open == std::string::npos) break;
+    const std::size_t body = html.find('>', open);
+    const std::size_t close = html.find("</script>", body);
+    if (body == std::string::npos || close == std::string::npos) break;
+    out += html.substr(at, body + 1 - at);
+    at = close;
+  }
+  return out + html.substr(at);
+}
+
+// Every src="..." and href="..." value of a page's markup (script contents left out).
+inline std::vector<std::string> links(const std::string& page) {
   std::vector<std::string> out;
+  const std::string html = without_scripts(page);
   const std::regex attribute(R"((?:src|href)="([^"]*)\")");
   for (auto it = std::sregex_iterator(html.begin(), html.end(), attribute);
        it != std::sregex_iterator(); ++it) {

@@ -176,7 +176,8 @@ TEST(SelectionReport, TablesAndOverlayPlotsOfTheModeSets) {
     EXPECT_NE(html.find(std::string("src=\"images/") + file + "\""), std::string::npos) << file;
   }
   EXPECT_NE(html.find("<figcaption>R3 force z on rod [N] in each of the 3 mode sets run by limber "
-                      "select (selection/key_series.csv).</figcaption>"),
+                      "select (selection/key_series.csv). <a class=\"csv\" "
+                      "href=\"data/run1_selection_1_R3_force_z_on_rod__N_.csv\">"),
             std::string::npos);
 
   // The curves are the CSV's columns, labelled by set and role.

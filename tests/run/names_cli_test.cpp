@@ -91,7 +91,7 @@ TEST(NamesCli, FreeTextNamesRunRenderAndReport) {
   ASSERT_EQ(report.exit_code, 0) << report.err;
   for (const char* stem : {"R~2E1", "~2E~2E", "R~7E2E1"}) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "report" / "images" /
-                                                 ("run1_reaction_" + std::string(stem) + "_force.png")))
+                                                 ("run1_reaction_" + std::string(stem) + "_force_ground.png")))
         << stem;
   }
   const std::string html = test::read_text((dir / "report" / "index.html").string());

@@ -1,0 +1,42 @@
+// Elastic displacement relative to a rigid fit through a flexible body's joint nodes, for
+// pictures that scale deformation: u_rel = u − (t + θ × (X − X̄)), with the translation t and
+// small rotation θ that best carry the joint nodes (least squares, minimum norm; X̄ their
+// centroid). Drawing X + (t + θ × (X − X̄)) + scale · u_rel keeps every joint node where the
+// joint holds it (to the fit's residual, zero for one or two joint nodes up to their stretch)
+// at any scale, and |u_rel| is the deflection a reviewer reads: a node on a hinge shows none.
+// The floating frame of reference leaves u free to carry a rigid part (e.g. a free-free
+// panel's hinge node moves millimetres in its frame), which a plain scale would magnify.
+// u is linear in the modal coordinates, so the linearised rigid motion is exact for it.
+#pragma once
+
+#include "results_reader.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace limber::render {
+
+// The fit's operator for one body and its joint nodes.
+struct RigidFitBasis {
+  std::vector<Eigen::Index> anchors;        // node indices the fit goes through
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // their centroid, body frame [m]
+  Eigen::Matrix<double, 6, Eigen::Dynamic> solve;    // (t, θ) = solve · u at the anchors (3 per node)
+};
+
+// Precomputes the fit through `anchors` (node indices into `nodes`, body frame [m]). No
+// anchors: an empty basis, and relative_displacements returns u unchanged.
+RigidFitBasis rigid_fit_basis(const RowMatrix3d& nodes, const std::vector<Eigen::Index>& anchors);
+
+// u − (t + θ × (X − X̄)) for every node, nn x 3 [m], with (t, θ) fitted to u at the anchors.
+RowMatrix3d relative_displacements(const RigidFitBasis& basis, const RowMatrix3d& nodes,
+                                   const RowMatrix3d& u);
+
+// The joint nodes of a flexible body: for each joint with the body as body_i or body_j, the
+// node nearest the joint point at the first sample (deformed, scale 1), once each; with their
+// joints' names. Empty for a body without joints.
+std::vector<Eigen::Index> joint_nodes(const Results& results, const BodyTrack& body,
+                                      std::vector<std::string>* joint_names = nullptr);
+
+}  // namespace limber::render

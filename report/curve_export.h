@@ -1,0 +1,30 @@
+// A plot's curves as text: CSV beside the report (every sample, numbers that read back to the
+// same doubles) and JSON inside the page for the interactive view (dygraphs' native array
+// format, docs/report.md "Interactive plots").
+#pragma once
+
+#include "decimate.h"
+#include "plot.h"
+
+#include <string>
+
+namespace limber::report {
+
+// RFC 4180 CSV: a header row "<x_label>,<label> [unit]..." (the unit is the bracketed part of
+// `y_label`, e.g. "force [N]" -> "[N]"), then one row per abscissa; numbers in the shortest
+// form that parses back to the same double, an empty cell where a curve has no sample (NaN).
+// Fields holding a comma, quote or line break are quoted, quotes doubled. Line ends "\n".
+std::string curve_csv(const CurveTable& table, const std::string& x_label,
+                      const std::string& y_label);
+
+// A JSON string literal of `text`, safe inside an HTML <script> element: quotes, backslashes
+// and control characters escaped, and < > & as \u003c \u003e \u0026 so no "</script>" appears.
+std::string json_string(const std::string& text);
+
+// The plot as JSON: {"title", "xlabel", "ylabel", "labels" (x label first), "log",
+// "colors" ("#rrggbb" per curve, as the PNG), "samples" (before decimation), "data":
+// [[x, y1, y2, ...], ...] with null for a missing or non-finite value}; "log" only when the
+// plot asks for it and every value is positive (as the PNG).
+std::string curve_json(const PlotSpec& plot, const CurveTable& table);
+
+}  // namespace limber::report
