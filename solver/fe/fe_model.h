@@ -40,6 +40,12 @@ struct BeamSection {
   double torsion_constant = 0.0;  // J [m^4] (St-Venant)
   double shear_factor_y = 5.0 / 6.0;
   double shear_factor_z = 5.0 / 6.0;
+  // Stress recovery only (element_stress.h): distances from the centroid to the extreme fibres
+  // along local y and z [m] (0: not known), and whether the section is a solid circle (its
+  // bending stress then follows the resultant moment, not the two components separately).
+  double fibre_y = 0.0;
+  double fibre_z = 0.0;
+  bool circular = false;
 };
 
 struct BeamProperty {
@@ -71,6 +77,10 @@ struct ShellProperty {
   double bending_ratio = 1.0;              // 12 I / T³ [-], > 0
   double shear_ratio = kShellShearFactor;  // T_s / T [-], > 0
   double nonstructural_mass = 0.0;         // NSM [kg/m^2], >= 0
+  // Stress recovery only (element_stress.h): distance of the surfaces where stresses are
+  // reported from the mid-surface, |Z1| = |Z2| of PSHELL [m]; 0 means T/2 (homogeneous plate).
+  // A sandwich's faces sit at about half the core depth.
+  double fibre_distance = 0.0;
 };
 
 // 2-node beam. Local x runs from node 0 to node 1; `orientation` is any vector in

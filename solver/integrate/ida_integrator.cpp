@@ -78,6 +78,8 @@ struct IdaIntegrator::Impl {
   int ne = 0;                     // event functions
   double t_reached = 0.0;         // where the solution stands: IDA's last return or restart
   std::vector<int> pending_events;  // located at t_reached, applied before the next step
+  std::vector<double> breakpoints;  // velocity breakpoints after t0, before t_stop, ascending
+  std::size_t next_breakpoint = 0;  // the first not yet passed
   Eigen::VectorXd e_values;
 
   SUNContext context = nullptr;
@@ -196,9 +198,29 @@ struct IdaIntegrator::Impl {
     restart(t_reached);
   }
 
+  // IDA stops at the next velocity breakpoint, else at t_stop.
+  void set_stop_time() {
+    const double stop = next_breakpoint < breakpoints.size() ? breakpoints[next_breakpoint]
+                                                             : options.t_stop;
+    if (std::isfinite(stop)) LIMBER_DEMAND(IDASetStopTime(ida, stop) == IDA_SUCCESS);
+  }
+
+  // At a velocity breakpoint (IDA stopped there): restart with v after the jump and the
+  // integrals' jump (mechanical_system.h, velocity_breakpoints).
+  void apply_breakpoint() {
+    if (next_breakpoint >= breakpoints.size() ||
+        t_reached < breakpoints[next_breakpoint] - time_tolerance(t_reached)) {
+      return;
+    }
+    // At the breakpoint itself: IDA returns within its round-off before the stop time, where
+    // the motion still has the rate before the jump.
+    restart(breakpoints[next_breakpoint++], true);
+  }
+
   // Restart at t (inside the last step) at order 1, from the current step size, with λ, v̇
-  // from the saddle-point system and μ = 0; q, v and the integrals carry over.
-  void restart(double t) {
+  // from the saddle-point system and μ = 0; q, v and the integrals carry over (across a
+  // velocity breakpoint, `jump`, with the integrals' jump added).
+  void restart(double t, bool jump = false) {
     Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
     Eigen::Map<Eigen::VectorXd> yp_now(N_VGetArrayPointer(yp), n);
     LIMBER_DEMAND(IDAGetDky(ida, t, 0, y) == IDA_SUCCESS);
@@ -210,8 +232,13 @@ struct IdaIntegrator::Impl {
     Eigen::VectorXd v_now = y_now.segment(iv, nv);
     Eigen::VectorXd vdot_now, lambda_now;
     // A failed projection or solve keeps IDA's values; its next step then reports the trouble.
+    const Eigen::VectorXd v_before = v_now;
     if (project_initial_state(*system, t, q_now, v_now).ok() &&
         solve_accelerations(*system, t, q_now, v_now, vdot_now, lambda_now).ok()) {
+      if (jump && nz > 0 && options.quadrature.jump) {
+        options.quadrature.jump(t, q_now, v_before, v_now, f);
+        y_now.segment(iz, nz) += f;
+      }
       y_now.head(nq) = q_now;
       y_now.segment(iv, nv) = v_now;
       y_now.segment(ilambda, nc) = lambda_now;
@@ -233,7 +260,7 @@ struct IdaIntegrator::Impl {
     LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
     t_reached = t;
     if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
-    if (std::isfinite(options.t_stop)) LIMBER_DEMAND(IDASetStopTime(ida, options.t_stop) == IDA_SUCCESS);
+    set_stop_time();
   }
 
   // Event functions of the system at IDA's (t, y), for its root finding.
@@ -311,6 +338,13 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.t_reached = x0.t;
   s.pending_events.clear();
   s.ne = system.num_events();
+  s.breakpoints.clear();
+  s.next_breakpoint = 0;
+  for (const double t : system.velocity_breakpoints()) {
+    if (t > x0.t + time_tolerance(x0.t) && t < options.t_stop - time_tolerance(options.t_stop)) {
+      s.breakpoints.push_back(t);
+    }
+  }
   stats_ = {};
 
   // Sizes and layout of y = [q, v, λ, μ, z].
@@ -394,7 +428,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   const double h0 = options.initial_step > 0.0 ? options.initial_step
                                                : initial_step(system, {x0.t, q, v}, vdot, options);
   flag = flag < 0 ? flag : IDASetInitStep(s.ida, h0);
-  if (flag >= 0 && std::isfinite(options.t_stop)) flag = IDASetStopTime(s.ida, options.t_stop);
+  if (flag >= 0) s.set_stop_time();
   // Events: only rises through 0 switch a mode (mechanical_system.h).
   if (flag >= 0 && s.ne > 0) {
     flag = IDARootInit(s.ida, s.ne, ida_events);
@@ -424,6 +458,7 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
     while (s.t_reached < t_out - time_tolerance(t_out)) {
       if (s.stepped) {
         s.apply_pending_events();
+        s.apply_breakpoint();
         s.reselect_constraints(s.t_reached);
       }
       double t_current = s.t_reached;

@@ -126,7 +126,8 @@ void read_beams(const YamlValue& list, const CaseLibrary& library, fe::FeModelBu
 void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelBuilder& builder) {
   for (const YamlValue& plate : list.items()) {
     plate.allow_only({"origin", "edge_x", "edge_y", "nx", "ny", "thickness", "bending_ratio",
-                      "shear_ratio", "nonstructural_mass", "material", "first_node_id"});
+                      "shear_ratio", "nonstructural_mass", "fibre_distance", "material",
+                      "first_node_id"});
     // Property: material by name, a thickness and the optional PSHELL-style section ratios.
     fe::ShellProperty property;
     property.name = plate.name();
@@ -137,6 +138,8 @@ void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelB
     if (auto nsm = plate.find("nonstructural_mass")) {
       property.nonstructural_mass = nsm->as_non_negative();
     }
+    // Where surface stresses are reported (stress output only).
+    if (auto z = plate.find("fibre_distance")) property.fibre_distance = z->as_positive();
 
     // Mesh: parallelogram origin + s edge_x + t edge_y split into nx x ny quads.
     fe::RectangularPlateMesh mesh;

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/error.h"
+#include "modal/modal_stress.h"
 #include "multibody/model_builder.h"
 
 namespace limber::io {
@@ -72,6 +73,7 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   spec.initial_velocity_W = entry.initial_velocity_W;
   spec.initial_angular_velocity_B = entry.initial_angular_velocity_B;
   spec.deflection_probe = entry.deflection_probe;
+  spec.stress = entry.stress;
   if (!reduction) {
     builder.add_flexible_body_outline(spec, entry.where);
     return;
@@ -85,6 +87,8 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   }
   spec.initial_modal_coordinates = per_mode(entry.modal_coordinates, nm);
   spec.initial_modal_velocities = per_mode(entry.modal_velocities, nm);
+  // Modal stresses of every element, once per mode set.
+  if (spec.stress) spec.modal_stress = modal::modal_stress(component.model, spec.modes.shapes);
   builder.add_flexible_body(spec, entry.where);
 }
 
