@@ -488,8 +488,11 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
   // fit through each flexible body's joint nodes (those without joints: relative to their
   // floating frame).
+  // Only when some body is fitted: otherwise what is scaled is plain u, as always.
   std::string legend;
-  for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+  bool fitted = false;
+  for (const RigidFitBasis& fit : s.fits) fitted = fitted || !fit.anchors.empty();
+  for (std::size_t b = 0; b < results.bodies.size() && fitted; ++b) {
     if (!results.bodies[b].flexible) continue;
     std::string joints;
     for (const std::string& name : s.fit_joints[b]) joints += (joints.empty() ? "" : ", ") + name;
