@@ -148,7 +148,8 @@ struct Series {
 struct StressSeries {
   H5Handle group;
   Series peak, peak_element, time, equivalent, beam_resultants, shell_resultants;
-  std::int64_t rows = 0;  // history rows written
+  std::int64_t rows = 0;          // history rows in the file
+  std::int64_t pending_rows = 0;  // history rows waiting in the series' buffers
   hsize_t elements = 0, beam_width = 0, shell_width = 0;
   double max_value = -1.0, max_time = 0.0;
   int max_element = -1;
@@ -264,6 +265,9 @@ struct ResultsWriter::Impl {
       write_pending(clearance_minimum, ns_written, rows);
       write_pending(clearance_pair, ns_written, rows);
     }
+    for (const std::unique_ptr<StressSeries>& stress : body_stress) {
+      if (stress) write_stress_block(*stress, ns_written, rows);
+    }
     // Time last: a reader never sees a time without its data.
     write_pending(time, ns_written, rows);
     ns_written = ns;
@@ -321,14 +325,23 @@ struct ResultsWriter::Impl {
     LIMBER_DEMAND(static_cast<hsize_t>(body.stress_equivalent.size()) == stress.elements);
     LIMBER_DEMAND(static_cast<hsize_t>(body.stress_beam_resultants.size()) == stress.beam_width);
     LIMBER_DEMAND(static_cast<hsize_t>(body.stress_shell_resultants.size()) == stress.shell_width);
-    write_row(stress.equivalent, stress.rows, body.stress_equivalent.data());
-    if (stress.beam_width > 0) write_row(stress.beam_resultants, stress.rows, body.stress_beam_resultants.data());
-    if (stress.shell_width > 0) {
-      write_row(stress.shell_resultants, stress.rows, body.stress_shell_resultants.data());
-    }
-    // Time last, as for samples.
-    write_row(stress.time, stress.rows, &time);
-    ++stress.rows;
+    append_row(stress.equivalent, body.stress_equivalent.data());
+    if (stress.beam_width > 0) append_row(stress.beam_resultants, body.stress_beam_resultants.data());
+    if (stress.shell_width > 0) append_row(stress.shell_resultants, body.stress_shell_resultants.data());
+    append_row(stress.time, &time);
+    ++stress.pending_rows;
+  }
+
+  // Writes a body's buffered stress rows: the per-sample peaks, then the history, time last.
+  static void write_stress_block(StressSeries& stress, std::int64_t first_sample, std::int64_t samples) {
+    write_pending(stress.peak, first_sample, samples);
+    write_pending(stress.peak_element, first_sample, samples);
+    write_pending(stress.equivalent, stress.rows, stress.pending_rows);
+    if (stress.beam_width > 0) write_pending(stress.beam_resultants, stress.rows, stress.pending_rows);
+    if (stress.shell_width > 0) write_pending(stress.shell_resultants, stress.rows, stress.pending_rows);
+    write_pending(stress.time, stress.rows, stress.pending_rows);
+    stress.rows += stress.pending_rows;
+    stress.pending_rows = 0;
   }
 
   void demand_declaring() const { LIMBER_DEMAND(ns == 0 && !finished); }
