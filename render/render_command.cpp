@@ -19,6 +19,7 @@ cli::Command add_render_command(CLI::App& app) {
   auto no_video = std::make_shared<bool>(false);
   auto anti_aliasing = std::make_shared<std::string>("fxaa");
   auto no_fxaa = std::make_shared<bool>(false);
+  auto color = std::make_shared<std::string>("deflection");
 
   CLI::App* command = app.add_subcommand(
       "render", "Render DIR/results.h5 offscreen: PNG frames, MP4 (and GIF), VTU/PVD for ParaView");
@@ -30,6 +31,11 @@ cli::Command add_render_command(CLI::App& app) {
   command->add_option("--camera", *camera, "view: iso, front, top or side")->capture_default_str();
   command->add_flag("--follow", options->follow, "camera follows the bodies' centroid");
   command->add_option("--scale", options->scale, "deformation scale factor")->capture_default_str();
+  command->add_option("--color", *color,
+                      "colour flexible bodies by: deflection (|u| [m]) or von_mises (recovered "
+                      "element stress [MPa]: shells' von Mises, beams' extreme-fibre stress; needs "
+                      "a run whose bodies have 'stress' output)")
+      ->capture_default_str();
   CLI::Option* t0_option = command->add_option("--t0", *t0, "first time rendered [s]");
   CLI::Option* t1_option = command->add_option("--t1", *t1, "last time rendered [s]");
   command->add_flag("--gif", options->write_gif, "also write DIR/animation.gif");
@@ -48,6 +54,7 @@ cli::Command add_render_command(CLI::App& app) {
     // Turn the textual options into RenderOptions, then run.
     parse_frame_size(*size, options->width, options->height);
     options->camera = parse_camera_preset(*camera);
+    options->color = parse_color_by(*color);
     options->anti_aliasing = *no_fxaa ? AntiAliasing::kNone : parse_anti_aliasing(*anti_aliasing);
     if (t0_option->count() > 0) options->t0 = *t0;
     if (t1_option->count() > 0) options->t1 = *t1;

@@ -32,6 +32,12 @@ CameraPreset parse_camera_preset(const std::string& text) {
   throw InputError("--camera: expected iso, front, top or side, got '" + text + "'");
 }
 
+ColorBy parse_color_by(const std::string& text) {
+  if (text == "deflection") return ColorBy::kDeflection;
+  if (text == "von_mises") return ColorBy::kVonMises;
+  throw InputError("--color: expected deflection or von_mises, got '" + text + "'");
+}
+
 AntiAliasing parse_anti_aliasing(const std::string& text) {
   if (text == "fxaa") return AntiAliasing::kFxaa;
   if (text == "gl-fxaa") return AntiAliasing::kGlFxaa;

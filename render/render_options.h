@@ -18,6 +18,11 @@ enum class AntiAliasing {
   kNone,    // jagged edges
 };
 
+// What flexible bodies are coloured by: elastic displacement magnitude |u| [m], or the
+// recovered stress of each element [MPa] (results.h5 "Stress": a shell's larger surface von
+// Mises stress, a beam's extreme-fibre stress; docs/stress-recovery.md).
+enum class ColorBy { kDeflection, kVonMises };
+
 struct RenderOptions {
   std::filesystem::path directory;  // run directory holding results.h5; outputs go there
   double fps = 30.0;                // frames per second of simulated time [1/s]
@@ -26,6 +31,7 @@ struct RenderOptions {
   CameraPreset camera = CameraPreset::kIso;
   bool follow = false;        // camera focal point follows the bodies' centroid
   double scale = 1.0;         // deformation scale factor (shown on the frame when != 1)
+  ColorBy color = ColorBy::kDeflection;
   std::optional<double> t0;   // time range [s]; default: the whole run
   std::optional<double> t1;
   bool ground = true;         // draw a ground plane under the scene
@@ -48,6 +54,9 @@ void parse_frame_size(const std::string& text, int& width, int& height);
 
 // Parses "iso", "front", "top" or "side"; throws InputError otherwise.
 CameraPreset parse_camera_preset(const std::string& text);
+
+// Parses "deflection" or "von_mises"; throws InputError otherwise.
+ColorBy parse_color_by(const std::string& text);
 
 // Parses "fxaa", "gl-fxaa" or "none"; throws InputError otherwise.
 AntiAliasing parse_anti_aliasing(const std::string& text);

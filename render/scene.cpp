@@ -1,12 +1,14 @@
 #include "scene.h"
 
 #include "body_pose.h"
+#include "stress_reader.h"
 #include "core/error.h"
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
 #include <vtkDoubleArray.h>
@@ -29,6 +31,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <vector>
 
 namespace limber::render {
@@ -125,6 +129,11 @@ struct FlexibleView {
   vtkSmartPointer<vtkDoubleArray> magnitude;
   vtkSmartPointer<vtkPolyData> surface;
   vtkSmartPointer<vtkPolyData> beams;
+  // Colouring by stress: the body's stress history (none: drawn in the NaN colour) and the
+  // per-cell values of the quads and lines [MPa].
+  const StressTrack* stress = nullptr;
+  vtkSmartPointer<vtkDoubleArray> quad_stress;
+  vtkSmartPointer<vtkDoubleArray> line_stress;
 };
 
 struct RigidShapeView {
@@ -146,6 +155,7 @@ struct Scene::Impl {
   vtkSmartPointer<vtkScalarBarActor> bar;            // null without flexible bodies
   int bar_font = 10;                                 // colour bar label size [pixels]
   double umax = 0.0;
+  std::vector<std::optional<StressTrack>> stresses;  // per body, with --color von_mises
   double follow_distance = 1.0;
   Eigen::Vector3d direction;
 
@@ -184,9 +194,21 @@ struct Scene::Impl {
     return b;
   }
 
-  void add_flexible(const BodyTrack& body) {
+  bool by_stress() const { return options.color == ColorBy::kVonMises; }
+
+  // A per-cell array of `count` values, NaN until the first update.
+  static vtkSmartPointer<vtkDoubleArray> cell_values(Eigen::Index count) {
+    auto values = vtkSmartPointer<vtkDoubleArray>::New();
+    values->SetName("stress_MPa");
+    values->SetNumberOfTuples(static_cast<vtkIdType>(count));
+    values->Fill(std::numeric_limits<double>::quiet_NaN());
+    return values;
+  }
+
+  void add_flexible(const BodyTrack& body, const StressTrack* stress) {
     FlexibleView view;
     view.body = &body;
+    view.stress = stress;
     const auto nn = static_cast<vtkIdType>(body.mesh.nodes.rows());
     view.points = vtkSmartPointer<vtkPoints>::New();
     view.points->SetDataTypeToDouble();
@@ -207,6 +229,10 @@ struct Scene::Impl {
       view.surface->SetPoints(view.points);
       view.surface->SetPolys(quads);
       view.surface->GetPointData()->SetScalars(view.magnitude);
+      if (by_stress()) {
+        view.quad_stress = cell_values(body.mesh.quads.rows());
+        view.surface->GetCellData()->SetScalars(view.quad_stress);
+      }
       add_colored_actor(view.surface, nullptr);
     }
 
@@ -221,6 +247,10 @@ struct Scene::Impl {
       view.beams->SetPoints(view.points);
       view.beams->SetLines(lines);
       view.beams->GetPointData()->SetScalars(view.magnitude);
+      if (by_stress()) {
+        view.line_stress = cell_values(body.mesh.lines.rows());
+        view.beams->GetCellData()->SetScalars(view.line_stress);
+      }
       if (body.mesh.beam_radius > 0.0) {
         auto tube = vtkSmartPointer<vtkTubeFilter>::New();
         tube->SetInputData(view.beams);
@@ -242,7 +272,9 @@ struct Scene::Impl {
     if (port != nullptr) mapper->SetInputConnection(port);
     mapper->SetLookupTable(lut);
     mapper->SetScalarRange(0.0, umax);
-    mapper->SetScalarModeToUsePointData();
+    // Stresses are per element (cell data, which the tube filter passes on); |u| per node.
+    if (by_stress()) mapper->SetScalarModeToUseCellData();
+    else mapper->SetScalarModeToUsePointData();
     mapper->ScalarVisibilityOn();
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
@@ -313,6 +345,24 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
       if (u.rows() > 0) s.umax = std::max(s.umax, u.rowwise().norm().maxCoeff());
     }
   }
+  // Colour by stress: the range is the largest recorded element stress in [t0, t1] [MPa].
+  if (s.by_stress()) {
+    s.stresses = read_stress_tracks(results);
+    if (std::none_of(s.stresses.begin(), s.stresses.end(), [](const auto& t) { return t.has_value(); })) {
+      throw InputError("--color von_mises: expected a results file with stress output ('stress: {elements: "
+                       "all}' on a flexible body of the case, docs/stress-recovery.md), got none in '" +
+                       results.file.string() + "'");
+    }
+    s.umax = 0.0;
+    for (const std::optional<StressTrack>& track : s.stresses) {
+      if (!track) continue;
+      for (Eigen::Index row = 0; row < track->time.size(); ++row) {
+        const double t = track->time(row);
+        const bool inside = t >= t0 && t <= t1;
+        if (inside || row == track->row_at(t0)) s.umax = std::max(s.umax, track->equivalent.row(row).maxCoeff() / 1e6);
+      }
+    }
+  }
   if (all.empty()) all.add(Eigen::Vector3d::Zero(), 1.0);
   const double radius = std::max(all.radius(), 1e-6);
   frame_radius = std::max(frame_radius, 1e-6);
@@ -321,12 +371,15 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // Lookup table: blue (no displacement) to red (largest).
   s.lut->SetHueRange(0.667, 0.0);
   s.lut->SetTableRange(0.0, range_max);
+  s.lut->SetNanColor(0.6, 0.6, 0.6, 1.0);  // elements without a stress history
   s.lut->Build();
   s.umax = range_max;
 
   // Bodies: meshes, primitives; joints as small spheres.
-  for (const BodyTrack& body : results.bodies) {
-    if (body.flexible) s.add_flexible(body);
+  for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+    const BodyTrack& body = results.bodies[b];
+    const StressTrack* stress = b < s.stresses.size() && s.stresses[b] ? &*s.stresses[b] : nullptr;
+    if (body.flexible) s.add_flexible(body, stress);
     for (const Shape& shape : body.shapes) s.add_shape(body, shape);
   }
   for (std::size_t j = 0; j < results.joints.size(); ++j) {
@@ -365,8 +418,8 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   if (!s.flexible.empty()) {
     auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
     bar->SetLookupTable(s.lut);
-    bar->SetTitle("|u| [m]");
-    bar->SetLabelFormat("%.2e");
+    bar->SetTitle(s.by_stress() ? "von Mises [MPa]" : "|u| [m]");
+    bar->SetLabelFormat(s.by_stress() ? "%.3g" : "%.2e");
     bar->SetNumberOfLabels(5);
     bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     bar->GetPositionCoordinate()->SetValue(kColorBarBox[0], kColorBarBox[1]);
@@ -477,6 +530,20 @@ void Scene::update(double t) {
     }
     view.points->Modified();
     view.magnitude->Modified();
+    // Element stresses of the history row at or before t [MPa] (lines first, then quads).
+    if (view.stress) {
+      const int lines = static_cast<int>(view.body->mesh.lines.rows());
+      const Eigen::VectorXd values =
+          view.stress->element_values(view.stress->row_at(t), lines + static_cast<int>(view.body->mesh.quads.rows())) / 1e6;
+      if (view.line_stress) {
+        for (int e = 0; e < lines; ++e) view.line_stress->SetValue(e, values(e));
+        view.line_stress->Modified();
+      }
+      if (view.quad_stress) {
+        for (Eigen::Index q = 0; q < view.body->mesh.quads.rows(); ++q) view.quad_stress->SetValue(q, values(lines + q));
+        view.quad_stress->Modified();
+      }
+    }
     if (view.surface) view.surface->Modified();
     if (view.beams) view.beams->Modified();
   }

@@ -1,5 +1,5 @@
 // The VTK scene of a results file: flexible bodies as their deformed FE mesh (shells as
-// surfaces, beams as tubes) coloured by displacement magnitude with a colour bar, rigid-body
+// surfaces, beams as tubes) coloured by displacement magnitude or element stress with a colour bar, rigid-body
 // primitives, joint glyphs, ground, title and time stamp, camera presets (docs/rendering.md).
 // Internal to limber_render (exposes VTK types).
 #pragma once
@@ -28,7 +28,9 @@ inline constexpr std::array<double, 4> kColorBarBox{0.88, 0.10, 0.08, 0.74};
 class Scene {
  public:
   // Builds every actor for `results`; the colour range is the largest displacement magnitude
-  // over the samples in [t0, t1] (fixed for the whole animation). Precondition: ns >= 1.
+  // over the samples in [t0, t1] (fixed for the whole animation), or with options.color
+  // kVonMises the largest recorded element stress (stress_reader.h; throws InputError when the
+  // file has no stress output). Precondition: ns >= 1.
   Scene(const Results& results, const RenderOptions& options, double t0, double t1);
   ~Scene();
   Scene(const Scene&) = delete;
@@ -38,7 +40,8 @@ class Scene {
   // Moves bodies and joints to time t [s] (interpolated), deforms meshes, updates the time
   // stamp and, for a follow camera, the focal point.
   void update(double t);
-  // Largest displacement magnitude of the colour range [m].
+  // Upper end of the colour range: largest displacement magnitude [m], or with --color
+  // von_mises the largest recorded element stress [MPa].
   double color_range_max() const;
   // Pixels of the texts and the colour bar (with a margin) as last drawn: anti-aliased by
   // FreeType or flat, so the CPU FXAA leaves them alone. Valid after a render.

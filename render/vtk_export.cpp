@@ -2,6 +2,7 @@
 
 #include "body_pose.h"
 #include "file_stem.h"
+#include "stress_reader.h"
 
 #include <vtkAppendFilter.h>
 #include <vtkCellType.h>
@@ -9,6 +10,7 @@
 #include <vtkCylinderSource.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
+#include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
@@ -21,6 +23,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <stdexcept>
 
 namespace limber::render {
@@ -66,6 +69,20 @@ vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const 
   }
   add_vector_data(grid, u_W);
   return grid;
+}
+
+// Cell data "stress" [Pa]; cells are the quads, then the lines (flexible_grid), elements of the
+// stress history the lines, then the quads.
+void add_stress_data(vtkUnstructuredGrid* grid, const BodyTrack& body, const StressTrack& stress, double t) {
+  const auto lines = static_cast<int>(body.mesh.lines.rows());
+  const auto quads = static_cast<int>(body.mesh.quads.rows());
+  const Eigen::VectorXd values = stress.element_values(stress.row_at(t), lines + quads);
+  vtkNew<vtkDoubleArray> cells;
+  cells->SetName("stress");
+  cells->SetNumberOfTuples(lines + quads);
+  for (int q = 0; q < quads; ++q) cells->SetValue(q, values(lines + q));
+  for (int e = 0; e < lines; ++e) cells->SetValue(quads + e, values(e));
+  grid->GetCellData()->AddArray(cells);
 }
 
 // The primitives of a rigid body at one sample, merged into one grid.
@@ -148,7 +165,8 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
       << "  <Collection>\n";
   pvd << std::setprecision(17);
 
-  // One file per body and sample in [t0, t1].
+  // One file per body and sample in [t0, t1]; stresses where the run recorded them.
+  const std::vector<std::optional<StressTrack>> stresses = read_stress_tracks(results);
   int written = 0;
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetDataModeToAppended();
@@ -160,6 +178,7 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
       const BodyTrack& body = results.bodies[b];
       const BodyState state = body_state(body, {i, 0.0});
       const auto grid = body.flexible ? flexible_grid(body, state) : rigid_grid(body, state);
+      if (body.flexible && stresses[b]) add_stress_data(grid, body, *stresses[b], t);
       const std::string name = file_name(body.name, i);
       writer->SetInputData(grid);
       writer->SetFileName((vtk_directory / name).c_str());

@@ -5,6 +5,9 @@
 // reference configuration carried by the body frame, x = p + R X0 [m], and point data
 // "displacement" = R u (elastic displacement in ground axes [m]) and "displacement_magnitude"
 // = |u| [m]; ParaView's "Warp By Vector" on "displacement" shows the deformed shape.
+// Bodies with stress output (results.h5 "Stress") also carry cell data "stress" [Pa]: each
+// element's equivalent stress (a shell's larger surface von Mises stress, a beam's extreme-fibre
+// stress) of the stress history row at or before the sample, NaN for elements not recorded.
 // Rigid bodies: their primitives' surfaces in ground with zero displacement.
 // Files: vtkXMLUnstructuredGridWriter, appended raw binary data.
 #pragma once

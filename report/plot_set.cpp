@@ -159,6 +159,21 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix) 
                       eta, false}});
   }
 
+  // Recovered stresses: each body's peak over its mesh [MPa].
+  std::vector<Curve> stresses;
+  for (std::size_t b = 0; b < run.stresses.size() && b < run.results.bodies.size(); ++b) {
+    const std::optional<render::StressTrack>& track = run.stresses[b];
+    if (!track || track->peak.size() != t.size()) continue;
+    stresses.push_back({run.results.bodies[b].name, t, track->peak / 1e6});
+  }
+  if (!stresses.empty()) {
+    plots.push_back({PlotSection::kStress, prefix + "peak_stress.png",
+                     "Largest equivalent stress over the elements of each body with stress output: "
+                     "von Mises on a shell's top or bottom surface, a beam's extreme-fibre axial stress "
+                     "(modal stresses superposed at each sample).",
+                     {"Peak stress", kTimeLabel, "stress [MPa]", stresses, false}});
+  }
+
   // Constraint violations on a logarithmic scale (they span decades) when all are positive.
   std::vector<Curve> violations;
   if (run.position_violation) violations.push_back({"position", t, run.position_violation->values});

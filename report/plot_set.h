@@ -16,7 +16,7 @@ namespace limber::report {
 
 enum class PlotSection {
   kReactions, kSelection, kDrivers, kEnergy, kHinges, kClearance, kDeflection, kViolation,
-  kComparison
+  kComparison, kStress
 };
 
 struct NamedPlot {

@@ -3,6 +3,7 @@
 #include "hinge_summary.h"
 #include "html.h"
 #include "selection_html.h"
+#include "stress_summary.h"
 
 #include <fmt/format.h>
 
@@ -260,6 +261,25 @@ std::string hinge_tables(const RunData& run) {
   return out + "</table>\n";
 }
 
+// Each body's peak stress: value, element, where and when.
+std::string stress_table(const RunData& run) {
+  const std::vector<StressPeak> peaks = stress_peaks(run);
+  if (peaks.empty()) return "";
+  std::string out =
+      "<p>Largest equivalent stress of each body over its mesh and the run, read at the output "
+      "samples (docs/stress-recovery.md): shells' von Mises stress on their top or bottom "
+      "surface, beams' extreme-fibre axial stress.</p>\n"
+      "<table><tr><th>body</th><th>peak [MPa]</th><th>at t [s]</th><th>element</th>"
+      "<th>element centre, body frame [m]</th><th>after</th></tr>\n";
+  for (const StressPeak& p : peaks) {
+    out += fmt::format("<tr><td>{}</td><td class=\"number\">{:.4g}</td><td class=\"number\">{:.4f}</td>"
+                       "<td>{}</td><td class=\"number\">({:.3f}, {:.3f}, {:.3f})</td><td>{}</td></tr>\n",
+                       html_escape(p.body), p.value / 1e6, p.time, html_escape(p.element_name),
+                       p.centre_B.x(), p.centre_B.y(), p.centre_B.z(), html_escape(p.after));
+  }
+  return out + "</table>\n";
+}
+
 // The energy balance's worst residual against the largest kinetic energy.
 std::string energy_note(const RunData& run) {
   const std::optional<Series> residual = energy_residual(run);
@@ -318,6 +338,7 @@ std::string run_section(const RunSection& s) {
   out += subsection(s, "hinges", "Hinges and latches", hinge_tables(run) + plots_of(s, PlotSection::kHinges));
   out += subsection(s, "clearance", "Clearance", clearance_note(run) + plots_of(s, PlotSection::kClearance));
   out += subsection(s, "deflection", "Deflection", plots_of(s, PlotSection::kDeflection));
+  out += subsection(s, "stress", "Stress", stress_table(run) + plots_of(s, PlotSection::kStress));
   out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
   out += subsection(s, "animation", "Animation", media(s));
   if (!s.mode_images.empty()) out += subsection(s, "mode-shapes", "Mode shapes", mode_images(s));

@@ -405,6 +405,12 @@ RunData read_run_data(const std::filesystem::path& directory) {
       run.solver_attributes.push_back(std::move(attribute));
     }
   }
+  // Recovered stresses (optional; a malformed group is a note).
+  try {
+    run.stresses = render::read_stress_tracks(run.results);
+  } catch (const InputError& e) {
+    run.notes.push_back(std::string("stresses not used: ") + e.what());
+  }
   read_mode_tables(run);
   find_media(run);
   run.selection = read_selection(directory, run.notes);

@@ -7,6 +7,7 @@
 
 #include "results_reader.h"
 #include "selection_data.h"
+#include "stress_reader.h"
 
 #include <Eigen/Core>
 
@@ -87,6 +88,8 @@ struct RunData {
   // Redundant constraint equations ("R2.z") and the equations each combines ("R1.z, R3.z").
   std::vector<std::pair<std::string, std::string>> redundant_equations;
   std::vector<ModeTable> mode_tables;   // flexible bodies only
+  // Per body of results.bodies: its recovered stresses, when it has stress output.
+  std::vector<std::optional<render::StressTrack>> stresses;
   std::vector<std::filesystem::path> frames;  // DIR/frames/*.png, sorted
   std::optional<std::filesystem::path> video; // DIR/animation.mp4
   std::optional<SelectionData> selection;     // DIR/selection from `limber select`

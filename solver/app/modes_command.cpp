@@ -48,7 +48,7 @@ void print_table(std::FILE* out, const BodyOutcome& outcome) {
   const modal::ModeSet& set = outcome.result.mode_set;
   fmt::print(out, "\nbody '{}': {} nodes, {} DOFs ({} fixed), {} beam and {} shell elements\n",
              outcome.body->name, model.node_count(), model.dof_count(), model.fixed_dofs.size(),
-             model.beams.size(), model.shells.size());
+             model.beams.size(), model.shells.size() + model.triangles.size());
   fmt::print(out, "  {:>4}  {:<10}  {:>14}  {}\n", "mode", "kind", "frequency [Hz]", "label");
   for (std::size_t i = 0; i < set.modes.size(); ++i) {
     const modal::ModeInfo& mode = set.modes[i];
@@ -62,6 +62,9 @@ void print_table(std::FILE* out, const BodyOutcome& outcome) {
       fmt::print(out, "        {:<10}  {:>14.4g}  {}\n", modal::to_string(mode.kind),
                  mode.frequency_hz, mode.label);
     }
+  }
+  for (const std::string& notice : outcome.body->notices) {
+    fmt::print(out, "  notice: {}\n", notice);
   }
   for (const std::string& notice : outcome.result.notices) {
     fmt::print(out, "  notice: {}\n", notice);

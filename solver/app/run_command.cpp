@@ -206,6 +206,12 @@ int run_case(const RunOptions& options) {
   fmt::print(text, "limber run: {} ({})\n", input.title, input.file);
   print_model(text, model);
   print_reduction(text, reduction);
+  // Notes from reading bulk-data decks (cards ignored, approximations).
+  for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
+    for (const std::string& notice : body.notices) {
+      fmt::print(stderr, "limber: notice: body '{}': {}\n", body.name, notice);
+    }
+  }
   for (const std::string& warning : multibody::distant_joint_warnings(model)) {
     fmt::print(stderr, "limber: warning: {}\n", warning);
   }
@@ -306,8 +312,10 @@ Command add_run_command(CLI::App& app) {
       "driver efforts, energies, constraint violations, steps, hinge latch and stop torques and\n"
       "their located events (each also printed as 'event: ...'), and the minimum clearance between\n"
       "bodies' surfaces (shell quads, shapes) when two or more have one: printed at the end,\n"
-      "with a warning when it is negative (one body passes through another). Settings come\n"
-      "from the case's 'run' section (docs/case-format.md); the options below override them.\n"
+      "with a warning when it is negative (one body passes through another); flexible bodies\n"
+      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md).\n"
+      "Settings come from the case's 'run' section (docs/case-format.md); the options below\n"
+      "override them.\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
       "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
       "are kept and the file's status is \"failed\"), 3 internal error, 4 interrupted by SIGINT or\n"

@@ -12,6 +12,8 @@
 // Dense matrices: mechanisms have tens to a few hundred velocities.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 namespace limber {
@@ -90,6 +92,14 @@ class MechanicalSystem {
   virtual bool reselect_constraints(double /*t*/, const Eigen::VectorXd& /*q*/) const {
     return false;
   }
+
+  // Times (ascending) where a prescribed velocity jumps: the kinks of a driver's motion
+  // (multibody/time_function.h). The motion demands an impulse there: the integrators stop
+  // exactly at each one and restart after it with v projected onto G v + g_t = 0 at the new
+  // g_t, the velocity change of least kinetic energy (Gauss' principle for impulsive
+  // constraints; the constraint impulses give it), adding its work to the integrals
+  // (Quadrature::jump). Default: none.
+  virtual std::vector<double> velocity_breakpoints() const { return {}; }
 
   // State events (hinge latches, stops): the force law is piecewise, one piece per mode, and
   // the mode changes where an event function e_k(t, q, v) rises through 0. The integrators

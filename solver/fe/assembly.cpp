@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "fe/beam_element.h"
 #include "fe/shell_element.h"
+#include "fe/shell_triangle.h"
 
 namespace limber::fe {
 
@@ -35,6 +36,7 @@ NodeGraph node_graph(const FeModel& model) {
   for (int n = 0; n < model.node_count(); ++n) pairs.emplace_back(n, n);
   for (const BeamElement& beam : model.beams) add_clique(beam.nodes, pairs);
   for (const ShellElement& shell : model.shells) add_clique(shell.nodes, pairs);
+  for (const ShellTriangle& triangle : model.triangles) add_clique(triangle.nodes, pairs);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
@@ -161,6 +163,23 @@ StructuralMatrices assemble(const FeModel& model) {
       throw InputError(fmt::format("shell {}-{}-{}-{}: {}", model.node_ids[shell.nodes[0]],
                                    model.node_ids[shell.nodes[1]], model.node_ids[shell.nodes[2]],
                                    model.node_ids[shell.nodes[3]], error.message()),
+                       error.where());
+    }
+  }
+
+  // Shell triangles, likewise.
+  for (const ShellTriangle& triangle : model.triangles) {
+    std::array<Eigen::Vector3d, 3> corners;
+    for (int i = 0; i < 3; ++i) corners[i] = model.node_positions[triangle.nodes[i]];
+    try {
+      const ShellTriangleMatrices e =
+          shell_triangle_matrices(corners, model.shell_properties[triangle.property]);
+      adder.add(triangle.nodes, e.stiffness, e.mass);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("shell triangle {}-{}-{}: {}",
+                                   model.node_ids[triangle.nodes[0]],
+                                   model.node_ids[triangle.nodes[1]],
+                                   model.node_ids[triangle.nodes[2]], error.message()),
                        error.where());
     }
   }

@@ -50,6 +50,8 @@ BeamSection rectangle_section(double width_y, double height_z) {
   section.torsion_constant = rectangle_torsion_constant(width_y, height_z);
   section.shear_factor_y = 5.0 / 6.0;
   section.shear_factor_z = 5.0 / 6.0;
+  section.fibre_y = 0.5 * width_y;
+  section.fibre_z = 0.5 * height_z;
   return section;
 }
 
@@ -70,6 +72,9 @@ BeamSection circle_section(double diameter, double poisson_ratio) {
   const double k = 6.0 * (1.0 + poisson_ratio) / (7.0 + 6.0 * poisson_ratio);
   section.shear_factor_y = k;
   section.shear_factor_z = k;
+  section.fibre_y = 0.5 * diameter;
+  section.fibre_z = 0.5 * diameter;
+  section.circular = true;
   return section;
 }
 

@@ -10,13 +10,15 @@ namespace limber::fe {
 // Solid rectangle, `width_y` along local y and `height_z` along local z:
 //   A = w h,  Iy = w h^3 / 12,  Iz = h w^3 / 12,
 //   J = St-Venant torsion constant (rectangle_torsion_constant),
-//   shear factors k = 5/6 in both directions (Timoshenko 1921 / Cowper 1966, rectangle).
+//   shear factors k = 5/6 in both directions (Timoshenko 1921 / Cowper 1966, rectangle),
+//   extreme fibres at w/2 (local y) and h/2 (local z).
 // Throws InputError when a size is not > 0 (or not finite).
 BeamSection rectangle_section(double width_y, double height_z);
 
 // Solid circle of diameter d: A = pi d^2 / 4, Iy = Iz = pi d^4 / 64, J = pi d^4 / 32
 // (exact for a circle). Shear factor from Cowper 1966 (J. Appl. Mech. 33:335):
-//   k = 6 (1 + nu) / (7 + 6 nu)   (= 6/7 at nu = 0, 0.886 at nu = 0.3).
+//   k = 6 (1 + nu) / (7 + 6 nu)   (= 6/7 at nu = 0, 0.886 at nu = 0.3);
+// extreme fibre at d/2, marked circular (bending stress from the resultant moment).
 // Throws InputError when d is not > 0 or nu is outside (-1, 0.5).
 BeamSection circle_section(double diameter, double poisson_ratio = 0.3);
 

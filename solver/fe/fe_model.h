@@ -1,6 +1,6 @@
 // The finite-element model of one flexible component: nodes with 6 DOFs each
 // (ux, uy, uz, rx, ry, rz, in the component frame), beam and shell elements,
-// point masses, named node sets and single-point constraints.
+// point masses, named node sets and single-point constraints (triangles: NASTRAN CTRIA3).
 //
 // Built and checked by FeModelBuilder (fe_model_builder.h); constant afterwards.
 // Units are SI throughout (m, kg, s, N, Pa).
@@ -40,6 +40,12 @@ struct BeamSection {
   double torsion_constant = 0.0;  // J [m^4] (St-Venant)
   double shear_factor_y = 5.0 / 6.0;
   double shear_factor_z = 5.0 / 6.0;
+  // Stress recovery only (element_stress.h): distances from the centroid to the extreme fibres
+  // along local y and z [m] (0: not known), and whether the section is a solid circle (its
+  // bending stress then follows the resultant moment, not the two components separately).
+  double fibre_y = 0.0;
+  double fibre_z = 0.0;
+  bool circular = false;
 };
 
 struct BeamProperty {
@@ -71,6 +77,10 @@ struct ShellProperty {
   double bending_ratio = 1.0;              // 12 I / T³ [-], > 0
   double shear_ratio = kShellShearFactor;  // T_s / T [-], > 0
   double nonstructural_mass = 0.0;         // NSM [kg/m^2], >= 0
+  // Stress recovery only (element_stress.h): distance of the surfaces where stresses are
+  // reported from the mid-surface, |Z1| = |Z2| of PSHELL [m]; 0 means T/2 (homogeneous plate).
+  // A sandwich's faces sit at about half the core depth.
+  double fibre_distance = 0.0;
 };
 
 // 2-node beam. Local x runs from node 0 to node 1; `orientation` is any vector in
@@ -84,6 +94,13 @@ struct BeamElement {
 // 4-node flat shell, nodes counter-clockwise about the element normal.
 struct ShellElement {
   std::array<int, 4> nodes{};
+  int property = 0;  // index into FeModel::shell_properties
+};
+
+// 3-node flat shell (CST membrane + DKT plate, shell_triangle.h); the node order fixes the
+// normal.
+struct ShellTriangle {
+  std::array<int, 3> nodes{};
   int property = 0;  // index into FeModel::shell_properties
 };
 
@@ -107,6 +124,7 @@ struct FeModel {
   std::vector<ShellProperty> shell_properties;
   std::vector<BeamElement> beams;
   std::vector<ShellElement> shells;
+  std::vector<ShellTriangle> triangles;
   std::vector<PointMass> point_masses;
   std::map<std::string, std::vector<int>> node_sets;  // name -> node indices
   std::vector<FixedDof> fixed_dofs;

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <set>
 
+#include "fe/shell_triangle.h"
+
 namespace limber::fe {
 
 namespace {
@@ -175,6 +177,37 @@ void FeModelBuilder::add_shell(const ShellElement& element, const SourceLocation
   model_.shells.push_back(element);
 }
 
+void FeModelBuilder::add_triangle(const ShellTriangle& element, const SourceLocation& where) {
+  // Nodes and property exist.
+  for (int node : element.nodes) demand_node(node, "shell triangle node", where);
+  const int properties = static_cast<int>(model_.shell_properties.size());
+  if (element.property < 0 || element.property >= properties) {
+    throw InputError(fmt::format("shell triangle: expected a shell property index in [0, {}), "
+                                 "got {}",
+                                 properties, element.property),
+                     where);
+  }
+  std::array<Eigen::Vector3d, 3> p;
+  for (int i = 0; i < 3; ++i) p[i] = model_.node_positions[element.nodes[i]];
+  const std::string name =
+      fmt::format("shell triangle {}-{}-{}", model_.node_ids[element.nodes[0]],
+                  model_.node_ids[element.nodes[1]], model_.node_ids[element.nodes[2]]);
+
+  // Not a sliver: 2 A / (longest edge)² at least kMinTriangleShapeRatio.
+  const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
+  const double longest =
+      std::max({(p[1] - p[0]).norm(), (p[2] - p[1]).norm(), (p[0] - p[2]).norm()});
+  const std::set<int> distinct(element.nodes.begin(), element.nodes.end());
+  if (distinct.size() != 3 || !(twice_area >= kMinTriangleShapeRatio * longest * longest)) {
+    throw InputError(fmt::format("{}: expected 3 distinct nodes with 2 A / (longest edge)^2 >= "
+                                 "{}, got {:.3g}",
+                                 name, kMinTriangleShapeRatio,
+                                 longest > 0.0 ? twice_area / (longest * longest) : 0.0),
+                     where);
+  }
+  model_.triangles.push_back(element);
+}
+
 void FeModelBuilder::add_point_mass(const PointMass& point_mass, const SourceLocation& where) {
   demand_node(point_mass.node, "point mass node", where);
   const int id = model_.node_ids[point_mass.node];
@@ -250,7 +283,8 @@ const std::vector<int>& FeModelBuilder::node_set(const std::string& name,
 
 FeModel FeModelBuilder::build(const SourceLocation& where) && {
   // At least one element.
-  const std::size_t elements = model_.beams.size() + model_.shells.size();
+  const std::size_t elements =
+      model_.beams.size() + model_.shells.size() + model_.triangles.size();
   if (elements == 0) {
     throw InputError(
         fmt::format("FE model: expected at least 1 element, got 0 ({} nodes)", model_.node_count()),
@@ -263,6 +297,9 @@ FeModel FeModelBuilder::build(const SourceLocation& where) && {
     for (int n : b.nodes) used[n] = true;
   }
   for (const ShellElement& s : model_.shells) {
+    for (int n : s.nodes) used[n] = true;
+  }
+  for (const ShellTriangle& s : model_.triangles) {
     for (int n : s.nodes) used[n] = true;
   }
   for (const PointMass& m : model_.point_masses) used[m.node] = true;

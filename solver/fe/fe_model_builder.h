@@ -31,6 +31,9 @@ class FeModelBuilder {
   // shell_element_matrices at assembly.)
   void add_beam(const BeamElement& element, const SourceLocation& where = {});
   void add_shell(const ShellElement& element, const SourceLocation& where = {});
+  // Throws on unknown nodes or property, repeated nodes, or a sliver (shell_triangle.h's
+  // shape ratio below kMinTriangleShapeRatio).
+  void add_triangle(const ShellTriangle& element, const SourceLocation& where = {});
 
   // Throws on an unknown node, a negative or non-finite mass [kg], or an inertia [kg m^2]
   // that is not symmetric positive semi-definite.

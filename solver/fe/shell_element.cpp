@@ -20,10 +20,6 @@ namespace limber::fe {
 
 namespace {
 
-// Local indices (within a node's 6) of the membrane (u, v, θz) and plate (w, θx, θy) DOFs.
-constexpr std::array<int, 3> kMembraneDofs{0, 1, 5};
-constexpr std::array<int, 3> kPlateDofs{2, 3, 4};
-
 // Adds a 12×12 matrix laid out as 4 nodes × 3 DOFs into the 24×24 local matrix.
 void scatter(const Matrix12d& part, const std::array<int, 3>& dofs, Matrix24d& whole) {
   for (int a = 0; a < 4; ++a) {
@@ -61,10 +57,9 @@ Matrix24d local_mass(const QuadCoordinates& xy, const ShellProperty& property) {
   return m;
 }
 
-// Global-to-local map T (d_local = T d_global): the rotation to local axes, preceded for a
-// warped quad by the rigid offset from each corner to its projection on the mean plane,
-// u_projected = u + θ × (−h_k e3).
-Matrix24d global_to_local(const ShellFrame& frame) {
+}  // namespace
+
+Matrix24d shell_global_to_local(const ShellFrame& frame) {
   const Eigen::Matrix3d rotation_LW = frame.rotation_WL.transpose();
   const Eigen::Vector3d e3 = frame.rotation_WL.col(2);
   Matrix24d t = Matrix24d::Zero();
@@ -80,8 +75,6 @@ Matrix24d global_to_local(const ShellFrame& frame) {
   return t;
 }
 
-}  // namespace
-
 ShellElementMatrices shell_element_matrices(const std::array<Eigen::Vector3d, 4>& corners,
                                             const ShellProperty& property) {
   LIMBER_DEMAND(property.thickness > 0.0 && property.material.youngs_modulus > 0.0 &&
@@ -92,11 +85,11 @@ ShellElementMatrices shell_element_matrices(const std::array<Eigen::Vector3d, 4>
 
   // Local stiffness: membrane with drilling + MITC4 plate.
   Matrix24d k_local = Matrix24d::Zero();
-  scatter(membrane_stiffness(frame.xy, property), kMembraneDofs, k_local);
-  scatter(plate_stiffness(frame.xy, property), kPlateDofs, k_local);
+  scatter(membrane_stiffness(frame.xy, property), kShellMembraneDofs, k_local);
+  scatter(plate_stiffness(frame.xy, property), kShellPlateDofs, k_local);
 
   // Rotate (and offset) to global axes: K = Tᵀ K_L T, M = Tᵀ M_L T.
-  const Matrix24d t = global_to_local(frame);
+  const Matrix24d t = shell_global_to_local(frame);
   ShellElementMatrices matrices;
   matrices.stiffness = t.transpose() * k_local * t;
   matrices.mass = t.transpose() * local_mass(frame.xy, property) * t;

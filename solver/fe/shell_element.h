@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "fe/fe_model.h"
+#include "fe/shell_frame.h"
 
 namespace limber::fe {
 
@@ -28,5 +29,14 @@ struct ShellElementMatrices {
 // kMaxShellWarpRatio, see shell_frame.h).
 ShellElementMatrices shell_element_matrices(const std::array<Eigen::Vector3d, 4>& corners,
                                             const ShellProperty& property);
+
+// Local indices (within a node's 6) of the membrane (u, v, θz) and plate (w, θx, θy) DOFs.
+inline constexpr std::array<int, 3> kShellMembraneDofs{0, 1, 5};
+inline constexpr std::array<int, 3> kShellPlateDofs{2, 3, 4};
+
+// Global-to-local map T (d_local = T d_global, 24 × 24): the rotation to the frame's local
+// axes, preceded for a warped quad by the rigid offset from each corner to its projection on
+// the mean plane, u_projected = u + θ × (−h_k e3).
+Matrix24d shell_global_to_local(const ShellFrame& frame);
 
 }  // namespace limber::fe

@@ -85,6 +85,13 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   evaluate_integrand(curr_);
   system.event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
   pending_events_.clear();
+  breakpoints_.clear();
+  next_breakpoint_ = 0;
+  for (const double t : system.velocity_breakpoints()) {
+    if (t > x0.t + time_tolerance(x0.t) && t < options.t_stop - time_tolerance(options.t_stop)) {
+      breakpoints_.push_back(t);
+    }
+  }
   prev_ = curr_;
   xi_last_ = Eigen::VectorXd::Zero(nv_);
   return Status::success(x0.t);
@@ -130,20 +137,27 @@ Status GeneralizedAlpha::check_budgets() {
 
 Status GeneralizedAlpha::take_step() {
   if (const Status status = apply_pending_events(); !status.ok()) return status;
+  if (const Status status = apply_breakpoint(); !status.ok()) return status;
   if (const Status status = reselect_constraints(); !status.ok()) return status;
-  const double target = std::min(t0_ + static_cast<double>(grid_index_ + 1) * options_.step,
-                                 options_.t_stop);
+  // The next grid point, or the next velocity breakpoint when it comes first.
+  const double grid_target = std::min(t0_ + static_cast<double>(grid_index_ + 1) * options_.step,
+                                      options_.t_stop);
+  const double target = next_breakpoint_ < breakpoints_.size()
+                            ? std::min(grid_target, breakpoints_[next_breakpoint_])
+                            : grid_target;
   for (;;) {
     const double h = std::min(h_try_, target - curr_.t);
     const Attempt attempt = attempt_step(h);
     if (attempt == Attempt::kAccepted) {
       if (const Status status = accept_step(h); !status.ok()) return status;
-      // Back on the nominal grid: snap the time and restore the nominal step.
+      // On the target: snap the time; back on the nominal grid, restore the nominal step.
       if (target - curr_.t <= time_tolerance(target)) {
         curr_.t = target;
-        ++grid_index_;
-        h_try_ = options_.step;
-        halvings_ = 0;
+        if (grid_target - target <= time_tolerance(target)) {
+          ++grid_index_;
+          h_try_ = options_.step;
+          halvings_ = 0;
+        }
       }
       return check_budgets();
     }
@@ -361,6 +375,37 @@ Status GeneralizedAlpha::apply_pending_events() {
   if (!status.ok()) {
     return failure(status.code, fmt::format("after an event, the accelerations could not be "
                                             "solved: {}", status.message));
+  }
+  curr_.a = curr_.vdot;
+  evaluate_integrand(curr_);
+  system_->event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
+  prev_ = curr_;
+  xi_last_.setZero();
+  jacobian_h_ = 0.0;
+  return Status::success(curr_.t);
+}
+
+Status GeneralizedAlpha::apply_breakpoint() {
+  if (next_breakpoint_ >= breakpoints_.size() ||
+      curr_.t < breakpoints_[next_breakpoint_] - time_tolerance(curr_.t)) {
+    return Status::success(curr_.t);
+  }
+  ++next_breakpoint_;
+  // The impulsive velocity change the new g_t demands, then v̇ and λ after it; restart as
+  // after an event.
+  const Eigen::VectorXd v_before = curr_.v;
+  Status status = project_initial_state(*system_, curr_.t, curr_.q, curr_.v);
+  if (status.ok()) {
+    status = solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
+  }
+  if (!status.ok()) {
+    return failure(status.code, fmt::format("at a velocity jump of a prescribed motion, the state "
+                                            "after it could not be solved: {}", status.message));
+  }
+  if (options_.quadrature.jump && curr_.integrals.size() > 0) {
+    Eigen::VectorXd dz(curr_.integrals.size());
+    options_.quadrature.jump(curr_.t, curr_.q, v_before, curr_.v, dz);
+    curr_.integrals += dz;
   }
   curr_.a = curr_.vdot;
   evaluate_integrand(curr_);

@@ -108,6 +108,9 @@ class GeneralizedAlpha final : public Integrator {
   Status locate_events(double h);
   // Switches the pending events' modes at curr_ and restarts the scheme there.
   Status apply_pending_events();
+  // At the next velocity breakpoint (MechanicalSystem::velocity_breakpoints), once curr_ has
+  // reached it: v projected after the jump, the integrals' jump added, and the scheme restarts.
+  Status apply_breakpoint();
   // New independent constraint rows at curr_ (MechanicalSystem::reselect_constraints): the
   // scheme restarts there (v̇, λ from the saddle-point system, a = v̇).
   Status reselect_constraints();
@@ -145,6 +148,8 @@ class GeneralizedAlpha final : public Integrator {
   bool failed_ = false;
   Status failure_;
   std::vector<int> pending_events_;  // located at curr_.t, applied before the next step
+  std::vector<double> breakpoints_;  // velocity breakpoints after t0, before t_stop, ascending
+  std::size_t next_breakpoint_ = 0;  // the first not yet applied
 
   // The last accepted step, from prev_ to curr_, with tangent displacement xi_last_.
   StepState prev_, curr_, next_;

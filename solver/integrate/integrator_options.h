@@ -30,6 +30,12 @@ struct Quadrature {
   // on a work growing at 1e4 W stalls the first steps, and an integral scaled to the system
   // (rtol times its energy) does not. Gen-α ignores it.
   double atol = 0.0;
+  // The integrals' jump at a velocity breakpoint (MechanicalSystem::velocity_breakpoints),
+  // where v jumps from v_before to v_after at (t, q): e.g. the work of the impulse. Writes
+  // `size` values into dz (pre-sized); unset: no jump.
+  std::function<void(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v_before,
+                     const Eigen::VectorXd& v_after, Eigen::VectorXd& dz)>
+      jump;
 };
 
 struct IntegratorOptions {

@@ -50,12 +50,16 @@ SectionSpec read_section(const YamlValue& entry) {
     spec.shape = SectionSpec::Shape::kCircle;
     spec.diameter = entry.at("diameter").as_positive();
   } else {
-    entry.allow_only({"shape", "A", "Iy", "Iz", "J", "shear_factor_y", "shear_factor_z"});
+    entry.allow_only({"shape", "A", "Iy", "Iz", "J", "shear_factor_y", "shear_factor_z", "fibre_y",
+                      "fibre_z"});
     spec.shape = SectionSpec::Shape::kGeneral;
     spec.general.area = entry.at("A").as_positive();
     spec.general.inertia_y = entry.at("Iy").as_positive();
     spec.general.inertia_z = entry.at("Iz").as_positive();
     spec.general.torsion_constant = entry.at("J").as_positive();
+    // Extreme-fibre distances, for stress output only.
+    if (auto c = entry.find("fibre_y")) spec.general.fibre_y = c->as_positive();
+    if (auto c = entry.find("fibre_z")) spec.general.fibre_z = c->as_positive();
   }
   if (auto k = entry.find("shear_factor_y")) spec.shear_factor_y = k->as_positive();
   if (auto k = entry.find("shear_factor_z")) spec.shear_factor_z = k->as_positive();

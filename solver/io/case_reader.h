@@ -36,6 +36,7 @@ struct FlexibleBodyCase {
   SourceLocation modes_where;  // its `modes` entry (for errors of the mode computation)
   fe::FeModel model;
   modal::ModeRequest request;  // node indices refer to `model`
+  std::vector<std::string> notices;  // from reading a bulk-data deck (cards ignored, ...)
 };
 
 struct Case {

@@ -4,8 +4,11 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
+#include "bulkdata/deck_parser.h"
+#include "bulkdata/deck_to_fe.h"
 #include "core/names.h"
 #include "fe/fe_model_builder.h"
 #include "fe/mesh_generators.h"
@@ -126,7 +129,8 @@ void read_beams(const YamlValue& list, const CaseLibrary& library, fe::FeModelBu
 void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelBuilder& builder) {
   for (const YamlValue& plate : list.items()) {
     plate.allow_only({"origin", "edge_x", "edge_y", "nx", "ny", "thickness", "bending_ratio",
-                      "shear_ratio", "nonstructural_mass", "material", "first_node_id"});
+                      "shear_ratio", "nonstructural_mass", "fibre_distance", "material",
+                      "first_node_id"});
     // Property: material by name, a thickness and the optional PSHELL-style section ratios.
     fe::ShellProperty property;
     property.name = plate.name();
@@ -137,6 +141,8 @@ void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelB
     if (auto nsm = plate.find("nonstructural_mass")) {
       property.nonstructural_mass = nsm->as_non_negative();
     }
+    // Where surface stresses are reported (stress output only).
+    if (auto z = plate.find("fibre_distance")) property.fibre_distance = z->as_positive();
 
     // Mesh: parallelogram origin + s edge_x + t edge_y split into nx x ny quads.
     fe::RectangularPlateMesh mesh;
@@ -151,6 +157,29 @@ void read_plates(const YamlValue& list, const CaseLibrary& library, fe::FeModelB
     mesh.property = builder.add_shell_property(property, plate.where());
     fe::add_rectangular_plate(builder, mesh, plate.where());
   }
+}
+
+// A NASTRAN deck (docs/bulk-data.md): its path relative to the case file's folder, or
+// {file, spc, unsupported_cards}. Returns the deck's notices.
+std::vector<std::string> read_bulk_data(const YamlValue& value, fe::FeModelBuilder& builder) {
+  bulkdata::DeckOptions options;
+  options.where = value.where();
+  // (A YamlValue is never assigned to: yaml-cpp's Node assignment writes into the document.)
+  const YamlValue file = value.is_map() ? value.at("file") : value;
+  if (value.is_map()) {
+    value.allow_only({"file", "spc", "unsupported_cards"});
+    if (auto spc = value.find("spc")) {
+      options.spc_set = spc->as_positive_integer();
+      options.spc_where = spc->where();
+    }
+    if (auto unsupported = value.find("unsupported_cards")) {
+      options.unsupported_is_error = unsupported->as_choice({"error", "warn"}) == "error";
+    }
+  }
+  const std::filesystem::path path =
+      std::filesystem::path(file.where().file).parent_path() / file.as_string();
+  const bulkdata::Deck deck = bulkdata::read_deck(path.string(), file.where());
+  return bulkdata::add_deck(deck, options, builder);
 }
 
 void read_point_masses(const YamlValue& list, fe::FeModelBuilder& builder) {
@@ -290,13 +319,22 @@ FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& en
                                     const CaseLibrary& library) {
   check_name_text("flexible body", name, entry.key_where());
   if (!entry.is_map()) entry.fail("expected a map {beams: ..., modes: ...} for '" + name + "'");
-  entry.allow_only({"beams", "plates", "point_masses", "node_sets", "fixed", "modes"});
+  entry.allow_only(
+      {"beams", "plates", "bulk_data", "point_masses", "node_sets", "fixed", "modes"});
   FlexibleBodyCase body;
   body.name = name;
   body.where = entry.where();
 
   // Geometry and mass first: node references below need the nodes.
   fe::FeModelBuilder builder;
+  if (auto deck = entry.find("bulk_data")) {
+    // A deck is the whole mesh: generated meshes would collide with its GRID ids.
+    if (entry.find("beams") || entry.find("plates")) {
+      deck->fail("expected either 'bulk_data' or generated meshes ('beams', 'plates') in '" +
+                 name + "', got both");
+    }
+    body.notices = read_bulk_data(*deck, builder);
+  }
   if (auto beams = entry.find("beams")) read_beams(*beams, library, builder);
   if (auto plates = entry.find("plates")) read_plates(*plates, library, builder);
   if (auto masses = entry.find("point_masses")) read_point_masses(*masses, builder);
@@ -305,7 +343,8 @@ FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& en
 
   // A body needs elements before modes make sense.
   if (builder.peek().beams.empty() && builder.peek().shells.empty()) {
-    entry.fail("expected at least one element ('beams' or 'plates') in '" + name + "', got none");
+    entry.fail("expected at least one element ('beams', 'plates' or 'bulk_data') in '" + name +
+               "', got none");
   }
 
   // The modes wanted, checked against the (fixed) model.

@@ -1,5 +1,6 @@
 // Reads one entry of `flexible_bodies` (docs/case-format.md, "Flexible bodies"):
 //   beams, plates          meshes (fe/mesh_generators.h), in the body frame [m]
+//   bulk_data              a NASTRAN deck instead of meshes (bulkdata/, docs/bulk-data.md)
 //   point_masses           concentrated mass [kg] and rotary inertia [kg m^2]
 //   node_sets              named lists of node ids
 //   fixed                  DOFs held at zero for the modal analysis

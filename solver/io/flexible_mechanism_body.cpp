@@ -60,12 +60,50 @@ void read_damping(const YamlValue& value, FlexibleBodyEntry& body) {
       multibody::ModalDamping::rayleigh(items[0].as_non_negative(), items[1].as_non_negative());
 }
 
+// `stress: {elements: all | [numbers from 1], every: N}`; every beam section involved must
+// know its extreme fibres (rectangles and circles do; general sections need fibre_y, fibre_z).
+multibody::StressOutput read_stress_output(const YamlValue& stress, const FlexibleBodyCase& component) {
+  if (!stress.is_map()) stress.fail("expected a map {elements: all or [numbers], every: N} for 'stress'");
+  stress.allow_only({"elements", "every"});
+  const fe::FeModel& model = component.model;
+  const int count = static_cast<int>(model.beams.size() + model.shells.size());
+  multibody::StressOutput output;
+  const YamlValue elements = stress.at("elements");
+  if (elements.is_scalar() && elements.as_string() == "all") {
+    for (int e = 0; e < count; ++e) output.elements.push_back(e);
+  } else {
+    if (!elements.is_sequence()) elements.fail("expected 'all' or a list of element numbers for 'elements'");
+    if (elements.items().empty()) elements.fail("expected 'all' or at least one element number for 'elements'");
+    for (const YamlValue& item : elements.items()) {
+      const int number = item.as_positive_integer();
+      if (number > count) {
+        item.fail(fmt::format("expected an element number in [1, {}] (beams, then plate quads, in case-file "
+                              "order), got {}", count, number));
+      }
+      output.elements.push_back(number - 1);
+    }
+    std::sort(output.elements.begin(), output.elements.end());
+    output.elements.erase(std::unique(output.elements.begin(), output.elements.end()), output.elements.end());
+  }
+  if (const auto every = stress.find("every")) output.every = every->as_positive_integer();
+  // The mesh's peak covers every element: every beam section needs its fibre distances.
+  for (const fe::BeamElement& beam : model.beams) {
+    const fe::BeamProperty& property = model.beam_properties[beam.property];
+    if (!(property.section.fibre_y > 0.0 && property.section.fibre_z > 0.0)) {
+      stress.fail(fmt::format("expected extreme-fibre distances for the beams' stresses, got none for "
+                              "section '{}' (give fibre_y and fibre_z to its 'general' section)",
+                              property.name));
+    }
+  }
+  return output;
+}
+
 }  // namespace
 
 FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const YamlValue& entry,
                                                const std::vector<FlexibleBodyCase>& components) {
   entry.allow_only({"flexible", "position", "orientation", "velocity", "angular_velocity",
-                    "damping", "modal_coordinates", "modal_velocities", "deflection"});
+                    "damping", "modal_coordinates", "modal_velocities", "deflection", "stress"});
   const FlexibleBodyCase& component = find_component(entry.at("flexible"), components);
   FlexibleBodyEntry body;
   body.name = name;
@@ -96,6 +134,8 @@ FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const Ya
                                                        read_node(ends[0], component),
                                                        read_node(ends[1], component)};
   }
+  // Output: recovered stresses.
+  if (const auto stress = entry.find("stress")) body.stress = read_stress_output(*stress, component);
   return body;
 }
 

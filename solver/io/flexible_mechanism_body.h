@@ -13,6 +13,10 @@
 //                                  # mechanism_builder.h, once the modes are known)
 //     deflection: {node: 51, chord: [R2, R3]}   # results: a node's elastic displacement
 //                                  # relative to the chord between two nodes (body axes)
+//     stress: {elements: all, every: 1}   # results: recovered stresses (docs/stress-recovery.md):
+//                                  # the mesh's peak at every sample, the history of `elements`
+//                                  # (all, or a list of element numbers from 1: beams, then
+//                                  # plate quads, in case-file order) at every `every`-th sample
 // Markers on a flexible body sit on FE nodes: named by `node:` (an id or a one-node set), or
 // found at the ground point a joint is given at.
 #pragma once

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/error.h"
+#include "modal/modal_stress.h"
 #include "multibody/model_builder.h"
 
 namespace limber::io {
@@ -31,6 +32,10 @@ multibody::FlexibleMesh drawing_mesh(const fe::FeModel& model) {
   mesh.node_ids = model.node_ids;
   for (const fe::BeamElement& beam : model.beams) mesh.lines.push_back(beam.nodes);
   for (const fe::ShellElement& shell : model.shells) mesh.quads.push_back(shell.nodes);
+  // Triangles drawn as quads with the last node repeated.
+  for (const fe::ShellTriangle& t : model.triangles) {
+    mesh.quads.push_back({t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]});
+  }
   for (const fe::BeamProperty& property : model.beam_properties) {
     mesh.beam_radius = std::max(mesh.beam_radius, std::sqrt(property.section.area / std::numbers::pi));
   }
@@ -72,6 +77,7 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   spec.initial_velocity_W = entry.initial_velocity_W;
   spec.initial_angular_velocity_B = entry.initial_angular_velocity_B;
   spec.deflection_probe = entry.deflection_probe;
+  spec.stress = entry.stress;
   if (!reduction) {
     builder.add_flexible_body_outline(spec, entry.where);
     return;
@@ -85,6 +91,8 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   }
   spec.initial_modal_coordinates = per_mode(entry.modal_coordinates, nm);
   spec.initial_modal_velocities = per_mode(entry.modal_velocities, nm);
+  // Modal stresses of every element, once per mode set.
+  if (spec.stress) spec.modal_stress = modal::modal_stress(component.model, spec.modes.shapes);
   builder.add_flexible_body(spec, entry.where);
 }
 

@@ -64,6 +64,7 @@ struct FlexibleBodyEntry {
   PerModeValues modal_coordinates;  // η at t = 0 [kg^½ m]
   PerModeValues modal_velocities;   // η̇ at t = 0 [kg^½ m/s]
   std::optional<multibody::DeflectionProbe> deflection_probe;  // node indices
+  std::optional<multibody::StressOutput> stress;                // element numbers 0-based
 };
 
 using BodyEntry = std::variant<RigidBodyEntry, FlexibleBodyEntry>;

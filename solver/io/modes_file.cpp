@@ -111,7 +111,10 @@ void write_mesh(const H5Group& group, const fe::FeModel& model) {
   std::vector<int> quads;
   for (const fe::ShellElement& shell : model.shells)
     quads.insert(quads.end(), shell.nodes.begin(), shell.nodes.end());
-  group.write_ints("quads", {model.shells.size(), 4}, quads.data());
+  // Triangles as quads with the last node repeated (docs/modes-format.md).
+  for (const fe::ShellTriangle& t : model.triangles)
+    quads.insert(quads.end(), {t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]});
+  group.write_ints("quads", {model.shells.size() + model.triangles.size(), 4}, quads.data());
 }
 
 void write_dofs(const H5Group& group, const fe::FeModel& model) {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "integrate/simulate.h"
+#include "integrate/sample_times.h"
 
 namespace limber::io {
 

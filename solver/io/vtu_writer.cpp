@@ -160,6 +160,10 @@ void write_modes_vtu(const std::string& path, const fe::FeModel& model,
   mesh.point_ids = model.node_ids;
   for (const fe::BeamElement& beam : model.beams) mesh.lines.push_back(beam.nodes);
   for (const fe::ShellElement& shell : model.shells) mesh.quads.push_back(shell.nodes);
+  // Triangles drawn as quads with the last node repeated (drawing only).
+  for (const fe::ShellTriangle& t : model.triangles) {
+    mesh.quads.push_back({t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]});
+  }
   // One displacement field per mode, in mode order.
   std::vector<VtuPointArray> arrays;
   for (int i = 0; i < static_cast<int>(mode_set.modes.size()); ++i) {

@@ -77,7 +77,14 @@ OrthonormalisedModes orthonormalise_modes(const Eigen::SparseMatrix<double>& sti
   Eigen::MatrixXd k_r = q.transpose() * (stiffness * q);
   k_r = 0.5 * (k_r + k_r.transpose()).eval();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> reduced(k_r);
-  LIMBER_DEMAND(reduced.info() == Eigen::Success);
+  // Fails only on non-finite entries: no mode then, and the notice says why (the caller turns
+  // an empty set into the status "no mode left").
+  if (reduced.info() != Eigen::Success) {
+    result.notices.push_back("the reduced eigenproblem Qᵀ K Q did not converge (non-finite "
+                             "stiffness or mass values)");
+    result.mode_set.shapes.resize(n, 0);
+    return result;
+  }
 
   // 3. Drop the zero-frequency vectors of rigid motion contained in the span.
   const int d = rigid_dimension(mass, m_q, rigid_motion);

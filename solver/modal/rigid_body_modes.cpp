@@ -90,6 +90,11 @@ std::vector<int> determinate_support(const Eigen::MatrixXd& psi_free,
     std::sort(support.begin(), support.end());
     return support;
   }
+  // Unreachable from any input: psi_free's r columns are independent (psi holds a unit row
+  // per translation and rotation) and its rows over the held DOFs are zero to the rank
+  // tolerance, so its rows over the remaining DOFs, which the callers pass as candidates,
+  // have rank r (tests/modal/test_static_modes.cpp checks every held set of a beam and a
+  // shell node).
   LIMBER_DEMAND(false && "no statically determinate support among the candidate DOFs");
   return {};
 }

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "modal/mode_set.h"
+#include "modal/modal_stress.h"
 
 namespace limber::multibody {
 
@@ -53,6 +54,14 @@ struct DeflectionProbe {
   int node = 0, chord_start = 0, chord_end = 0;
 };
 
+// Output only: stress recovery of the body's elements (modal/modal_stress.h; docs/stress-recovery.md).
+// The peak over the whole mesh is recorded at every sample; the history of `elements` at every
+// `every`-th sample (the first included).
+struct StressOutput {
+  std::vector<int> elements;  // element numbers, 0-based, beams then shells (modal_stress.h)
+  int every = 1;              // ≥ 1
+};
+
 struct FlexibleBody {
   Eigen::MatrixXd node_positions;  // 3 x nodes: undeformed FE nodes, body frame [m]
   Eigen::MatrixXd shapes;          // 6 nodes x nm: mode shapes (ux uy uz rx ry rz per node)
@@ -64,6 +73,8 @@ struct FlexibleBody {
   Eigen::VectorXd initial_modal_velocities;   // nm [kg^½ m/s]
   FlexibleMesh mesh;
   std::optional<DeflectionProbe> deflection_probe;
+  std::optional<StressOutput> stress_output;
+  modal::ModalStress modal_stress;  // with stress_output: every element's resultants per mode
 
   int mode_count() const { return static_cast<int>(shapes.cols()); }
   int node_count() const { return static_cast<int>(node_positions.cols()); }

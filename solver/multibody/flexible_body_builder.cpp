@@ -100,6 +100,20 @@ std::shared_ptr<FlexibleBody> ModelBuilder::flexible_outline(const FlexibleBodyS
     }
   }
   flexible->deflection_probe = spec.deflection_probe;
+  if (const auto& stress = spec.stress) {
+    const int elements = static_cast<int>(spec.mesh.lines.size() + spec.mesh.quads.size());
+    for (int e : stress->elements) {
+      if (e < 0 || e >= elements) {
+        throw InputError(fmt::format("flexible body \"{}\" stress output: expected element numbers in [1, {}], "
+                                     "got {}", spec.name, elements, e + 1), where);
+      }
+    }
+    if (stress->every < 1) {
+      throw InputError(fmt::format("flexible body \"{}\" stress output: expected every ≥ 1, got {}", spec.name,
+                                   stress->every), where);
+    }
+  }
+  flexible->stress_output = spec.stress;
   return flexible;
 }
 
@@ -130,6 +144,20 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
   flexible->stiffness = spec.modes.modal_stiffness;
   flexible->damping = modal_damping_coefficients(spec.damping, flexible->stiffness);
   flexible->invariants = spec.modes.invariants;
+  if (spec.stress) {
+    // The modal stresses must be those of this mesh and mode set.
+    const modal::ModalStress& stress = spec.modal_stress;
+    const bool fits = stress.beam_count == static_cast<int>(spec.mesh.lines.size()) &&
+                      stress.shell_count == static_cast<int>(spec.mesh.quads.size()) &&
+                      stress.beam_modal.cols() == nm && stress.shell_modal.cols() == nm;
+    if (!fits) {
+      throw InputError(fmt::format("flexible body \"{}\" modal stresses: expected {} beams and {} shells over {} "
+                                   "modes, got {}, {} over {}", spec.name, spec.mesh.lines.size(),
+                                   spec.mesh.quads.size(), nm, stress.beam_count, stress.shell_count,
+                                   stress.beam_modal.cols()), where);
+    }
+    flexible->modal_stress = stress;
+  }
   flexible->initial_modal_coordinates =
       initial_modal_values(spec.name, "initial modal coordinates", spec.initial_modal_coordinates, nm, where);
   flexible->initial_modal_velocities =

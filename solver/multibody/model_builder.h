@@ -46,6 +46,10 @@ struct FlexibleBodySpec {
   std::vector<Shape> shapes;
   FlexibleMesh mesh;                              // for drawing; indices into node_positions_B
   std::optional<DeflectionProbe> deflection_probe;  // output only; node indices
+  // Output only: which elements' stresses to record, and the modal stresses of every element of
+  // the mesh (modal::modal_stress of the FE model and `modes`), needed when stress is set.
+  std::optional<StressOutput> stress;
+  modal::ModalStress modal_stress;
 };
 
 struct RsdaSpec {

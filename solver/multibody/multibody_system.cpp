@@ -1,5 +1,7 @@
 #include "multibody/multibody_system.h"
 
+#include <algorithm>
+
 #include <Eigen/QR>
 
 #include "multibody/body.h"
@@ -182,6 +184,17 @@ bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) c
   partition_ = std::move(fresh);
   chosen_pivot_ = better;
   return true;
+}
+
+std::vector<double> MultibodySystem::velocity_breakpoints() const {
+  std::vector<double> times;
+  for (const Driver& driver : model_.drivers) {
+    const std::vector<double> jumps = driver.motion.slope_jumps();
+    times.insert(times.end(), jumps.begin(), jumps.end());
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
 }
 
 void MultibodySystem::event_functions(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,

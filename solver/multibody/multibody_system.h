@@ -56,6 +56,8 @@ class MultibodySystem final : public MechanicalSystem {
   // at (t, q) is better conditioned with the same rank.
   bool reselect_constraints(double t, const Eigen::VectorXd& q) const override;
 
+  // The slope jumps of the drivers' motions (TimeFunction::slope_jumps), ascending, merged.
+  std::vector<double> velocity_breakpoints() const override;
   // One event per hinge latch and stop (hinge_limit.h), in model.forces order.
   int num_events() const override { return static_cast<int>(limits_.size()); }
   void event_functions(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,

@@ -1,6 +1,7 @@
 #include "multibody/time_function.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -104,10 +105,10 @@ FunctionValue TimeFunction::evaluate(double x) const {
               speed_ * s.second / duration_};
     }
     case Kind::kTable: {
-      // Hold the end values outside the table; at the end points themselves the derivatives
-      // are those of the end segments, so a motion that starts at x_0 starts with its slope.
+      // Hold the end values outside the table; right-continuous derivatives: at x_0 those of
+      // the first segment (a motion that starts there starts with its slope), at x_n zero.
       if (x < x_.front()) return {y_.front(), 0.0, 0.0};
-      if (x > x_.back()) return {y_.back(), 0.0, 0.0};
+      if (x >= x_.back()) return {y_.back(), 0.0, 0.0};
       const size_t k = std::min<size_t>(std::upper_bound(x_.begin(), x_.end(), x) - x_.begin() - 1, x_.size() - 2);
       const double h = x_[k + 1] - x_[k];
       const double a = (x_[k + 1] - x) / h, b = (x - x_[k]) / h;
@@ -122,6 +123,34 @@ FunctionValue TimeFunction::evaluate(double x) const {
     }
   }
   return {};
+}
+
+std::vector<double> TimeFunction::slope_jumps() const {
+  if (kind_ != Kind::kTable) return {};
+  // One-sided slopes at x_k: the segment before and after (zero outside the table).
+  const size_t n = x_.size();
+  const auto slope_after = [&](size_t k) {
+    if (k + 1 >= n) return 0.0;
+    const double h = x_[k + 1] - x_[k];
+    const double secant = (y_[k + 1] - y_[k]) / h;
+    if (interpolation_ == TableInterpolation::kLinear) return secant;
+    return secant - h * (2.0 * second_derivatives_[k] + second_derivatives_[k + 1]) / 6.0;
+  };
+  const auto slope_before = [&](size_t k) {
+    if (k == 0) return 0.0;
+    const double h = x_[k] - x_[k - 1];
+    const double secant = (y_[k] - y_[k - 1]) / h;
+    if (interpolation_ == TableInterpolation::kLinear) return secant;
+    return secant + h * (second_derivatives_[k - 1] + 2.0 * second_derivatives_[k]) / 6.0;
+  };
+  // A jump is a difference beyond rounding of the slopes' size.
+  std::vector<double> jumps;
+  for (size_t k = 0; k < n; ++k) {
+    const double before = slope_before(k), after = slope_after(k);
+    const double size = std::max({std::abs(before), std::abs(after), 1e-300});
+    if (std::abs(after - before) > 1e-12 * size) jumps.push_back(x_[k]);
+  }
+  return jumps;
 }
 
 }  // namespace limber::multibody

@@ -6,8 +6,9 @@
 //                    s(τ) = 3τ² − 2τ³ (cubic) or 10τ³ − 15τ⁴ + 6τ⁵ (quintic, also
 //                    zero acceleration at both ends), then ḟ = ω; f(0) = f0.
 //   table:           points (x_k, y_k), linear or natural cubic spline interpolation,
-//                    held constant (zero slope) outside [x_0, x_n]; at x_0 and x_n the
-//                    derivatives are those of the end segments (one-sided).
+//                    held constant (zero slope) outside [x_0, x_n]. The derivatives are
+//                    right-continuous: at x_0 (and at a linear table's interior points) those
+//                    of the segment after it, at x_n zero (held after it).
 #pragma once
 
 #include <vector>
@@ -36,6 +37,12 @@ class TimeFunction {
                             TableInterpolation interpolation);
 
   FunctionValue evaluate(double x) const;
+
+  // Where the first derivative jumps (ascending): a linear table's interior points whose
+  // slopes differ, and x_0 and x_n of a table whose end slopes are not zero (held outside).
+  // A prescribed motion's velocity jumps there: the integrators stop and restart there
+  // (MechanicalSystem::velocity_breakpoints). Empty for the smooth kinds.
+  std::vector<double> slope_jumps() const;
 
  private:
   enum class Kind { kConstant, kConstantSpeed, kRamp, kTable };

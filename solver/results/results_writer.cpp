@@ -143,6 +143,17 @@ struct Series {
   std::vector<unsigned char> pending;
 };
 
+// /bodies/<body>/stress: the peak at every sample, the history at every `every`-th, and the
+// running peak of the run written as attributes at finish.
+struct StressSeries {
+  H5Handle group;
+  Series peak, peak_element, time, equivalent, beam_resultants, shell_resultants;
+  std::int64_t rows = 0;  // history rows written
+  hsize_t elements = 0, beam_width = 0, shell_width = 0;
+  double max_value = -1.0, max_time = 0.0;
+  int max_element = -1;
+};
+
 }  // namespace
 
 struct ResultsWriter::Impl {
@@ -165,6 +176,8 @@ struct ResultsWriter::Impl {
   // (flexible only); nm or -1 (rigid).
   std::vector<std::vector<Series>> body_series;
   std::vector<int> body_nmodes;
+  // Per body: its stress output, or none.
+  std::vector<std::unique_ptr<StressSeries>> body_stress;
   // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate.
   std::vector<std::vector<Series>> joint_series;
   std::vector<Series> driver_series;
@@ -236,6 +249,11 @@ struct ResultsWriter::Impl {
     for (std::vector<Series>& body : body_series) {
       for (Series& series : body) write_pending(series, ns_written, rows);
     }
+    for (const std::unique_ptr<StressSeries>& stress : body_stress) {
+      if (!stress) continue;
+      write_pending(stress->peak, ns_written, rows);
+      write_pending(stress->peak_element, ns_written, rows);
+    }
     for (std::vector<Series>& joint : joint_series) {
       for (Series& series : joint) write_pending(series, ns_written, rows);
     }
@@ -258,6 +276,67 @@ struct ResultsWriter::Impl {
     last_flush = std::chrono::steady_clock::now();
   }
 
+  // The stress group of a flexible body: element list, `every`, and its series.
+  std::unique_ptr<StressSeries> create_stress(hid_t body_group, const FlexibleBodySpec& body) {
+    const auto lines = static_cast<int>(body.lines.rows());
+    const auto elements = static_cast<int>(body.lines.rows() + body.quads.rows());
+    LIMBER_DEMAND(body.stress_every >= 1);
+    LIMBER_DEMAND(std::is_sorted(body.stress_elements.begin(), body.stress_elements.end()));
+    auto stress = std::make_unique<StressSeries>();
+    stress->group = create_group(body_group, "stress");
+    write_int_attribute(stress->group.get(), "every", body.stress_every);
+    const hid_t g = stress->group.get();
+    write_dataset(g, "elements", H5T_STD_I32LE, H5T_NATIVE_INT, {body.stress_elements.size()},
+                  body.stress_elements.data());
+    hsize_t beams = 0, shells = 0;
+    for (int e : body.stress_elements) {
+      LIMBER_DEMAND(e >= 0 && e < elements);
+      (e < lines ? beams : shells) += 1;
+    }
+    stress->elements = body.stress_elements.size();
+    stress->beam_width = 12 * beams;
+    stress->shell_width = 8 * shells;
+    stress->peak = create_series(g, "peak", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    stress->peak_element = create_series(g, "peak_element", H5T_STD_I32LE, H5T_NATIVE_INT, 0);
+    stress->time = create_series(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    stress->equivalent = create_series(g, "equivalent", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->elements);
+    LIMBER_DEMAND(stress->elements > 0);
+    // Resultants of the kinds of element declared (a width of 0 would make a [ns] series).
+    if (beams > 0) {
+      stress->beam_resultants =
+          create_series(g, "beam_resultants", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->beam_width);
+    }
+    if (shells > 0) {
+      stress->shell_resultants =
+          create_series(g, "shell_resultants", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->shell_width);
+    }
+    return stress;
+  }
+
+  // The peak of this sample (buffered with the sample), and a history row when the sample
+  // carries one (written at once: its own rows, flushed with the next block).
+  void append_stress(StressSeries& stress, const BodySample& body, double time) {
+    append_row(stress.peak, &body.stress_peak);
+    append_row(stress.peak_element, &body.stress_peak_element);
+    if (body.stress_peak > stress.max_value) {
+      stress.max_value = body.stress_peak;
+      stress.max_element = body.stress_peak_element;
+      stress.max_time = time;
+    }
+    if (!body.stress_recorded) return;
+    LIMBER_DEMAND(static_cast<hsize_t>(body.stress_equivalent.size()) == stress.elements);
+    LIMBER_DEMAND(static_cast<hsize_t>(body.stress_beam_resultants.size()) == stress.beam_width);
+    LIMBER_DEMAND(static_cast<hsize_t>(body.stress_shell_resultants.size()) == stress.shell_width);
+    write_rows(stress.equivalent, stress.rows, 1, body.stress_equivalent.data());
+    if (stress.beam_width > 0) write_rows(stress.beam_resultants, stress.rows, 1, body.stress_beam_resultants.data());
+    if (stress.shell_width > 0) {
+      write_rows(stress.shell_resultants, stress.rows, 1, body.stress_shell_resultants.data());
+    }
+    // Time last, as for samples.
+    write_rows(stress.time, stress.rows, 1, &time);
+    ++stress.rows;
+  }
+
   void demand_declaring() const { LIMBER_DEMAND(ns == 0 && !finished); }
 
   // Lazily creates an optional top-level group.
@@ -278,6 +357,7 @@ struct ResultsWriter::Impl {
     series.push_back(
         create_series(body.get(), "orientation", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
     body_series.push_back(std::move(series));
+    body_stress.emplace_back();
     return body;
   }
 };
@@ -393,6 +473,7 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
     impl_->body_series.back().push_back(impl_->create_series(
         group.get(), "deflection", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
   }
+  if (body.has_stress) impl_->body_stress.back() = impl_->create_stress(group.get(), body);
   return static_cast<int>(impl_->body_series.size()) - 1;
 }
 
@@ -531,6 +612,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
       m.append_row(series[3], body.modal_velocities.data());
     }
     if (series.size() > 4) m.append_vector3(series[4], body.deflection);
+    if (m.body_stress[b]) m.append_stress(*m.body_stress[b], body, sample.time);
   }
 
   // Joints: point, reactions in both frames, redundancy flag.
@@ -590,6 +672,25 @@ void ResultsWriter::set_accuracy(double energy_relative, double local_error, dou
   write_string_attribute(root, "accuracy_warnings", warnings);
 }
 
+void ResultsWriter::set_singular_passages(const std::vector<double>& time,
+                                          const std::vector<double>& ratio,
+                                          const std::vector<std::string>& joints,
+                                          const std::vector<double>& velocity_jump) {
+  LIMBER_DEMAND(!impl_->finished);
+  LIMBER_DEMAND(time.size() == ratio.size() && time.size() == joints.size() &&
+                time.size() == velocity_jump.size());
+  H5Handle constraints =
+      checked(H5Gopen2(impl_->file.get(), "constraints", H5P_DEFAULT), "open /constraints");
+  LIMBER_DEMAND(H5Lexists(constraints.get(), "singular_passages", H5P_DEFAULT) == 0);
+  H5Handle group = create_group(constraints.get(), "singular_passages");
+  const std::vector<hsize_t> dims{time.size()};
+  write_dataset(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, time.data());
+  write_dataset(group.get(), "ratio", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, ratio.data());
+  write_string_dataset(group.get(), "joints", joints);
+  write_dataset(group.get(), "velocity_jump", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims,
+                velocity_jump.data());
+}
+
 void ResultsWriter::finish(RunStatus status, const std::string& message) {
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
@@ -602,7 +703,17 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   write_string_attribute(root, "message", message);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 
+  // The run's peak stress per body, where and when.
+  for (const std::unique_ptr<StressSeries>& stress : m.body_stress) {
+    if (!stress || stress->max_element < 0) continue;
+    write_doubles_attribute(stress->group.get(), "peak_value", &stress->max_value, 1);
+    write_int_attribute(stress->group.get(), "peak_element", stress->max_element);
+    write_doubles_attribute(stress->group.get(), "peak_time", &stress->max_time, 1);
+  }
+  check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
+
   // Close every dataset and group before the file.
+  m.body_stress.clear();
   m.body_series.clear();
   m.joint_series.clear();
   m.driver_series.clear();

@@ -67,6 +67,12 @@ struct FlexibleBodySpec {
   std::vector<ShapeSpec> shapes;
   // Writes /bodies/<body>/deflection [ns, 3] (BodySample::deflection) when true.
   bool has_deflection = false;
+  // Writes /bodies/<body>/stress (docs/results-format.md, "Stress") when true: the mesh's peak
+  // stress at every sample and the history of `stress_elements` (0-based element numbers: e <
+  // lines.rows() is line e, else quad e − lines.rows(); ascending) at every `stress_every`-th.
+  bool has_stress = false;
+  std::vector<int> stress_elements;
+  int stress_every = 1;
 };
 
 struct JointSpec {
@@ -85,6 +91,18 @@ struct BodySample {
   // Flexible bodies with a deflection probe: a node's elastic displacement relative to a
   // chord between two other nodes, body axes [m].
   Eigen::Vector3d deflection = Eigen::Vector3d::Zero();
+  // Flexible bodies with stress output: the largest equivalent stress over the mesh [Pa] and
+  // its element (0-based, as FlexibleBodySpec::stress_elements), at every sample; and, when
+  // stress_recorded, the history row of the declared elements: equivalent stress [Pa] per
+  // element, the beams' 12 resultants (N, Vy, Vz, T, My, Mz at end 0 and end 1 [N, N m]) and
+  // the shells' 8 values (Nxx, Nyy, Nxy [N/m], Mxx, Myy, Mxy [N m/m], von Mises top and bottom
+  // [Pa]), element after element in declaration order.
+  double stress_peak = 0.0;
+  int stress_peak_element = -1;
+  bool stress_recorded = false;
+  Eigen::VectorXd stress_equivalent;
+  Eigen::VectorXd stress_beam_resultants;
+  Eigen::VectorXd stress_shell_resultants;
 };
 
 // One joint's reaction on body_j at a sample.
@@ -192,6 +210,16 @@ class ResultsWriter {
   // (relative measures) and accuracy_warnings (text, one warning per line, "" when none).
   void set_accuracy(double energy_relative, double local_error, double drift_relative,
                     const std::string& warnings);
+
+  // The singular configurations the run passed (run/singular_passage.h), at most once before
+  // finish(): /constraints/singular_passages/time [np] (the sample of the smallest measure, s),
+  // ratio [np] (that measure relative to the start), joints [np] (the joints and drivers
+  // whose equations carry the lost direction, "R1, R4") and velocity_jump [np] (the branch
+  // check: the frame velocity jump across it, relative; −1 when not checked). Sizes must
+  // match; written also when empty, so a reader can tell "none" from "not checked".
+  void set_singular_passages(const std::vector<double>& time, const std::vector<double>& ratio,
+                             const std::vector<std::string>& joints,
+                             const std::vector<double>& velocity_jump);
 
   // Writes the buffered samples, sets the root attributes status ("ok" / "ok_inaccurate" /
   // "failed" / "interrupted") and message, flushes and closes the file.

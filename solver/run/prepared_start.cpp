@@ -1,5 +1,7 @@
 #include "run/prepared_start.h"
 
+#include "run/singular_start.h"
+
 namespace limber::run {
 
 PreparedStart prepare_start(const multibody::Model& model,
@@ -24,6 +26,9 @@ PreparedStart prepare_start(const multibody::Model& model,
     RedundantEquationReport report{model.equations[equation.row].name, {}, lines[k]};
     for (int row : equation.depends_on) report.depends_on.push_back(model.equations[row].name);
     start.redundant.push_back(std::move(report));
+  }
+  for (int row : rows_lost_at_singular_start(model, start.state, start.partition, ws)) {
+    start.lost_at_singular_start.push_back(model.equations[row].name);
   }
   return start;
 }

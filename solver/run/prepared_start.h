@@ -27,9 +27,13 @@ struct PreparedStart {
   bool velocity_modes_released = false;   // the projection changed modal rates (assembly.h)
   multibody::ConstraintPartition partition;  // independent rows (all rows after a failure)
   std::vector<RedundantEquationReport> redundant;
+  // Equations the start's singular configuration made dependent (singular_start.h), by name;
+  // empty at a regular start. A run cannot hold them: it refuses to start.
+  std::vector<std::string> lost_at_singular_start;
 };
 
-// Assembles positions (options.held kept), projects velocities, analyses redundancy.
+// Assembles positions (options.held kept), projects velocities, analyses redundancy and checks
+// that the start is not a singular configuration.
 // A failing assembly is returned in `assembly` (its message names the equation, its joint and
 // the residual); bad held coordinates throw InputError.
 PreparedStart prepare_start(const multibody::Model& model,

@@ -65,6 +65,16 @@ RunSummary run_mechanism(const multibody::Model& model,
     summary.message = "assembly failed: " + start.assembly.message;
     return finish(results::RunStatus::kFailed);
   }
+  if (!start.lost_at_singular_start.empty()) {
+    summary.failure = "singular start";
+    summary.message = fmt::format(
+        "the mechanism is assembled at a singular configuration: equation(s) {} depend on the "
+        "others here but not next to it, so no choice of independent equations holds the "
+        "mechanism together once it moves; start it slightly off this position (e.g. a driver's "
+        "initial value, or a body's position, moved by 1e-3)",
+        fmt::join(start.lost_at_singular_start, ", "));
+    return finish(results::RunStatus::kFailed);
+  }
   summary.redundant = start.redundant;
   if (hooks.writer) {
     std::vector<std::string> names, depends_on;
@@ -80,6 +90,20 @@ RunSummary run_mechanism(const multibody::Model& model,
 
   // Integration on the independent rows, energies accumulated by the integrator.
   const multibody::MultibodySystem system(model, start.partition);
+  // A motion whose velocity jumps demands impulses: say where, once.
+  for (const multibody::Driver& driver : model.drivers) {
+    std::vector<double> jumps;
+    for (const double t : driver.motion.slope_jumps()) {
+      if (t > 0.0 && t < settings.t_end) jumps.push_back(t);
+    }
+    if (jumps.empty() || !hooks.on_warning) continue;
+    hooks.on_warning(fmt::format(
+        "driver {}'s motion changes its rate abruptly at t = {} s (the kinks of its table): "
+        "each is applied as an impulse (the integrators stop there and restart with the "
+        "velocities after it), which the reaction and effort histories do not show; use "
+        "`interpolation: cubic` and points that start and end at rest for a smooth motion",
+        driver.name, fmt::join(jumps, ", ")));
+  }
   integrate::IntegratorOptions options = settings.integrator;
   // BDF2 at most when flexible modes are present (integrator_options.h, max_order).
   const bool flexible = std::any_of(model.bodies.begin(), model.bodies.end(), [](const auto& body) {
@@ -146,7 +170,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   };
   const integrate::SimulationResult result = integrate::simulate(
       system, options, {0.0, start.state.q, start.state.v},
-      integrate::uniform_sample_times(0.0, settings.t_end, settings.sample_interval), on_sample);
+      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample);
 
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();
@@ -159,11 +183,24 @@ RunSummary run_mechanism(const multibody::Model& model,
   for (const std::string& warning : summary.warnings) {
     summary.accuracy.warnings.push_back(warning + " (the linear modal body's answer is not the physical one there)");
   }
+  // A change of branch at a singular passage is an impulse no force gave: not accurate.
+  for (const SingularPassage& passage : summary.singular_passages) {
+    if (passage.changed_branch()) summary.accuracy.warnings.push_back(passage.message());
+  }
   if (hooks.writer) {
     std::string warnings;
     for (const std::string& w : summary.accuracy.warnings) warnings += (warnings.empty() ? "" : "\n") + w;
     hooks.writer->set_accuracy(summary.accuracy.energy_relative, summary.accuracy.local_error,
                                summary.accuracy.drift_relative, warnings);
+    std::vector<double> passage_time, passage_ratio, passage_jump;
+    std::vector<std::string> passage_joints;
+    for (const SingularPassage& passage : summary.singular_passages) {
+      passage_time.push_back(passage.t);
+      passage_ratio.push_back(passage.ratio);
+      passage_joints.push_back(fmt::format("{}", fmt::join(passage.names, ", ")));
+      passage_jump.push_back(passage.velocity_jump);
+    }
+    hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints, passage_jump);
   }
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);

@@ -55,6 +55,11 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
   spec.frequencies_hz = flexible.stiffness.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
   spec.shapes = std::move(shapes);
   spec.has_deflection = flexible.deflection_probe.has_value();
+  if (const auto& stress = flexible.stress_output) {
+    spec.has_stress = true;
+    spec.stress_elements = stress->elements;
+    spec.stress_every = stress->every;
+  }
   return spec;
 }
 
@@ -111,6 +116,16 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
         multibody::energy_rates(model, partition, multibody::State{t, q, v, engaged}, v_dot, lambda, *ws);
     f << rates.dissipation, rates.driver, rates.forces;
   };
+  // At a velocity jump of a prescribed motion the constraint impulses change the kinetic
+  // energy; only the drivers' rows move with time (the joints' impulses do no work, G v = 0
+  // before and after), so the change is the drivers' work.
+  quadrature.jump = [&model, &engaged, ws](double t, const Eigen::VectorXd& q,
+                                           const Eigen::VectorXd& v_before,
+                                           const Eigen::VectorXd& v_after, Eigen::VectorXd& dz) {
+    const double before = multibody::energies(model, multibody::State{t, q, v_before, engaged}, *ws).kinetic;
+    const double after = multibody::energies(model, multibody::State{t, q, v_after, engaged}, *ws).kinetic;
+    dz << 0.0, after - before, 0.0;
+  };
   // Energy scale at the start, for the integrals' absolute tolerance.
   const multibody::EnergyTerms energy = multibody::energies(model, start, *ws);
   const double scale =
@@ -118,6 +133,42 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
   quadrature.atol = rtol * scale;
   return quadrature;
 }
+
+namespace {
+
+// Recovered stresses of one flexible body at its modal coordinates: the mesh's peak, and the
+// declared elements' history row on every `every`-th sample (docs/stress-recovery.md).
+void record_stress(const multibody::FlexibleBody& flexible, results::BodySample& pose, std::int64_t index) {
+  const multibody::StressOutput& output = *flexible.stress_output;
+  const modal::ModalStress& modal = flexible.modal_stress;
+  const modal::ElementStresses stresses = modal::recover_stresses(modal, pose.modal_coordinates);
+  Eigen::Index peak = 0;
+  pose.stress_peak = stresses.equivalent.size() > 0 ? stresses.equivalent.maxCoeff(&peak) : 0.0;
+  pose.stress_peak_element = static_cast<int>(peak);
+  if (index % output.every != 0) return;
+  pose.stress_recorded = true;
+  const auto n = static_cast<Eigen::Index>(output.elements.size());
+  const int nb = modal.beam_count;
+  const auto beams = static_cast<Eigen::Index>(
+      std::count_if(output.elements.begin(), output.elements.end(), [nb](int e) { return e < nb; }));
+  pose.stress_equivalent.resize(n);
+  pose.stress_beam_resultants.resize(12 * beams);
+  pose.stress_shell_resultants.resize(8 * (n - beams));
+  Eigen::Index b = 0, s = 0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const int e = output.elements[static_cast<std::size_t>(k)];
+    pose.stress_equivalent(k) = stresses.equivalent(e);
+    if (e < nb) {
+      pose.stress_beam_resultants.segment<12>(12 * b++) = stresses.beam_resultants.segment<12>(12 * e);
+    } else {
+      pose.stress_shell_resultants.segment<6>(8 * s) = stresses.shell_resultants.segment<6>(6 * (e - nb));
+      pose.stress_shell_resultants.segment<2>(8 * s + 6) = stresses.shell_von_mises.segment<2>(2 * (e - nb));
+      ++s;
+    }
+  }
+}
+
+}  // namespace
 
 SampleRecorder::SampleRecorder(const multibody::Model& model,
                                const multibody::ConstraintPartition& partition,
@@ -134,6 +185,8 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   results::Sample out;
   out.time = sample.t;
   out.steps = sample.statistics.steps;
+  // Counts this call's sample, for the stress history's `every`.
+  const std::int64_t index = recorded_++;
 
   // Body poses: frame origin and quaternion (w, x, y, z), ground <- body.
   for (std::size_t b = 1; b < model_.bodies.size(); ++b) {
@@ -148,6 +201,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
       if (const auto& probe = body.flexible->deflection_probe) {
         pose.deflection = multibody::probe_deflection(*body.flexible, *probe, pose.modal_coordinates);
       }
+      if (body.flexible->stress_output) record_stress(*body.flexible, pose, index);
     }
     out.bodies.push_back(pose);
   }

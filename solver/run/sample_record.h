@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "integrate/integrator.h"
@@ -33,6 +34,8 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
 // rtol · E, E the mechanism's energy scale at the start (kinetic + |gravity| + spring, at least
 // 1 J): energies are held to the same relative accuracy as q and v. `engaged` are the modes of
 // the hinge latches and stops as the integrator switches them (MultibodySystem::engaged).
+// At a velocity jump of a driver's motion the kinetic energy's change is added to the drivers'
+// work (the impulse's work).
 // References must outlive the run.
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
@@ -55,6 +58,7 @@ class SampleRecorder {
   const std::vector<unsigned char>& engaged_;
   multibody::Workspace workspace_;
   bool check_clearance_ = false;  // two or more bodies with surfaces
+  std::int64_t recorded_ = 0;     // samples recorded so far (stress history's `every`)
 };
 
 }  // namespace limber::run

@@ -14,12 +14,24 @@ namespace limber::run {
 std::string SingularPassage::message() const {
   std::string list;
   for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  const std::string branch =
+      velocity_jump < 0.0
+          ? "the run went on through it; which branch it took is not checked (the run started "
+            "or ended inside the passage): check the motion after it"
+      : changed_branch()
+          ? fmt::format("the run CHANGED BRANCH there: the frame velocity of {} jumped by {:.2g} "
+                        "of the frame speeds across it, an impulse no force of the model gives "
+                        "(unless it holds an impact there): a smaller step or tolerance, or a "
+                        "start off the singular path, keeps the motion on its branch",
+                        jump_body, velocity_jump)
+          : fmt::format("the run stayed on the branch it arrived on (velocities continuous "
+                        "across it to {:.1g} of the frame speeds)",
+                        velocity_jump);
   return fmt::format("the constraint equations lose rank at t = {:.6g} s (singular value {:.2g} "
                      "of its start value; joints {}): a singular configuration, where the "
                      "mechanism may switch branches (a parallelogram may fold into an "
-                     "anti-parallelogram); the run went on through it on one branch: check "
-                     "the motion after it",
-                     t, ratio, list);
+                     "anti-parallelogram); {}",
+                     t, ratio, list, branch);
 }
 
 SingularPassageMonitor::SingularPassageMonitor(const multibody::Model& model, int rank)
@@ -42,7 +54,11 @@ bool SingularPassageMonitor::add(const multibody::State& state) {
   if (start_ < 0.0) start_ = sigma;
   const double ratio = start_ > 0.0 ? sigma / start_ : 1.0;
   if (ratio < kSingularRatio) {
-    if (!open_ || ratio < current_.ratio) {
+    if (!open_) {
+      current_ = {};
+      current_.ratio = 2.0;  // above any ratio in a passage: the first sample sets it
+    }
+    if (ratio < current_.ratio) {
       current_.t = state.t;
       current_.ratio = ratio;
       current_.names.clear();
@@ -63,14 +79,48 @@ bool SingularPassageMonitor::add(const multibody::State& state) {
     open_ = true;
     return false;
   }
-  return finish();
+  const bool ended = close(&state);
+  // The latest two samples outside a passage.
+  before_[0] = before_[1];
+  before_[1] = {state.t, state.v};
+  moments_ = std::min(moments_ + 1, 2);
+  return ended;
 }
 
-bool SingularPassageMonitor::finish() {
+bool SingularPassageMonitor::finish() { return close(nullptr); }
+
+bool SingularPassageMonitor::close(const multibody::State* after) {
   if (!open_) return false;
   open_ = false;
+  if (after != nullptr && moments_ == 2) current_.velocity_jump = branch_jump(*after, current_.jump_body);
   last_ = current_;
   return true;
+}
+
+double SingularPassageMonitor::branch_jump(const multibody::State& after, std::string& body) const {
+  // Linear prediction from the two samples before the passage to the one after it.
+  const Moment& b1 = before_[1];
+  const Moment& b2 = before_[0];
+  const Eigen::VectorXd predicted = b1.v + (b1.v - b2.v) * ((after.t - b1.t) / (b1.t - b2.t));
+  // Frame speeds before the passage: the scales of the linear and angular jumps.
+  double linear_scale = 0.0, angular_scale = 0.0;
+  for (const multibody::Body& b : model_.bodies) {
+    if (b.nv < 6) continue;
+    linear_scale = std::max(linear_scale, b1.v.segment<3>(b.v_offset).norm());
+    angular_scale = std::max(angular_scale, b1.v.segment<3>(b.v_offset + 3).norm());
+  }
+  double jump = 0.0;
+  for (const multibody::Body& b : model_.bodies) {
+    if (b.nv < 6) continue;
+    const Eigen::VectorXd d = after.v.segment<6>(b.v_offset) - predicted.segment<6>(b.v_offset);
+    const double linear = linear_scale > 0.0 ? d.head<3>().norm() / linear_scale : 0.0;
+    const double angular = angular_scale > 0.0 ? d.tail<3>().norm() / angular_scale : 0.0;
+    if (std::max(linear, angular) > jump) {
+      jump = std::max(linear, angular);
+      body = b.name;
+    }
+  }
+  return jump;
 }
 
 }  // namespace limber::run

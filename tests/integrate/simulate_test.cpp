@@ -43,6 +43,23 @@ TEST(UniformSampleTimes, EndExactlyAtTheEndTime) {
   EXPECT_THROW(uniform_sample_times(0.0, 1e9, 1.0), InputError);
 }
 
+TEST(UniformSampleTimes, GeneratedOnDemandWithoutHoldingThem) {
+  // The largest grid allowed (1e8 + 1 times, 800 MB as a list) costs nothing until asked, and
+  // gives the same times as the list form.
+  const SampleTimes huge = SampleTimes::uniform(0.0, 1e7, 0.1);
+  EXPECT_EQ(huge.size(), 100000001u);
+  EXPECT_DOUBLE_EQ(huge[12345], 1234.5);
+  EXPECT_EQ(huge.back(), 1e7);
+  for (const double dt : {0.25, 0.3, 0.1, 0.0137}) {
+    const SampleTimes grid = SampleTimes::uniform(0.0, 1.0, dt);
+    const std::vector<double> list = uniform_sample_times(0.0, 1.0, dt);
+    ASSERT_EQ(grid.size(), list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) EXPECT_EQ(grid[i], list[i]);
+  }
+  EXPECT_THROW(SampleTimes({0.0, 0.5, 0.5}), InputError);
+  EXPECT_THROW(SampleTimes(std::vector<double>{}), InputError);
+}
+
 TEST(Simulate, SamplesDoNotChangeTheSteps) {
   // Output times are interpolated, never forced step ends (PITFALLS): 1001 samples cost the
   // same steps as 11. Generalized-α: exactly t/h steps. IDA: the same step sequence, so the

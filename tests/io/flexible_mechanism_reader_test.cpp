@@ -136,5 +136,42 @@ TEST(FlexibleMechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   EXPECT_TRUE(fails_at(text, location_of(text, "mass: 2"), "unknown key 'mass'"));
 }
 
+TEST(FlexibleMechanismReader, StressOutputLandsInTheModelAndBadInputIsNamed) {
+  // Elements 1-based in the case, 0-based and sorted in the model, with the modal stresses of
+  // every element over the body's modes.
+  std::string text = edited("    deflection:", "    stress: {elements: [10, 1, 5, 5], every: 4}\n    deflection:");
+  const Case input = read_case_text(text, "test.yaml");
+  const io::Mechanism built =
+      io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::FlexibleBody& arm = *built.model.bodies[static_cast<std::size_t>(built.model.find_body("arm"))].flexible;
+  ASSERT_TRUE(arm.stress_output.has_value());
+  EXPECT_EQ(arm.stress_output->elements, (std::vector<int>{0, 4, 9}));
+  EXPECT_EQ(arm.stress_output->every, 4);
+  EXPECT_EQ(arm.modal_stress.beam_count, 10);
+  EXPECT_EQ(arm.modal_stress.beam_modal.rows(), 120);
+  EXPECT_EQ(arm.modal_stress.beam_modal.cols(), arm.mode_count());
+
+  // An element number beyond the mesh, a word other than all, every < 1, an unknown key.
+  text = edited("    deflection:", "    stress: {elements: [3, 12]}\n    deflection:");
+  EXPECT_TRUE(fails_at(text, location_of(text, "12]}"), "expected an element number in [1, 10]"));
+  text = edited("    deflection:", "    stress: {elements: some}\n    deflection:");
+  EXPECT_TRUE(fails_at(text, location_of(text, "some}"), "expected 'all' or a list of element numbers"));
+  text = edited("    deflection:", "    stress: {elements: all, every: 0}\n    deflection:");
+  EXPECT_TRUE(fails_at(text, location_of(text, "0}\n    deflection"), "expected a positive whole number for 'every'"));
+  text = edited("    deflection:", "    stress: {elements: all, each: 2}\n    deflection:");
+  EXPECT_TRUE(fails_at(text, location_of(text, "each"), "unknown key 'each'"));
+  // A general section without extreme fibres cannot give a bending stress.
+  text = edited("bar: {shape: rectangle, width: 0.01, height: 0.02}",
+                "bar: {shape: general, A: 2e-4, Iy: 6.67e-9, Iz: 1.67e-9, J: 4.6e-9}");
+  text.replace(text.find("    deflection:"), 15, "    stress: {elements: all}\n    deflection:");
+  EXPECT_TRUE(fails_at(text, location_of(text, "{elements: all}"),
+                       "expected extreme-fibre distances for the beams' stresses, got none for section 'bar'"));
+  // ... with them it can.
+  text = edited("bar: {shape: rectangle, width: 0.01, height: 0.02}",
+                "bar: {shape: general, A: 2e-4, Iy: 6.67e-9, Iz: 1.67e-9, J: 4.6e-9, fibre_y: 0.005, fibre_z: 0.01}");
+  text.replace(text.find("    deflection:"), 15, "    stress: {elements: all}\n    deflection:");
+  EXPECT_NO_THROW(read_case_text(text, "test.yaml"));
+}
+
 }  // namespace
 }  // namespace limber::io

@@ -2,6 +2,7 @@
 // Craig-Bampton check (fixed-interface normal + constraint modes vs the full model).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -113,6 +114,28 @@ TEST(OrthonormaliseModes, NearlyDependentCandidateIsDroppedAndNamed) {
   EXPECT_EQ(result.mode_set.modes[1].label, "normal 2");
   EXPECT_EQ(result.mode_set.modes[2].label, "tip");
   EXPECT_EQ(result.mode_set.modes[2].kind, ModeKind::kAttachment);
+}
+
+TEST(OrthonormaliseModes, NonFiniteStiffnessGivesNoModeAndSaysWhy) {
+  // The reduced eigenproblem is the one step that cannot converge, and only on non-finite
+  // values: it returns an empty set with a notice (the caller's status "no mode left"),
+  // never an abort.
+  const fe::FeModel model = testing::rod_model(20, true, {0});
+  const fe::StructuralMatrices mats = fe::assemble(model);
+  NormalModeRequest normal_request;
+  normal_request.count = 2;
+  const NormalModes normal =
+      compute_normal_modes(mats.stiffness, mats.mass, fe::free_dofs(model), normal_request);
+  ASSERT_EQ(normal.status, ModalStatus::kOk);
+  Eigen::SparseMatrix<double> broken = mats.stiffness;
+  broken.coeffRef(7, 7) = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<ModeInfo> info = {{ModeKind::kNormal, 0.0, "normal 1"},
+                                      {ModeKind::kNormal, 0.0, "normal 2"}};
+  const OrthonormalisedModes result = orthonormalise_modes(
+      broken, mats.mass, normal.shapes, info, Eigen::MatrixXd(model.dof_count(), 0), 1e-8);
+  EXPECT_EQ(result.mode_set.shapes.cols(), 0);
+  ASSERT_FALSE(result.notices.empty());
+  EXPECT_NE(result.notices.back().find("did not converge"), std::string::npos) << result.notices.back();
 }
 
 TEST(OrthonormaliseModes, CraigBamptonReproducesTheFullModelsLowestFrequencies) {

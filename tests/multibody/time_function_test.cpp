@@ -1,6 +1,7 @@
 // Driver and actuator functions: closed-form values and derivatives, and derivatives
 // against central differences.
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -60,22 +61,42 @@ TEST(TimeFunction, TablesInterpolate) {
   EXPECT_NEAR(spline.evaluate(1.0 - 1e-9).first, spline.evaluate(1.0 + 1e-9).first, 1e-7);
 }
 
-TEST(TimeFunction, TableEndsTakeTheEndSegmentsSlope) {
+TEST(TimeFunction, TableDerivativesAreRightContinuous) {
   // A motion table that starts at t = 0 with a slope must start with that slope (a zero there
-  // made the initial velocities disagree with the motion and IDA fail at t = 0); the last point
-  // likewise takes its segment's slope, and only beyond the points is the end value held.
+  // made the initial velocities disagree with the motion and IDA fail at t = 0); at the last
+  // point the end value is held, slope zero: the slope after each point, so that an integrator
+  // restarting at a slope jump starts with the motion after it.
   const TimeFunction linear = TimeFunction::table({0, 1, 3}, {0, 2, 1}, TableInterpolation::kLinear);
   EXPECT_DOUBLE_EQ(linear.evaluate(0.0).first, 2.0);
   EXPECT_DOUBLE_EQ(linear.evaluate(0.0).value, 0.0);
-  EXPECT_DOUBLE_EQ(linear.evaluate(3.0).first, -0.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(1.0).first, -0.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(3.0 - 1e-12).first, -0.5);
+  EXPECT_DOUBLE_EQ(linear.evaluate(3.0).first, 0.0);
   EXPECT_DOUBLE_EQ(linear.evaluate(3.0).value, 1.0);
   EXPECT_DOUBLE_EQ(linear.evaluate(-1e-12).first, 0.0);
-  EXPECT_DOUBLE_EQ(linear.evaluate(3.0 + 1e-12).first, 0.0);
   const TimeFunction spline = TimeFunction::table({0, 1, 2, 4}, {0, 1, 0, 2}, TableInterpolation::kCubic);
-  // The natural spline's end slopes, from just inside.
+  // The natural spline's start slope, from just inside; held after the end.
   EXPECT_NEAR(spline.evaluate(0.0).first, spline.evaluate(1e-9).first, 1e-7);
-  EXPECT_NEAR(spline.evaluate(4.0).first, spline.evaluate(4.0 - 1e-9).first, 1e-7);
+  EXPECT_EQ(spline.evaluate(4.0).first, 0.0);
   EXPECT_NEAR(spline.evaluate(4.0).value, 2.0, 1e-14);
+}
+
+TEST(TimeFunction, SlopeJumpsAreTheKinksOfTheMotion) {
+  // Linear: every point whose two one-sided slopes differ, the ends against the held zero
+  // slope; a point between two equal slopes is no jump.
+  const TimeFunction linear =
+      TimeFunction::table({0, 1, 2, 3, 5}, {0, 2, 4, 1, 1}, TableInterpolation::kLinear);
+  EXPECT_EQ(linear.slope_jumps(), (std::vector<double>{0, 2, 3}));
+  // Natural cubic spline: C² inside, so only the ends, whose slopes are not zero (checked).
+  const TimeFunction spline = TimeFunction::table({0, 1, 2, 4}, {0, 1, 0, 2}, TableInterpolation::kCubic);
+  EXPECT_EQ(spline.slope_jumps(), (std::vector<double>{0, 4}));
+  for (const double x : {0.0, 4.0}) {
+    const double inside = x == 0.0 ? 1e-7 : 4.0 - 1e-7;
+    EXPECT_GT(std::abs(spline.evaluate(inside).first), 0.1);
+  }
+  // Smooth kinds have none.
+  EXPECT_TRUE(TimeFunction::ramp(0, 1, 0.5, RampShape::kQuintic).slope_jumps().empty());
+  EXPECT_TRUE(TimeFunction::constant_speed(0, 3).slope_jumps().empty());
 }
 
 TEST(TimeFunction, BadInputIsRejected) {

@@ -86,6 +86,20 @@ TEST(RenderCommand, BadInputIsAnInputError) {
   options.directory = dir;
   options.width = 100000;
   EXPECT_THROW(render_results(options), InputError);
+  // Colouring by stress a file without stress output names the case key to add.
+  options = RenderOptions{};
+  options.directory = dir;
+  options.color = ColorBy::kVonMises;
+  options.write_video = false;
+  options.write_vtk = false;
+  options.progress = false;
+  try {
+    render_results(options);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("expected a results file with stress output"), std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

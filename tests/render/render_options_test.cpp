@@ -40,6 +40,15 @@ TEST(RenderOptions, ImpossibleSizesAreInputErrors) {
   EXPECT_EQ(parse_camera_preset("top"), CameraPreset::kTop);
 }
 
+TEST(RenderOptions, ParsesColourModes) {
+  EXPECT_EQ(RenderOptions{}.color, ColorBy::kDeflection);
+  EXPECT_EQ(parse_color_by("deflection"), ColorBy::kDeflection);
+  EXPECT_EQ(parse_color_by("von_mises"), ColorBy::kVonMises);
+  for (const char* bad : {"", "vonmises", "stress", "Von_Mises"}) {
+    EXPECT_THROW(parse_color_by(bad), InputError) << bad;
+  }
+}
+
 TEST(RenderOptions, ParsesAntiAliasingModes) {
   EXPECT_EQ(RenderOptions{}.anti_aliasing, AntiAliasing::kFxaa);
   EXPECT_EQ(parse_anti_aliasing("fxaa"), AntiAliasing::kFxaa);

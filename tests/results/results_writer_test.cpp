@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -110,6 +111,76 @@ TEST(ResultsWriter, WritesTheDocumentedLayout) {
   EXPECT_EQ(read_doubles(file, "/bodies/beam/mesh/nodes"), (std::vector<double>{0, 0, 0, 1, 0, 0}));
   EXPECT_EQ(dataset_dims(file, "/bodies/beam/mesh/quads"), (std::vector<hsize_t>{0, 4}));
   EXPECT_EQ(read_doubles(file, "/bodies/beam/mesh/beam_radius"), (std::vector<double>{0.01}));
+  H5Fclose(file);
+}
+
+// A real attribute's single value (NaN when absent).
+double read_double_attribute(hid_t file, const std::string& path, const char* name) {
+  if (H5Aexists_by_name(file, path.c_str(), name, H5P_DEFAULT) <= 0) return std::nan("");
+  const hid_t attribute = H5Aopen_by_name(file, path.c_str(), name, H5P_DEFAULT, H5P_DEFAULT);
+  double value = 0.0;
+  H5Aread(attribute, H5T_NATIVE_DOUBLE, &value);
+  H5Aclose(attribute);
+  return value;
+}
+
+TEST(ResultsWriter, WritesStressPeaksEverySampleAndHistoryEveryNth) {
+  // A beam (element 0) and a quad (element 1) on 5 nodes, both recorded, every 2nd sample.
+  const auto dir = fresh_directory("stress");
+  {
+    ResultsWriter writer(dir, "stress", "case.yaml");
+    FlexibleBodySpec body;
+    body.name = "part";
+    body.nodes.resize(5, 3);
+    body.nodes << 0, 0, 0, 1, 0, 0, 1, 1, 0, 2, 1, 0, 1, 2, 0;
+    body.lines.resize(1, 2);
+    body.lines << 0, 1;
+    body.quads.resize(1, 4);
+    body.quads << 1, 2, 3, 4;
+    body.mode_translations.setZero(15, 1);
+    body.frequencies_hz = Eigen::VectorXd::Constant(1, 5.0);
+    body.has_stress = true;
+    body.stress_elements = {0, 1};
+    body.stress_every = 2;
+    writer.add_flexible_body(body);
+    // Five samples: the peak is largest at sample 3 (not a history sample).
+    const double peaks[5] = {1.0, 2.0, 3.0, 7.0, 4.0};
+    for (int k = 0; k < 5; ++k) {
+      Sample sample;
+      sample.time = 0.5 * k;
+      sample.bodies.resize(1);
+      BodySample& b = sample.bodies[0];
+      b.modal_coordinates = Eigen::VectorXd::Zero(1);
+      b.modal_velocities = Eigen::VectorXd::Zero(1);
+      b.stress_peak = peaks[k];
+      b.stress_peak_element = k % 2;
+      b.stress_recorded = k % 2 == 0;
+      if (b.stress_recorded) {
+        b.stress_equivalent = Eigen::Vector2d(10.0 * k, 10.0 * k + 1.0);
+        b.stress_beam_resultants = Eigen::VectorXd::LinSpaced(12, 0.0, 11.0) + Eigen::VectorXd::Constant(12, 100.0 * k);
+        b.stress_shell_resultants = Eigen::VectorXd::LinSpaced(8, 0.0, 7.0) + Eigen::VectorXd::Constant(8, 1000.0 * k);
+      }
+      writer.append_sample(sample);
+    }
+    writer.finish(RunStatus::kOk);
+  }
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const std::string g = "/bodies/part/stress/";
+  EXPECT_EQ(read_doubles(file, g + "elements"), (std::vector<double>{0, 1}));
+  EXPECT_EQ(read_doubles(file, g + "peak"), (std::vector<double>{1, 2, 3, 7, 4}));
+  EXPECT_EQ(read_doubles(file, g + "peak_element"), (std::vector<double>{0, 1, 0, 1, 0}));
+  EXPECT_EQ(read_doubles(file, g + "time"), (std::vector<double>{0.0, 1.0, 2.0}));
+  EXPECT_EQ(read_doubles(file, g + "equivalent"), (std::vector<double>{0, 1, 20, 21, 40, 41}));
+  EXPECT_EQ(dataset_dims(file, g + "beam_resultants"), (std::vector<hsize_t>{3, 12}));
+  EXPECT_EQ(dataset_dims(file, g + "shell_resultants"), (std::vector<hsize_t>{3, 8}));
+  EXPECT_EQ(read_doubles(file, g + "beam_resultants")[12 + 4], 204.0);   // row 1 (k = 2), My0
+  EXPECT_EQ(read_doubles(file, g + "shell_resultants")[16 + 7], 4007.0);  // row 2, von Mises bottom
+  // The run's peak, where and when.
+  EXPECT_EQ(read_double_attribute(file, "/bodies/part/stress", "peak_value"), 7.0);
+  EXPECT_EQ(read_double_attribute(file, "/bodies/part/stress", "peak_element"), 1.0);
+  EXPECT_EQ(read_double_attribute(file, "/bodies/part/stress", "peak_time"), 1.5);
+  EXPECT_EQ(read_double_attribute(file, "/bodies/part/stress", "every"), 2.0);
   H5Fclose(file);
 }
 

@@ -6,6 +6,7 @@
 // h = 1 ms 2e-14 (its positions solve g = 0 to Newton's tolerance); the anti-parallelogram
 // turns the coupler by up to pi, so any branch switch is 6 orders above the bound.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "../results/h5_test_read.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "results/results_writer.h"
+#include "run/prepared_start.h"
 #include "run/run_driver.h"
+#include "run/singular_passage.h"
 #include "run_test_support.h"
 
 namespace limber::run {
@@ -29,6 +34,8 @@ struct Trace {
   RunSummary summary;
   std::vector<double> t, coupler_rotation, violation;
   std::vector<std::string> warnings;
+  std::vector<multibody::State> states;  // every sample's (t, q, v)
+  std::filesystem::path directory;       // holds the run's results.h5
 };
 
 Trace run_case(const std::string& path, integrate::Method method, double step_or_rtol) {
@@ -51,11 +58,17 @@ Trace run_case(const std::string& path, integrate::Method method, double step_or
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
     const Eigen::Vector4d p = sample.q.segment<4>(coupler + 3).normalized();
     trace.t.push_back(sample.t);
+    trace.states.push_back({sample.t, sample.q, sample.v});
     trace.coupler_rotation.push_back(2.0 * std::atan2(p.tail<3>().norm(), std::abs(p(0))));
     trace.violation.push_back(record.position_violation);
   };
   hooks.on_warning = [&](const std::string& w) { trace.warnings.push_back(w); };
-  trace.summary = run_mechanism(model, built.assembly, settings, hooks);
+  trace.directory = test::fresh_directory(std::string("parallelogram_") + integrate::to_string(method));
+  {
+    results::ResultsWriter writer(trace.directory, "parallelogram", path);
+    hooks.writer = &writer;
+    trace.summary = run_mechanism(model, built.assembly, settings, hooks);
+  }
   const RunSummary& s = trace.summary;
   double rot = 0.0, viol = 0.0;
   for (size_t k = 0; k < trace.t.size(); ++k) {
@@ -108,8 +121,29 @@ void expect_singular_passages_reported(const Trace& trace, const std::vector<std
                 passages[k].names.end()) << joint << " at t = " << passages[k].t;
     }
     EXPECT_NE(trace.warnings[k].find("lose rank at t = "), std::string::npos) << trace.warnings[k];
+    // Branch check: velocities continuous across the passage (the prediction's own error is
+    // (ω Δt)² ~ 1e-3 here; a change of branch jumps by O(1)).
+    EXPECT_GE(passages[k].velocity_jump, 0.0);
+    EXPECT_LT(passages[k].velocity_jump, 1e-2);
+    EXPECT_NE(trace.warnings[k].find("stayed on the branch it arrived on"), std::string::npos);
   }
   EXPECT_TRUE(trace.summary.accurate());
+  // results.h5 holds the same passages.
+  const hid_t file = H5Fopen((trace.directory / results::kResultsFileName).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const std::vector<double> time = results::testing::read_doubles(file, "/constraints/singular_passages/time");
+  const std::vector<double> ratio = results::testing::read_doubles(file, "/constraints/singular_passages/ratio");
+  const std::vector<std::string> names = test::read_fixed_strings(file, "/constraints/singular_passages/joints");
+  const std::vector<double> jump = results::testing::read_doubles(file, "/constraints/singular_passages/velocity_jump");
+  H5Fclose(file);
+  ASSERT_EQ(time.size(), 3u);
+  ASSERT_EQ(names.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(time[k], passages[k].t);
+    EXPECT_EQ(ratio[k], passages[k].ratio);
+    EXPECT_EQ(jump[k], passages[k].velocity_jump);
+    EXPECT_NE(names[k].find(passages[k].names.front()), std::string::npos) << names[k];
+  }
 }
 
 TEST(Parallelogram, DoubleReportsItsSingularPositions) {
@@ -130,6 +164,53 @@ TEST(Parallelogram, SimpleReportsItsSingularPositionsAndStaysOnTheParallelogramB
     const Trace trace = run_case(kSimple, method, x);
     expect_parallelogram_branch(trace);
     expect_singular_passages_reported(trace, joints);
+  }
+}
+
+// The branch check sees a change of branch: the simple parallelogram's recorded motion, with
+// crank2's angular velocity reversed after the first passage (as on the anti-parallelogram,
+// where the cranks turn opposite ways), jumps by 2 of the frame speeds (crank2's rate, the
+// largest, turns from +ω to −ω); the unaltered record stays below 1e-2.
+TEST(Parallelogram, BranchCheckReportsAVelocityJumpAcrossAPassage) {
+  const Trace trace = run_case(kSimple, integrate::Method::kGeneralizedAlpha, 1e-3);
+  ASSERT_TRUE(trace.summary.ok);
+  const io::Case input = io::read_case_text(test::read_text(kSimple), kSimple);
+  const io::Mechanism built =
+      io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
+  const int crank2 = model.bodies[model.find_body("crank2")].v_offset;
+  const int rank = static_cast<int>(prepare_start(model, built.assembly).partition.independent.size());
+  SingularPassageMonitor monitor(model, rank);
+  std::vector<SingularPassage> passages;
+  for (multibody::State state : trace.states) {
+    if (state.t > 0.125 && state.t < 0.25) state.v.segment<3>(crank2 + 3) *= -1.0;
+    if (monitor.add(state)) passages.push_back(monitor.last());
+  }
+  ASSERT_GE(passages.size(), 1u);
+  EXPECT_TRUE(passages[0].changed_branch());
+  EXPECT_NEAR(passages[0].velocity_jump, 2.0, 0.02);  // 2 up to the prediction's 1e-3
+  EXPECT_EQ(passages[0].jump_body, "crank2");
+  EXPECT_NE(passages[0].message().find("CHANGED BRANCH"), std::string::npos);
+}
+
+// Assembled at the singular configuration, the loop's in-plane equation that only the
+// singularity makes dependent is named and the run refuses to start (it went on and came apart
+// by 19 % of the mechanism's size before). The regular starts above pass the same check.
+TEST(Parallelogram, RefusesToStartAtItsSingularConfiguration) {
+  const std::string path = std::string(LIMBER_TEST_DATA_DIR) + "/parallelogram_singular_start.yaml";
+  for (const auto method : {integrate::Method::kIda, integrate::Method::kGeneralizedAlpha}) {
+    const Trace trace = run_case(path, method, method == integrate::Method::kIda ? 1e-6 : 1e-3);
+    EXPECT_FALSE(trace.summary.ok);
+    EXPECT_EQ(trace.summary.failure, "singular start");
+    EXPECT_EQ(trace.summary.samples, 0);
+    EXPECT_NE(trace.summary.message.find("singular configuration: equation(s) R"), std::string::npos)
+        << trace.summary.message;
+  }
+  for (const std::string& regular : {kSimple, kDouble}) {
+    const io::Case input = io::read_case_text(test::read_text(regular), regular);
+    const io::Mechanism built =
+        io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+    EXPECT_TRUE(prepare_start(built.model, built.assembly).lost_at_singular_start.empty()) << regular;
   }
 }
 

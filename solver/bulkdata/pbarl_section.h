@@ -1,0 +1,34 @@
+// Section properties of PBARL cross-section types (MSC/NX Nastran library sections, group
+// MSCBML0), in the element's local axes as NASTRAN draws them: DIM2 (BAR, BOX) runs along local
+// y (plane 1), DIM1 along local z. So I1 (= fe::BeamSection::inertia_z, bending in plane 1)
+// is DIM1 DIM2³ / 12 for BAR.
+//   ROD   r = DIM1:            A = π r², I1 = I2 = π r⁴/4, J = π r⁴/2 (exact)
+//   TUBE  ro = DIM1, ri = DIM2: A = π (ro² − ri²), I1 = I2 = π (ro⁴ − ri⁴)/4, J = 2 I1 (exact)
+//   BAR   b = DIM1 (z), h = DIM2 (y): A = b h, I1 = b h³/12, I2 = h b³/12, J = St-Venant
+//         series of a solid rectangle (fe::rectangle_torsion_constant; NASTRAN uses a closed
+//         approximation of it, within about 0.5 %)
+//   BOX   b = DIM1 (z), h = DIM2 (y), top/bottom walls t1 = DIM3, side walls t2 = DIM4:
+//         A = b h − (b − 2 t2)(h − 2 t1), I1 = (b h³ − bi hi³)/12, I2 = (h b³ − hi bi³)/12,
+//         J = 2 t1 t2 (b − t2)² (h − t1)² / (b t2 + h t1 − t2² − t1²)  (Bredt's thin-walled
+//         closed section on the wall mid-lines; Roark's Formulas for Stress and Strain,
+//         table 10.7 "hollow rectangle")
+// Shear factors are left at fe::BeamSection's defaults; PBARL beams are Euler-Bernoulli.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fe/fe_model.h"
+
+namespace limber::bulkdata {
+
+// The number of DIMi a type takes, or 0 when limber does not know the type.
+int pbarl_dimension_count(const std::string& type);
+
+// The section of `type` with dimensions `dims` (pbarl_dimension_count of them, each > 0).
+// Returns a message in `error` (and an empty section) when the dimensions are inconsistent
+// (e.g. a tube's inner radius not below the outer one).
+fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>& dims,
+                              std::string& error);
+
+}  // namespace limber::bulkdata
