@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -78,7 +77,6 @@ struct IdaIntegrator::Impl {
   Status failure;
   std::string last_message;  // IDA's own text of its last error
   int nonfinite_residuals = 0;  // in the current advance_to
-  long jacobian_residuals = 0;  // residuals of our Newton matrices since the last (re)start
   Statistics restart_statistics;  // totals at IDA's last restart (reselect_constraints)
   int ne = 0;                     // event functions
   double t_reached = 0.0;         // where the solution stands: IDA's last return or restart
@@ -153,61 +151,6 @@ struct IdaIntegrator::Impl {
     return ++nonfinite_residuals <= kMaxNonFiniteRetries ? 1 : -1;
   }
 
-  // The Newton matrix ∂F/∂y + c_j ∂F/∂y' (column-major, n x n). Columns of q and v by forward
-  // differences of F, y_j and y'_j perturbed together as IDA's own difference quotient does
-  // (IDA's increment rule); the others from the structure of F: λ enters the dynamics rows as
-  // Gᵀλ and the quadratures through f; μ the kinematic rows as [∂g/∂q; ∂h/∂q]ᵀ μ; z only z'.
-  // Costs nq + nv + 1 residuals instead of IDA's n. Returns 0, or 1 (recoverable) on non-finite
-  // values.
-  int jacobian(double t, double c_j, double* y_data, double* yp_data, const double* r_data,
-               double* J_data, double* r_perturbed, N_Vector weights_vector) {
-    Eigen::Map<Eigen::MatrixXd> J(J_data, n, n);
-    const Eigen::Map<const Eigen::VectorXd> r(r_data, n);
-    Eigen::Map<Eigen::VectorXd> r_new(r_perturbed, n);
-    J.setZero();
-    IDAGetErrWeights(ida, weights_vector);
-    const double* weights = N_VGetArrayPointer(weights_vector);
-    double h = 0.0;
-    IDAGetCurrentStep(ida, &h);
-    const double root_epsilon = std::sqrt(std::numeric_limits<double>::epsilon());
-    for (int j = 0; j < iv + nv; ++j) {
-      const double y_j = y_data[j], yp_j = yp_data[j];
-      double increment = std::max(root_epsilon * std::max(std::abs(y_j), std::abs(h * yp_j)),
-                                  1.0 / weights[j]);
-      if (h * yp_j < 0.0) increment = -increment;
-      increment = (y_j + increment) - y_j;
-      y_data[j] += increment;
-      yp_data[j] += c_j * increment;
-      residual(t, y_data, yp_data, r_perturbed);
-      ++jacobian_residuals;
-      J.col(j) = (r_new - r) / increment;
-      y_data[j] = y_j;
-      yp_data[j] = yp_j;
-    }
-    // The structured columns, from an evaluation at (t, y, y') itself.
-    residual(t, y_data, yp_data, r_perturbed);
-    ++jacobian_residuals;
-    J.block(iv, ilambda, nv, nc) = eval.G.transpose();
-    J.block(0, imu, nq, nc) = eval.g_q.transpose();
-    J.block(0, imu + nc, nq, nh) = h_q.transpose();
-    if (nz > 0) {
-      // −∂f/∂λ by differences of the quadrature integrand alone.
-      options.quadrature.integrand(t, q, v, vdot, lambda, f);
-      const Eigen::VectorXd f0 = f;
-      for (int k = 0; k < nc; ++k) {
-        const double lambda_k = lambda(k);
-        const double increment =
-            root_epsilon * std::max(std::abs(lambda_k), 1.0 / weights[ilambda + k]);
-        lambda(k) = lambda_k + increment;
-        options.quadrature.integrand(t, q, v, vdot, lambda, f);
-        J.block(iz, ilambda + k, nz, 1) = -(f - f0) / increment;
-        lambda(k) = lambda_k;
-      }
-      J.block(iz, iz, nz, nz).diagonal().setConstant(c_j);
-    }
-    return J.allFinite() ? 0 : 1;
-  }
-
   // IDA's counters since the last (re)start, added to `before` (the totals at that restart).
   void read_statistics(Statistics& stats, const Statistics& before) const {
     long value = 0;
@@ -226,7 +169,7 @@ struct IdaIntegrator::Impl {
     long linear_solver_residuals = 0;
     IDAGetNumResEvals(ida, &value);
     IDAGetNumLinResEvals(ida, &linear_solver_residuals);
-    stats.residual_evaluations = value + linear_solver_residuals + jacobian_residuals;
+    stats.residual_evaluations = value + linear_solver_residuals;
     double last_step = 0.0;
     IDAGetLastStep(ida, &last_step);
     stats.last_step = last_step;
@@ -316,7 +259,6 @@ struct IdaIntegrator::Impl {
     Statistics totals;
     read_statistics(totals, restart_statistics);
     restart_statistics = totals;
-    jacobian_residuals = 0;
     LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
     t_reached = t;
     if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
@@ -334,13 +276,6 @@ struct IdaIntegrator::Impl {
 };
 
 namespace {
-
-int ida_jacobian(double t, double c_j, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J,
-                 void* user_data, N_Vector scratch, N_Vector weights, N_Vector) {
-  return static_cast<IdaIntegrator::Impl*>(user_data)->jacobian(
-      t, c_j, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r),
-      SUNDenseMatrix_Data(J), N_VGetArrayPointer(scratch), weights);
-}
 
 int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
   return static_cast<IdaIntegrator::Impl*>(user_data)->residual(t, N_VGetArrayPointer(y),
@@ -487,7 +422,6 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   if (options.quadrature.atol > 0.0) atol.segment(s.iz, s.nz).setConstant(options.quadrature.atol);
   flag = flag < 0 ? flag : IDASVtolerances(s.ida, options.rtol, s.atol_vec);
   flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
-  flag = flag < 0 ? flag : IDASetJacFn(s.ida, ida_jacobian);
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
   flag = flag < 0 ? flag : IDASetSuppressAlg(s.ida, SUNTRUE);
   flag = flag < 0 ? flag : IDASetMaxNumSteps(s.ida, options.max_steps);

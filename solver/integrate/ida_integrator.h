@@ -7,11 +7,8 @@
 //   0 = [g; h]                              (position constraints and invariants)
 //   z' = f(t, q, v, v', λ)                  (requested quadratures, IntegratorOptions::quadrature)
 // λ and μ are algebraic and excluded from the local error test (IDASetId + IDASetSuppressAlg);
-// q, v and z are tested with the scalar rtol/atol. The Newton matrix ∂F/∂y + c ∂F/∂y' is dense
-// and structured: its q and v columns are difference quotients of F (IDA's increment rule),
-// the λ, μ and z columns come from F's form (Gᵀ, [∂g/∂q; ∂h/∂q]ᵀ, c I; the quadratures' λ
-// dependence by differences of f alone), so a matrix costs nq + nv + 1 residuals instead of
-// IDA's n. Initial y, y' come from our own projection
+// q, v and z are tested with the scalar rtol/atol. The Newton matrix ∂F/∂y + c ∂F/∂y' is IDA's
+// dense difference quotient (no analytic Jacobian). Initial y, y' come from our own projection
 // (consistent_state.h; IDACalcIC is not called): y' = [N v, v̇, 0, 0, f].
 // Output times are served with IDA_NORMAL, i.e. IDA steps past t_out and interpolates its
 // BDF interpolating polynomial (the one IDAGetDky evaluates); it stops only at t_stop.

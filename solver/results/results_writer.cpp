@@ -312,7 +312,8 @@ struct ResultsWriter::Impl {
     return stress;
   }
 
-  // The peak of this sample, and a history row when the sample carries one.
+  // The peak of this sample (buffered with the sample), and a history row when the sample
+  // carries one (written at once: its own rows, flushed with the next block).
   void append_stress(StressSeries& stress, const BodySample& body, double time) {
     append_row(stress.peak, &body.stress_peak);
     append_row(stress.peak_element, &body.stress_peak_element);
