@@ -187,7 +187,10 @@ TEST(SweepCli, RunModesOption) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const test::JsonValue json = test::parse_json(run.out);
   EXPECT_GT(json["jacobian_evaluations"].number(), 0.0);
-  EXPECT_GT(json["residual_evaluations"].number(), json["newton_iterations"].number());
+  // At least one residual per Newton iteration (generalized-alpha's structured iteration
+  // matrix needs no more; a finite-difference refresh adds some).
+  EXPECT_GE(json["residual_evaluations"].number(), json["newton_iterations"].number());
+  EXPECT_GT(json["newton_iterations"].number(), 0.0);
   EXPECT_NE(run.err.find("reduction: rod 3 modes"), std::string::npos) << run.err;
   const test::CommandRun bad = run_limber("run " + flexible + " --modes -1 -o " + dir.string());
   EXPECT_EQ(bad.exit_code, 1);
