@@ -376,13 +376,17 @@ Status GeneralizedAlpha::apply_pending_events() {
     return failure(status.code, fmt::format("after an event, the accelerations could not be "
                                             "solved: {}", status.message));
   }
+  restart_at_current();
+  return Status::success(curr_.t);
+}
+
+void GeneralizedAlpha::restart_at_current() {
   curr_.a = curr_.vdot;
   evaluate_integrand(curr_);
   system_->event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
   prev_ = curr_;
   xi_last_.setZero();
   jacobian_h_ = 0.0;
-  return Status::success(curr_.t);
 }
 
 Status GeneralizedAlpha::apply_breakpoint() {
@@ -407,12 +411,7 @@ Status GeneralizedAlpha::apply_breakpoint() {
     options_.quadrature.jump(curr_.t, curr_.q, v_before, curr_.v, dz);
     curr_.integrals += dz;
   }
-  curr_.a = curr_.vdot;
-  evaluate_integrand(curr_);
-  system_->event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
-  prev_ = curr_;
-  xi_last_.setZero();
-  jacobian_h_ = 0.0;
+  restart_at_current();
   return Status::success(curr_.t);
 }
 
@@ -428,11 +427,7 @@ Status GeneralizedAlpha::reselect_constraints() {
     return failure(status.code, fmt::format("after new constraint rows were selected, the "
                                             "accelerations could not be solved: {}", status.message));
   }
-  curr_.a = curr_.vdot;
-  evaluate_integrand(curr_);
-  prev_ = curr_;
-  xi_last_.setZero();
-  jacobian_h_ = 0.0;
+  restart_at_current();
   return Status::success(curr_.t);
 }
 

@@ -106,6 +106,9 @@ class GeneralizedAlpha final : public Integrator {
   // shortens the step to the crossing (next_ and xi_last_ then hold that step) and marks the
   // crossing events pending. Returns a failure when a shortened step fails.
   Status locate_events(double h);
+  // Restarts the scheme at curr_ once v̇ and λ there are solved: a = v̇, the integrand and
+  // event functions at curr_, no extrapolation across (prev_ = curr_), a fresh iteration matrix.
+  void restart_at_current();
   // Switches the pending events' modes at curr_ and restarts the scheme there.
   Status apply_pending_events();
   // At the next velocity breakpoint (MechanicalSystem::velocity_breakpoints), once curr_ has
