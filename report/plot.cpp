@@ -214,6 +214,14 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
   vtkAxis* y_axis = chart->GetAxis(vtkAxis::LEFT);
   style_axis(x_axis, plot.x_label);
   style_axis(y_axis, plot.y_label);
+  // The canvas is reused: a logarithmic axis of an earlier plot leaves VTK's range limits at
+  // positive values, which clipped the next linear plot at 0 (its negative half off the chart).
+  for (vtkAxis* axis : {x_axis, y_axis}) {
+    axis->SetUnscaledMinimumLimit(std::numeric_limits<double>::lowest());
+    axis->SetUnscaledMaximumLimit(std::numeric_limits<double>::max());
+    axis->SetMinimumLimit(std::numeric_limits<double>::lowest());
+    axis->SetMaximumLimit(std::numeric_limits<double>::max());
+  }
   x_axis->SetLogScale(frame.log_x);
   if (frame.log_x) {
     x_axis->SetCustomTickPositions(nullptr);

@@ -536,6 +536,38 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                         "force [N]", curves, false}});
     }
   }
+
+  // Deflection probes of a body present in two or more runs: each component that is not ≈ 0
+  // in every run (options.zero_fraction of the largest), overlaid.
+  std::vector<std::string> bodies;
+  std::map<std::string, std::vector<std::pair<std::size_t, const DeflectionProbe*>>> probes;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    for (const DeflectionProbe& probe : runs[r].deflections) {
+      if (probe.values.rows() != runs[r].results.time.size() || probe.values.rows() == 0) continue;
+      if (probes.count(probe.body) == 0) bodies.push_back(probe.body);
+      probes[probe.body].emplace_back(r, &probe);
+    }
+  }
+  for (const std::string& body : bodies) {
+    const auto& held = probes[body];
+    if (held.size() < 2) continue;
+    Eigen::Vector3d peak = Eigen::Vector3d::Zero();
+    for (const auto& [r, probe] : held) {
+      peak = peak.cwiseMax(probe->values.cwiseAbs().colwise().maxCoeff().transpose());
+    }
+    for (int c = 0; c < 3; ++c) {
+      if (!(peak(c) > options.zero_fraction * peak.maxCoeff())) continue;
+      std::vector<Curve> curves;
+      for (const auto& [r, probe] : held) curves.push_back({labels[r], runs[r].results.time, probe->values.col(c)});
+      plots.push_back({PlotSection::kComparison,
+                       "compare_probe_" + file_stem(body) + "_" + kAxes[c] + ".png",
+                       "Deflection probe of " + body + ", component u" + kAxes[c] +
+                           " (body axes; relative to its chord, case key deflection) in " +
+                           std::to_string(held.size()) + " runs.",
+                       {"Deflection probe of " + body + ": u" + kAxes[c], kTimeLabel,
+                        "deflection [m]", curves, false}});
+    }
+  }
   return plots;
 }
 

@@ -61,7 +61,9 @@ std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& pr
 
 // One plot per joint name present in two or more runs and per force component (in the first
 // of `options.frames`: ground axes when every run has them, else the joint frame), overlaying
-// that component of every run holding the joint; legend entries are `labels`.
+// that component of every run holding the joint; then one per deflection-probe component of a
+// body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
+// `labels`.
 std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                                         const std::vector<std::string>& labels,
                                         const PlotOptions& options = {});

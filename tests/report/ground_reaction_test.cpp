@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <numbers>
 
@@ -264,6 +265,43 @@ TEST(GroundReactionPlots, AxisNamesAndDriverUnitsComeFromTheFile) {
   EXPECT_EQ(plot_named(plots, "driver_efforts_N_m.png").spec.y_label, "effort [N m]");
   EXPECT_EQ(plot_named(plots, "driver_efforts_N.png").spec.y_label, "effort [N]");
   EXPECT_EQ(plot_named(plots, "driver_efforts_N_m.png").spec.curves[0].label, "motor");
+}
+
+// Two runs probing the same body (the seed set-up, linear and stiffened): the probe's
+// in-plane component is overlaid, one curve per run holding the stored values; its ≈ 0
+// components (1e-9 of the largest) and the runs without the probe are left out.
+TEST(ComparisonPlots, DeflectionProbesOfTheSameBodyAreOverlaid) {
+  const Eigen::Index ns = 11;
+  RunData linear, stiffened, rigid;
+  for (RunData* run : {&linear, &stiffened, &rigid}) {
+    run->results.time = Eigen::VectorXd::LinSpaced(ns, 0.0, 1.0);
+  }
+  const auto probe = [&](double amplitude) {
+    DeflectionProbe p;
+    p.body = "rod";
+    p.values = RowMatrix3d::Zero(ns, 3);
+    for (Eigen::Index k = 0; k < ns; ++k) {
+      p.values(k, 0) = 1e-9 * amplitude;
+      p.values(k, 2) = amplitude * std::sin(0.3 * static_cast<double>(k));
+    }
+    return p;
+  };
+  linear.deflections.push_back(probe(0.062));
+  stiffened.deflections.push_back(probe(0.038));
+  const std::vector<NamedPlot> plots =
+      comparison_plots({linear, stiffened, rigid}, {"linear", "stiffened", "rigid"}, PlotOptions{});
+  std::vector<const NamedPlot*> probes;
+  for (const NamedPlot& plot : plots) {
+    if (plot.file.rfind("compare_probe_", 0) == 0) probes.push_back(&plot);
+  }
+  ASSERT_EQ(probes.size(), 1u);
+  EXPECT_EQ(probes[0]->file, "compare_probe_rod_z.png");
+  EXPECT_EQ(probes[0]->section, PlotSection::kComparison);
+  ASSERT_EQ(probes[0]->spec.curves.size(), 2u);
+  EXPECT_EQ(probes[0]->spec.curves[0].label, "linear");
+  EXPECT_EQ(probes[0]->spec.curves[1].label, "stiffened");
+  EXPECT_EQ(probes[0]->spec.curves[0].y, linear.deflections[0].values.col(2));
+  EXPECT_EQ(probes[0]->spec.curves[1].y, stiffened.deflections[0].values.col(2));
 }
 
 }  // namespace

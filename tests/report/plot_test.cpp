@@ -98,6 +98,31 @@ TEST(ChartCanvas, DrawsTheCurveWhereItsDataMapAndNothingElse) {
             (std::array<int, 3>{kPlotBackground[0], kPlotBackground[1], kPlotBackground[2]}));
 }
 
+// The canvas is reused for every plot of a report: a logarithmic plot before a linear one
+// left VTK's axis limits positive, and the linear plot lost its negative half (every
+// comparison plot of a report, drawn after the runs' log-scale violation plots, was cut at 0).
+TEST(ChartCanvas, ALinearPlotAfterALogarithmicOneKeepsItsNegativeHalf) {
+  unsetenv("DISPLAY");
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(201, 0.0, 1.0);
+  const Eigen::VectorXd positive = (10.0 * x).array().exp();
+  const Eigen::VectorXd y = (2.0 * M_PI * x).array().sin() * 3.0 + 1.0;  // spans [-2, 4]
+  const auto dir = testing::fresh_directory("plot_after_log");
+  PlotFrame frame;
+  {
+    ChartCanvas canvas(kWidth, kHeight);
+    PlotSpec log_spec{"log", "time [s]", "violation [m]", {{"v", x, positive}}, true};
+    canvas.draw(log_spec, dir / "log.png");
+    frame = canvas.draw(PlotSpec{"linear", "time [s]", "force [N]", {{"F", x, y}}, false},
+                        dir / "linear.png");
+  }
+  EXPECT_DOUBLE_EQ(frame.y_min, -2.0);
+  const testing::Png png(dir / "linear.png");
+  for (Eigen::Index k = 0; k < x.size(); k += 10) {
+    EXPECT_TRUE(color_near_pixel(png, frame.to_pixel(x(k), y(k)), kCurveColors[0]))
+        << "no curve pixel near sample " << k << " (x = " << x(k) << ", y = " << y(k) << ")";
+  }
+}
+
 TEST(ChartCanvas, LogarithmicAxisSpansWholeDecades) {
   const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(11, 0.0, 1.0);
   const Eigen::VectorXd y =  // 1e-10 ... 1e-6
