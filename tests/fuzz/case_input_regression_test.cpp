@@ -4,33 +4,14 @@
 // exception fails its test. An InputError must name its place in the file.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "case_input_path.h"
+#include "corpus_files.h"
 
 namespace limber::fuzz {
 namespace {
-
-std::vector<std::string> regression_files() {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(LIMBER_FUZZ_REGRESSIONS_DIR)) {
-    if (entry.is_regular_file()) files.push_back(entry.path().filename().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class CaseInputRegression : public ::testing::TestWithParam<std::string> {};
 
@@ -48,17 +29,9 @@ TEST_P(CaseInputRegression, EndsInSuccessOrAnInputOrNumericalError) {
   }
 }
 
-// Test names from the file names (letters, digits and '_' only).
-std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  for (char& c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return name;
-}
-
 INSTANTIATE_TEST_SUITE_P(Regressions, CaseInputRegression,
-                         ::testing::ValuesIn(regression_files()), test_name);
+                         ::testing::ValuesIn(sorted_file_names(LIMBER_FUZZ_REGRESSIONS_DIR)),
+                         test_name_of_file);
 
 }  // namespace
 }  // namespace limber::fuzz

@@ -4,33 +4,14 @@
 // eigen-solver; an abort, a sanitizer report or another exception fails its test.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
+#include "corpus_files.h"
 #include "deck_input_path.h"
 
 namespace limber::fuzz {
 namespace {
-
-std::vector<std::string> corpus_files() {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(LIMBER_FUZZ_DECK_CORPUS_DIR)) {
-    if (entry.is_regular_file()) files.push_back(entry.path().filename().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class DeckInputCorpus : public ::testing::TestWithParam<std::string> {};
 
@@ -48,14 +29,9 @@ TEST_P(DeckInputCorpus, EndsInSuccessOrALocatedInputError) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, DeckInputCorpus, ::testing::ValuesIn(corpus_files()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Corpus, DeckInputCorpus,
+                         ::testing::ValuesIn(sorted_file_names(LIMBER_FUZZ_DECK_CORPUS_DIR)),
+                         test_name_of_file);
 
 }  // namespace
 }  // namespace limber::fuzz

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "bench_error.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
@@ -47,18 +48,8 @@ Outcome run_once(const io::Mechanism& mechanism, const integrate::IntegratorOpti
   return best;
 }
 
-double rms(const std::vector<double>& x) {
-  double sum = 0.0;
-  for (double v : x) sum += v * v;
-  return std::sqrt(sum / static_cast<double>(std::max<std::size_t>(1, x.size())));
-}
-
 double relative_rms_error(const Outcome& outcome, const Outcome& reference) {
-  std::vector<double> difference;
-  for (std::size_t k = 0; k < std::min(outcome.deflection.size(), reference.deflection.size()); ++k) {
-    difference.push_back(outcome.deflection[k] - reference.deflection[k]);
-  }
-  return rms(difference) / rms(reference.deflection);
+  return run::bench::relative_rms_error(outcome.deflection, reference.deflection);
 }
 
 void print_row(const char* method, const std::string& setting, const Outcome& outcome,
@@ -88,7 +79,7 @@ int main() {
   }
   fmt::print("reference gen-alpha h = 10 us: rms mid-span deflection {:.3e} m, {:.1f} s; IDA rtol "
              "1e-6 against it: {:.1e} rms\n\n",
-             rms(reference.deflection), reference.wall, relative_rms_error(check, reference));
+             run::bench::rms(reference.deflection), reference.wall, relative_rms_error(check, reference));
 
   fmt::print("| integrator | setting | wall [ms] | steps | rejected | deflection error (rms, rel.) |\n"
              "|---|---|---|---|---|---|\n");

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_error.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
@@ -80,18 +81,8 @@ Outcome run_once(const io::Mechanism& mechanism, const integrate::IntegratorOpti
   return best;
 }
 
-double rms(const std::vector<double>& x) {
-  double sum = 0.0;
-  for (double v : x) sum += v * v;
-  return std::sqrt(sum / static_cast<double>(std::max<std::size_t>(1, x.size())));
-}
-
 double relative_rms_error(const Outcome& outcome, const Outcome& reference) {
-  std::vector<double> difference;
-  for (std::size_t k = 0; k < std::min(outcome.deflection.size(), reference.deflection.size()); ++k) {
-    difference.push_back(outcome.deflection[k] - reference.deflection[k]);
-  }
-  return rms(difference) / rms(reference.deflection);
+  return run::bench::relative_rms_error(outcome.deflection, reference.deflection);
 }
 
 void print_row(const char* method, const std::string& setting, const Outcome& outcome,
@@ -146,7 +137,7 @@ int main(int argc, char** argv) {
   }
   fmt::print("reference gen-alpha h = 10 us: rms mid-span deflection {:.3e} m, {:.1f} s; "
              "runs {} results.h5, min of {}\n\n",
-             rms(reference.deflection), reference.wall, write_file ? "write" : "do not write",
+             run::bench::rms(reference.deflection), reference.wall, write_file ? "write" : "do not write",
              repetitions);
 
   fmt::print("| integrator | setting | wall [ms] | CPU [ms] | steps | rejected | Newton iterations | "
