@@ -124,6 +124,10 @@ void print_start(std::FILE* out, const multibody::Model& model, const run::Prepa
   for (const run::RedundantEquationReport& r : start.redundant) {
     fmt::print(out, "  {}\n", r.description);
   }
+  for (const run::DeformationRedundancy& d : start.deformation_redundant) {
+    fmt::print(out, "  note: {}; the run stops if it comes loose. To make it independent, {}\n",
+               d.description(model), d.remedy(model));
+  }
 }
 
 std::string json_string_list(const std::vector<std::string>& values) {

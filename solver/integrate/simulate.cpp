@@ -11,6 +11,14 @@ namespace limber::integrate {
 SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample) {
+  return simulate(system, options, start, sample_times, on_sample,
+                  [](const Sample& sample) { return Status::success(sample.t); });
+}
+
+SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
+                          const InitialState& start, const SampleTimes& sample_times,
+                          const std::function<void(const Sample&)>& on_sample,
+                          const std::function<Status(const Sample&)>& check) {
   const auto wall_start = std::chrono::steady_clock::now();
   // Sample times: from the start on (a SampleTimes is non-empty and increasing).
   if (sample_times.front() < start.t) {
@@ -33,6 +41,7 @@ SimulationResult simulate(const MechanicalSystem& system, const IntegratorOption
     if (!result.status.ok()) break;
     on_sample(sample);
     ++result.samples;
+    result.status = check(sample);
   }
   result.statistics = integrator->statistics();
   result.wall_seconds =

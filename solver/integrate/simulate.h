@@ -23,4 +23,11 @@ SimulationResult simulate(const MechanicalSystem& system, const IntegratorOption
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample);
 
+// As above; after each delivered sample `check` judges it, and a status it returns that is not
+// ok ends the run with that status (the sample judged has been delivered).
+SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
+                          const InitialState& start, const SampleTimes& sample_times,
+                          const std::function<void(const Sample&)>& on_sample,
+                          const std::function<Status(const Sample&)>& check);
+
 }  // namespace limber::integrate

@@ -11,6 +11,7 @@ const char* to_string(StatusCode code) {
     case StatusCode::kNaN: return "nan";
     case StatusCode::kTooManySteps: return "too_many_steps";
     case StatusCode::kWallClock: return "wall_clock";
+    case StatusCode::kRedundantViolated: return "redundant_equation_violated";
   }
   return "unknown";
 }

@@ -14,6 +14,7 @@ enum class StatusCode {
   kNaN,                  // the model returned non-finite values
   kTooManySteps,         // the step budget (IntegratorOptions::max_steps) ran out
   kWallClock,            // the wall-clock budget (IntegratorOptions::max_wall_seconds) ran out
+  kRedundantViolated,    // a redundant equation the run does not hold came loose (run/redundant_row_watch.h)
 };
 
 // "ok", "error_test_failures", ... (stable names, used in results files and --json).

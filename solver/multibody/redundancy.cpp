@@ -41,6 +41,31 @@ Eigen::MatrixXd unit_rows(Eigen::MatrixXd A) {
   return A;
 }
 
+Eigen::MatrixXd mass_metric_rows(const Model& model, const State& state, Workspace& ws) {
+  evaluate_constraints(model, state, Stage::kPosition, ws);
+  mass_matrix(model, state, ws);
+  const Eigen::LLT<Eigen::MatrixXd> mass(ws.M);
+  LIMBER_DEMAND(mass.info() == Eigen::Success);
+  return unit_rows(mass.matrixL().solve(ws.G.transpose()).transpose());
+}
+
+std::vector<bool> rows_adding_directions(const Eigen::MatrixXd& S, const std::vector<int>& order,
+                                         double tolerance) {
+  std::vector<bool> adds(static_cast<std::size_t>(S.rows()), false);
+  Eigen::MatrixXd basis(S.cols(), 0);  // orthonormal columns
+  for (int row : order) {
+    Eigen::VectorXd r = S.row(row).transpose();
+    if (r.norm() == 0.0) continue;
+    r -= basis * (basis.transpose() * r);
+    r -= basis * (basis.transpose() * r);  // twice: orthogonal to rounding
+    if (r.norm() <= tolerance) continue;
+    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+    basis.col(basis.cols() - 1) = r.normalized();
+    adds[static_cast<std::size_t>(row)] = true;
+  }
+  return adds;
+}
+
 std::vector<std::string> ConstraintPartition::describe(const Model& model) const {
   std::vector<std::string> lines;
   for (const RedundantEquation& r : redundant) {
@@ -62,7 +87,6 @@ ConstraintPartition full_partition(const Model& model) {
 
 ConstraintPartition analyse_redundancy(const Model& model, const State& state, Workspace& ws,
                                        double relative_threshold, const std::vector<int>& keep) {
-  evaluate_constraints(model, state, Stage::kPosition, ws);
   const int m = model.num_equations();
   ConstraintPartition p;
   p.relative_threshold = relative_threshold;
@@ -72,11 +96,7 @@ ConstraintPartition analyse_redundancy(const Model& model, const State& state, W
     return p;
   }
   // The rank in the mass metric: rows of G L⁻ᵀ (M = L Lᵀ), whose products are G M⁻¹ Gᵀ.
-  mass_matrix(model, state, ws);
-  const Eigen::LLT<Eigen::MatrixXd> mass(ws.M);
-  LIMBER_DEMAND(mass.info() == Eigen::Success);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> weighted(
-      unit_rows(mass.matrixL().solve(ws.G.transpose()).transpose()).transpose());
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> weighted(mass_metric_rows(model, state, ws).transpose());
   weighted.setThreshold(relative_threshold);
   const int rank = static_cast<int>(weighted.rank());
   // Which rows: the first `rank` pivots of G itself, whose order keeps whole joints where it

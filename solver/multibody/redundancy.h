@@ -48,6 +48,15 @@ struct ConstraintPartition {
 // The rows of A scaled to unit norm (zero rows stay zero: they are redundant with nothing).
 Eigen::MatrixXd unit_rows(Eigen::MatrixXd A);
 
+// The rows of G in the mass metric, G L⁻ᵀ (M = L Lᵀ), scaled to unit norm: the matrix whose
+// rank analyse_redundancy measures. Evaluates G and M at `state` (updates ws).
+Eigen::MatrixXd mass_metric_rows(const Model& model, const State& state, Workspace& ws);
+
+// Per row of S: whether it adds a direction to the rows taken before it in `order` (its part
+// orthogonal to them exceeds `tolerance`; rows of S have unit norm or are zero).
+std::vector<bool> rows_adding_directions(const Eigen::MatrixXd& S, const std::vector<int>& order,
+                                         double tolerance = kRedundancyThreshold);
+
 // All rows independent (no analysis).
 ConstraintPartition full_partition(const Model& model);
 

@@ -49,6 +49,9 @@ class AccuracyMonitor {
  public:
   void add(const results::Sample& sample);
   // The estimate after the last sample; `statistics` and `options` are the run's.
+  // The mechanism's size [m] (the spread of its joint points and body origins at the first
+  // sample, at least 1 mm); 0 before it.
+  double size() const { return size_; }
   AccuracyEstimate estimate(const integrate::Statistics& statistics,
                             const integrate::IntegratorOptions& options,
                             const AccuracyThresholds& thresholds = {}) const;

@@ -27,6 +27,8 @@ PreparedStart prepare_start(const multibody::Model& model,
     for (int row : equation.depends_on) report.depends_on.push_back(model.equations[row].name);
     start.redundant.push_back(std::move(report));
   }
+  start.deformation_redundant =
+      deformation_redundancies(model, start.state, start.partition, ws);
   for (int row : rows_lost_at_singular_start(model, start.state, start.partition, ws)) {
     start.lost_at_singular_start.push_back(model.equations[row].name);
   }

@@ -10,6 +10,7 @@
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
 #include "multibody/state.h"
+#include "run/deformation_redundancy.h"
 
 namespace limber::run {
 
@@ -27,13 +28,17 @@ struct PreparedStart {
   bool velocity_modes_released = false;   // the projection changed modal rates (assembly.h)
   multibody::ConstraintPartition partition;  // independent rows (all rows after a failure)
   std::vector<RedundantEquationReport> redundant;
+  // Redundant rows that a flexible body's deformation makes independent (deformation_redundancy.h):
+  // the run watches them (redundant_row_watch.h).
+  std::vector<DeformationRedundancy> deformation_redundant;
   // Equations the start's singular configuration made dependent (singular_start.h), by name;
   // empty at a regular start. A run cannot hold them: it refuses to start.
   std::vector<std::string> lost_at_singular_start;
 };
 
-// Assembles positions (options.held kept), projects velocities, analyses redundancy and checks
-// that the start is not a singular configuration.
+// Assembles positions (options.held kept), projects velocities, analyses redundancy (with the
+// rows that hold only while flexible bodies are undeformed) and checks that the start is not a
+// singular configuration.
 // A failing assembly is returned in `assembly` (its message names the equation, its joint and
 // the residual); bad held coordinates throw InputError.
 PreparedStart prepare_start(const multibody::Model& model,

@@ -11,6 +11,7 @@
 #include "multibody/clearance.h"
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
+#include "run/redundant_row_watch.h"
 #include "run/sample_record.h"
 #include "run/singular_passage.h"
 
@@ -168,9 +169,14 @@ RunSummary run_mechanism(const multibody::Model& model,
     }
     if (hooks.on_sample) hooks.on_sample(sample, record);
   };
+  // A redundant row that comes loose ends the run there (redundant_row_watch.h).
+  RedundantRowWatch redundant_rows(model, system.partition(), start.deformation_redundant);
+  const auto check = [&](const integrate::Sample& sample) {
+    return redundant_rows.check({sample.t, sample.q, sample.v}, accuracy.size());
+  };
   const integrate::SimulationResult result = integrate::simulate(
       system, options, {0.0, start.state.q, start.state.v},
-      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample);
+      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample, check);
 
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();

@@ -13,9 +13,9 @@ namespace {
 constexpr double kRowTolerance = multibody::kRedundancyThreshold;
 
 // The frame columns of G (the rigid skeleton), rows scaled to unit norm. Modal columns are
-// left out: a flexible body's modes give a genuinely redundant equation (rotation about a
-// beam's axis) a pivot that grows at first order with the deformation of a probe, which is no
-// singularity of the mechanism (measured: the 9-mode slider-crank rod's R3.rot_x).
+// left out: a flexible body's deformation can make a redundant equation independent at first
+// order (the slider-crank rod's R3.rot_x, deformation_redundancy.h), which is no singularity of
+// the mechanism.
 Eigen::MatrixXd skeleton_rows(const multibody::Model& model, const multibody::State& state,
                               multibody::Workspace& ws) {
   multibody::evaluate_constraints(model, state, multibody::Stage::kPosition, ws);
@@ -26,23 +26,6 @@ Eigen::MatrixXd skeleton_rows(const multibody::Model& model, const multibody::St
     S.rightCols<6>() = ws.G.middleCols<6>(b.v_offset);
   }
   return multibody::unit_rows(S);
-}
-
-// Rows of S, taken in `order`, that add a direction to the rows accepted before them.
-std::vector<bool> accepted_rows(const Eigen::MatrixXd& S, const std::vector<int>& order) {
-  std::vector<bool> accepted(static_cast<std::size_t>(S.rows()), false);
-  Eigen::MatrixXd basis(S.cols(), 0);  // orthonormal columns
-  for (int row : order) {
-    Eigen::VectorXd r = S.row(row).transpose();
-    if (r.norm() == 0.0) continue;
-    r -= basis * (basis.transpose() * r);
-    r -= basis * (basis.transpose() * r);  // twice: orthogonal to rounding
-    if (r.norm() <= kRowTolerance) continue;
-    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
-    basis.col(basis.cols() - 1) = r.normalized();
-    accepted[static_cast<std::size_t>(row)] = true;
-  }
-  return accepted;
 }
 
 }  // namespace
@@ -57,7 +40,7 @@ std::vector<int> rows_lost_at_singular_start(const multibody::Model& model,
   // The start's independent rows first, then the rest: the order the analysis chose.
   std::vector<int> order = partition.independent;
   for (const multibody::RedundantEquation& r : partition.redundant) order.push_back(r.row);
-  const std::vector<bool> at_start = accepted_rows(S, order);
+  const std::vector<bool> at_start = multibody::rows_adding_directions(S, order, kRowTolerance);
 
   // Directions the constraints allow to first order: the null space of the skeleton's rows.
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeFullV);
@@ -85,7 +68,7 @@ std::vector<int> rows_lost_at_singular_start(const multibody::Model& model,
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
       multibody::integrate_body_coordinates(model, static_cast<int>(b), state.q, dv, probe.q);
     }
-    const std::vector<bool> near = accepted_rows(skeleton_rows(model, probe, ws), order);
+    const std::vector<bool> near = multibody::rows_adding_directions(skeleton_rows(model, probe, ws), order, kRowTolerance);
     for (std::size_t row = 0; row < near.size(); ++row) {
       if (near[row] && !at_start[row]) lost[row] = true;
     }
