@@ -1,6 +1,7 @@
 #include "scene.h"
 
 #include "body_pose.h"
+#include "flat_shading.h"
 #include "stress_reader.h"
 #include "core/error.h"
 #include "relative_deflection.h"
@@ -161,6 +162,8 @@ struct Scene::Impl {
   std::vector<std::optional<StressTrack>> stresses;  // per body, with --color von_mises
   double follow_distance = 1.0;
   Eigen::Vector3d direction;
+  vtkSmartPointer<vtkActor> ground;  // null with --no-ground
+  Eigen::Vector3d ground_point = Eigen::Vector3d::Zero();
 
   // Per body (results.bodies order): the rigid fit through its joint nodes (relative_deflection.h;
   // empty for rigid bodies and flexible ones without joints) and those joints' names.
@@ -444,6 +447,8 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     actor->GetProperty()->SetColor(kGroundColor[0], kGroundColor[1], kGroundColor[2]);
     actor->GetProperty()->SetAmbient(0.3);
     s.renderer->AddActor(actor);
+    s.ground = actor;
+    s.ground_point = Eigen::Vector3d(c.x(), c.y(), z);
   }
 
   if (options.world_triad) {
@@ -526,6 +531,13 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   const double fit = 1.0 / std::sin(0.5 * kViewAngleDeg * M_PI / 180.0);
   s.follow_distance = 1.05 * fit * frame_radius;
   s.place_camera(all.center(), 1.05 * fit * radius);
+  // The ground is flat and matte under the light kit's directional lights, and the camera's
+  // direction is fixed: one colour, drawn unlit (flat_shading.h; the same pixels, cheaper).
+  if (s.ground) {
+    const std::optional<Eigen::Vector3d> color = flat_surface_color(
+        s.renderer, s.ground->GetProperty(), s.ground_point, Eigen::Vector3d::UnitZ());
+    if (color) set_unlit_color(s.ground->GetProperty(), *color);
+  }
   update(t0);
 }
 
