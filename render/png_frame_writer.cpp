@@ -59,11 +59,12 @@ PngFrameWriter::~PngFrameWriter() {
   for (std::thread& worker : workers_) worker.join();
 }
 
-void PngFrameWriter::push(Image image, std::filesystem::path path) {
+void PngFrameWriter::push(Image image, std::filesystem::path path,
+                          std::function<void(Image&)> prepare) {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [this] { return queue_.size() < max_queued_ || failure_; });
   if (failure_) std::rethrow_exception(failure_);
-  queue_.push_back({std::move(image), std::move(path), pushed_++});
+  queue_.push_back({std::move(image), std::move(path), std::move(prepare), pushed_++});
   changed_.notify_all();
 }
 
@@ -76,6 +77,11 @@ void PngFrameWriter::finish() {
 double PngFrameWriter::encode_seconds() const {
   std::lock_guard lock(mutex_);
   return encode_seconds_;
+}
+
+double PngFrameWriter::prepare_seconds() const {
+  std::lock_guard lock(mutex_);
+  return prepare_seconds_;
 }
 
 void PngFrameWriter::run(const PngSettings& settings) {
@@ -92,21 +98,25 @@ void PngFrameWriter::run(const PngSettings& settings) {
     }
     changed_.notify_all();
 
-    // Encode and write the temporary file outside the lock, beside the other workers.
+    // Prepare, encode and write the temporary file outside the lock, beside the other workers.
     const auto start = std::chrono::steady_clock::now();
+    double prepared = 0.0;
     std::exception_ptr failure;
     try {
+      if (job.prepare) job.prepare(job.image);
+      prepared = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       write_file(encoder.encode(job.image), job.path);
     } catch (...) {
       failure = std::current_exception();
     }
     const double spent =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - prepared;
 
     // Rename in push order: wait for the frames before this one; after an earlier frame
     // failed, drop this one.
     std::unique_lock lock(mutex_);
     encode_seconds_ += spent;
+    prepare_seconds_ += prepared;
     changed_.wait(lock, [&] { return written_ == job.sequence || failure_; });
     if (!failure && !failure_) {
       try {

@@ -16,6 +16,7 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -32,13 +33,16 @@ class PngFrameWriter {
   PngFrameWriter(const PngFrameWriter&) = delete;
   PngFrameWriter& operator=(const PngFrameWriter&) = delete;
 
-  // Queues `image` to be written to `path`, after every frame pushed before it. Rethrows a
-  // worker's failure (std::runtime_error naming the file) once one has happened.
-  void push(Image image, std::filesystem::path path);
+  // Queues `image` to be written to `path`, after every frame pushed before it; `prepare`, when
+  // given, runs on the image first, on the worker (the deferred CPU FXAA,
+  // FrameRenderer::render_deferred). Rethrows a worker's failure (std::runtime_error naming the
+  // file) once one has happened.
+  void push(Image image, std::filesystem::path path, std::function<void(Image&)> prepare = {});
   // Waits until every queued frame is written; rethrows the first failure.
   void finish();
-  // Seconds the workers spent encoding and writing, summed over workers.
+  // Seconds the workers spent encoding and writing, and in `prepare` steps, summed over workers.
   double encode_seconds() const;
+  double prepare_seconds() const;
 
  private:
   void run(const PngSettings& settings);
@@ -46,6 +50,7 @@ class PngFrameWriter {
   struct Job {
     Image image;
     std::filesystem::path path;
+    std::function<void(Image&)> prepare;
     long sequence = 0;  // push order
   };
   std::size_t max_queued_;
@@ -56,6 +61,7 @@ class PngFrameWriter {
   long written_ = 0;  // frames renamed into place: the next one to rename has this sequence
   bool closing_ = false;
   double encode_seconds_ = 0.0;
+  double prepare_seconds_ = 0.0;
   std::exception_ptr failure_;
   std::vector<std::thread> workers_;
 };

@@ -5,7 +5,10 @@
 // per pass the rate, the per-frame split, the CPU of this process and of the rest of the
 // machine (from /proc/stat, so a pass disturbed by other work shows as such); then the best
 // and the median pass. `--keep DIR` leaves the frames of the last pass in DIR.
-//   limber_bench_render [--frames 90] [--runs 3] [--keep DIR] [fxaa|gl-fxaa|none ...]
+// `--wait-idle S` waits up to S seconds before each pass for a second in which the machine was
+// at least 90 % idle.
+//   limber_bench_render [--frames 90] [--runs 3] [--keep DIR] [--wait-idle S]
+//                       [fxaa|gl-fxaa|none ...]
 #include "frame_renderer.h"
 #include "png_frame_writer.h"
 #include "render_job.h"
@@ -49,6 +52,20 @@ MachineTime machine_time() {
   return {busy / tick, (busy + idle + iowait) / tick};
 }
 
+// Waits until the machine has been at least `idle` (fraction) idle over one second, checking
+// for at most `patience` seconds; returns whether it was.
+bool wait_for_idle(double idle, double patience) {
+  const auto start = std::chrono::steady_clock::now();
+  while (seconds_since(start) < patience) {
+    const MachineTime a = machine_time();
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    const MachineTime b = machine_time();
+    if (b.total - a.total <= 0.0) return false;
+    if (1.0 - (b.busy - a.busy) / (b.total - a.total) >= idle) return true;
+  }
+  return false;
+}
+
 struct Pass {
   double fps = 0.0;
   double update_ms = 0.0, draw_ms = 0.0, readback_ms = 0.0, smoothing_ms = 0.0, png_ms = 0.0;
@@ -66,15 +83,19 @@ Pass measure(const Results& results, const RenderOptions& options, int frames, d
   const std::clock_t cpu_start = std::clock();
   const auto loop = std::chrono::steady_clock::now();
   double png = 0.0;
+  double smoothing = 0.0;
   {
     PngFrameWriter writer;
     for (int k = 0; k < frames; ++k) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%05d.png", k);
-      writer.push(renderer.render(k / 30.0), options.directory / "frames" / name);
+      // As render_results() does: the CPU FXAA on the writers.
+      auto [image, smooth] = renderer.render_deferred(k / 30.0);
+      writer.push(std::move(image), options.directory / "frames" / name, std::move(smooth));
     }
     writer.finish();
     png = writer.encode_seconds();
+    smoothing = writer.prepare_seconds();
   }
   const double wall = seconds_since(loop);
   // Process CPU time: the render thread, llvmpipe's threads and the PNG writers.
@@ -92,7 +113,7 @@ Pass measure(const Results& results, const RenderOptions& options, int frames, d
   pass.update_ms = t.scene_update * ms;
   pass.draw_ms = t.draw * ms;
   pass.readback_ms = t.readback * ms;
-  pass.smoothing_ms = t.smoothing * ms;
+  pass.smoothing_ms = smoothing * ms;
   pass.png_ms = png * ms;
   pass.cpu_ms = cpu * ms;
   pass.other_ms = std::max(0.0, (machine_end.busy - machine_start.busy) - cpu) * ms;
@@ -101,8 +122,8 @@ Pass measure(const Results& results, const RenderOptions& options, int frames, d
 }
 
 void print(const char* what, const Pass& p) {
-  std::printf("  %-7s %5.1f frames/s | update %.2f, draw %.2f, readback %.2f, FXAA %.2f, "
-              "PNG %.2f (writers) ms | CPU %.1f ms, other processes %.1f ms | PNG %.0f KiB\n",
+  std::printf("  %-7s %5.1f frames/s | update %.2f, draw %.2f, readback %.2f ms; on the writers: "
+              "FXAA %.2f, PNG %.2f ms | CPU %.1f ms, other processes %.1f ms | PNG %.0f KiB\n",
               what, p.fps, p.update_ms, p.draw_ms, p.readback_ms, p.smoothing_ms, p.png_ms,
               p.cpu_ms, p.other_ms, p.bytes / 1024.0);
 }
@@ -113,17 +134,19 @@ int main(int argc, char** argv) {
   int frames = 90;
   int runs = 3;
   std::filesystem::path keep;
+  double patience = 0.0;
   std::vector<std::string> modes;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--keep" && i + 1 < argc) keep = argv[++i];
+    else if (arg == "--wait-idle" && i + 1 < argc) patience = std::atof(argv[++i]);
     else if (arg == "fxaa" || arg == "gl-fxaa" || arg == "none") modes.push_back(arg);
     else {
       std::fprintf(stderr,
                    "usage: limber_bench_render [--frames 90] [--runs 3] [--keep DIR] "
-                   "[fxaa|gl-fxaa|none ...]\n");
+                   "[--wait-idle S] [fxaa|gl-fxaa|none ...]\n");
       return 2;
     }
   }
@@ -162,6 +185,9 @@ int main(int argc, char** argv) {
                 mode == "fxaa" ? " (default; light kit, colour bar, text)" : "");
     std::vector<Pass> passes;
     for (int r = 0; r < runs; ++r) {
+      if (patience > 0.0 && !wait_for_idle(0.9, patience)) {
+        std::printf("  (the machine was not 90 %% idle within %g s: measuring anyway)\n", patience);
+      }
       passes.push_back(measure(results, options, frames, scene.duration));
       print(("run " + std::to_string(r + 1)).c_str(), passes.back());
     }
