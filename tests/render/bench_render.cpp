@@ -6,10 +6,11 @@
 // machine (from /proc/stat, so a pass disturbed by other work shows as such); then the best
 // and the median pass. `--keep DIR` leaves the frames of the last pass in DIR.
 // `--wait-idle S` waits up to S seconds before each pass for a second in which the machine was
-// at least 90 % idle.
-//   limber_bench_render [--frames 90] [--runs 3] [--keep DIR] [--wait-idle S]
+// at least 90 % idle. `--png-table N` times the PNG encoder's settings on N frames.
+//   limber_bench_render [--frames 90] [--runs 3] [--keep DIR] [--wait-idle S] [--png-table N]
 //                       [fxaa|gl-fxaa|none ...]
 #include "frame_renderer.h"
+#include "png_encoding.h"
 #include "png_frame_writer.h"
 #include "render_job.h"
 #include "test_results.h"
@@ -121,6 +122,37 @@ Pass measure(const Results& results, const RenderOptions& options, int frames, d
   return pass;
 }
 
+// The PNG encoder's time and size per setting, on `frames` frames of the default rendering
+// (best of 3 encodings per frame, encoding only: no file written).
+void png_table(const Results& results, RenderOptions options, int frames, double duration) {
+  options.anti_aliasing = AntiAliasing::kFxaa;
+  std::vector<Image> images;
+  {
+    FrameRenderer renderer(results, options, 0.0, duration);
+    for (int k = 0; k < frames; ++k) images.push_back(renderer.render(duration * k / frames));
+  }
+  std::printf("PNG encoding on one thread, %d frames of the default rendering:\n", frames);
+  for (const PngFilter filter : {PngFilter::kNone, PngFilter::kSub}) {
+    for (const int level : {1, 2, 4, 6, 9}) {
+      PngEncoder encoder({filter, level});
+      double seconds = 0.0, bytes = 0.0;
+      for (const Image& image : images) {
+        double best = 1e300;
+        for (int r = 0; r < 3; ++r) {
+          const auto start = std::chrono::steady_clock::now();
+          bytes += r == 0 ? static_cast<double>(encoder.encode(image).size()) : 0.0;
+          if (r > 0) encoder.encode(image);
+          best = std::min(best, seconds_since(start));
+        }
+        seconds += best;
+      }
+      std::printf("  filter %-4s level %d: %5.2f ms, %6.1f KiB per frame\n",
+                  filter == PngFilter::kSub ? "Sub" : "None", level, 1e3 * seconds / frames,
+                  bytes / frames / 1024.0);
+    }
+  }
+}
+
 void print(const char* what, const Pass& p) {
   std::printf("  %-7s %5.1f frames/s | update %.2f, draw %.2f, readback %.2f ms; on the writers: "
               "FXAA %.2f, PNG %.2f ms | CPU %.1f ms, other processes %.1f ms | PNG %.0f KiB\n",
@@ -135,6 +167,7 @@ int main(int argc, char** argv) {
   int runs = 3;
   std::filesystem::path keep;
   double patience = 0.0;
+  int table_frames = 0;
   std::vector<std::string> modes;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -142,15 +175,16 @@ int main(int argc, char** argv) {
     else if (arg == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--keep" && i + 1 < argc) keep = argv[++i];
     else if (arg == "--wait-idle" && i + 1 < argc) patience = std::atof(argv[++i]);
+    else if (arg == "--png-table" && i + 1 < argc) table_frames = std::max(1, std::atoi(argv[++i]));
     else if (arg == "fxaa" || arg == "gl-fxaa" || arg == "none") modes.push_back(arg);
     else {
       std::fprintf(stderr,
                    "usage: limber_bench_render [--frames 90] [--runs 3] [--keep DIR] "
-                   "[--wait-idle S] [fxaa|gl-fxaa|none ...]\n");
+                   "[--wait-idle S] [--png-table N] [fxaa|gl-fxaa|none ...]\n");
       return 2;
     }
   }
-  if (modes.empty()) modes = {"fxaa", "gl-fxaa", "none"};
+  if (modes.empty() && table_frames == 0) modes = {"fxaa", "gl-fxaa", "none"};
 
   // The scene: four stacked 35 x 35 plates, 3 s of motion sampled at 100 Hz.
   const auto dir = std::filesystem::temp_directory_path() / "limber_bench_render";
@@ -196,7 +230,8 @@ int main(int argc, char** argv) {
     print("best", passes.front());
     print("median", passes[passes.size() / 2]);
   }
-  if (!keep.empty()) {
+  if (table_frames > 0) png_table(results, options, table_frames, scene.duration);
+  if (!keep.empty() && !modes.empty()) {
     std::filesystem::remove_all(keep);
     std::filesystem::create_directories(keep.parent_path().empty() ? "." : keep.parent_path());
     std::filesystem::copy(dir / "frames", keep, std::filesystem::copy_options::recursive);
