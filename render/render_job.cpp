@@ -70,11 +70,12 @@ RenderSummary render_results(const RenderOptions& options) {
   std::tie(summary.t0, summary.t1) = resolve_time_range(results, options);
   const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
 
-  // Frames: render on this thread, encode PNG on the writer thread.
+  // Frames: render on this thread; FXAA and PNG encoding on the writer threads.
   const std::filesystem::path frames = options.directory / "frames";
   if (options.write_png) {
     std::filesystem::create_directories(frames);
     remove_stale(frames, "frame_", ".png");
+    remove_stale(frames, "frame_", ".png.part");  // left by an interrupted render
     const auto start = std::chrono::steady_clock::now();
     FrameRenderer renderer(results, options, summary.t0, summary.t1);
     summary.backend = renderer.backend();
