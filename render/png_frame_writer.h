@@ -1,6 +1,6 @@
 // Encodes and writes PNG frames on worker threads, beside rendering: the renderer hands over
-// an image and goes on drawing the next frame (png_encoding.h: about 3 ms for 1280 x 720, a
-// fraction of a software-drawn frame; docs/benchmarks.md).
+// an image and goes on drawing the next frame (png_encoding.h: about 4 ms of CPU for 1280 x 720,
+// a fraction of a software-drawn frame; docs/benchmarks.md).
 //
 // Memory is bounded: at most `max_queued` images wait, plus one per worker being encoded.
 // Files appear in frame order and complete: each is written to "NAME.part" and renamed, and
