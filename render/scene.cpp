@@ -127,7 +127,7 @@ void draw_labels_last_and_opaque(vtkRenderer* renderer) {
   }
   for (vtkBillboardTextActor3D* label : labels) {
     label->ForceOpaqueOn();
-    vtkSmartPointer<vtkBillboardTextActor3D> keep = label;
+    vtkSmartPointer<vtkBillboardTextActor3D> keep = label;  // alive while out of the renderer
     renderer->RemoveViewProp(label);
     renderer->AddViewProp(label);
   }
