@@ -26,7 +26,8 @@ target_link_libraries(limber_cholmod INTERFACE
 
 # Rendering (render/ only; the solver links nothing graphical). VTK 9.1's named modules, each
 # linked by name where it is used, never ${VTK_LIBRARIES}. OpenGL::EGL: the headless context
-# (docs/rendering.md). PNG (libpng) and Threads: the PNG writer thread.
+# (docs/rendering.md). libdeflate and Threads: the PNG writer threads (render/png_encoding.h);
+# libdeflate ships no CMake package on Debian 12 (only a pkg-config file): located directly.
 # render/ and its tests, then report/'s charts. Debian's ChartsCore pulls VTK::mpi, whose link
 # interface names MPI::MPI_C, so MPI must be found first.
 find_package(MPI REQUIRED COMPONENTS C)
@@ -43,7 +44,11 @@ find_package(VTK REQUIRED COMPONENTS
   RenderingFreeType InteractionStyle glew
   ChartsCore ViewsContext2D RenderingContext2D RenderingContextOpenGL2)
 find_package(OpenGL REQUIRED COMPONENTS EGL)
-find_package(PNG REQUIRED)
+find_path(LIBDEFLATE_INCLUDE_DIR libdeflate.h REQUIRED)
+find_library(LIBDEFLATE_LIBRARY NAMES deflate REQUIRED)
+add_library(limber_libdeflate INTERFACE)
+target_include_directories(limber_libdeflate SYSTEM INTERFACE ${LIBDEFLATE_INCLUDE_DIR})
+target_link_libraries(limber_libdeflate INTERFACE ${LIBDEFLATE_LIBRARY})
 find_package(Threads REQUIRED)
 
 add_library(limber_hdf5 INTERFACE)

@@ -49,6 +49,16 @@ FrameRenderer::~FrameRenderer() {
 }
 
 Image FrameRenderer::render(double t) {
+  auto [image, smooth] = render_deferred(t);
+  if (smooth) {
+    const auto start = std::chrono::steady_clock::now();
+    smooth(image);
+    impl_->timing.smoothing += seconds_since(start);
+  }
+  return std::move(image);
+}
+
+std::pair<Image, std::function<void(Image&)>> FrameRenderer::render_deferred(double t) {
   Impl& m = *impl_;
   // Scene state at t.
   auto start = std::chrono::steady_clock::now();
@@ -77,14 +87,11 @@ Image FrameRenderer::render(double t) {
   }
   m.timing.readback += seconds_since(start);
 
-  // Anti-aliasing on the CPU (the default), sparing the texts and the colour bar.
-  if (m.options.anti_aliasing == AntiAliasing::kFxaa) {
-    start = std::chrono::steady_clock::now();
-    smooth_edges(image, m.scene.overlay_boxes());
-    m.timing.smoothing += seconds_since(start);
-  }
   ++m.timing.frames;
-  return image;
+  // Anti-aliasing on the CPU (the default), sparing the texts and the colour bar as drawn now.
+  if (m.options.anti_aliasing != AntiAliasing::kFxaa) return {std::move(image), {}};
+  return {std::move(image),
+          [keep = m.scene.overlay_boxes()](Image& frame) { smooth_edges(frame, keep); }};
 }
 
 Eigen::Vector2d FrameRenderer::project(const Eigen::Vector3d& p_W) const {

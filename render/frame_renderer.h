@@ -8,7 +8,9 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace limber::render {
@@ -18,7 +20,7 @@ struct RenderTiming {
   double scene_update = 0.0;  // poses, deformed meshes, text
   double draw = 0.0;          // VTK render (llvmpipe rasterisation; VTK's FXAA pass if asked)
   double readback = 0.0;      // glReadPixels and row flip
-  double smoothing = 0.0;     // FXAA on the CPU (the default anti-aliasing)
+  double smoothing = 0.0;     // FXAA on the CPU (the default anti-aliasing), when not deferred
   int frames = 0;
 };
 
@@ -34,6 +36,10 @@ class FrameRenderer {
   // Renders the scene at time t [s] (interpolated between samples), anti-aliased as the
   // options say.
   Image render(double t);
+  // As render(), but the CPU FXAA (when the options ask for it) is returned as a step still to
+  // run on the image, on any thread (the PNG writers: it then overlaps the next frame's draw);
+  // an empty function when there is nothing left to do.
+  std::pair<Image, std::function<void(Image&)>> render_deferred(double t);
   // Pixel (x from the left, y from the top) where ground point p_W projects with the camera of
   // the last render.
   Eigen::Vector2d project(const Eigen::Vector3d& p_W) const;

@@ -70,11 +70,12 @@ RenderSummary render_results(const RenderOptions& options) {
   std::tie(summary.t0, summary.t1) = resolve_time_range(results, options);
   const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
 
-  // Frames: render on this thread, encode PNG on the writer thread.
+  // Frames: render on this thread; FXAA and PNG encoding on the writer threads.
   const std::filesystem::path frames = options.directory / "frames";
   if (options.write_png) {
     std::filesystem::create_directories(frames);
     remove_stale(frames, "frame_", ".png");
+    remove_stale(frames, "frame_", ".png.part");  // left by an interrupted render
     const auto start = std::chrono::steady_clock::now();
     FrameRenderer renderer(results, options, summary.t0, summary.t1);
     summary.backend = renderer.backend();
@@ -84,11 +85,14 @@ RenderSummary render_results(const RenderOptions& options) {
       for (std::size_t k = 0; k < times.size(); ++k) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%05zu.png", k);
-        writer.push(renderer.render(times[k]), frames / name);
+        // The CPU FXAA runs on the writers, beside the next frame's draw.
+        auto [image, smooth] = renderer.render_deferred(times[k]);
+        writer.push(std::move(image), frames / name, std::move(smooth));
         progress.update(static_cast<int>(k) + 1);
       }
       writer.finish();
       summary.png_seconds = writer.encode_seconds();
+      summary.smoothing_seconds = writer.prepare_seconds();
     }
     summary.frames = static_cast<int>(times.size());
     summary.timing = renderer.timing();

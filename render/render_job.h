@@ -20,7 +20,8 @@ struct RenderSummary {
   std::vector<std::string> warnings;  // e.g. ffmpeg missing: the frames are still there
   std::string backend;        // EGL route and OpenGL renderer
   RenderTiming timing;        // render-thread split
-  double png_seconds = 0.0;   // PNG encoding on the writer thread
+  double png_seconds = 0.0;   // PNG encoding on the writer threads
+  double smoothing_seconds = 0.0;  // CPU FXAA, deferred to the writer threads
   double wall_seconds = 0.0;  // whole frame loop, including waiting for the last PNG
 };
 

@@ -9,7 +9,7 @@ packages=(
   libhdf5-dev hdf5-tools
   libyaml-cpp-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libvtk9-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
+  libvtk9-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libdeflate-dev
   openmpi-bin libopenmpi-dev
   libjs-dygraphs
   ffmpeg

@@ -216,6 +216,27 @@ TEST_F(FrameRendererTest, CpuFxaaSmoothsEdgesOnlyAndSparesTextAndColorBar) {
   EXPECT_EQ(std::string(messages_->GetOutput()), "");
 }
 
+TEST_F(FrameRendererTest, DeferredFxaaGivesTheFrameOfRender) {
+  // render_deferred's step, run later (as the PNG writers do), must give render()'s frame
+  // exactly: the same drawing and the overlay boxes of that frame. Without CPU FXAA there is
+  // no step at all.
+  const Results results = scene_results(TestScene{}, "deferred_fxaa");
+  {
+    FrameRenderer renderer(results, options(CameraPreset::kIso), 0.0, 1.0);
+    const Image direct = renderer.render(0.5);
+    auto [deferred, smooth] = renderer.render_deferred(0.5);
+    ASSERT_TRUE(smooth);
+    EXPECT_NE(deferred.rgb, direct.rgb);  // not smoothed yet
+    renderer.render(0.9);                 // another frame drawn in between
+    smooth(deferred);
+    EXPECT_EQ(deferred.rgb, direct.rgb);
+  }
+  RenderOptions jagged = options(CameraPreset::kIso);
+  jagged.anti_aliasing = AntiAliasing::kNone;
+  FrameRenderer renderer(results, jagged, 0.0, 1.0);
+  EXPECT_FALSE(renderer.render_deferred(0.5).second);
+}
+
 TEST_F(FrameRendererTest, DeformedPlateMovesBetweenFrames) {
   // Front view (looking along +y): the plate is seen edge-on; its centre line rises to
   // z = 0.3 + A at t = 0.25 s and sinks to z = 0.3 - A at t = 0.75 s (A = 0.1 m).
