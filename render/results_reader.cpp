@@ -113,6 +113,7 @@ Results read_results(const std::filesystem::path& directory) {
     const std::string g = "/joints/" + joint;
     ns = std::min(ns, r.rows(g + "/position", 3));
     // Marker poses (files since issue 15): both markers, or none.
+    if (r.exists(g + "/force_ground")) ns = std::min(ns, r.rows(g + "/force_ground", 3));
     for (int side = 0; side < 2; ++side) {
       if (!r.exists(marker_path(g, side, results::layout::kMarkerOrientation))) continue;
       ns = std::min({ns, r.rows(marker_path(g, side, results::layout::kMarkerPosition), 3),
@@ -170,6 +171,10 @@ Results read_results(const std::filesystem::path& directory) {
     track.body_j = r.string_attribute(g, "body_j", false);
     const std::vector<double> p = r.read<double>(g + "/position", H5T_NATIVE_DOUBLE, ns);
     track.position = Eigen::Map<const RowMatrix3d>(p.data(), n, 3);
+    if (r.exists(g + "/force_ground")) {
+      const std::vector<double> f = r.read<double>(g + "/force_ground", H5T_NATIVE_DOUBLE, ns);
+      track.force_ground = Eigen::Map<const RowMatrix3d>(f.data(), n, 3);
+    }
     for (int side = 0; side < 2; ++side) {
       if (!r.exists(marker_path(g, side, results::layout::kMarkerOrientation))) continue;
       MarkerTrack& marker = side == 0 ? track.marker_i : track.marker_j;

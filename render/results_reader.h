@@ -68,6 +68,7 @@ struct JointTrack {
   RowMatrix3d position;  // ns x 3, joint point in ground [m]
   // Markers i and j; both empty (0 rows) in files written before marker poses were stored.
   MarkerTrack marker_i, marker_j;
+  RowMatrix3d force_ground;  // ns x 3, reaction on body_j in ground axes [N] (0 rows: none)
 
   bool has_markers() const { return marker_i.orientation.rows() == position.rows(); }
 };

@@ -193,6 +193,7 @@ void truncate(RunData& run, Eigen::Index n) {
   }
   for (render::JointTrack& joint : r.joints) {
     joint.position.conservativeResize(n, 3);
+    if (joint.force_ground.rows() > n) joint.force_ground.conservativeResize(n, 3);
     for (render::MarkerTrack* marker : {&joint.marker_i, &joint.marker_j}) {
       if (marker->position.rows() == 0) continue;
       marker->position.conservativeResize(n, 3);
