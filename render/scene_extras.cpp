@@ -108,6 +108,11 @@ void marker_pose(const MarkerTrack& marker, const SampleBracket& at, Eigen::Vect
   R_WM = quaternion_row(marker.orientation, at.i).slerp(at.w, quaternion_row(marker.orientation, j)).toRotationMatrix();
 }
 
+ForceScale force_scale(double peak_force, double scene_radius) {
+  // A round arrow length stands for a round force: L_ref m = F_ref N, F_ref = round(peak / 2).
+  return {round_length(0.5 * peak_force), round_length(0.5 * kForcePeakLength * scene_radius)};
+}
+
 std::array<double, 2> slide_travel(const JointTrack& joint) {
   std::array<double, 2> travel{0.0, 0.0};
   for (Eigen::Index k = 0; k < joint.marker_i.position.rows(); ++k) {
@@ -232,10 +237,9 @@ struct SceneExtras::Impl {
       arrows.push_back(arrow);
     }
     if (peak <= 0.0) return;
-    // A round arrow length stands for a round force: L_ref m = F_ref N, F_ref = round(peak / 2).
-    const double reference_force = round_length(0.5 * peak);
-    const double reference_length = round_length(0.5 * kForcePeakLength * radius);
-    newtons_per_metre = reference_force / reference_length;
+    const ForceScale scale = force_scale(peak, radius);
+    const double reference_force = scale.force, reference_length = scale.length;
+    newtons_per_metre = scale.newtons_per_metre();
     auto legend = vtkSmartPointer<vtkTextActor>::New();
     legend->SetInput(fmt::format("force arrows: {:g} m = {:g} N (reaction on body j; peak {:.3g} N)",
                                  reference_length, reference_force, peak)

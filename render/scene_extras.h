@@ -68,6 +68,16 @@ class SceneExtras {
 void marker_pose(const MarkerTrack& marker, const SampleBracket& at, Eigen::Vector3d& p_W,
                  Eigen::Matrix3d& R_WM);
 
+// The force arrows' scale for the largest force `peak_force` [N] in a scene of radius
+// `scene_radius` [m]: a round force (1, 2 or 5 × 10^k N near peak / 2) drawn as a round length
+// (near 1/8 of the scene radius), so the peak's arrow is about a quarter of the radius.
+struct ForceScale {
+  double force = 0.0;   // [N]
+  double length = 0.0;  // [m]
+  double newtons_per_metre() const { return force / length; }
+};
+ForceScale force_scale(double peak_force, double scene_radius);
+
 // Travel of a translational joint along marker i's z over the whole run: min and max of
 // (p_j − p_i)·z_i [m].
 std::array<double, 2> slide_travel(const JointTrack& joint);
