@@ -629,26 +629,40 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
   for (const std::string& name : order) {
     const auto& held = holders[name];
     if (held.size() < 2) continue;
-    // Ground axes when asked first and every run has them, else the joint frame.
-    bool ground = options.frames.front().kind == ReactionFrame::kGround;
+    // The first frame asked for when every run has it (a marker or body frame needs its
+    // orientations), else the joint frame.
+    const FrameRequest& asked = options.frames.front();
+    bool use_asked = asked.kind != ReactionFrame::kJoint;
+    std::vector<RowMatrix3d> forces;
     for (const auto& [r, joint] : held) {
-      ground = ground && joint->force_ground.rows() == runs[r].sample_count();
+      const std::optional<FrameView> view = use_asked ? frame_view(runs[r], *joint, asked) : std::nullopt;
+      use_asked = use_asked && view.has_value();
+      if (view) forces.push_back(view->force);
     }
+    if (!use_asked) {
+      forces.clear();
+      for (const auto& [r, joint] : held) forces.push_back(joint->force_joint);
+    }
+    const bool ground = use_asked && asked.kind == ReactionFrame::kGround;
+    const bool named = use_asked && asked.kind == ReactionFrame::kNamed;
     const RunData& first = runs[held.front().first];
     for (int c = 0; c < 3; ++c) {
       std::vector<Curve> curves;
-      for (const auto& [r, joint] : held) {
-        const RowMatrix3d& force = ground ? joint->force_ground : joint->force_joint;
-        curves.push_back({labels[r], runs[r].results.time, force.col(c)});
+      for (std::size_t k = 0; k < held.size(); ++k) {
+        const std::size_t r = held[k].first;
+        curves.push_back({labels[r], runs[r].results.time, forces[k].col(c)});
       }
       const std::string component =
           ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
-      const std::string frame = ground ? "ground axes" : "joint frame";
-      plots.push_back({PlotSection::kComparison,
-                       "compare_" + file_stem(name) + "_" +
-                           (ground ? std::string("ground_") + kAxes[c] : component) + ".png",
-                       "Reaction " + component + " at joint " + name + " (" +
-                           (ground ? ground_axes_note(first) : frame) + ") in " +
+      const std::string frame = ground ? "ground axes" : named ? "frame " + asked.name : "joint frame";
+      const std::string note = ground  ? ground_axes_note(first)
+                               : named ? find_named_frame(first, asked.name)->description
+                                       : frame;
+      const std::string tag = ground  ? std::string("ground_") + kAxes[c]
+                              : named ? "in_" + file_stem(asked.name) + "_" + component
+                                      : component;
+      plots.push_back({PlotSection::kComparison, "compare_" + file_stem(name) + "_" + tag + ".png",
+                       "Reaction " + component + " at joint " + name + " (" + note + ") in " +
                            std::to_string(held.size()) + " runs.",
                        {"Joint " + name + ": " + component + " (" + frame + ")", kTimeLabel,
                         "force [N]", curves, false}});

@@ -87,7 +87,8 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
 std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& prefix);
 
 // One plot per joint name present in two or more runs and per force component (in the first
-// of `options.frames`: ground axes when every run has them, else the joint frame), overlaying
+// of `options.frames` when every run holding the joint has that frame — ground axes, or a
+// marker or body frame — else the joint frame), overlaying
 // that component of every run holding the joint; then one per deflection-probe component of a
 // body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
 // `labels`.

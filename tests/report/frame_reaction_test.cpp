@@ -170,6 +170,26 @@ TEST(FrameReactions, FrameOptionDrawsTheNamedFrameAndRefusesAnUnknownName) {
   }
 }
 
+TEST(FrameReactions, ComparisonOverlaysTheNamedFrame) {
+  // The crank twice (IDA at two tolerances): the comparison in the crank's frame holds the
+  // constant -m r w^2 of both runs.
+  const RunData fine = read_run_data(run_case(kCrankCase, "crank_fine"));
+  const RunData coarse = read_run_data(run_case(kCrankCase, "crank_coarse", "--rtol 1e-7"));
+  PlotOptions options;
+  options.frames = {FrameRequest::parse("crank")};
+  const std::vector<NamedPlot> plots = comparison_plots({fine, coarse}, {"fine", "coarse"}, options);
+  const auto fx = std::find_if(plots.begin(), plots.end(),
+                               [](const NamedPlot& plot) { return plot.file == "compare_R1_in_crank_Fx.png"; });
+  ASSERT_NE(fx, plots.end());
+  EXPECT_NE(fx->caption.find("the body frame of crank"), std::string::npos) << fx->caption;
+  ASSERT_EQ(fx->spec.curves.size(), 2u);
+  for (const Curve& curve : fx->spec.curves) {
+    // Fully driven: exact to rounding whatever the tolerance (as the closed-form test).
+    EXPECT_NEAR(curve.y.minCoeff(), -kMass * kRadius * kOmega * kOmega, 1e-9 * 7.4);
+    EXPECT_NEAR(curve.y.maxCoeff(), -kMass * kRadius * kOmega * kOmega, 1e-9 * 7.4);
+  }
+}
+
 std::filesystem::path write_config(const std::string& name, const std::string& text) {
   const std::filesystem::path path = testing::fresh_directory("config_" + name) / "report.yaml";
   std::ofstream(path) << text;
