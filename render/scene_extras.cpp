@@ -70,30 +70,29 @@ vtkSmartPointer<vtkActor> flat_actor(vtkRenderer* renderer, vtkAlgorithmOutput* 
   return actor;
 }
 
-// Radius of a sphere about its centre that holds a shape [m].
-double shape_extent(const Shape& shape) {
-  switch (shape.type) {
-    case Shape::Type::kBox: return 0.5 * shape.size.norm();
-    case Shape::Type::kCylinder: return std::hypot(shape.size.x(), 0.5 * shape.size.z());
-    case Shape::Type::kSphere: return shape.size.x();
-  }
-  return 0.0;
-}
-
-// The largest shape of bodies `body_i` and `body_j` that holds the point p_W at the first
-// sample (0 when none does): a glyph twice as long sticks out of it.
-double enclosing_shape(const Results& results, const JointTrack& joint) {
-  double largest = 0.0;
+// How far the shapes of the joint's bodies that hold the joint point reach from it along the
+// axis (either way), at the first sample [m]; 0 when no shape holds the point. Boxes by their
+// edges, cylinders (local z) by their bounding box, spheres by their radius.
+double reach_along(const Results& results, const JointTrack& joint, const Eigen::Vector3d& axis_W) {
+  double reach = 0.0;
   const Eigen::Vector3d p_W = joint.position.row(0).transpose();
   for (const BodyTrack& body : results.bodies) {
     if (body.name != joint.body_i && body.name != joint.body_j) continue;
     const BodyState state = body_state(body, SampleBracket{});
     for (const Shape& shape : body.shapes) {
-      const Eigen::Vector3d centre = state.position + state.orientation * shape.offset_position;
-      if ((centre - p_W).norm() <= shape_extent(shape)) largest = std::max(largest, shape_extent(shape));
+      const Eigen::Vector3d half = shape.type == Shape::Type::kBox ? Eigen::Vector3d(0.5 * shape.size)
+                                   : shape.type == Shape::Type::kCylinder
+                                       ? Eigen::Vector3d(shape.size.x(), shape.size.x(), 0.5 * shape.size.z())
+                                       : Eigen::Vector3d::Constant(shape.size.x());
+      const Eigen::Matrix3d R_WS = (state.orientation * shape.offset_orientation).toRotationMatrix();
+      const Eigen::Vector3d local = R_WS.transpose() * (p_W - state.position - state.orientation * shape.offset_position);
+      if (((local.cwiseAbs() - half).array() > 1e-9).any()) continue;  // the shape does not hold the point
+      // Support of the box along the axis from its centre, plus the point's offset along it.
+      const Eigen::Vector3d a = R_WS.transpose() * axis_W;
+      reach = std::max(reach, a.cwiseAbs().dot(half) + std::abs(a.dot(local)));
     }
   }
-  return largest;
+  return reach;
 }
 
 bool is_pin(const std::string& type) { return type == "revolute" || type == "cylindrical"; }
@@ -150,19 +149,19 @@ struct SceneExtras::Impl {
 
   void add_joint_glyph(const JointTrack& joint) {
     vtkSmartPointer<vtkActor> glyph, rail;
-    // Long enough to stick out of the shapes around the joint.
-    const double inside = 2.0 * enclosing_shape(results, joint);
     double length = 0.0;
     if (joint.has_markers() && is_pin(joint.type)) {
+      // Centred on the joint, 1.5 times the reach of the shapes around it each way.
+      length = std::max(kPinLength * radius, 3.0 * reach_along(results, joint, joint.marker_j.rotation(0).col(2)));
       // VTK's cylinder lies along its y: the matrix maps y to the pin axis.
-      length = std::max(kPinLength * radius, inside);
       auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
-      cylinder->SetRadius(std::max(kPinRadius * radius, 0.06 * length));
+      cylinder->SetRadius(std::max(kPinRadius * radius, 0.1 * length));
       cylinder->SetHeight(length);
       cylinder->SetResolution(24);
       glyph = flat_actor(renderer, cylinder->GetOutputPort(), kPinAxisColor);
     } else if (joint.has_markers() && is_slide(joint.type)) {
-      length = std::max(kSlideArrowLength * radius, inside);
+      // From the joint point: 1.5 times the shapes' reach.
+      length = std::max(kSlideArrowLength * radius, 1.5 * reach_along(results, joint, joint.marker_i.rotation(0).col(2)));
       auto arrow = vtkSmartPointer<vtkArrowSource>::New();
       arrow->SetTipResolution(16);
       arrow->SetShaftResolution(16);

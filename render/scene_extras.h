@@ -3,9 +3,9 @@
 //  - joint axis glyphs, from the joint markers' orientations in results.h5: a revolute or
 //    cylindrical joint gets a short cylinder along its pin axis (marker j's z), a translational
 //    one an arrow along its slide axis (marker i's z) from the joint point; each 0.12 (pin) or
-//    0.22 (arrow) of the scene radius long, or twice the radius of the largest shape of the
-//    joint's bodies around the joint if more, so it sticks out of them; the translational
-//    joint's rail is a line along that axis over
+//    0.22 (arrow) of the scene radius long, or 1.5 times as far as the shapes of the joint's
+//    bodies that hold the joint point reach along the axis, if more, so it sticks out of them;
+//    the translational joint's rail is a line along that axis over
 //    the travel of the run (min..max of (p_j − p_i)·z_i, longer each side by 1/4 of the
 //    travel or 0.15 of the scene radius, whichever is more), carried by
 //    body i;
