@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "file_stem.h"
 #include "frame_renderer.h"
+#include "mode_view.h"
 #include "png_frame_writer.h"
 #include "progress_bar.h"
 #include "video_encoder.h"
@@ -77,6 +78,15 @@ Results mode_results(const BodyModeShapes& body, Eigen::Index mode,
   results.title = fmt::format("{}, mode {}/{}: {}, {:.4g} Hz, eta = {:.3g} sin(2 pi f t)",
                               body.name, mode + 1, body.mesh.mode_translations.cols(),
                               body.labels.at(static_cast<std::size_t>(mode)), f, amplitude);
+  // A slender body is seen square to its mode's plane (mode_view.h), named in the title.
+  if (options.plane_view) {
+    if (const std::optional<ModeView> view = mode_view(body.mesh, mode); view && !view->plane.empty()) {
+      results.title += "\nview: normal to the mode's plane, the " + view->plane +
+                       " (triad: body axes); grey: undeformed";
+    } else {
+      results.title += "\ngrey: undeformed";
+    }
+  }
   results.bodies.push_back(std::move(track));
   return results;
 }
@@ -91,7 +101,8 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
   view.camera = options.camera;
   view.ground = false;  // mode shapes float in the body frame
   view.time_stamp = false;
-  view.world_triad = false;  // body-frame pictures: ground axes would mislead
+  // The body sits at the origin unrotated: the triad shows its axes, which name the mode's plane.
+  view.world_triad = options.plane_view;
   validate(view);
   const ModeShapes shapes = read_mode_shapes(modes_file);
 
@@ -119,7 +130,15 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
       const std::filesystem::path frames =
           root / file_stem(body.name) / fmt::format("mode_{:02d}", mode + 1);
       std::filesystem::create_directories(frames);
-      FrameRenderer renderer(results, view, 0.0, period);
+      // The mode's plane for slender bodies (mode_view.h); the undeformed outline under it.
+      RenderOptions mode_view_options = view;
+      mode_view_options.ghost = options.ghost;
+      if (options.plane_view) {
+        if (const std::optional<ModeView> plane = mode_view(body.mesh, mode)) {
+          mode_view_options.camera_direction = {plane->direction.x(), plane->direction.y(), plane->direction.z()};
+        }
+      }
+      FrameRenderer renderer(results, mode_view_options, 0.0, period);
       PngFrameWriter writer;
       for (int k = 0; k < options.frames_per_cycle; ++k) {
         writer.push(renderer.render(results.time(k)), frames / fmt::format("frame_{:05d}.png", k));

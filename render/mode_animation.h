@@ -23,6 +23,10 @@ struct ModeAnimationOptions {
   int width = 640;                   // frame size [pixels]
   int height = 480;
   CameraPreset camera = CameraPreset::kIso;
+  // Slender bodies seen along the normal of each mode's plane instead of `camera` (mode_view.h).
+  bool plane_view = true;
+  // The undeformed mesh drawn as a grey outline under the deformed one (scene_extras.h).
+  bool ghost = true;
   bool write_gif = true;             // modes/<body>/mode_<k>.gif when ffmpeg is installed
   bool progress = true;              // progress bar, only on a terminal
 };

@@ -53,6 +53,15 @@ cli::Command add_render_command(CLI::App& app) {
   command->add_flag("--no-video", *no_video, "skip DIR/animation.mp4");
   command->add_flag("!--no-vtk", options->write_vtk, "skip the VTU/PVD series");
   command->add_flag("!--no-ground", options->ground, "no ground plane");
+  command->add_flag("!--no-joint-axes", options->joint_axes,
+                    "no joint axis glyphs (revolute: a cylinder along the pin axis; "
+                    "translational: an arrow along the slide axis and the rail over its travel)");
+  command->add_flag("--ghost", options->ghost,
+                    "draw each flexible body's undeformed outline (at the rigid fit through its "
+                    "joints) under the deformed, scaled shape");
+  command->add_flag("--forces", options->forces,
+                    "draw the reaction force on body j at every joint as an arrow, scaled to a "
+                    "round number of newtons per metre stated in a legend");
   CLI::Option* aa_option = command->add_option(
       "--anti-aliasing", *anti_aliasing,
       "fxaa (on the finished frame, on the CPU), gl-fxaa (VTK's OpenGL pass: about half the "

@@ -1,6 +1,7 @@
 // Options of `limber render` and their validation (docs/rendering.md).
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -41,6 +42,14 @@ struct RenderOptions {
   bool ground = true;         // draw a ground plane under the scene
   bool time_stamp = true;     // "t = ... s" bottom left (off for mode shapes)
   bool world_triad = true;    // ground x, y, z arrows of a round length (world_triad.h)
+  // Orientation aids (scene_extras.h): joint axis glyphs and slider rails, an undeformed ghost
+  // outline of flexible bodies, reaction-force arrows with a scale legend.
+  bool joint_axes = true;
+  bool ghost = false;
+  bool forces = false;
+  // A camera direction (from the focal point towards the eye, ground axes) that replaces the
+  // preset's; mode animations look along the normal of the mode's plane.
+  std::optional<std::array<double, 3>> camera_direction;
   AntiAliasing anti_aliasing = AntiAliasing::kFxaa;  // ~2 ms per 1280 x 720 frame
   bool write_png = true;      // DIR/frames/frame_00000.png ...
   bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample

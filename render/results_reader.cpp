@@ -2,6 +2,7 @@
 
 #include "h5_reader.h"
 #include "results/link_name.h"
+#include "results/results_layout.h"
 
 #include <algorithm>
 #include <utility>
@@ -27,7 +28,19 @@ Shape read_shape(const H5Reader& r, const std::string& group) {
   return shape;
 }
 
+// Path of a joint marker's dataset (results/results_layout.h).
+std::string marker_path(const std::string& joint_group, int side, const char* dataset) {
+  return joint_group + "/" + results::layout::kMarkerGroups[side] + "/" + dataset;
+}
+
 }  // namespace
+
+Eigen::Matrix3d MarkerTrack::rotation(Eigen::Index k) const {
+  return Eigen::Quaterniond(orientation(k, 0), orientation(k, 1), orientation(k, 2),
+                            orientation(k, 3))
+      .normalized()
+      .toRotationMatrix();
+}
 
 FlexibleMesh read_flexible_mesh(const H5Reader& r, const std::string& body) {
   FlexibleMesh mesh;
@@ -97,7 +110,15 @@ Results read_results(const std::filesystem::path& directory) {
     }
   }
   for (const std::string& joint : joint_links) {
-    ns = std::min(ns, r.rows("/joints/" + joint + "/position", 3));
+    const std::string g = "/joints/" + joint;
+    ns = std::min(ns, r.rows(g + "/position", 3));
+    // Marker poses (files since issue 15): both markers, or none.
+    if (r.exists(g + "/force_ground")) ns = std::min(ns, r.rows(g + "/force_ground", 3));
+    for (int side = 0; side < 2; ++side) {
+      if (!r.exists(marker_path(g, side, results::layout::kMarkerOrientation))) continue;
+      ns = std::min({ns, r.rows(marker_path(g, side, results::layout::kMarkerPosition), 3),
+                     r.rows(marker_path(g, side, results::layout::kMarkerOrientation), 4)});
+    }
   }
   const auto n = static_cast<Eigen::Index>(ns);
 
@@ -150,6 +171,22 @@ Results read_results(const std::filesystem::path& directory) {
     track.body_j = r.string_attribute(g, "body_j", false);
     const std::vector<double> p = r.read<double>(g + "/position", H5T_NATIVE_DOUBLE, ns);
     track.position = Eigen::Map<const RowMatrix3d>(p.data(), n, 3);
+    if (r.exists(g + "/force_ground")) {
+      const std::vector<double> f = r.read<double>(g + "/force_ground", H5T_NATIVE_DOUBLE, ns);
+      track.force_ground = Eigen::Map<const RowMatrix3d>(f.data(), n, 3);
+    }
+    for (int side = 0; side < 2; ++side) {
+      if (!r.exists(marker_path(g, side, results::layout::kMarkerOrientation))) continue;
+      MarkerTrack& marker = side == 0 ? track.marker_i : track.marker_j;
+      marker.name = r.string_attribute(g + "/" + results::layout::kMarkerGroups[side],
+                                       results::kNameAttribute, false);
+      const std::vector<double> origin = r.read<double>(
+          marker_path(g, side, results::layout::kMarkerPosition), H5T_NATIVE_DOUBLE, ns);
+      marker.position = Eigen::Map<const RowMatrix3d>(origin.data(), n, 3);
+      const std::vector<double> q = r.read<double>(
+          marker_path(g, side, results::layout::kMarkerOrientation), H5T_NATIVE_DOUBLE, ns);
+      marker.orientation = Eigen::Map<const RowMatrix4d>(q.data(), n, 4);
+    }
     results.joints.push_back(std::move(track));
   }
   return results;

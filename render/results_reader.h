@@ -50,10 +50,27 @@ struct BodyTrack {
   FlexibleMesh mesh;                                              // flexible bodies only
 };
 
+using RowMatrix4d = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>;
+
+// One of a joint's two marker frames over the run (results.h5 /joints/<joint>/marker_i|j).
+struct MarkerTrack {
+  std::string name;      // the case's marker name ("" when the file does not say)
+  RowMatrix3d position;  // ns x 3, origin in ground [m]
+  RowMatrix4d orientation;  // ns x 4, unit quaternion w x y z, ground <- marker
+
+  // Ground <- marker rotation at sample k.
+  Eigen::Matrix3d rotation(Eigen::Index k) const;
+};
+
 struct JointTrack {
   std::string name, type, body_i, body_j;
   std::string group;  // "/joints/<link name>"
   RowMatrix3d position;  // ns x 3, joint point in ground [m]
+  // Markers i and j; both empty (0 rows) in files written before marker poses were stored.
+  MarkerTrack marker_i, marker_j;
+  RowMatrix3d force_ground;  // ns x 3, reaction on body_j in ground axes [N] (0 rows: none)
+
+  bool has_markers() const { return marker_i.orientation.rows() == position.rows(); }
 };
 
 struct Results {

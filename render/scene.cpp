@@ -5,6 +5,7 @@
 #include "stress_reader.h"
 #include "core/error.h"
 #include "relative_deflection.h"
+#include "scene_extras.h"
 #include "world_triad.h"
 
 #include <vtkActor.h>
@@ -177,6 +178,7 @@ struct Scene::Impl {
   std::vector<FlexibleView> flexible;
   std::vector<RigidShapeView> shapes;
   std::vector<vtkSmartPointer<vtkActor>> joints;
+  std::unique_ptr<SceneExtras> extras;  // joint axes, rails, ghost, force arrows
   vtkSmartPointer<vtkTextActor> time_text = vtkSmartPointer<vtkTextActor>::New();
   std::vector<vtkSmartPointer<vtkTextActor>> texts;  // every text drawn (title, note, time)
   vtkSmartPointer<vtkScalarBarActor> bar;            // null without flexible bodies
@@ -357,8 +359,9 @@ struct Scene::Impl {
   void place_camera(const Eigen::Vector3d& focal, double distance) {
     vtkCamera* camera = renderer->GetActiveCamera();
     const Eigen::Vector3d eye = focal + distance * direction;
+    // Up is ground z, or y when looking along z.
     const Eigen::Vector3d up =
-        options.camera == CameraPreset::kTop ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+        std::abs(direction.z()) > 0.99 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
     camera->SetViewAngle(kViewAngleDeg);
     camera->SetFocalPoint(focal.x(), focal.y(), focal.z());
     camera->SetPosition(eye.x(), eye.y(), eye.z());
@@ -370,7 +373,9 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     : impl_(std::make_unique<Impl>(results, options)) {
   Impl& s = *impl_;
   LIMBER_DEMAND(results.sample_count() >= 1);
-  s.direction = view_direction(options.camera);
+  s.direction = options.camera_direction
+                    ? Eigen::Vector3d(options.camera_direction->data()).normalized()
+                    : view_direction(options.camera);
 
   // Colour range and camera extent from the samples in [t0, t1] (at least one sample).
   Bounds all;
@@ -453,6 +458,10 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     s.renderer->AddActor(actor);
     s.joints.push_back(actor);
   }
+
+  // Joint axes and rails, ghost outlines, force arrows (scene_extras.h).
+  s.extras = std::make_unique<SceneExtras>(results, options, s.renderer, radius, t0, t1);
+  for (const auto& text : s.extras->texts()) s.texts.push_back(text);
 
   // Ground: a plane under the whole motion, +z up.
   if (options.ground) {
@@ -657,6 +666,7 @@ void Scene::update(double t) {
     const Eigen::Vector3d p = joint_position(s.results.joints[j], at);
     s.joints[j]->SetPosition(p.x(), p.y(), p.z());
   }
+  s.extras->update(at);
 
   // Time stamp and, for a follow camera, the centroid of the body frames.
   char stamp[96];

@@ -2,6 +2,8 @@
 
 #include "hinge_summary.h"
 #include "html.h"
+#include "indeterminate_components.h"
+#include "reaction_frames.h"
 
 #include <fmt/format.h>
 
@@ -27,42 +29,104 @@ std::string reaction_body(const RunData& run, const std::string& joint) {
 
 // One frame's view of a joint's reactions: what the components are called and hold.
 struct FrameView {
-  std::string tag;    // file name part: "_ground" or ""
+  std::string tag;    // file name part: "_ground", "" (joint frame), "_in_<name>"
   std::string title;  // "(ground axes)"
   std::string note;   // caption text after "components in "
   std::array<std::string, 3> force_names, torque_names;
-  const RowMatrix3d* force = nullptr;
-  const RowMatrix3d* torque = nullptr;
+  RowMatrix3d force;
+  RowMatrix3d torque;  // 0 rows when the file has none
+  // The frame's orientation per sample (ground <- frame); empty for ground axes. Only used to
+  // tell which components are indeterminate.
+  std::vector<Eigen::Matrix3d> R_WF;
+  bool orientation_known = true;  // false: the joint frame of a file without marker poses
+  bool has_torque() const { return torque.rows() > 0; }
 };
 
-std::optional<FrameView> frame_view(const RunData& run, const JointReactions& joint,
-                                    ReactionFrame frame) {
-  const Eigen::Index ns = run.sample_count();
-  if (frame == ReactionFrame::kGround) {
-    if (joint.force_ground.rows() != ns || ns == 0) return std::nullopt;
-    return FrameView{"_ground", "(ground axes)", ground_axes_note(run), run.axis_names,
-                     run.axis_names, &joint.force_ground,
-                     joint.torque_ground.rows() == ns ? &joint.torque_ground : nullptr};
+// Marker j's orientation per sample (the joint frame), empty when the file has none.
+std::vector<Eigen::Matrix3d> joint_frame_rotations(const RunData& run, const JointReactions& joint) {
+  std::vector<Eigen::Matrix3d> R_WF;
+  for (const render::JointTrack& track : run.results.joints) {
+    if (track.name != joint.name || !track.has_markers()) continue;
+    for (Eigen::Index k = 0; k < track.position.rows(); ++k) R_WF.push_back(track.marker_j.rotation(k));
   }
-  return FrameView{"", "(joint frame)", "the joint frame", {"Fx", "Fy", "Fz"}, {"Tx", "Ty", "Tz"},
-                   &joint.force_joint, joint.torque_joint.rows() == ns ? &joint.torque_joint : nullptr};
+  return R_WF;
+}
+
+std::optional<FrameView> frame_view(const RunData& run, const JointReactions& joint,
+                                    const FrameRequest& frame) {
+  const Eigen::Index ns = run.sample_count();
+  const bool ground = joint.force_ground.rows() == ns && ns > 0;
+  const bool ground_torque = joint.torque_ground.rows() == ns && ns > 0;
+  switch (frame.kind) {
+    case ReactionFrame::kGround:
+      if (!ground) return std::nullopt;
+      return FrameView{"_ground", "(ground axes)", ground_axes_note(run), run.axis_names,
+                       run.axis_names, joint.force_ground,
+                       ground_torque ? joint.torque_ground : RowMatrix3d(), {}, true};
+    case ReactionFrame::kJoint: {
+      std::vector<Eigen::Matrix3d> R_WF = joint_frame_rotations(run, joint);
+      const bool known = !R_WF.empty();
+      FrameView view{"", "(joint frame)", "the joint frame (marker j's axes)",
+                     {"Fx", "Fy", "Fz"}, {"Tx", "Ty", "Tz"}, joint.force_joint,
+                     joint.torque_joint.rows() == ns ? joint.torque_joint : RowMatrix3d(),
+                     std::move(R_WF), known};
+      return view;
+    }
+    case ReactionFrame::kNamed: {
+      // Rotated from ground axes with the frame's stored orientation (reaction_frames.h).
+      const std::optional<NamedFrame> named = find_named_frame(run, frame.name);
+      if (!ground || !named) return std::nullopt;
+      return FrameView{"_in_" + file_stem(frame.name), "(frame " + frame.name + ")",
+                       named->description, {"Fx", "Fy", "Fz"}, {"Tx", "Ty", "Tz"},
+                       express_in_frame(joint.force_ground, *named),
+                       ground_torque ? express_in_frame(joint.torque_ground, *named) : RowMatrix3d(),
+                       named->R_WF, true};
+    }
+  }
+  return std::nullopt;
+}
+
+// The components of a frame's force or torque that are indeterminate: per component when the
+// file tells the undetermined directions (indeterminate_components.h), else all three when
+// the quantity is.
+std::array<bool, 3> indeterminate_in_frame(const RunData& run, const JointReactions& joint,
+                                           const FrameView& frame, bool torque) {
+  const Indeterminacy which = indeterminacy(run, joint);
+  const bool whole = torque ? which.torque : which.force;
+  if (!whole) return {false, false, false};
+  const std::optional<UndeterminedDirections> directions = undetermined_directions(run, joint);
+  if (!directions || !frame.orientation_known) return {true, true, true};
+  return indeterminate_components(*directions, torque, frame.R_WF);
 }
 
 // The note an indeterminate joint's force or torque plot carries ("" when that quantity is
-// determined): which redundancy, and at how many samples.
-std::string indeterminate_note(const RunData& run, const JointReactions& joint, bool torque) {
+// determined in this frame): which components, which redundancy, at how many samples.
+std::string indeterminate_note(const RunData& run, const JointReactions& joint, const FrameView& frame,
+                               bool torque) {
+  const std::array<bool, 3> components = indeterminate_in_frame(run, joint, frame, torque);
+  if (!components[0] && !components[1] && !components[2]) return "";
   const Indeterminacy which = indeterminacy(run, joint);
-  if (!(torque ? which.torque : which.force)) return "";
+  const std::array<std::string, 3>& names = torque ? frame.torque_names : frame.force_names;
+  std::string listed;
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (components[c]) listed += (listed.empty() ? "" : ", ") + names[c];
+  }
+  const bool all = components[0] && components[1] && components[2];
   const auto samples = static_cast<Eigen::Index>((joint.indeterminate.array() > 0.0).count());
   return "Indeterminate: joint " + joint.name + " is in a redundant set of constraints" +
-         (which.sets.empty() ? std::string() : " (" + which.sets + ")") + ". Its reaction " +
-         (torque ? "torque" : "force") +
+         (which.sets.empty() ? std::string() : " (" + which.sets + ")") + ". " +
+         (all ? std::string("Its reaction ") + (torque ? "torque" : "force")
+              : "The component" + std::string(listed.find(',') != std::string::npos ? "s " : " ") + listed +
+                    " of its reaction " + (torque ? "torque" : "force")) +
          " is the minimum-norm split of the load over that set, one of infinitely many that "
          "satisfy the equations; the model does not determine it" +
          (samples < joint.indeterminate.size()
               ? fmt::format(" (at {} of {} samples)", samples, joint.indeterminate.size())
               : std::string()) +
-         ".";
+         "." +
+         (all ? std::string()
+              : " The other components are determined: the undetermined direction of each "
+                "redundant equation is perpendicular to their axes.");
 }
 
 // Largest distance between two joint points over the run [m] (1 m with fewer than two
@@ -84,9 +148,13 @@ double mechanism_size(const RunData& run) {
 // A reaction plot in one frame: the components above the noise floor, the magnitude, and the
 // others listed as "≈ 0 (peak …)".
 NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const FrameView& frame,
-                        bool torque, const std::string& stem, const PlotOptions& options) {
+                        bool torque, const std::string& stem, const PlotOptions& options,
+                        const ReactionPlotRequest* request = nullptr) {
   const Eigen::VectorXd& t = run.results.time;
-  const RowMatrix3d& values = torque ? *frame.torque : *frame.force;
+  const RowMatrix3d& values = torque ? frame.torque : frame.force;
+  // The components a configured plot leaves out are neither drawn nor listed.
+  const std::array<bool, 4> shown =
+      request != nullptr ? request->components : std::array<bool, 4>{true, true, true, true};
   const std::array<std::string, 3>& names = torque ? frame.torque_names : frame.force_names;
   const std::string quantity = torque ? "torque" : "force";
   const std::string unit = torque ? "N m" : "N";
@@ -95,6 +163,7 @@ NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const F
   std::vector<Curve> curves;
   std::string zeros;
   for (int c = 0; c < 3; ++c) {
+    if (!shown[static_cast<std::size_t>(c)]) continue;
     if (peak(c) > floor) {
       curves.push_back({names[static_cast<std::size_t>(c)], t, values.col(c), c});
     } else {
@@ -103,24 +172,24 @@ NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const F
     }
   }
   const std::string symbol = torque ? "T" : "F";
-  curves.push_back({"|" + symbol + "|", t, values.rowwise().norm(), 3});
+  if (shown[3]) curves.push_back({"|" + symbol + "|", t, values.rowwise().norm(), 3});
 
   const std::string body = reaction_body(run, joint.name);
   std::string caption = "Reaction " + quantity + " at joint " + joint.name +
                         (body.empty() ? "" : " on " + body) +
                         (torque ? " about the joint point" : "") + ", components in " + frame.note +
-                        ", and its magnitude |" + symbol + "|.";
+                        (shown[3] ? ", and its magnitude |" + symbol + "|." : ".");
   if (!zeros.empty()) {
     caption += fmt::format(" Not drawn, below {:g} of the largest component: {}.",
                            options.zero_fraction, zeros);
   }
-  const std::string warning = indeterminate_note(run, joint, torque);
-  return NamedPlot(PlotSection::kReactions,
-                   stem + "_" + quantity + frame.tag + ".png", caption,
-                   {"Joint " + joint.name + ": reaction " + quantity + " " + frame.title +
-                        (warning.empty() ? "" : ", minimum-norm"),
-                    kTimeLabel, quantity + " [" + unit + "]", curves, false},
-                   warning);
+  const std::string warning = indeterminate_note(run, joint, frame, torque);
+  const std::string title = request != nullptr && !request->title.empty()
+                                ? request->title
+                                : "Joint " + joint.name + ": reaction " + quantity + " " +
+                                      frame.title + (warning.empty() ? "" : ", minimum-norm");
+  return NamedPlot(PlotSection::kReactions, stem + "_" + quantity + frame.tag + ".png", caption,
+                   {title, kTimeLabel, quantity + " [" + unit + "]", curves, false}, warning);
 }
 
 std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<Series>& series) {
@@ -165,6 +234,41 @@ Indeterminacy indeterminacy(const RunData& run, const JointReactions& joint) {
   return which;
 }
 
+std::string indeterminate_summary(const RunData& run, const JointReactions& joint) {
+  const Indeterminacy which = indeterminacy(run, joint);
+  if (!which.force && !which.torque) return "determined";
+  // Per component in ground axes when the file tells the directions, else per quantity.
+  const std::optional<FrameView> ground = frame_view(run, joint, ReactionFrame::kGround);
+  std::string parts;
+  bool partial = false;
+  for (bool torque : {false, true}) {
+    if (!(torque ? which.torque : which.force)) continue;
+    std::string part = torque ? "torque" : "force";
+    if (ground) {
+      const std::array<bool, 3> c = indeterminate_in_frame(run, joint, *ground, torque);
+      if (!(c[0] && c[1] && c[2])) {
+        partial = true;
+        std::string listed;
+        for (std::size_t k = 0; k < 3; ++k) {
+          if (c[k]) listed += (listed.empty() ? "" : ", ") + run.axis_names[k];
+        }
+        if (listed.empty()) continue;
+        part += " " + listed;
+      }
+    }
+    parts += (parts.empty() ? "" : " and ") + part;
+  }
+  if (parts.empty()) return "determined";
+  return parts + " minimum-norm (indeterminate" + (partial ? ", ground axes; other components determined" : "") +
+         ")" + (!which.force ? "; force determined" : "");
+}
+
+FrameRequest FrameRequest::parse(const std::string& text) {
+  if (text == "ground") return FrameRequest(ReactionFrame::kGround);
+  if (text == "joint") return FrameRequest(ReactionFrame::kJoint);
+  return FrameRequest(text);
+}
+
 std::string ground_axes_note(const RunData& run) {
   const auto& n = run.axis_names;
   return "ground axes (" + n[0] + " = ground x, " + n[1] + " = ground y, " + n[2] + " = ground z" +
@@ -179,32 +283,46 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
   // Reactions in the frames asked for (ground axes by default, seed paper Figs. 4, 5); forces
   // always, torques when the joint transmits any. Without ground-axes data (older files) the
   // joint frame stands in.
+  if (!options.configured.empty()) {
+    // A report config's plots, numbered in its order; joints or frames a run lacks are left out.
+    for (std::size_t k = 0; k < options.configured.size(); ++k) {
+      const ReactionPlotRequest& request = options.configured[k];
+      const auto joint = std::find_if(run.joints.begin(), run.joints.end(),
+                                      [&](const JointReactions& j) { return j.name == request.joint; });
+      if (joint == run.joints.end()) continue;
+      const std::optional<FrameView> view = frame_view(run, *joint, request.frame);
+      if (!view || (request.torque && !view->has_torque())) continue;
+      plots.push_back(reaction_plot(run, *joint, *view, request.torque,
+                                    fmt::format("{}plot{}_reaction_{}", prefix, k + 1, file_stem(joint->name)),
+                                    options, &request));
+    }
+  }
   for (const JointReactions& joint : run.joints) {
+    if (!options.configured.empty()) break;
     const std::string stem = prefix + "reaction_" + file_stem(joint.name);
-    std::vector<ReactionFrame> frames = options.frames;
+    std::vector<FrameRequest> frames = options.frames;
     if (!frame_view(run, joint, ReactionFrame::kGround) &&
-        std::find(frames.begin(), frames.end(), ReactionFrame::kJoint) == frames.end()) {
+        std::find(frames.begin(), frames.end(), FrameRequest(ReactionFrame::kJoint)) == frames.end()) {
       frames.push_back(ReactionFrame::kJoint);
     }
-    for (ReactionFrame frame : frames) {
+    for (const FrameRequest& frame : frames) {
       const std::optional<FrameView> view = frame_view(run, joint, frame);
       if (!view) continue;
       NamedPlot force = reaction_plot(run, joint, *view, false, stem, options);
       // The torque is noise when even the largest force, at the mechanism's size as lever
       // arm, makes it look small: then one line in the force's caption instead of a plot.
-      const double torque_peak =
-          view->torque != nullptr ? view->torque->rowwise().norm().maxCoeff() : 0.0;
-      const double force_peak = view->force->rowwise().norm().maxCoeff();
+      const double torque_peak = view->has_torque() ? view->torque.rowwise().norm().maxCoeff() : 0.0;
+      const double force_peak = view->force.rowwise().norm().maxCoeff();
       const double lever = mechanism_size(run);
       const bool torque_noise = torque_peak <= options.zero_fraction * force_peak * lever;
-      if (view->torque != nullptr && torque_peak > 0.0 && torque_noise) {
+      if (view->has_torque() && torque_peak > 0.0 && torque_noise) {
         force.caption += fmt::format(
             " Reaction torque ≈ 0 (peak |T| {:.3g} N m, below {:g} × the peak |F| {:.4g} N × the "
             "mechanism's size {:.3g} m): not drawn.",
             torque_peak, options.zero_fraction, force_peak, lever);
       }
       plots.push_back(std::move(force));
-      if (view->torque != nullptr && torque_peak > 0.0 && !torque_noise) {
+      if (view->has_torque() && torque_peak > 0.0 && !torque_noise) {
         plots.push_back(reaction_plot(run, joint, *view, true, stem, options));
       }
     }
@@ -511,26 +629,40 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
   for (const std::string& name : order) {
     const auto& held = holders[name];
     if (held.size() < 2) continue;
-    // Ground axes when asked first and every run has them, else the joint frame.
-    bool ground = options.frames.front() == ReactionFrame::kGround;
+    // The first frame asked for when every run has it (a marker or body frame needs its
+    // orientations), else the joint frame.
+    const FrameRequest& asked = options.frames.front();
+    bool use_asked = asked.kind != ReactionFrame::kJoint;
+    std::vector<RowMatrix3d> forces;
     for (const auto& [r, joint] : held) {
-      ground = ground && joint->force_ground.rows() == runs[r].sample_count();
+      const std::optional<FrameView> view = use_asked ? frame_view(runs[r], *joint, asked) : std::nullopt;
+      use_asked = use_asked && view.has_value();
+      if (view) forces.push_back(view->force);
     }
+    if (!use_asked) {
+      forces.clear();
+      for (const auto& [r, joint] : held) forces.push_back(joint->force_joint);
+    }
+    const bool ground = use_asked && asked.kind == ReactionFrame::kGround;
+    const bool named = use_asked && asked.kind == ReactionFrame::kNamed;
     const RunData& first = runs[held.front().first];
     for (int c = 0; c < 3; ++c) {
       std::vector<Curve> curves;
-      for (const auto& [r, joint] : held) {
-        const RowMatrix3d& force = ground ? joint->force_ground : joint->force_joint;
-        curves.push_back({labels[r], runs[r].results.time, force.col(c)});
+      for (std::size_t k = 0; k < held.size(); ++k) {
+        const std::size_t r = held[k].first;
+        curves.push_back({labels[r], runs[r].results.time, forces[k].col(c)});
       }
       const std::string component =
           ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
-      const std::string frame = ground ? "ground axes" : "joint frame";
-      plots.push_back({PlotSection::kComparison,
-                       "compare_" + file_stem(name) + "_" +
-                           (ground ? std::string("ground_") + kAxes[c] : component) + ".png",
-                       "Reaction " + component + " at joint " + name + " (" +
-                           (ground ? ground_axes_note(first) : frame) + ") in " +
+      const std::string frame = ground ? "ground axes" : named ? "frame " + asked.name : "joint frame";
+      const std::string note = ground  ? ground_axes_note(first)
+                               : named ? find_named_frame(first, asked.name)->description
+                                       : frame;
+      const std::string tag = ground  ? std::string("ground_") + kAxes[c]
+                              : named ? "in_" + file_stem(asked.name) + "_" + component
+                                      : component;
+      plots.push_back({PlotSection::kComparison, "compare_" + file_stem(name) + "_" + tag + ".png",
+                       "Reaction " + component + " at joint " + name + " (" + note + ") in " +
                            std::to_string(held.size()) + " runs.",
                        {"Joint " + name + ": " + component + " (" + frame + ")", kTimeLabel,
                         "force [N]", curves, false}});

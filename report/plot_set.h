@@ -9,6 +9,7 @@
 #include "plot.h"
 #include "run_data.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,11 +34,37 @@ struct NamedPlot {
         spec(std::move(spec_)), warning(std::move(warning_)) {}
 };
 
-// The frames reaction components are plotted in.
-enum class ReactionFrame { kGround, kJoint };
+// The frames reaction components are plotted in: ground axes, the joint frame (marker j's
+// axes, as the solver stores force_joint), or a frame named by the user (a joint marker or a
+// body, reaction_frames.h).
+enum class ReactionFrame { kGround, kJoint, kNamed };
+
+struct FrameRequest {
+  ReactionFrame kind = ReactionFrame::kGround;
+  std::string name;  // kNamed only: "R1.j", "crank"
+
+  FrameRequest(ReactionFrame kind_ = ReactionFrame::kGround) : kind(kind_) {}
+  explicit FrameRequest(std::string name_) : kind(ReactionFrame::kNamed), name(std::move(name_)) {}
+  // "ground", "joint" or a name.
+  static FrameRequest parse(const std::string& text);
+  bool operator==(const FrameRequest& other) const = default;
+};
+
+// One reaction plot asked for by a report config (report_config.h): a joint's force or torque
+// in one frame, the components chosen (x, y, z, magnitude).
+struct ReactionPlotRequest {
+  std::string joint;
+  FrameRequest frame;
+  bool torque = false;
+  std::array<bool, 4> components{true, true, true, true};  // x, y, z, |F|
+  std::string title;  // "" for the default title
+};
 
 struct PlotOptions {
-  std::vector<ReactionFrame> frames{ReactionFrame::kGround};  // in this order, per joint
+  std::vector<FrameRequest> frames{FrameRequest()};  // in this order, per joint
+  // When not empty: the reaction plots of each run are these (those whose joint and frame the
+  // run has), instead of every joint in every frame of `frames`.
+  std::vector<ReactionPlotRequest> configured;
   // A reaction component whose peak |value| is below this fraction of the largest component
   // of the same quantity (force or torque) at that joint and frame is listed as "≈ 0 (peak …)"
   // instead of drawn: numerical noise, not a signal.
@@ -60,7 +87,8 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
 std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& prefix);
 
 // One plot per joint name present in two or more runs and per force component (in the first
-// of `options.frames`: ground axes when every run has them, else the joint frame), overlaying
+// of `options.frames` when every run holding the joint has that frame — ground axes, or a
+// marker or body frame — else the joint frame), overlaying
 // that component of every run holding the joint; then one per deflection-probe component of a
 // body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
 // `labels`.
@@ -76,6 +104,11 @@ struct Indeterminacy {
   std::string sets;  // "R2.rot_x depends on R1.rot_x, R3.rot_x" for the sets naming the joint
 };
 Indeterminacy indeterminacy(const RunData& run, const JointReactions& joint);
+
+// The joints table's text for a joint's reaction: "determined", or what is minimum-norm, per
+// component in ground axes when the file says (indeterminate_components.h): "force Y and torque
+// X, Z minimum-norm (indeterminate, ground axes; other components determined)".
+std::string indeterminate_summary(const RunData& run, const JointReactions& joint);
 
 // "X", "Y", "Z" (the run's axis names) with what they are ("X = ground x, ...").
 std::string ground_axes_note(const RunData& run);

@@ -24,8 +24,13 @@ cli::Command add_report_command(CLI::App& app) {
   command->add_flag("--no-mode-shapes", *no_modes, "do not draw the mode shapes");
   command->add_option("--frame", options->frames,
                       "frame of the reaction plots, repeatable, in order: ground (default; the "
-                      "case's axis names) or joint (marker i's axes)")
-      ->check(CLI::IsMember({"ground", "joint"}));
+                      "case's axis names), joint (the joint frame: marker j's axes), a marker "
+                      "(e.g. R1.j: the case names a joint's markers <joint>.i and <joint>.j) or a "
+                      "body (e.g. crank): components rotated into that frame at every sample");
+  command->add_option("--config", options->config,
+                      "report config (YAML) listing the reaction plots: joint, frame, quantity "
+                      "(force|torque), components (x, y, z, magnitude), title; replaces the "
+                      "default reaction plots (docs/report.md)");
   command->add_option("--zero-fraction", options->zero_fraction,
                       "a reaction component whose peak is below this fraction of the joint's "
                       "largest is listed as '≈ 0 (peak …)' instead of drawn (default 1e-4)")

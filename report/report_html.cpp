@@ -183,14 +183,12 @@ std::string joints_table(const RunData& run) {
                                         [&](const JointReactions& r) { return r.name == j.name; });
     const Indeterminacy which =
         reactions != run.joints.end() ? indeterminacy(run, *reactions) : Indeterminacy{};
-    const char* what = which.force && which.torque ? "force and torque minimum-norm (indeterminate)"
-                       : which.force               ? "force minimum-norm (indeterminate)"
-                       : which.torque ? "torque minimum-norm (indeterminate); force determined"
-                                      : "determined";
+    const std::string what =
+        reactions != run.joints.end() ? indeterminate_summary(run, *reactions) : "determined";
     out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td{}>{}</td></tr>\n",
                        html_escape(j.name), html_escape(j.type), html_escape(j.body_i),
                        html_escape(j.body_j),
-                       which.force || which.torque ? " class=\"indeterminate\"" : "", what);
+                       which.force || which.torque ? " class=\"indeterminate\"" : "", html_escape(what));
   }
   return out + "</table>\n";
 }

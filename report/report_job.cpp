@@ -8,6 +8,8 @@
 #include "mode_shape_images.h"
 #include "plot.h"
 #include "plot_set.h"
+#include "reaction_frames.h"
+#include "report_config.h"
 #include "report_html.h"
 #include "run_data.h"
 
@@ -66,13 +68,8 @@ PlotOptions plot_options(const ReportOptions& options) {
   PlotOptions plot;
   plot.frames.clear();
   for (const std::string& frame : options.frames) {
-    if (frame == "ground") {
-      plot.frames.push_back(ReactionFrame::kGround);
-    } else if (frame == "joint") {
-      plot.frames.push_back(ReactionFrame::kJoint);
-    } else {
-      throw InputError("expected --frame ground or joint, got '" + frame + "'");
-    }
+    if (frame.empty()) throw InputError("expected --frame ground, joint, a marker or a body, got ''");
+    plot.frames.push_back(FrameRequest::parse(frame));
   }
   if (plot.frames.empty()) plot.frames.push_back(ReactionFrame::kGround);
   if (!(options.zero_fraction >= 0.0 && options.zero_fraction < 1.0)) {
@@ -82,16 +79,41 @@ PlotOptions plot_options(const ReportOptions& options) {
   return plot;
 }
 
+// A named --frame must be a marker or a body of at least one run (else nothing would show it).
+void check_frames(const std::vector<FrameRequest>& frames, const std::vector<RunData>& runs) {
+  for (const FrameRequest& frame : frames) {
+    if (frame.kind != ReactionFrame::kNamed) continue;
+    std::string offered = "ground, joint";
+    bool found = false;
+    for (const RunData& run : runs) {
+      found = found || find_named_frame(run, frame.name).has_value();
+      for (const std::string& name : frame_names(run)) {
+        if (offered.find(", " + name) == std::string::npos) offered += ", " + name;
+      }
+    }
+    if (!found) {
+      throw InputError("expected --frame ground, joint, or a marker or body of the runs (" + offered +
+                       "), got '" + frame.name + "'");
+    }
+  }
+}
+
 }  // namespace
 
 ReportSummary generate_report(const ReportOptions& options) {
   if (options.directories.empty()) {
     throw InputError("expected at least one results directory, got none");
   }
-  const PlotOptions plot_settings = plot_options(options);
+  PlotOptions plot_settings = plot_options(options);
   // Read every run first: a bad directory stops the report before anything is written.
   std::vector<RunData> runs;
   for (const std::filesystem::path& dir : options.directories) runs.push_back(read_run_data(dir));
+  check_frames(plot_settings.frames, runs);
+  if (!options.config.empty()) {
+    const std::vector<ConfiguredPlot> configured = read_report_config(options.config);
+    check_report_config(configured, runs);
+    for (const ConfiguredPlot& plot : configured) plot_settings.configured.push_back(plot.request);
+  }
 
   // Output folders.
   const std::filesystem::path out =

@@ -20,8 +20,12 @@ struct ReportOptions {
   // The plotting library inlined for interactive plots (interactive.h); a missing file gives
   // static figures with a note on the page.
   std::filesystem::path dygraphs_script = "/usr/share/javascript/dygraphs/dygraph.min.js";
-  // Frames of the reaction plots, in order: "ground" (axes named by the case), "joint".
+  // Frames of the reaction plots, in order: "ground" (axes named by the case), "joint" (marker
+  // j's axes), or the name of a joint marker ("R1.j") or a body ("crank") of the runs.
   std::vector<std::string> frames{"ground"};
+  // A report config (report_config.h) listing the reaction plots; empty: every joint in every
+  // frame of `frames`.
+  std::filesystem::path config;
   // Components below this fraction of the joint's largest are listed "≈ 0", not drawn.
   double zero_fraction = 1e-4;
   // Pixel columns the interactive view's curves are decimated to (decimate.h).
@@ -36,8 +40,9 @@ struct ReportSummary {
   std::vector<std::string> runs_not_ok;  // "<dir>: <status>" of failed or unfinished runs
 };
 
-// Writes the report. Throws InputError (expected/got) when a frame is not "ground" or "joint"
-// or zero_fraction is not in [0, 1), (naming the file) when no directory is given or one has no readable results.h5 — before anything is written — or when the report
+// Writes the report. Throws InputError (expected/got) when a frame is neither "ground", "joint"
+// nor a marker or body of a run, when the config is bad (naming its file and line), or
+// zero_fraction is not in [0, 1), (naming the file) when no directory is given or one has no readable results.h5 — before anything is written — or when the report
 // folder cannot be created (e.g. it names an existing file); std::runtime_error when
 // the offscreen context cannot be created or a file cannot be written.
 ReportSummary generate_report(const ReportOptions& options);

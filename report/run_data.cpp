@@ -191,7 +191,15 @@ void truncate(RunData& run, Eigen::Index n) {
       body.modal_coordinates.conservativeResize(n, body.modal_coordinates.cols());
     }
   }
-  for (render::JointTrack& joint : r.joints) joint.position.conservativeResize(n, 3);
+  for (render::JointTrack& joint : r.joints) {
+    joint.position.conservativeResize(n, 3);
+    if (joint.force_ground.rows() > n) joint.force_ground.conservativeResize(n, 3);
+    for (render::MarkerTrack* marker : {&joint.marker_i, &joint.marker_j}) {
+      if (marker->position.rows() == 0) continue;
+      marker->position.conservativeResize(n, 3);
+      marker->orientation.conservativeResize(n, 4);
+    }
+  }
   for (JointReactions& joint : run.joints) {
     joint.force_joint.conservativeResize(n, 3);
     joint.torque_joint.conservativeResize(n, 3);

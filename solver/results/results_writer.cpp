@@ -6,6 +6,7 @@
 #include "results/directory_lock.h"
 #include "results/h5_handle.h"
 #include "results/link_name.h"
+#include "results/results_layout.h"
 
 #include <algorithm>
 #include <chrono>
@@ -179,7 +180,8 @@ struct ResultsWriter::Impl {
   std::vector<int> body_nmodes;
   // Per body: its stress output, or none.
   std::vector<std::unique_ptr<StressSeries>> body_stress;
-  // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate.
+  // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate,
+  // then marker_i's position and orientation, marker_j's position and orientation.
   std::vector<std::vector<Series>> joint_series;
   std::vector<Series> driver_series;
   std::vector<Series> energy_series;
@@ -500,6 +502,16 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
   }
   series.push_back(
       impl_->create_series(group.get(), "indeterminate", H5T_STD_I8LE, H5T_NATIVE_INT8, 0));
+  // The two marker frames: the frames a reader can express the reaction in.
+  for (int side = 0; side < 2; ++side) {
+    H5Handle marker = create_group(group.get(), layout::kMarkerGroups[side]);
+    const std::string& marker_name = side == 0 ? joint.marker_i : joint.marker_j;
+    if (!marker_name.empty()) write_string_attribute(marker.get(), kNameAttribute, marker_name);
+    series.push_back(impl_->create_series(marker.get(), layout::kMarkerPosition, H5T_IEEE_F64LE,
+                                          H5T_NATIVE_DOUBLE, 3));
+    series.push_back(impl_->create_series(marker.get(), layout::kMarkerOrientation,
+                                          H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
+  }
   impl_->joint_series.push_back(std::move(series));
   return static_cast<int>(impl_->joint_series.size()) - 1;
 }
@@ -629,7 +641,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
     if (m.body_stress[b]) m.append_stress(*m.body_stress[b], body, sample.time);
   }
 
-  // Joints: point, reactions in both frames, redundancy flag.
+  // Joints: point, reactions in both frames, redundancy flag, marker poses.
   for (std::size_t j = 0; j < sample.joints.size(); ++j) {
     const JointSample& joint = sample.joints[j];
     std::vector<Series>& series = m.joint_series[j];
@@ -640,6 +652,13 @@ void ResultsWriter::append_sample(const Sample& sample) {
     m.append_vector3(series[4], joint.torque_ground);
     const std::int8_t flag = joint.indeterminate ? 1 : 0;
     m.append_row(series[5], &flag);
+    const MarkerPose* markers[2] = {&joint.marker_i, &joint.marker_j};
+    for (int side = 0; side < 2; ++side) {
+      m.append_vector3(series[6 + 2 * side], markers[side]->position);
+      const Eigen::Quaterniond& q = markers[side]->orientation;
+      const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
+      m.append_row(series[7 + 2 * side], wxyz);
+    }
   }
 
   // Drivers, energies, constraint violations, step count.

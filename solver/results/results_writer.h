@@ -26,6 +26,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace limber::results {
@@ -76,10 +77,24 @@ struct FlexibleBodySpec {
 };
 
 struct JointSpec {
+  JointSpec(std::string name_, std::string type_, std::string body_i_, std::string body_j_,
+            std::string marker_i_ = "", std::string marker_j_ = "")
+      : name(std::move(name_)), type(std::move(type_)), body_i(std::move(body_i_)),
+        body_j(std::move(body_j_)), marker_i(std::move(marker_i_)), marker_j(std::move(marker_j_)) {}
   std::string name;
   std::string type;
   std::string body_i;
   std::string body_j;
+  // Names of its markers i and j (attribute `name` of /joints/<joint>/marker_i, marker_j;
+  // none when empty).
+  std::string marker_i;
+  std::string marker_j;
+};
+
+// A marker frame's pose at a sample: origin and orientation (ground <- marker).
+struct MarkerPose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();                // [m]
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();   // ground <- marker
 };
 
 // One body's state at a sample.
@@ -113,6 +128,8 @@ struct JointSample {
   Eigen::Vector3d force_ground = Eigen::Vector3d::Zero();  // ground axes [N]
   Eigen::Vector3d torque_ground = Eigen::Vector3d::Zero(); // ground axes, about the joint [N m]
   bool indeterminate = false;  // minimum-norm reaction of a redundant joint
+  // The joint's markers i and j (/joints/<joint>/marker_i, marker_j; results_layout.h).
+  MarkerPose marker_i, marker_j;
 };
 
 // Everything written for one output time; vectors follow declaration order.

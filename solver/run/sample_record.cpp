@@ -63,6 +63,11 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
   return spec;
 }
 
+// A marker's origin and orientation (ground <- marker) from its kinematics.
+results::MarkerPose marker_pose(const multibody::FrameKinematics& frame) {
+  return {frame.p_W, Eigen::Quaterniond(frame.R_WF).normalized()};
+}
+
 }  // namespace
 
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer) {
@@ -80,7 +85,8 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
   for (const multibody::Joint& joint : model.joints) {
     writer.add_joint({joint.name, multibody::to_string(joint.type),
                       model.bodies[model.markers[joint.marker_i].body].name,
-                      model.bodies[model.markers[joint.marker_j].body].name});
+                      model.bodies[model.markers[joint.marker_j].body].name,
+                      model.markers[joint.marker_i].name, model.markers[joint.marker_j].name});
   }
   for (const multibody::Driver& driver : model.drivers) {
     writer.add_driver(driver.name,
@@ -212,7 +218,8 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   // Reactions on body j (joint frame = marker j's axes) and driver efforts.
   const multibody::Reactions reactions =
       multibody::compute_reactions(model_, state, sample.vdot, partition_, workspace_);
-  for (const multibody::JointReaction& r : reactions.joints) {
+  for (std::size_t k = 0; k < reactions.joints.size(); ++k) {
+    const multibody::JointReaction& r = reactions.joints[k];
     results::JointSample joint;
     joint.position = r.point_W;
     joint.force_joint = r.force_j_J;
@@ -220,6 +227,9 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     joint.force_ground = r.force_j_W;
     joint.torque_ground = r.torque_j_W;
     joint.indeterminate = r.indeterminate;
+    // Marker poses as compute_reactions left them in the workspace (this sample's q).
+    joint.marker_i = marker_pose(workspace_.markers[model_.joints[k].marker_i]);
+    joint.marker_j = marker_pose(workspace_.markers[model_.joints[k].marker_j]);
     out.joints.push_back(joint);
   }
   out.driver_efforts = reactions.driver_efforts;

@@ -3,6 +3,7 @@
 #include "results_reader.h"
 
 #include "core/error.h"
+#include "results/results_writer.h"
 #include "test_dir.h"
 #include "test_results.h"
 
@@ -57,6 +58,44 @@ std::string error_of(const std::filesystem::path& dir) {
     return error.what();
   }
   return "no error";
+}
+
+// Joint markers and the ground-axes force: what the writer was handed comes back (float64:
+// bit-exact positions and forces; quaternion to rotation matrix within rounding).
+TEST(ResultsReader, ReadsJointMarkersAndForces) {
+  const auto dir = fresh_directory("reader_markers");
+  std::vector<Eigen::Quaterniond> turns;
+  {
+    results::ResultsWriter writer(dir, "markers", "results_reader_test.cpp");
+    writer.add_rigid_body({"arm", {}});
+    writer.add_joint({"pin", "revolute", "ground", "arm", "pin.i", "pin.j"});
+    for (int k = 0; k < 5; ++k) {
+      results::Sample sample;
+      sample.time = 0.1 * k;
+      sample.bodies.resize(1);
+      results::JointSample joint;
+      joint.position = {0.5 * k, 0.0, 1.0};
+      joint.force_ground = {1.0, -2.0 * k, 3.0};
+      joint.marker_j.position = joint.position;
+      turns.emplace_back(Eigen::AngleAxisd(0.2 * k, Eigen::Vector3d(0.0, 1.0, 0.0)));
+      joint.marker_j.orientation = turns.back();
+      sample.joints = {joint};
+      writer.append_sample(sample);
+    }
+    writer.finish(results::RunStatus::kOk);
+  }
+  const Results r = read_results(dir);
+  ASSERT_EQ(r.joints.size(), 1u);
+  const JointTrack& pin = r.joints[0];
+  ASSERT_TRUE(pin.has_markers());
+  EXPECT_EQ(pin.marker_i.name, "pin.i");
+  EXPECT_EQ(pin.marker_j.name, "pin.j");
+  for (Eigen::Index k = 0; k < 5; ++k) {
+    EXPECT_EQ(pin.marker_j.position.row(k), pin.position.row(k));
+    EXPECT_EQ(pin.force_ground(k, 1), -2.0 * static_cast<double>(k));
+    EXPECT_TRUE(pin.marker_j.rotation(k).isApprox(turns[static_cast<std::size_t>(k)].toRotationMatrix(), 1e-15));
+    EXPECT_TRUE(pin.marker_i.rotation(k).isIdentity(0.0));
+  }
 }
 
 TEST(ResultsReader, MissingFileIsAClearError) {

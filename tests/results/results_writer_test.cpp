@@ -184,6 +184,44 @@ TEST(ResultsWriter, WritesStressPeaksEverySampleAndHistoryEveryNth) {
   H5Fclose(file);
 }
 
+// The joint's two marker frames: names as attributes, origin and quaternion per sample, each
+// value bit-exact (float64 stored as float64).
+TEST(ResultsWriter, WritesJointMarkerPoses) {
+  const auto dir = fresh_directory("markers");
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.3, Eigen::Vector3d(0.0, 1.0, 0.0)));
+  {
+    ResultsWriter writer(dir, "markers", "case.yaml");
+    writer.add_rigid_body({"crank", {}});
+    writer.add_joint({"R1", "revolute", "ground", "crank", "R1.i", "R1.j"});
+    for (int k = 0; k < 300; ++k) {  // more than one block (kBlockRows = 256)
+      Sample sample;
+      sample.time = 0.01 * k;
+      sample.bodies.resize(1);
+      sample.joints.resize(1);
+      sample.joints[0].marker_i.position = {0.0, 0.0, 1.0 * k};
+      sample.joints[0].marker_j.position = {2.0 * k, 0.0, 0.0};
+      sample.joints[0].marker_j.orientation = k == 1 ? turn : Eigen::Quaterniond::Identity();
+      writer.append_sample(sample);
+    }
+    writer.finish(RunStatus::kOk);
+  }
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/joints/R1/marker_i", "name"), "R1.i");
+  EXPECT_EQ(read_string_attribute(file, "/joints/R1/marker_j", "name"), "R1.j");
+  EXPECT_EQ(dataset_dims(file, "/joints/R1/marker_i/position"), (std::vector<hsize_t>{300, 3}));
+  EXPECT_EQ(dataset_dims(file, "/joints/R1/marker_j/orientation"), (std::vector<hsize_t>{300, 4}));
+  const std::vector<double> p_i = read_doubles(file, "/joints/R1/marker_i/position");
+  const std::vector<double> p_j = read_doubles(file, "/joints/R1/marker_j/position");
+  EXPECT_EQ(p_i[3 * 299 + 2], 299.0);
+  EXPECT_EQ(p_j[3 * 257], 514.0);
+  const std::vector<double> q_j = read_doubles(file, "/joints/R1/marker_j/orientation");
+  EXPECT_EQ((std::vector<double>(q_j.begin() + 4, q_j.begin() + 8)),
+            (std::vector<double>{turn.w(), turn.x(), turn.y(), turn.z()}));
+  EXPECT_EQ(q_j[8], 1.0);  // w of sample 2: identity
+  H5Fclose(file);
+}
+
 TEST(ResultsWriter, FailedRunKeepsItsMessage) {
   const auto dir = fresh_directory("failed");
   {

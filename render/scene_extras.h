@@ -1,0 +1,85 @@
+// Orientation aids drawn over the scene of `limber render` (issue 15, docs/rendering.md
+// "Joint glyphs, rails, ghost, force arrows"), kept apart from scene.cpp:
+//  - joint axis glyphs, from the joint markers' orientations in results.h5: a revolute or
+//    cylindrical joint gets a short cylinder along its pin axis (marker j's z), a translational
+//    one an arrow along its slide axis (marker i's z) from the joint point; each 0.12 (pin) or
+//    0.22 (arrow) of the scene radius long, or 1.5 times as far as the shapes of the joint's
+//    bodies that hold the joint point reach along the axis, if more, so it sticks out of them;
+//    the translational joint's rail is a line along that axis over
+//    the travel of the run (min..max of (p_j − p_i)·z_i, longer each side by 1/4 of the
+//    travel or 0.15 of the scene radius, whichever is more), carried by
+//    body i;
+//  - with options.ghost: each flexible body's undeformed outline (its mesh edges at the rigid
+//    fit through its joint nodes, relative_deflection.h, i.e. without the scaled deflection);
+//  - with options.forces: the reaction force on body j at every joint (force_ground), an arrow
+//    from the joint point, length |F| / (newtons per metre), the scale a round number chosen
+//    so the largest force in the time range is about a quarter of the scene, stated in a
+//    legend ("force arrows: 0.1 m = 50 N (reaction on body j)").
+// Internal to limber_render (exposes VTK types).
+#pragma once
+
+#include "body_pose.h"
+#include "relative_deflection.h"
+#include "render_options.h"
+#include "results_reader.h"
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+class vtkRenderer;
+class vtkTextActor;
+
+namespace limber::render {
+
+// Colours (RGB 0..1); tests look for them in frames.
+inline constexpr std::array<double, 3> kPinAxisColor{0.95, 0.70, 0.10};    // revolute pin
+inline constexpr std::array<double, 3> kSlideAxisColor{0.10, 0.55, 0.95};  // translational arrow
+inline constexpr std::array<double, 3> kRailColor{0.20, 0.20, 0.22};
+inline constexpr std::array<double, 3> kGhostColor{0.45, 0.45, 0.50};
+inline constexpr std::array<double, 3> kForceColor{0.80, 0.10, 0.60};
+
+class SceneExtras {
+ public:
+  // `scene_radius` [m]: the radius of everything drawn over the time range, which sizes the
+  // glyphs; [t0, t1] the time range (the force scale's peak is taken over it).
+  SceneExtras(const Results& results, const RenderOptions& options, vtkRenderer* renderer,
+              double scene_radius, double t0, double t1);
+  ~SceneExtras();
+  SceneExtras(const SceneExtras&) = delete;
+  SceneExtras& operator=(const SceneExtras&) = delete;
+
+  // Moves every glyph, rail, outline and arrow to the time `at`.
+  void update(const SampleBracket& at);
+  // The legend texts added (for the overlay boxes FXAA leaves alone).
+  std::vector<vtkSmartPointer<vtkTextActor>> texts() const;
+  // Newtons per metre of arrow (0 without force arrows).
+  double newtons_per_metre() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Marker pose between samples: origin interpolated linearly, orientation by slerp.
+// Precondition: the marker track has the results' ns rows.
+void marker_pose(const MarkerTrack& marker, const SampleBracket& at, Eigen::Vector3d& p_W,
+                 Eigen::Matrix3d& R_WM);
+
+// The force arrows' scale for the largest force `peak_force` [N] in a scene of radius
+// `scene_radius` [m]: a round force (1, 2 or 5 × 10^k N near peak / 2) drawn as a round length
+// (near 1/8 of the scene radius), so the peak's arrow is about a quarter of the radius.
+struct ForceScale {
+  double force = 0.0;   // [N]
+  double length = 0.0;  // [m]
+  double newtons_per_metre() const { return force / length; }
+};
+ForceScale force_scale(double peak_force, double scene_radius);
+
+// Travel of a translational joint along marker i's z over the whole run: min and max of
+// (p_j − p_i)·z_i [m].
+std::array<double, 2> slide_travel(const JointTrack& joint);
+
+}  // namespace limber::render

@@ -1,0 +1,250 @@
+// Orientation aids of `limber render` (render/scene_extras.h, render/mode_view.h), on frames
+// rendered offscreen from runs of the built `limber run`:
+//  - the pin glyph's colour at the projected revolute joint (front view: the pin axis, ground y,
+//    points at the camera, so its end cap covers the joint point);
+//  - the slide arrow beyond the slider along the slide axis, the rail behind it over the travel;
+//  - the reaction-force arrow of a crank at constant speed along the closed-form direction (the
+//    pin pulls the crank towards the axis: from the pin away from the crank), none the other way;
+//  - the ghost outline where the undeformed beam lies and the deformed one does not;
+//  - the force scale's bounds, and the mode plane of a beam's in- and out-of-plane modes.
+#include "frame_renderer.h"
+#include "mode_animation.h"
+#include "mode_view.h"
+#include "scene_extras.h"
+#include "world_triad.h"
+
+#include "test_dir.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+
+namespace limber::render {
+namespace {
+
+constexpr int kWidth = 480, kHeight = 360;
+
+// Runs `limber run` on `case_text` into a fresh directory and reads the results.
+Results run_case(const std::string& name, const std::string& case_text) {
+  const auto dir = testing::fresh_directory("extras_" + name);
+  std::filesystem::create_directories(dir);
+  const auto case_file = dir / "case.yaml";
+  std::ofstream(case_file) << case_text;
+  const std::string command = std::string(LIMBER_EXE) + " run " + case_file.string() + " -o " +
+                              (dir / "run").string() + " > " + (dir / "log").string() + " 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0);
+  return read_results(dir / "run");
+}
+
+// A rigid crank (0.3 kg, centre of mass 0.025 m from the pin) at 5 rev/s about ground y, no
+// gravity; its shapes around the pin: a grey cylinder along y and a box along the crank.
+const char* kCrank = R"(title: crank
+gravity: [0, 0, 0]
+bodies:
+  crank:
+    mass: 0.3
+    inertia: [2.8125e-5, 6.8125e-5, 8.5e-5]
+    center_of_mass: [0.025, 0, 0]
+    position: [0, 0, 0]
+    shapes:
+      - {type: box, size: [0.05, 0.03, 0.015], position: [0.025, 0, 0], color: [0.85, 0.35, 0.2]}
+      - {type: cylinder, radius: 0.01, length: 0.04, orientation: {z_axis: [0, 1, 0]}, color: [0.3, 0.3, 0.3]}
+joints:
+  R1: {type: revolute, body_i: ground, body_j: crank, position: [0, 0, 0],
+       orientation: {z_axis: [0, 1, 0], x_axis: [1, 0, 0]}}
+drivers:
+  D1: {joint: R1, motion: {type: constant_speed, initial: 0, speed: 31.41592653589793}}
+run: {integrator: ida, rtol: 1.0e-8, atol: 1.0e-10, t_end: 0.1, sample_interval: 0.01}
+)";
+
+// A 0.1 m block sliding on a ground rail along x at 1 m/s for 0.2 s.
+const char* kSlider = R"(title: slider
+gravity: [0, 0, 0]
+bodies:
+  block:
+    mass: 1.0
+    inertia: [4.1667e-4, 4.1667e-4, 4.1667e-4]
+    position: [0, 0, 0]
+    shapes:
+      - {type: box, size: [0.1, 0.05, 0.05], color: [0.25, 0.5, 0.3]}
+joints:
+  T: {type: translational, body_i: ground, body_j: block, position: [0, 0, 0],
+      orientation: {z_axis: [1, 0, 0], x_axis: [0, 1, 0]}}
+drivers:
+  D1: {joint: T, motion: {type: constant_speed, initial: 0, speed: 1.0}}
+run: {integrator: ida, t_end: 0.2, sample_interval: 0.01}
+)";
+
+RenderOptions front_view() {
+  RenderOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  options.camera = CameraPreset::kFront;
+  options.ground = false;
+  options.world_triad = false;
+  options.time_stamp = false;
+  options.anti_aliasing = AntiAliasing::kNone;
+  return options;
+}
+
+// Whether a pixel has the hue of `color`: each channel within `tolerance` of c × s for one
+// shading factor s in [0.3, 1.3] (the glyphs are lit mostly ambient: s varies with the light,
+// the ratio of the channels does not; the bound keeps the light grey background, s > 1.8 for
+// every grey here, from passing for a dark grey).
+bool has_hue(const std::array<int, 3>& pixel, const std::array<double, 3>& color, int tolerance = 25) {
+  const double brightest = std::max({color[0], color[1], color[2]});
+  const double s = std::max({pixel[0], pixel[1], pixel[2]}) / (255.0 * brightest);
+  for (int c = 0; c < 3; ++c) {
+    if (std::abs(pixel[c] - 255.0 * s * color[c]) > tolerance) return false;
+  }
+  return s > 0.3 && s < 1.3;
+}
+
+// Pixels with the hue along the segment between two projected points (inclusive), counted.
+int count_along(const Image& image, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                const std::array<double, 3>& color) {
+  const int steps = static_cast<int>(std::ceil((to - from).norm())) + 1;
+  int found = 0;
+  for (int k = 0; k <= steps; ++k) {
+    const Eigen::Vector2d p = from + (to - from) * (static_cast<double>(k) / steps);
+    const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+    found += has_hue(image.pixel(x, y), color) ? 1 : 0;
+  }
+  return found;
+}
+
+TEST(SceneExtras, PinGlyphAtTheProjectedRevoluteAndForceArrowAlongTheCentripetalPull) {
+  unsetenv("DISPLAY");
+  const Results results = run_case("crank", kCrank);
+  ASSERT_TRUE(results.joints.at(0).has_markers());
+  RenderOptions options = front_view();
+  options.forces = true;
+  FrameRenderer renderer(results, options, 0.0, 0.1);
+  const Image image = renderer.render(0.0);
+  // The joint point (ground origin) shows the pin's amber, not the crank's grey cylinder.
+  const Eigen::Vector2d pin = renderer.project(Eigen::Vector3d::Zero());
+  const auto p = image.pixel(static_cast<int>(pin.x()), static_cast<int>(pin.y()));
+  EXPECT_TRUE(has_hue(p, kPinAxisColor)) << p[0] << " " << p[1] << " " << p[2];
+  // At t = 0 the crank lies along +x; the force on it, m r w^2 = 7.4 N, points from the pin to
+  // -x. Its arrow shows along -x beyond the pin cap (radius < 0.01 m), none along +x.
+  const int minus_x = count_along(image, renderer.project({-0.012, 0.0, 0.0}), renderer.project({-0.2, 0.0, 0.0}),
+                                  kForceColor);
+  const int plus_x = count_along(image, renderer.project({0.012, 0.0, 0.0}), renderer.project({0.2, 0.0, 0.0}),
+                                 kForceColor);
+  EXPECT_GT(minus_x, 3);
+  EXPECT_EQ(plus_x, 0);
+}
+
+TEST(SceneExtras, SlideArrowBeyondTheSliderAndTheRailOverItsTravel) {
+  unsetenv("DISPLAY");
+  const Results results = run_case("slider", kSlider);
+  ASSERT_TRUE(results.joints.at(0).has_markers());
+  // Travel (p_j − p_i)·z_i from 0 to 0.2 m (1 m/s for 0.2 s), to IDA's tolerance.
+  const std::array<double, 2> travel = slide_travel(results.joints[0]);
+  EXPECT_NEAR(travel[0], 0.0, 1e-9);
+  EXPECT_NEAR(travel[1], 0.2, 1e-6);
+  FrameRenderer renderer(results, front_view(), 0.0, 0.2);
+  const Image image = renderer.render(0.0);
+  // The block spans x in [-0.05, 0.05] at t = 0: the arrow from the joint along +x shows past
+  // it (its length is at least twice the block's radius 0.061 m), then the rail on the axis up
+  // to the travel's end 0.2 m plus its margin (max(0.25 x 0.2 m, 0.15 x the scene radius)).
+  EXPECT_GT(count_along(image, renderer.project({0.06, 0, 0}), renderer.project({0.09, 0, 0}), kSlideAxisColor), 2);
+  EXPECT_GT(count_along(image, renderer.project({0.15, 0, 0}), renderer.project({0.24, 0, 0}), kRailColor), 20);
+  EXPECT_EQ(count_along(image, renderer.project({0.15, 0, 0.02}), renderer.project({0.24, 0, 0.02}), kRailColor), 0);
+  EXPECT_EQ(count_along(image, renderer.project({0.45, 0, 0}), renderer.project({0.6, 0, 0}), kRailColor), 0);
+}
+
+TEST(SceneExtras, GhostOutlineWhereTheUndeformedBeamLies) {
+  unsetenv("DISPLAY");
+  // A straight 1 m beam along x bending in z: phi_z = sin(pi x); at a quarter period the
+  // midspan has moved 0.1 m up, and the undeformed line y = z = 0 shows the ghost's grey there.
+  BodyModeShapes beam;
+  beam.name = "beam";
+  const int nodes = 21;
+  beam.mesh.nodes.setZero(nodes, 3);
+  beam.mesh.lines.resize(nodes - 1, 2);
+  beam.mesh.mode_translations.setZero(3 * nodes, 1);
+  for (int n = 0; n < nodes; ++n) {
+    beam.mesh.nodes(n, 0) = n / (nodes - 1.0);
+    beam.mesh.mode_translations(3 * n + 2, 0) = std::sin(M_PI * n / (nodes - 1.0));
+    if (n + 1 < nodes) beam.mesh.lines.row(n) << n, n + 1;
+  }
+  beam.mesh.frequencies_hz = Eigen::VectorXd::Constant(1, 10.0);
+  beam.kinds = {"normal"};
+  beam.labels = {"normal 1"};
+  ModeAnimationOptions animation;
+  const Results results = mode_results(beam, 0, animation);
+  const double lift = results.bodies[0].modal_coordinates(6, 0);  // A sin(pi/2) at the midspan
+  EXPECT_GT(lift, 0.05);
+  RenderOptions options = front_view();
+  for (bool ghost : {true, false}) {
+    // One renderer (one EGL context) at a time.
+    options.ghost = ghost;
+    FrameRenderer renderer(results, options, 0.0, 0.1);
+    const Image image = renderer.render(0.025);  // T / 4: eta = A
+    const int grey = count_along(image, renderer.project({0.4, 0, 0}), renderer.project({0.6, 0, 0}), kGhostColor);
+    // Without --ghost nothing grey lies there.
+    if (ghost) EXPECT_GT(grey, 10);
+    else EXPECT_EQ(grey, 0);
+  }
+}
+
+TEST(SceneExtras, ForceScaleIsRoundAndThePeakArrowAFewTenthsOfTheScene) {
+  // round_length returns 0.7 to 1.75 times its argument, so the peak's arrow, peak / (F/L),
+  // is 0.1 to 0.625 of the scene radius: never a speck, never across the picture.
+  for (double peak : {7.4, 829.0, 2210.0, 0.013, 5e6}) {
+    for (double radius : {0.05, 0.6, 3.0, 40.0}) {
+      const ForceScale scale = force_scale(peak, radius);
+      EXPECT_EQ(scale.force, round_length(scale.force));
+      EXPECT_EQ(scale.length, round_length(scale.length));
+      const double arrow = peak / scale.newtons_per_metre();
+      EXPECT_GE(arrow, 0.1 * radius) << peak << " " << radius;
+      EXPECT_LE(arrow, 0.625 * radius) << peak << " " << radius;
+    }
+  }
+  // The slider-crank's figure: a peak of 2210 N in a 0.6 m scene is drawn at 0.1 m = 1000 N.
+  EXPECT_DOUBLE_EQ(force_scale(2210.0, 0.6).force, 1000.0);
+  EXPECT_DOUBLE_EQ(force_scale(2210.0, 0.6).length, 0.1);
+}
+
+TEST(ModeView, BeamModesAreSeenSquareToTheirPlane) {
+  FlexibleMesh beam;
+  beam.nodes.setZero(11, 3);
+  for (int n = 0; n < 11; ++n) beam.nodes(n, 0) = 0.1 * n;
+  beam.mode_translations.setZero(33, 3);
+  for (int n = 0; n < 11; ++n) {
+    const double shape = std::sin(M_PI * n / 10.0);
+    beam.mode_translations(3 * n + 1, 0) = shape;        // bending in y
+    beam.mode_translations(3 * n + 2, 1) = shape;        // bending in z
+    beam.mode_translations(3 * n + 0, 2) = 0.1 * n;      // axial
+  }
+  const std::optional<ModeView> in_y = mode_view(beam, 0);
+  ASSERT_TRUE(in_y.has_value());
+  EXPECT_EQ(in_y->plane, "body x-y plane");
+  EXPECT_NEAR(std::abs(in_y->direction.z()), 1.0, 1e-12);
+  // Looking along z (up = y): x runs to the right, so the eye is on +z (right = -z × y = x).
+  EXPECT_GT(in_y->direction.z(), 0.0);
+  const std::optional<ModeView> in_z = mode_view(beam, 1);
+  ASSERT_TRUE(in_z.has_value());
+  EXPECT_EQ(in_z->plane, "body x-z plane");
+  EXPECT_LT(in_z->direction.y(), -1.0 + 1e-12);  // as the front preset: eye on -y
+  // Axial: the view is square to x (the motion), whichever normal.
+  const std::optional<ModeView> axial = mode_view(beam, 2);
+  ASSERT_TRUE(axial.has_value());
+  EXPECT_NEAR(axial->direction.x(), 0.0, 1e-12);
+  // A plate is not slender: the preset view stays.
+  FlexibleMesh plate;
+  plate.nodes.resize(11 * 7, 3);
+  for (int i = 0; i < 11; ++i) {
+    for (int j = 0; j < 7; ++j) plate.nodes.row(7 * i + j) << 0.1 * i, 0.1 * j, 0.0;
+  }
+  plate.mode_translations = Eigen::MatrixXd::Ones(3 * 77, 1);
+  EXPECT_FALSE(mode_view(plate, 0).has_value());
+}
+
+}  // namespace
+}  // namespace limber::render
