@@ -6,6 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
 #include "core/error.h"
 #include "modal/constrained_matrices.h"
 #include "modal/dof_selection.h"
@@ -74,6 +77,36 @@ SiteDofs site_dofs(const fe::FeModel& model, const std::vector<StaticModeSite>& 
   return result;
 }
 
+// The combinations N (r x r', orthonormal) of the rigid motions `psi_free` (n x r, full
+// displacements) that the springs of the model (FeModel::dof_stiffnesses) do not resist: the
+// null space of psi_free^T K_springs psi_free, columns normalised first, eigenvalues below
+// 1e-9 of K's largest diagonal entry counted as zero (a spring softer than that is not a
+// support, and a two-node spring's rigid energy is round-off far below it). A grounded spring
+// restrains rigid motion as a fixed DOF does.
+Eigen::MatrixXd unresisted_rigid_motion(const fe::FeModel& model, const fe::SparseMatrix& stiffness,
+                                        const Eigen::MatrixXd& psi_free) {
+  const Eigen::VectorXd norms = psi_free.colwise().norm();
+  const Eigen::MatrixXd v = psi_free * norms.cwiseInverse().asDiagonal();
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(v.cols(), v.cols());
+  for (const fe::DofMatrix& spring : model.dof_stiffnesses) {
+    const Eigen::MatrixXd v_e = gather_rows(v, spring.dofs);
+    g += v_e.transpose() * spring.values * v_e;
+  }
+  const double scale = stiffness.diagonal().cwiseAbs().maxCoeff();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(0.5 * (g + g.transpose()));
+  std::vector<Eigen::Index> zero;
+  for (Eigen::Index i = 0; i < g.rows(); ++i) {
+    if (eigen.eigenvalues()(i) <= 1e-9 * scale) zero.push_back(i);
+  }
+  Eigen::MatrixXd n(g.rows(), static_cast<Eigen::Index>(zero.size()));
+  for (std::size_t j = 0; j < zero.size(); ++j) {
+    n.col(static_cast<Eigen::Index>(j)) = norms.cwiseInverse().asDiagonal() * eigen.eigenvectors().col(zero[j]);
+  }
+  // Back to unnormalised columns of psi_free, re-orthonormalised (Psi N must stay a basis).
+  if (n.cols() > 0) n = Eigen::HouseholderQR<Eigen::MatrixXd>(n).householderQ() * Eigen::MatrixXd::Identity(n.rows(), n.cols());
+  return n;
+}
+
 ModalResult failure(ModalStatus status, const std::string& what, const std::string& message,
                     std::vector<std::string> notices) {
   ModalResult result;
@@ -138,7 +171,20 @@ ModalResult compute_component_modes(const fe::FeModel& model,
         return all;
       }(),
       unheld_dofs);
-  const Eigen::MatrixXd psi_free = unrestrained_rigid_motion(psi, fixed);
+  Eigen::MatrixXd psi_free = unrestrained_rigid_motion(psi, fixed);
+  if (!model.dof_stiffnesses.empty() && psi_free.cols() > 0) {
+    const Eigen::MatrixXd full = constrained ? expand(*constrained, psi_free) : psi_free;
+    const Eigen::MatrixXd unresisted = unresisted_rigid_motion(model, matrices.stiffness, full);
+    // Static modes take the free rigid motion from the held DOFs alone (static_modes.h).
+    if (unresisted.cols() < psi_free.cols() && (!constraint.dofs.empty() || !attachment.dofs.empty())) {
+      throw InputError(fmt::format(
+          "mode request: expected no constraint or attachment modes on a body whose grounded "
+          "springs restrain rigid motion ({} of {} rigid motions), got static-mode sites (not "
+          "supported: hold the DOFs with fixed DOFs instead)",
+          psi_free.cols() - unresisted.cols(), psi_free.cols()));
+    }
+    psi_free = psi_free * unresisted;
+  }
   const int rigid_count = static_cast<int>(psi_free.cols());
   if (request.normal_count + rigid_count > n_free) {
     throw InputError(fmt::format(

@@ -112,13 +112,13 @@ TEST(DeckErrors, Mat1TakesTwoOfEGNu) {
 }
 
 TEST(DeckErrors, UnsupportedCardsAreErrorsUnlessAllowed) {
-  const std::string text = kPlate + "CTRIA6,20,1,1,2,5\nRBE2,30,1,123456,2\nCTRIA6,21,1,2,3,6\n"
+  const std::string text = kPlate + "CTRIA6,20,1,1,2,5\nRBAR,30,1,2,123456\nCTRIA6,21,1,2,3,6\n"
                                     "FORCE,1,5,,1.,0.,0.,1.\n";
   DeckOptions options;
   options.where = {"case.yaml", 4, 16};
   // The error is at the case entry and lists each card with its count and lines.
   EXPECT_TRUE(fails_at(text, "case.yaml:4:16",
-                       "CTRIA6 (2 cards: deck.bdf:11, deck.bdf:13); RBE2 (1 card: deck.bdf:12)",
+                       "CTRIA6 (2 cards: deck.bdf:11, deck.bdf:13); RBAR (1 card: deck.bdf:12)",
                        options));
   // Allowed: a notice with the same list; FORCE (a load) is ignored either way.
   options.unsupported_is_error = false;
