@@ -19,6 +19,7 @@
 #include "deck_text.h"
 #include "fe/rigid_elements.h"
 #include "modal/component_modes.h"
+#include "modal/geometric_stiffness.h"
 
 namespace limber::bulkdata {
 namespace {
@@ -96,6 +97,31 @@ TEST(DeckRigidElements, Rbe2JoiningCoincidentGridsEqualsMergedGrids) {
   const Eigen::MatrixXd& phi = b.mode_set.shapes;
   EXPECT_LT((phi.middleRows(6 * n1011, 6) - phi.middleRows(6 * n11, 6)).cwiseAbs().maxCoeff(),
             1e-14 * phi.cwiseAbs().maxCoeff());
+}
+
+TEST(DeckRigidElements, GeometricStiffnessThroughAnRbe2EqualsMergedGrids) {
+  // The centrifugal and tip-force geometric stiffness of the split cantilever (static solves
+  // with the RBE2 eliminated) equals the merged one's. Diagonal entries phi_i^T K_G phi_i do
+  // not depend on the modes' signs (the frequencies are distinct).
+  const fe::FeModel merged = from_deck_text(cantilever(false, ""), clamped());
+  const fe::FeModel joined = from_deck_text(cantilever(true, card({"RBE2", "900", "11", "123456", "1011"})), clamped());
+  const auto stiffness = [](const fe::FeModel& model) {
+    const modal::ModalResult result = modes(model, 4);
+    const std::vector<int> tip = {index_of(model, 21)};
+    return modal::compute_modal_geometric_stiffness(model, fe::assemble(model), result.mode_set.shapes, tip);
+  };
+  const modal::ModalGeometricStiffnessResult a = stiffness(merged);
+  const modal::ModalGeometricStiffnessResult b = stiffness(joined);
+  ASSERT_EQ(a.status, modal::ModalStatus::kOk);
+  ASSERT_EQ(b.status, modal::ModalStatus::kOk) << b.message;
+  const auto expect_same_diagonal = [](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
+    // Static solves and modes to ~1e-10; 1e-8 of the largest entry bounds their products.
+    EXPECT_LT((x.diagonal() - y.diagonal()).cwiseAbs().maxCoeff(), 1e-8 * y.cwiseAbs().maxCoeff());
+    EXPECT_GT(y.cwiseAbs().maxCoeff(), 0.0);
+  };
+  // Spin about y and z (about x, the beam axis, nothing loads the beam).
+  for (int c = 1; c < 3; ++c) expect_same_diagonal(b.stiffness.centrifugal[static_cast<std::size_t>(c)], a.stiffness.centrifugal[static_cast<std::size_t>(c)]);
+  expect_same_diagonal(b.stiffness.node_forces[0][0], a.stiffness.node_forces[0][0]);
 }
 
 // u_q = S u_p for a point q at offset d from p (rigid_elements.h).
