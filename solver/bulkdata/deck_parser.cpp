@@ -271,8 +271,8 @@ class Parser {
     const std::string type = f.text(5);
     const int count = pbarl_dimension_count(type);
     if (count == 0) {
-      f.fail(5, "TYPE", fmt::format("expected a PBARL type ROD, TUBE, BAR or BOX, got '{}' (give "
-                                    "other sections as PBAR)",
+      f.fail(5, "TYPE", fmt::format("expected a PBARL type ROD, TUBE, BAR, BOX, I, CHAN, T or HAT, "
+                                    "got '{}' (give other sections as PBAR)",
                                     type));
     }
     // DIM1..DIMn from field 12 on (markers skipped), then NSM.
