@@ -143,6 +143,7 @@ class Reader {
       }
     }
 
+    if (first > 0) case_control_sets(lines, first, file);
     open_ = false;
     for (std::size_t i = first; i < lines.size() && !ended_; ++i) {
       read_line(clean_line(lines[i]), file, static_cast<int>(i) + 1);
@@ -157,6 +158,54 @@ class Reader {
   bool open_ = false;               // cards.back() may take continuation lines
   bool open_large_ = false;         // ... and was started in large-field format
   bool ended_ = false;              // ENDDATA seen
+
+  // Case-control "SET n = id, id THRU id, ..." lines (after CEND, before BEGIN BULK; a line
+  // ending in a comma continues) as cards named SET: the id, then the members, THRU kept.
+  // Sets of other forms (ALL, EXCEPT, BY, reals) name no list of grids and are skipped.
+  void case_control_sets(const std::vector<std::string>& lines, std::size_t first,
+                         const std::shared_ptr<const std::string>& file) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i + 1 < first; ++i) {
+      if (starts_with_keyword(upper(trimmed(clean_line(lines[i])).first), "CEND")) start = i + 1;
+    }
+    for (std::size_t i = start; i + 1 < first; ++i) {
+      const std::string head = upper(trimmed(clean_line(lines[i])).first);
+      if (!starts_with_keyword(head, "SET")) continue;
+      // The tokens of the set's lines, with their places.
+      Card card;
+      card.name = "SET";
+      card.file = file;
+      card.line = static_cast<int>(i) + 1;
+      bool readable = true, equals = false;
+      for (std::size_t k = i; k + 1 < first; ++k) {
+        const std::string line = upper(clean_line(lines[k]));
+        std::size_t at = k == i ? line.find("SET") + 3 : 0;
+        while (at < line.size()) {
+          if (line[at] == ',' || is_blank(line[at])) {
+            ++at;
+            continue;
+          }
+          if (line[at] == '=') {
+            if (equals || card.fields.size() != 1) readable = false;
+            equals = true;
+            ++at;
+            continue;
+          }
+          std::size_t end = at;
+          while (end < line.size() && line[end] != ',' && line[end] != '=' && !is_blank(line[end])) ++end;
+          const std::string token = line.substr(at, end - at);
+          const bool digits = std::all_of(token.begin(), token.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+          if (!digits && token != "THRU") readable = false;
+          card.fields.push_back({token, static_cast<int>(k) + 1, static_cast<int>(at) + 1});
+          at = end;
+        }
+        const std::string_view rest = trimmed(line).first;
+        i = k;
+        if (rest.empty() || rest.back() != ',') break;
+      }
+      if (readable && equals && card.fields.size() >= 2) cards.push_back(std::move(card));
+    }
+  }
 
   void read_line(const std::string& line, const std::shared_ptr<const std::string>& file,
                  int number) {

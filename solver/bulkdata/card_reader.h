@@ -14,7 +14,10 @@
 //  - INCLUDE 'path' (path relative to the including file; quotes optional) reads another file
 //    of bulk data in place; an include cycle is an error;
 //  - a main file holding BEGIN BULK is read after that line (executive and case control
-//    skipped); without it, the whole file is bulk data; ENDDATA ends the deck.
+//    skipped); without it, the whole file is bulk data; ENDDATA ends the deck;
+//  - case-control "SET n = 1, 5 THRU 9, ..." lines (continued by a trailing comma) become
+//    cards named SET (fields: n, then the members, THRU kept), placed before the bulk data;
+//    sets of other forms (ALL, EXCEPT, BY, reals) are skipped.
 // Field text is trimmed and upper-cased; names lose their '*'.
 //
 // Errors are InputError at file:line:column (an unreadable file at the INCLUDE that names it).

@@ -128,7 +128,7 @@ class Parser {
         {"CELAS2", &Parser::scalar}, {"CMASS1", &Parser::scalar}, {"CMASS2", &Parser::scalar},
         {"PELAS", &Parser::pelas},   {"PMASS", &Parser::pmass},   {"CBUSH", &Parser::cbush},
         {"PBUSH", &Parser::pbush},   {"CONM1", &Parser::conm1},   {"CROD", &Parser::crod},
-        {"CONROD", &Parser::conrod}, {"PROD", &Parser::prod}};
+        {"CONROD", &Parser::conrod}, {"PROD", &Parser::prod},     {"SET", &Parser::set1}};
     if (auto found = handlers.find(card.name); found != handlers.end()) {
       (this->*found->second)(f);
     } else if (kIgnoredCards.contains(card.name)) {
@@ -514,7 +514,10 @@ class Parser {
 
   void set1(const CardFields& f) {
     const int id = f.id(2, "SID");
-    if (deck_.sets.contains(id)) f.fail(2, "SID", fmt::format("expected a unique SET1 id, got {} again", id));
+    if (deck_.sets.contains(id)) {
+      f.fail(2, "SID", fmt::format("expected a unique set id (SET1 cards and case-control SET "
+                                   "lines both name node sets set<id>), got {} again", id));
+    }
     deck_.sets.emplace(id, id_list(f, 3, "ID"));
   }
 

@@ -145,6 +145,18 @@ TEST(DeckSets, ThruRangesHoldTheGridsWithinThem) {
   EXPECT_TRUE(fails_at(text, deck_location(text, "SPC1"), "expected a defined GRID id, got 77", options));
 }
 
+TEST(DeckSets, CaseControlSetLinesAreNodeSets) {
+  // SET 20 over two lines (a trailing comma continues), a set of ALL (no list: skipped), and
+  // a set whose id clashes with a SET1 (an error at the second).
+  std::string text = "SOL 103\nCEND\nSET 20 = 1, 3 THRU 5,\n   6\nSET 21 = ALL\nDISP = 20\nBEGIN BULK\n" + kPlate;
+  fe::FeModelBuilder builder;
+  add_deck(parse_deck(read_cards_text(text, "deck.bdf"), "deck.bdf"), {}, builder);
+  EXPECT_EQ(builder.peek().node_sets.at("set20"), (std::vector<int>{0, 2, 3, 4, 5}));
+  EXPECT_FALSE(builder.peek().node_sets.contains("set21"));
+  text = "SOL 103\nCEND\nSET 10 = 1, 2\nBEGIN BULK\n" + kPlate + "SET1,10,3,4\n";
+  EXPECT_TRUE(fails_at(text, deck_location(text, "10,3,4"), "expected a unique set id"));
+}
+
 TEST(DeckErrors, MassOffsetsAndRotatedConstraints) {
   // A CONM2 off its grid (offset, or CID = -1 at another point) is not a point mass.
   std::string text = kPlate + "CONM2,20,5,,2.,0.1\n";
