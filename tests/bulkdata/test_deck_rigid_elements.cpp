@@ -171,6 +171,11 @@ TEST(DeckRigidElements, Rbe2OffsetMassEqualsTheTransferredMassAndMovesRigidly) {
   const modal::ModalResult a = modes(with_spider, 8);
   const modal::ModalResult b = modes(with_conm1, 8);
   expect_same_frequencies(frequencies(a), frequencies(b));
+  // The same link as a chain of two RBE2s through a grid half-way (substituted through T).
+  std::string chain = card({"GRID", "50", "", "1.1", "0.2", "0.05"}) + card({"GRID", "49", "", "1.05", "0.1", "0.025"});
+  chain += card({"CONM2", "500", "50", "", "2.", "", "", "", "", "0.02", "0.001", "0.03", "0.", "-0.002", "0.04"});
+  chain += card({"RBE2", "901", "49", "123456", "50"}) + card({"RBE2", "900", "21", "123456", "49"});
+  expect_same_frequencies(frequencies(modes(from_deck_text(cantilever(false, chain), clamped()), 8)), frequencies(b));
   // Grid 50 moves rigidly with the tip in every mode: u_50 = S u_21.
   const Eigen::MatrixXd& phi = a.mode_set.shapes;
   const int tip_node = index_of(with_spider, 21), mass_node = index_of(with_spider, 50);
