@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string_view>
 
@@ -143,6 +144,7 @@ class Reader {
       }
     }
 
+    if (first > 0) case_control_sets(lines, first, file);
     open_ = false;
     for (std::size_t i = first; i < lines.size() && !ended_; ++i) {
       read_line(clean_line(lines[i]), file, static_cast<int>(i) + 1);
@@ -157,6 +159,57 @@ class Reader {
   bool open_ = false;               // cards.back() may take continuation lines
   bool open_large_ = false;         // ... and was started in large-field format
   bool ended_ = false;              // ENDDATA seen
+  std::size_t target_ = 0;          // the card continuation lines add to
+  std::vector<bool> large_;         // per card: started in large-field format
+  std::map<std::string, std::size_t> awaiting_;  // field-10 marker -> its card
+
+  // Case-control "SET n = id, id THRU id, ..." lines (after CEND, before BEGIN BULK; a line
+  // ending in a comma continues) as cards named SET: the id, then the members, THRU kept.
+  // Sets of other forms (ALL, EXCEPT, BY, reals) name no list of grids and are skipped.
+  void case_control_sets(const std::vector<std::string>& lines, std::size_t first,
+                         const std::shared_ptr<const std::string>& file) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i + 1 < first; ++i) {
+      if (starts_with_keyword(upper(trimmed(clean_line(lines[i])).first), "CEND")) start = i + 1;
+    }
+    for (std::size_t i = start; i + 1 < first; ++i) {
+      const std::string head = upper(trimmed(clean_line(lines[i])).first);
+      if (!starts_with_keyword(head, "SET")) continue;
+      // The tokens of the set's lines, with their places.
+      Card card;
+      card.name = "SET";
+      card.file = file;
+      card.line = static_cast<int>(i) + 1;
+      bool readable = true, equals = false;
+      for (std::size_t k = i; k + 1 < first; ++k) {
+        const std::string line = upper(clean_line(lines[k]));
+        std::size_t at = k == i ? line.find("SET") + 3 : 0;
+        while (at < line.size()) {
+          if (line[at] == ',' || is_blank(line[at])) {
+            ++at;
+            continue;
+          }
+          if (line[at] == '=') {
+            if (equals || card.fields.size() != 1) readable = false;
+            equals = true;
+            ++at;
+            continue;
+          }
+          std::size_t end = at;
+          while (end < line.size() && line[end] != ',' && line[end] != '=' && !is_blank(line[end])) ++end;
+          const std::string token = line.substr(at, end - at);
+          const bool digits = std::all_of(token.begin(), token.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+          if (!digits && token != "THRU") readable = false;
+          card.fields.push_back({token, static_cast<int>(k) + 1, static_cast<int>(at) + 1});
+          at = end;
+        }
+        const std::string_view rest = trimmed(line).first;
+        i = k;
+        if (rest.empty() || rest.back() != ',') break;
+      }
+      if (readable && equals && card.fields.size() >= 2) cards.push_back(std::move(card));
+    }
+  }
 
   void read_line(const std::string& line, const std::shared_ptr<const std::string>& file,
                  int number) {
@@ -183,14 +236,38 @@ class Reader {
     }
   }
 
+  // A continuation marker without its '+' or '*' (markers match whatever their first mark).
+  static std::string marker_key(std::string_view marker) {
+    const auto [text, offset] = trimmed(marker);
+    if (text.empty()) return {};
+    return upper(text[0] == '+' || text[0] == '*' ? text.substr(1) : text);
+  }
+
+  // The marker in field 10 of the line just read: a later continuation line that names it
+  // continues this card, wherever it is in the deck.
+  void end_line(std::string_view marker) {
+    const std::string key = marker_key(marker);
+    if (!key.empty()) awaiting_[key] = target_;
+  }
+
   // Starts a card or checks that a continuation has one; returns the line's large-field flag.
+  // A continuation whose marker matches an earlier card's field 10 continues that card; one
+  // without a match continues the card above it.
   bool start_line(std::string_view first, const std::shared_ptr<const std::string>& file,
                   int number, int column) {
     const bool continuation = first.empty() || first[0] == '+' || first[0] == '*';
     if (continuation) {
+      const std::string key = marker_key(first);
+      if (const auto found = key.empty() ? awaiting_.end() : awaiting_.find(key); found != awaiting_.end()) {
+        target_ = found->second;
+        awaiting_.erase(found);
+        open_ = true;
+        open_large_ = large_[target_];
+      }
       if (!open_) {
         throw InputError(
-            "expected a card name in field 1, got a continuation line with no card before it",
+            "expected a card name in field 1, got a continuation line with no card before it "
+            "(and no card whose continuation marker in field 10 matches it)",
             {*file, number, column});
       }
       return (!first.empty() && first[0] == '*') || (first.empty() && open_large_);
@@ -209,6 +286,8 @@ class Reader {
     card.file = file;
     card.line = number;
     cards.push_back(std::move(card));
+    target_ = cards.size() - 1;
+    large_.push_back(large);
     open_ = true;
     open_large_ = large;
     return large;
@@ -216,7 +295,7 @@ class Reader {
 
   void add_field(std::string_view text, int number, int column) {
     const auto [content, offset] = trimmed(text);
-    cards.back().fields.push_back(
+    cards[target_].fields.push_back(
         {upper(content), number, column + static_cast<int>(content.empty() ? 0 : offset)});
   }
 
@@ -227,12 +306,14 @@ class Reader {
     const bool large = start_line(first, file, number, static_cast<int>(offset) + 1);
     const int width = large ? kLargeWidth : kSmallWidth;
     const int count = large ? kLargeFieldsPerLine : kSmallFieldsPerLine;
-    // Columns 73-80 (the continuation marker) and beyond are not data.
+    // Columns 73-80 hold the continuation marker; beyond them nothing is read.
     for (int k = 0; k < count; ++k) {
       const std::size_t start = kNameWidth + static_cast<std::size_t>(k) * width;
       const std::string_view text = start < view.size() ? view.substr(start, width) : "";
       add_field(text, number, static_cast<int>(start) + 1);
     }
+    constexpr std::size_t kMarkerColumn = 72;
+    end_line(view.size() > kMarkerColumn ? view.substr(kMarkerColumn, kSmallWidth) : "");
   }
 
   void read_free_line(const std::string& line, const std::shared_ptr<const std::string>& file,
@@ -266,6 +347,7 @@ class Reader {
         add_field("", number, 0);
       }
     }
+    end_line(static_cast<int>(tokens.size()) == count + 2 ? tokens[count + 1].first : "");
   }
 
   void include(const std::string& argument, const std::string& file, const SourceLocation& where) {

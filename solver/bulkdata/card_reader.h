@@ -7,14 +7,18 @@
 //    (4 for a large-field name);
 //  - continuation lines: the first field starts with '+' or '*' (explicit; '*' makes the line
 //    large field) or is blank (implicit); each line's data fields are padded to a full line
-//    (8 small or 4 large fields), so a continuation always starts a new block of fields. The
-//    continuation marker in columns 73-80 (the 10th field) is not matched against the next
-//    line: continuation lines must follow their card (as every modern deck writes them);
+//    (8 small or 4 large fields), so a continuation always starts a new block of fields. A
+//    continuation whose marker (field 1, its leading '+' or '*' aside) matches the marker in
+//    columns 73-80 (field 10) of an earlier card's last line continues that card, wherever it
+//    is in the deck (old sorted decks); one without a match continues the card above it;
 //  - '$' starts a comment, to the end of the line; tabs move to the next multiple of 8 columns;
 //  - INCLUDE 'path' (path relative to the including file; quotes optional) reads another file
 //    of bulk data in place; an include cycle is an error;
 //  - a main file holding BEGIN BULK is read after that line (executive and case control
-//    skipped); without it, the whole file is bulk data; ENDDATA ends the deck.
+//    skipped); without it, the whole file is bulk data; ENDDATA ends the deck;
+//  - case-control "SET n = 1, 5 THRU 9, ..." lines (continued by a trailing comma) become
+//    cards named SET (fields: n, then the members, THRU kept), placed before the bulk data;
+//    sets of other forms (ALL, EXCEPT, BY, reals) are skipped.
 // Field text is trimmed and upper-cased; names lose their '*'.
 //
 // Errors are InputError at file:line:column (an unreadable file at the INCLUDE that names it).

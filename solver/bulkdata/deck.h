@@ -114,6 +114,106 @@ struct MassCard {
   SourceLocation where, grid_where, system_where;
 };
 
+// RBE2: the dependent grids GM follow the independent grid GN rigidly in components CM.
+struct RigidElementCard {
+  int id = 0;
+  int independent = 0;     // GN
+  std::string components;  // CM, digits 1-6
+  std::vector<int> dependent;  // GMi
+  SourceLocation where, independent_where;
+  std::vector<SourceLocation> dependent_where;
+};
+
+// RBE3: the reference grid's components REFC are the weighted average of the groups'.
+struct InterpolationElementCard {
+  struct Group {
+    double weight = 1.0;     // WTi
+    std::string components;  // Ci
+    std::vector<int> grids;  // Gi,j
+    std::vector<SourceLocation> grid_where;
+  };
+  int id = 0;
+  int reference = 0;                 // REFGRID
+  std::string reference_components;  // REFC
+  std::vector<Group> groups;
+  SourceLocation where, reference_where;
+};
+
+// One end of a scalar element (CELAS1/2, CMASS1/2): a grid and a component 1-6, or ground
+// (grid 0).
+struct ScalarEnd {
+  int grid = 0;
+  int component = 0;
+  SourceLocation where;
+};
+
+// CELAS1/CELAS2 (stiffness) and CMASS1/CMASS2 (mass): a value between two scalar ends,
+// either given (CELAS2, CMASS2) or from a PELAS/PMASS property.
+struct ScalarElementCard {
+  int id = 0;
+  std::string card;               // "CELAS1", "CELAS2", "CMASS1", "CMASS2"
+  std::optional<int> property;    // PID of CELAS1 / CMASS1
+  double value = 0.0;             // K or M of CELAS2 / CMASS2
+  std::array<ScalarEnd, 2> ends;
+  SourceLocation where, property_where;
+};
+
+// PELAS (K) or PMASS (M): one scalar per property id.
+struct ScalarPropertyCard {
+  int id = 0;
+  std::string card;  // "PELAS", "PMASS"
+  double value = 0.0;
+  SourceLocation where;
+};
+
+// CBUSH between GA and GB (0: grounded) with element axes of the rectangular system CID.
+struct BushCard {
+  int id = 0;
+  int property = 0;
+  std::array<int, 2> grids{};  // GB = 0: grounded
+  int system = 0;              // CID
+  SourceLocation where, property_where, system_where;
+  std::array<SourceLocation, 2> grid_where;
+};
+
+// PBUSH: stiffnesses K1-K6 along and about the element axes (N/m, N m/rad).
+struct BushPropertyCard {
+  int id = 0;
+  std::array<double, 6> stiffness{};
+  SourceLocation where;
+};
+
+// CONM1: a 6x6 mass matrix (symmetric, from its lower triangle) at a grid, in system CID.
+struct GeneralMassCard {
+  int id = 0;
+  int grid = 0;
+  int system = 0;
+  Eigen::Matrix<double, 6, 6> mass = Eigen::Matrix<double, 6, 6>::Zero();
+  SourceLocation where, grid_where, system_where;
+};
+
+// CROD (-> PROD) or CONROD (material and section on the card): axial and torsional rod.
+struct RodCard {
+  int id = 0;
+  std::string card;  // "CROD", "CONROD"
+  int property = 0;  // PROD id (CROD)
+  std::array<int, 2> grids{};
+  SourceLocation where, property_where;
+  std::array<SourceLocation, 2> grid_where;
+  // CONROD's own section (CROD: from PROD).
+  int material = 0;
+  double area = 0.0, torsion_constant = 0.0, nonstructural_mass = 0.0;
+  SourceLocation material_where;
+};
+
+// PROD: material, A, J, NSM (per length).
+struct RodPropertyCard {
+  int id = 0;
+  int material = 0;
+  double area = 0.0, torsion_constant = 0.0, nonstructural_mass = 0.0;
+  SourceLocation where, material_where;
+};
+
 // Ids from a card: one id (first == last) or an "A THRU B" range. Ranges are kept as such: a
 // range holds the grids of the deck within it (it need not be dense), and a large range costs
 // nothing.
@@ -147,6 +247,16 @@ struct Deck {
   std::map<int, QuadCard> quads;
   std::map<int, TriangleCard> triangles;
   std::map<int, MassCard> masses;
+  std::map<int, RigidElementCard> rigid_elements;                // RBE2
+  std::map<int, InterpolationElementCard> interpolation_elements;  // RBE3
+  std::map<int, ScalarElementCard> scalar_elements;  // CELAS1/2, CMASS1/2
+  std::map<int, ScalarPropertyCard> scalar_properties;  // PELAS, PMASS
+  std::map<int, BushCard> bushes;
+  std::map<int, BushPropertyCard> bush_properties;
+  std::map<int, GeneralMassCard> general_masses;  // CONM1
+  std::map<int, RodCard> rods;                    // CROD, CONROD
+  std::map<int, RodPropertyCard> rod_properties;  // PROD
+  std::vector<std::string> parse_notices;  // e.g. PBUSH damping left out
   std::vector<SpcEntry> spcs;
   std::map<int, std::vector<IdRange>> spc_sets_added;  // SPCADD: set -> sets
   std::map<int, std::vector<IdRange>> sets;            // SET1: id -> members

@@ -123,7 +123,12 @@ class Parser {
         {"CBAR", &Parser::cbar},     {"CBEAM", &Parser::cbar},    {"CQUAD4", &Parser::cquad4},
         {"CTRIA3", &Parser::ctria3},
         {"CONM2", &Parser::conm2},   {"SPC", &Parser::spc},       {"SPC1", &Parser::spc1},
-        {"SPCADD", &Parser::spcadd}, {"SET1", &Parser::set1},     {"PARAM", &Parser::param}};
+        {"SPCADD", &Parser::spcadd}, {"SET1", &Parser::set1},     {"PARAM", &Parser::param},
+        {"RBE2", &Parser::rbe2},     {"RBE3", &Parser::rbe3},     {"CELAS1", &Parser::scalar},
+        {"CELAS2", &Parser::scalar}, {"CMASS1", &Parser::scalar}, {"CMASS2", &Parser::scalar},
+        {"PELAS", &Parser::pelas},   {"PMASS", &Parser::pmass},   {"CBUSH", &Parser::cbush},
+        {"PBUSH", &Parser::pbush},   {"CONM1", &Parser::conm1},   {"CROD", &Parser::crod},
+        {"CONROD", &Parser::conrod}, {"PROD", &Parser::prod},     {"SET", &Parser::set1}};
     if (auto found = handlers.find(card.name); found != handlers.end()) {
       (this->*found->second)(f);
     } else if (kIgnoredCards.contains(card.name)) {
@@ -266,8 +271,8 @@ class Parser {
     const std::string type = f.text(5);
     const int count = pbarl_dimension_count(type);
     if (count == 0) {
-      f.fail(5, "TYPE", fmt::format("expected a PBARL type ROD, TUBE, BAR or BOX, got '{}' (give "
-                                    "other sections as PBAR)",
+      f.fail(5, "TYPE", fmt::format("expected a PBARL type ROD, TUBE, BAR, BOX, I, CHAN, T or HAT, "
+                                    "got '{}' (give other sections as PBAR)",
                                     type));
     }
     // DIM1..DIMn from field 12 on (markers skipped), then NSM.
@@ -509,8 +514,261 @@ class Parser {
 
   void set1(const CardFields& f) {
     const int id = f.id(2, "SID");
-    if (deck_.sets.contains(id)) f.fail(2, "SID", fmt::format("expected a unique SET1 id, got {} again", id));
+    if (deck_.sets.contains(id)) {
+      f.fail(2, "SID", fmt::format("expected a unique set id (SET1 cards and case-control SET "
+                                   "lines both name node sets set<id>), got {} again", id));
+    }
     deck_.sets.emplace(id, id_list(f, 3, "ID"));
+  }
+
+  // The data fields of a card from `first` on (continuation markers skipped).
+  static std::vector<int> data_fields(const CardFields& f, int first) {
+    std::vector<int> fields;
+    for (int field = first; field <= f.last_field(); ++field) {
+      if (field % 10 == 0 || field % 10 == 1) continue;
+      fields.push_back(field);
+    }
+    return fields;
+  }
+
+  void rbe2(const CardFields& f) {
+    RigidElementCard r;
+    r.id = f.id(2, "EID");
+    r.independent = f.id(3, "GN");
+    r.components = components(f, 4, "CM");
+    if (r.components.empty()) f.fail(4, "CM", "expected component digits 1-6, got blank");
+    r.where = f.card().where();
+    r.independent_where = f.where(3);
+    // GMi, then an optional ALPHA (a real: thermal expansion, no effect on stiffness or mass).
+    for (int field : data_fields(f, 5)) {
+      if (f.blank(field)) continue;
+      if (!f.is_integer(field)) {
+        f.real(field, "ALPHA");  // a bad field is still an error
+        break;
+      }
+      r.dependent.push_back(f.id(field, "GM"));
+      r.dependent_where.push_back(f.where(field));
+    }
+    if (r.dependent.empty()) f.fail(5, "GM1", "expected at least one dependent grid, got none");
+    insert_unique(deck_.rigid_elements, std::move(r), f, "element", &element_ids_);
+  }
+
+  void rbe3(const CardFields& f) {
+    InterpolationElementCard r;
+    r.id = f.id(2, "EID");
+    if (!f.blank(3)) f.fail(3, "blank", fmt::format("expected a blank field 3, got '{}'", f.text(3)));
+    r.reference = f.id(4, "REFGRID");
+    r.reference_components = components(f, 5, "REFC");
+    if (r.reference_components.empty()) f.fail(5, "REFC", "expected component digits 1-6, got blank");
+    r.where = f.card().where();
+    r.reference_where = f.where(4);
+    // WTi Ci Gi,j ... groups, then optional UM (not supported) and ALPHA (thermal only).
+    const std::vector<int> fields = data_fields(f, 6);
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      const int field = fields[k];
+      if (f.blank(field)) continue;
+      const std::string& text = f.text(field);
+      if (text == "ALPHA") break;
+      if (text == "UM") {
+        f.fail(field, "UM", "expected no UM list (moving the dependent DOFs off the reference grid "
+                            "is not supported)");
+      }
+      if (!f.is_integer(field)) {
+        InterpolationElementCard::Group group;
+        group.weight = f.real(field, "WT");
+        if (!(group.weight > 0.0)) f.fail(field, "WT", fmt::format("expected a weight > 0, got {}", group.weight));
+        if (k + 1 >= fields.size()) f.fail(field, "C", "expected components after the weight, got none");
+        group.components = components(f, fields[k + 1], "C");
+        if (group.components.empty()) f.fail(fields[k + 1], "C", "expected component digits 1-6, got blank");
+        ++k;
+        r.groups.push_back(std::move(group));
+        continue;
+      }
+      if (r.groups.empty()) f.fail(field, "WT1", fmt::format("expected a weight (a real), got '{}'", text));
+      r.groups.back().grids.push_back(f.id(field, "G"));
+      r.groups.back().grid_where.push_back(f.where(field));
+    }
+    if (r.groups.empty()) f.fail(6, "WT1", "expected at least one weight, components and grids");
+    for (const auto& group : r.groups) {
+      if (group.grids.empty()) f.fail_card("expected grids after each weight and components, got none");
+    }
+    insert_unique(deck_.interpolation_elements, std::move(r), f, "element", &element_ids_);
+  }
+
+  // CELAS1, CELAS2, CMASS1, CMASS2: EID PID|value G1 C1 G2 C2.
+  void scalar(const CardFields& f) {
+    ScalarElementCard e;
+    e.card = f.card().name;
+    e.id = f.id(2, "EID");
+    const bool by_property = e.card.back() == '1';
+    const bool spring = e.card.starts_with("CELAS");
+    if (by_property) {
+      e.property = f.blank(3) ? e.id : f.id(3, "PID");
+    } else {
+      e.value = f.real(3, spring ? "K" : "M");
+      if (!spring && !(e.value >= 0.0)) f.fail(3, "M", "expected a mass >= 0");
+    }
+    e.where = f.card().where();
+    e.property_where = f.where(3);
+    for (int end = 0; end < 2; ++end) {
+      const int g = 4 + 2 * end;
+      const char* gname = end == 0 ? "G1" : "G2";
+      const char* cname = end == 0 ? "C1" : "C2";
+      ScalarEnd& out = e.ends[static_cast<std::size_t>(end)];
+      out.grid = f.integer_or(g, gname, 0);
+      out.where = f.where(g);
+      if (out.grid < 0) f.fail(g, gname, "expected a grid id > 0 or blank (ground)");
+      out.component = f.integer_or(g + 1, cname, 0);
+      if (out.grid == 0 && out.component != 0) f.fail(g + 1, cname, "expected blank for a grounded end");
+      if (out.grid != 0 && (out.component < 1 || out.component > 6)) {
+        f.fail(g + 1, cname, fmt::format("expected a component 1-6 (scalar points are not supported), got '{}'",
+                                         f.text(g + 1)));
+      }
+    }
+    if (e.ends[0].grid == 0 && e.ends[1].grid == 0) f.fail(4, "G1", "expected at least one grid, got none");
+    // CELAS2's GE and S (damping, stress) do not change stiffness or mass.
+    insert_unique(deck_.scalar_elements, std::move(e), f, "element", &element_ids_);
+  }
+
+  // PELAS: up to two (PID, K, GE, S); PMASS: up to four (PID, M).
+  void scalar_properties(const CardFields& f, int stride, int count, const char* value_name) {
+    for (int k = 0; k < count; ++k) {
+      const int field = 2 + stride * k;
+      if (k > 0 && f.blank(field)) continue;
+      ScalarPropertyCard p;
+      p.card = f.card().name;
+      p.id = f.id(field, "PID");
+      p.value = f.real(field + 1, value_name);
+      if (p.card == "PMASS" && !(p.value >= 0.0)) f.fail(field + 1, value_name, "expected a mass >= 0");
+      p.where = f.card().where();
+      if (property_ids_.contains(p.id)) {
+        f.fail(field, "PID", fmt::format("expected a unique property id, got {} again (first at {})",
+                                         p.id, property_ids_.at(p.id).to_string()));
+      }
+      property_ids_.emplace(p.id, p.where);
+      deck_.scalar_properties.emplace(p.id, std::move(p));
+    }
+  }
+  void pelas(const CardFields& f) { scalar_properties(f, 4, 2, "K"); }
+  void pmass(const CardFields& f) { scalar_properties(f, 2, 4, "M"); }
+
+  void cbush(const CardFields& f) {
+    BushCard b;
+    b.id = f.id(2, "EID");
+    b.property = f.blank(3) ? b.id : f.id(3, "PID");
+    b.grids = {f.id(4, "GA"), f.integer_or(5, "GB", 0)};
+    if (b.grids[1] < 0) f.fail(5, "GB", "expected a grid id or blank (grounded)");
+    b.where = f.card().where();
+    b.property_where = f.where(3);
+    b.grid_where = {f.where(4), f.where(5)};
+    b.system_where = f.where(9);
+    for (int field = 6; field <= 8; ++field) {
+      if (!f.blank(field)) {
+        f.fail(field, field == 6 ? "GO/X1" : field == 7 ? "X2" : "X3",
+               "expected blank (element axes from an orientation vector are not supported; give CID)");
+      }
+    }
+    if (f.blank(9)) f.fail(9, "CID", "expected a coordinate system id (0: basic) for the element axes, got blank");
+    b.system = f.integer(9, "CID");
+    if (b.system < 0) f.fail(9, "CID", "expected a coordinate system id >= 0");
+    demand_zero(f, 12, "S", "a spring location other than GA is");
+    if (!f.blank(13)) f.fail(13, "OCID", "expected blank (offsets are not supported)");
+    for (int field = 14; field <= 16; ++field) demand_zero(f, field, "S1-S3", "an offset is");
+    insert_unique(deck_.bushes, std::move(b), f, "element", &element_ids_);
+  }
+
+  void pbush(const CardFields& f) {
+    BushPropertyCard p;
+    p.id = f.id(2, "PID");
+    p.where = f.card().where();
+    bool stiffness = false;
+    // Lines led by a keyword in field 3, 13, 23, ... with six values after it.
+    for (int key = 3; key <= f.last_field(); key += 10) {
+      if (f.blank(key)) continue;
+      const std::string& word = f.text(key);
+      if (word == "K") {
+        stiffness = true;
+        const char* names[] = {"K1", "K2", "K3", "K4", "K5", "K6"};
+        for (int k = 0; k < 6; ++k) {
+          p.stiffness[static_cast<std::size_t>(k)] = f.real_or(key + 1 + k, names[k], 0.0);
+          if (p.stiffness[static_cast<std::size_t>(k)] < 0.0) f.fail(key + 1 + k, names[k], "expected a stiffness >= 0");
+        }
+      } else if (word == "B" || word == "GE") {
+        deck_.parse_notices.push_back(fmt::format(
+            "PBUSH {} ({}:{}): {} (damping) left out: damping is modal, in the case file", p.id,
+            p.where.file, p.where.line, word));
+      } else if (word != "RCV") {
+        f.fail(key, "keyword", fmt::format("expected K, B, GE or RCV (other PBUSH lines are not "
+                                           "supported), got '{}'", word));
+      }
+    }
+    if (!stiffness) f.fail(3, "K", "expected a K line with K1-K6");
+    insert_unique(deck_.bush_properties, std::move(p), f, "property", &property_ids_);
+  }
+
+  void conm1(const CardFields& f) {
+    GeneralMassCard m;
+    m.id = f.id(2, "EID");
+    m.grid = f.id(3, "G");
+    m.system = f.integer_or(4, "CID", 0);
+    if (m.system < 0) f.fail(4, "CID", "expected a coordinate system id >= 0");
+    // Lower triangle row by row: M11, M21, M22, M31, ... from field 5 on.
+    int field = 5;
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j <= i; ++j, ++field) {
+        if (field % 10 == 0) field += 2;
+        const std::string name = fmt::format("M{}{}", i + 1, j + 1);
+        m.mass(i, j) = m.mass(j, i) = f.real_or(field, name.c_str(), 0.0);
+      }
+    }
+    m.where = f.card().where();
+    m.grid_where = f.where(3);
+    m.system_where = f.where(4);
+    insert_unique(deck_.general_masses, std::move(m), f, "element", &element_ids_);
+  }
+
+  void crod(const CardFields& f) {
+    RodCard r;
+    r.card = "CROD";
+    r.id = f.id(2, "EID");
+    r.property = f.blank(3) ? r.id : f.id(3, "PID");
+    r.grids = {f.id(4, "G1"), f.id(5, "G2")};
+    r.where = f.card().where();
+    r.property_where = f.where(3);
+    r.grid_where = {f.where(4), f.where(5)};
+    insert_unique(deck_.rods, std::move(r), f, "element", &element_ids_);
+  }
+
+  // A, J, (C: stress only), NSM from `first` on.
+  static void rod_section(const CardFields& f, int first, double& area, double& torsion, double& nsm) {
+    area = positive(f, first, "A");
+    torsion = f.real_or(first + 1, "J", 0.0);
+    if (torsion < 0.0) f.fail(first + 1, "J", "expected a torsion constant >= 0");
+    nsm = f.real_or(first + 3, "NSM", 0.0);
+    if (!(nsm >= 0.0)) f.fail(first + 3, "NSM", "expected a value >= 0");
+  }
+
+  void conrod(const CardFields& f) {
+    RodCard r;
+    r.card = "CONROD";
+    r.id = f.id(2, "EID");
+    r.grids = {f.id(3, "G1"), f.id(4, "G2")};
+    r.material = f.id(5, "MID");
+    rod_section(f, 6, r.area, r.torsion_constant, r.nonstructural_mass);
+    r.where = f.card().where();
+    r.grid_where = {f.where(3), f.where(4)};
+    r.material_where = f.where(5);
+    insert_unique(deck_.rods, std::move(r), f, "element", &element_ids_);
+  }
+
+  void prod(const CardFields& f) {
+    RodPropertyCard p;
+    p.id = f.id(2, "PID");
+    p.material = f.id(3, "MID");
+    rod_section(f, 4, p.area, p.torsion_constant, p.nonstructural_mass);
+    p.where = f.card().where();
+    p.material_where = f.where(3);
+    insert_unique(deck_.rod_properties, std::move(p), f, "property", &property_ids_);
   }
 
   void param(const CardFields& f) {

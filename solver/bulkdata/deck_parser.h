@@ -3,8 +3,10 @@
 // requests, output) or unsupported (anything else, assumed to change the structure).
 //
 // Throws InputError at the field for: a bad field (type, range, a feature limber does not
-// model such as beam offsets, pin flags, shell offsets, tapered PBEAM, coupled I12),
-// duplicate ids (grids; coordinate systems; materials; properties; elements incl. CONM2),
+// model such as beam offsets, pin flags, shell offsets, tapered PBEAM, coupled I12, RBE3's
+// UM, CBUSH orientation vectors and offsets, scalar points), duplicate ids (grids; coordinate
+// systems; materials; properties incl. PELAS, PMASS, PBUSH, PROD; elements incl. CONM1,
+// CONM2, CELAS, CMASS, CBUSH, CROD, RBE2, RBE3; SET1 and case-control SET ids),
 // and the MAT1 rule (two of E, G, nu; all three only when consistent within 1 %).
 #pragma once
 

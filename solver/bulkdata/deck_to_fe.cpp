@@ -6,6 +6,7 @@
 #include <set>
 
 #include "bulkdata/coordinate_systems.h"
+#include "fe/rigid_elements.h"
 
 namespace limber::bulkdata {
 
@@ -44,6 +45,13 @@ class Translator {
           "effect on triangles (docs/shell-element.md, \"The triangle\")");
     }
     for (const auto& [id, mass] : deck_.masses) add_mass(mass);
+    for (const auto& [id, rod] : deck_.rods) add_rod(rod);
+    for (const auto& [id, element] : deck_.scalar_elements) add_scalar(element);
+    for (const auto& [id, bush] : deck_.bushes) add_bush(bush);
+    for (const auto& [id, mass] : deck_.general_masses) add_general_mass(mass);
+    for (const auto& [id, rbe2] : deck_.rigid_elements) add_rigid(rbe2);
+    for (const auto& [id, rbe3] : deck_.interpolation_elements) add_interpolation(rbe3);
+    notices_.insert(notices_.end(), deck_.parse_notices.begin(), deck_.parse_notices.end());
     permanent_constraints();
     if (options_.spc_set) spc_set(*options_.spc_set);
     node_sets();
@@ -270,10 +278,10 @@ class Translator {
     builder_.add_point_mass(point, mass.where);
   }
 
-  // Holds `components` at a grid, checking that they mean the same along basic axes.
-  void hold(int grid, const std::string& components, const SourceLocation& where,
-            const std::string& what) {
-    const int index = node(grid, where, what);
+  // Checks that `components` of a grid mean the same along basic axes as in its CD system:
+  // all three translations or none, all three rotations or none, unless CD is basic.
+  void demand_whole_sets(int grid, const std::string& components, const SourceLocation& where,
+                         const std::string& what) const {
     const GridCard& card = deck_.grids.at(grid);
     if (card.displacement_system != 0) {
       const auto count = [&](const char* digits) {
@@ -289,7 +297,237 @@ class Translator {
                          where);
       }
     }
+  }
+
+  // Holds `components` at a grid, checking that they mean the same along basic axes.
+  void hold(int grid, const std::string& components, const SourceLocation& where,
+            const std::string& what) {
+    const int index = node(grid, where, what);
+    demand_whole_sets(grid, components, where, what);
     for (char c : components) builder_.fix(index, static_cast<fe::Dof>(c - '1'), where);
+  }
+
+  static std::vector<fe::Dof> dofs_of(const std::string& components) {
+    std::vector<fe::Dof> dofs;
+    for (char c : components) dofs.push_back(static_cast<fe::Dof>(c - '1'));
+    return dofs;
+  }
+
+  // The grid's displacement directions (its CD system's local directions at the grid).
+  Eigen::Matrix3d displacement_axes(int grid) const {
+    const GridCard& card = deck_.grids.at(grid);
+    return local_directions(systems_.at(card.displacement_system), position(grid));
+  }
+
+  // The axes of a rectangular system (0: basic) named at `where`.
+  Eigen::Matrix3d rectangular_axes(int id, const SourceLocation& where, const std::string& what) {
+    const ResolvedSystem& cid = system(id, where, what);
+    if (cid.type != CoordinateSystemCard::Type::kRectangular) {
+      throw InputError(what + ": expected a rectangular system (CORD2R) or 0", where);
+    }
+    return cid.axes;
+  }
+
+  // A 6x6 block on the translations and rotations of a node rotated from `axes` to basic.
+  static Eigen::Matrix<double, 6, 6> rotated(const Eigen::Matrix<double, 6, 6>& local,
+                                             const Eigen::Matrix3d& axes) {
+    Eigen::Matrix<double, 6, 6> q = Eigen::Matrix<double, 6, 6>::Zero();
+    q.topLeftCorner<3, 3>() = axes;
+    q.bottomRightCorner<3, 3>() = axes;
+    return q * local * q.transpose();
+  }
+
+  // The 12 DOFs of two nodes, node-major.
+  static std::vector<int> two_node_dofs(int a, int b) {
+    std::vector<int> dofs;
+    for (int n : {a, b}) {
+      for (int k = 0; k < fe::kDofsPerNode; ++k) dofs.push_back(fe::FeModel::dof_index(n, static_cast<fe::Dof>(k)));
+    }
+    return dofs;
+  }
+
+  // CROD, CONROD: axial EA/L and torsional GJ/L along the axis; consistent mass (rho A + NSM) L
+  // on all translations (linear interpolation), rho J L on the axial rotation.
+  void add_rod(const RodCard& rod) {
+    const std::string label = fmt::format("{} {}", rod.card, rod.id);
+    const bool own = rod.card == "CONROD";
+    const RodPropertyCard* property = nullptr;
+    if (!own) {
+      const auto found = deck_.rod_properties.find(rod.property);
+      if (found == deck_.rod_properties.end()) {
+        throw InputError(fmt::format("{}, field 3 (PID): expected a defined PROD id, got {}", label,
+                                     rod.property),
+                         rod.property_where);
+      }
+      property = &found->second;
+    }
+    const fe::Material mat =
+        own ? material(rod.material, rod.material_where, label + ", field 5 (MID)")
+            : material(property->material, property->material_where,
+                       fmt::format("PROD {}, field 3 (MID)", property->id));
+    const double area = own ? rod.area : property->area;
+    const double torsion = own ? rod.torsion_constant : property->torsion_constant;
+    const double nsm = (own ? rod.nonstructural_mass : property->nonstructural_mass) * deck_.mass_factor;
+    const int g1 = own ? 3 : 4;
+    const int a = node(rod.grids[0], rod.grid_where[0], fmt::format("{}, field {} (G1)", label, g1));
+    const int b = node(rod.grids[1], rod.grid_where[1], fmt::format("{}, field {} (G2)", label, g1 + 1));
+    const Eigen::Vector3d axis = position(rod.grids[1]) - position(rod.grids[0]);
+    const double length = axis.norm();
+    if (!(length > 1e-12 * model_size())) {
+      throw InputError(label + ": expected two grids apart, got coincident grids", rod.where);
+    }
+    const Eigen::Matrix3d eet = axis * axis.transpose() / (length * length);
+    // Two-node blocks [X -X; -X X] and [2X X; X 2X] / 6.
+    const auto two_node = [](const Eigen::Matrix<double, 6, 6>& x, double a11, double a12) {
+      Eigen::MatrixXd m(12, 12);
+      m << a11 * x, a12 * x, a12 * x, a11 * x;
+      return m;
+    };
+    Eigen::Matrix<double, 6, 6> k = Eigen::Matrix<double, 6, 6>::Zero();
+    k.topLeftCorner<3, 3>() = mat.youngs_modulus * area / length * eet;
+    k.bottomRightCorner<3, 3>() = mat.shear_modulus() * torsion / length * eet;
+    Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
+    m.topLeftCorner<3, 3>() = (mat.density * area + nsm) * length / 6.0 * Eigen::Matrix3d::Identity();
+    m.bottomRightCorner<3, 3>() = mat.density * torsion * length / 6.0 * eet;
+    const std::vector<int> dofs = two_node_dofs(a, b);
+    builder_.add_dof_stiffness({dofs, two_node(k, 1.0, -1.0)}, label, rod.where);
+    builder_.add_dof_mass({dofs, two_node(m, 2.0, 1.0)}, label, rod.where);
+  }
+
+  // CELAS1/2, CMASS1/2: value v v^T with v the difference of the two ends' components, each
+  // along its grid's CD direction (grounded ends add nothing).
+  void add_scalar(const ScalarElementCard& element) {
+    const std::string label = fmt::format("{} {}", element.card, element.id);
+    const bool spring = element.card.starts_with("CELAS");
+    double value = element.value;
+    if (element.property) {
+      const auto found = deck_.scalar_properties.find(*element.property);
+      const char* wanted = spring ? "PELAS" : "PMASS";
+      if (found == deck_.scalar_properties.end() || found->second.card != wanted) {
+        throw InputError(fmt::format("{}, field 3 (PID): expected a defined {} id, got {}", label,
+                                     wanted, *element.property),
+                         element.property_where);
+      }
+      value = found->second.value;
+    }
+    if (!spring) value *= deck_.mass_factor;
+    std::map<int, double> v;  // DOF -> coefficient
+    for (int end = 0; end < 2; ++end) {
+      const ScalarEnd& e = element.ends[static_cast<std::size_t>(end)];
+      if (e.grid == 0) continue;
+      const int n = node(e.grid, e.where, fmt::format("{}, field {} (G{})", label, 4 + 2 * end, end + 1));
+      const int block = e.component <= 3 ? 0 : 3;
+      const Eigen::Vector3d direction = displacement_axes(e.grid).col((e.component - 1) % 3);
+      for (int k = 0; k < 3; ++k) {
+        if (direction[k] != 0.0) v[fe::kDofsPerNode * n + block + k] += (end == 0 ? 1.0 : -1.0) * direction[k];
+      }
+    }
+    fe::DofMatrix matrix;
+    Eigen::VectorXd coefficients(static_cast<Eigen::Index>(v.size()));
+    for (const auto& [dof, c] : v) {
+      if (c == 0.0) continue;
+      coefficients[static_cast<Eigen::Index>(matrix.dofs.size())] = c;
+      matrix.dofs.push_back(dof);
+    }
+    if (matrix.dofs.empty()) {
+      throw InputError(label + ": expected two different DOFs, got the same DOF at both ends", element.where);
+    }
+    const Eigen::VectorXd u = coefficients.head(static_cast<Eigen::Index>(matrix.dofs.size()));
+    matrix.values = value * u * u.transpose();
+    if (spring && value < 0.0) {
+      throw InputError(fmt::format("{}: expected a stiffness >= 0, got {}", label, value), element.where);
+    }
+    if (spring) {
+      builder_.add_dof_stiffness(matrix, label, element.where);
+    } else {
+      builder_.add_dof_mass(matrix, label, element.where);
+    }
+  }
+
+  // CBUSH between coincident grids (or grounded): K1-K6 along and about CID's axes.
+  void add_bush(const BushCard& bush) {
+    const std::string label = fmt::format("CBUSH {}", bush.id);
+    const auto found = deck_.bush_properties.find(bush.property);
+    if (found == deck_.bush_properties.end()) {
+      throw InputError(fmt::format("{}, field 3 (PID): expected a defined PBUSH id, got {}", label,
+                                   bush.property),
+                       bush.property_where);
+    }
+    const int a = node(bush.grids[0], bush.grid_where[0], label + ", field 4 (GA)");
+    const Eigen::Matrix3d axes = rectangular_axes(bush.system, bush.system_where, label + ", field 9 (CID)");
+    Eigen::Matrix<double, 6, 6> local = Eigen::Matrix<double, 6, 6>::Zero();
+    for (int k = 0; k < 6; ++k) local(k, k) = found->second.stiffness[static_cast<std::size_t>(k)];
+    const Eigen::Matrix<double, 6, 6> k6 = rotated(local, axes);
+    fe::DofMatrix matrix;
+    if (bush.grids[1] == 0) {
+      for (int k = 0; k < fe::kDofsPerNode; ++k) matrix.dofs.push_back(fe::FeModel::dof_index(a, static_cast<fe::Dof>(k)));
+      matrix.values = k6;
+    } else {
+      const int b = node(bush.grids[1], bush.grid_where[1], label + ", field 5 (GB)");
+      const double gap = (position(bush.grids[1]) - position(bush.grids[0])).norm();
+      // Decks print positions to 8 significant digits.
+      if (gap > 1e-7 * model_size()) {
+        throw InputError(fmt::format("{}: expected coincident grids GA and GB (a bushing between "
+                                     "separate grids needs its offset links, not supported), got "
+                                     "them {:.6g} apart",
+                                     label, gap),
+                         bush.where);
+      }
+      matrix.dofs = two_node_dofs(a, b);
+      matrix.values.resize(12, 12);
+      matrix.values << k6, -k6, -k6, k6;
+    }
+    builder_.add_dof_stiffness(matrix, label, bush.where);
+  }
+
+  // CONM1: the 6x6 mass in CID's axes, rotated to basic.
+  void add_general_mass(const GeneralMassCard& mass) {
+    const std::string label = fmt::format("CONM1 {}", mass.id);
+    const int n = node(mass.grid, mass.grid_where, label + ", field 3 (G)");
+    const Eigen::Matrix3d axes = rectangular_axes(mass.system, mass.system_where, label + ", field 4 (CID)");
+    fe::DofMatrix matrix;
+    for (int k = 0; k < fe::kDofsPerNode; ++k) matrix.dofs.push_back(fe::FeModel::dof_index(n, static_cast<fe::Dof>(k)));
+    matrix.values = deck_.mass_factor * rotated(mass.mass, axes);
+    builder_.add_dof_mass(matrix, label, mass.where);
+  }
+
+  // RBE2: the dependent grids follow GN rigidly in CM (fe/rigid_elements.h).
+  void add_rigid(const RigidElementCard& rbe) {
+    const std::string label = fmt::format("RBE2 {}", rbe.id);
+    const int gn = node(rbe.independent, rbe.independent_where, label + ", field 3 (GN)");
+    std::vector<int> dependent;
+    for (std::size_t k = 0; k < rbe.dependent.size(); ++k) {
+      const std::string what = fmt::format("{}, GM{}", label, k + 1);
+      dependent.push_back(node(rbe.dependent[k], rbe.dependent_where[k], what));
+      demand_whole_sets(rbe.dependent[k], rbe.components, rbe.dependent_where[k], what);
+    }
+    for (const fe::MultipointConstraint& c :
+         fe::rigid_link_constraints(builder_.peek().node_positions, gn, dependent, dofs_of(rbe.components))) {
+      builder_.add_multipoint_constraint(c, label, rbe.where);
+    }
+  }
+
+  // RBE3: REFC of the reference grid as the weighted average of the groups (fe/rigid_elements.h).
+  void add_interpolation(const InterpolationElementCard& rbe) {
+    const std::string label = fmt::format("RBE3 {}", rbe.id);
+    const int reference = node(rbe.reference, rbe.reference_where, label + ", field 4 (REFGRID)");
+    demand_whole_sets(rbe.reference, rbe.reference_components, rbe.reference_where, label + ", REFC");
+    std::vector<fe::WeightedNodes> groups;
+    for (std::size_t g = 0; g < rbe.groups.size(); ++g) {
+      const auto& group = rbe.groups[g];
+      fe::WeightedNodes nodes{group.weight, dofs_of(group.components), {}};
+      for (std::size_t k = 0; k < group.grids.size(); ++k) {
+        const std::string what = fmt::format("{}, G{},{}", label, g + 1, k + 1);
+        nodes.nodes.push_back(node(group.grids[k], group.grid_where[k], what));
+        demand_whole_sets(group.grids[k], group.components, group.grid_where[k], what);
+      }
+      groups.push_back(std::move(nodes));
+    }
+    std::string error;
+    const std::vector<fe::MultipointConstraint> constraints = fe::interpolation_constraints(
+        builder_.peek().node_positions, reference, dofs_of(rbe.reference_components), groups, error);
+    if (!error.empty()) throw InputError(label + ": " + error, rbe.where);
+    for (const fe::MultipointConstraint& c : constraints) builder_.add_multipoint_constraint(c, label, rbe.where);
   }
 
   void permanent_constraints() {

@@ -6,6 +6,13 @@
 //   CQUAD4          flat 4-node shell (fe/shell_element.h) with PSHELL's T, 12I/T³, TS/T, NSM
 //   CTRIA3          flat 3-node shell (fe/shell_triangle.h: CST + DKT), PSHELL's T, 12I/T³, NSM
 //   CONM2           point mass and inertia (about the grid, rotated from CID to basic)
+//   CONM1           6x6 mass matrix at the grid, rotated from CID (rectangular) to basic
+//   CELAS1/2, CMASS1/2  scalar spring / mass k v v^T, v the difference of the two ends'
+//                   components along their grids' CD directions (grounded ends add nothing)
+//   CBUSH           K1-K6 along and about CID's axes, coincident grids or to ground
+//   CROD, CONROD    axial E A / L and torsion G J / L; consistent translational mass
+//   RBE2, RBE3      multipoint constraints (fe/rigid_elements.h), eliminated before the
+//                   modal reduction (modal/constrained_matrices.h)
 //   MAT1            E, nu, rho (rho, NSM and CONM2 mass times PARAM,WTMASS)
 //   GRID PS         DOFs held at zero, always (permanent constraints)
 //   SPC, SPC1       DOFs held at zero when the set is selected (SPCADD sets combine)
@@ -35,7 +42,8 @@ struct DeckOptions {
 // notices for the user (ignored cards, unsupported cards when allowed, approximations taken).
 // Throws InputError at the referring field for an unknown grid, property, material or
 // coordinate system, a property of the wrong kind, a CONM2 offset, a constraint subset in a
-// rotated CD system; at `options.where` for unsupported cards (unless allowed); and as the
+// rotated CD system (SPC, RBE2 CM, RBE3 REFC and Ci), a CBUSH between separate grids, an RBE3
+// that leaves a rigid motion of its reference free; at `options.where` for unsupported cards (unless allowed); and as the
 // builder does (e.g. a degenerate quad), at the element's card.
 std::vector<std::string> add_deck(const Deck& deck, const DeckOptions& options,
                                   fe::FeModelBuilder& builder);

@@ -2,16 +2,61 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "fe/beam_section.h"
 
 namespace limber::bulkdata {
 
+namespace {
+
+// A rectangle of a thin-walled section: extent along local z (width) and y (height), centre.
+struct Rectangle {
+  double width_z = 0.0, height_y = 0.0, z = 0.0, y = 0.0;
+};
+
+// A, I1 (about z through the centroid), I2 (about y), the extreme fibres, and the open
+// thin-walled torsion constant J = sum b t^3 / 3 (b the longer side, t the shorter) of a
+// section made of rectangles (sections symmetric about y, so I12 = 0).
+fe::BeamSection composite_section(const std::vector<Rectangle>& parts) {
+  fe::BeamSection section;
+  double a = 0.0, ay = 0.0, az = 0.0;
+  for (const Rectangle& r : parts) {
+    const double area = r.width_z * r.height_y;
+    a += area;
+    ay += area * r.y;
+    az += area * r.z;
+  }
+  const double yc = ay / a, zc = az / a;
+  double i1 = 0.0, i2 = 0.0, j = 0.0, fibre_y = 0.0, fibre_z = 0.0;
+  for (const Rectangle& r : parts) {
+    const double area = r.width_z * r.height_y;
+    // Parallel axes (Steiner) about the centroid.
+    i1 += r.width_z * r.height_y * r.height_y * r.height_y / 12.0 + area * (r.y - yc) * (r.y - yc);
+    i2 += r.height_y * r.width_z * r.width_z * r.width_z / 12.0 + area * (r.z - zc) * (r.z - zc);
+    const double longer = std::max(r.width_z, r.height_y), shorter = std::min(r.width_z, r.height_y);
+    j += longer * shorter * shorter * shorter / 3.0;
+    fibre_y = std::max(fibre_y, std::abs(r.y - yc) + 0.5 * r.height_y);
+    fibre_z = std::max(fibre_z, std::abs(r.z - zc) + 0.5 * r.width_z);
+  }
+  section.area = a;
+  section.inertia_z = i1;
+  section.inertia_y = i2;
+  section.torsion_constant = j;
+  section.fibre_y = fibre_y;
+  section.fibre_z = fibre_z;
+  return section;
+}
+
+}  // namespace
+
 int pbarl_dimension_count(const std::string& type) {
   if (type == "ROD") return 1;
   if (type == "TUBE" || type == "BAR") return 2;
-  if (type == "BOX") return 4;
+  if (type == "BOX" || type == "CHAN" || type == "T" || type == "HAT") return 4;
+  if (type == "I") return 6;
   return 0;
 }
 
@@ -57,8 +102,61 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     section.inertia_y = (h * b * b * b - hi * bi * bi * bi) / 12.0;
     section.torsion_constant = 2.0 * t1 * t2 * (b - t2) * (b - t2) * (h - t1) * (h - t1) /
                                (b * t2 + h * t1 - t2 * t2 - t1 * t1);
+  } else if (type == "I") {
+    // Height h = DIM1 along y; bottom flange DIM2 x DIM5, top flange DIM3 x DIM6, web DIM4.
+    const double h = dims[0], bottom = dims[1], top = dims[2], web = dims[3], tb = dims[4], tt = dims[5];
+    const double web_height = h - tb - tt;
+    if (!(web_height > 0.0 && web < std::min(bottom, top))) {
+      error = fmt::format("expected flanges thinner than the height (DIM5 + DIM6 < DIM1) and a web "
+                          "narrower than both flanges (DIM4 < DIM2, DIM3), got a web {} x {}",
+                          web, web_height);
+      return {};
+    }
+    section = composite_section({{bottom, tb, 0.0, 0.5 * tb},
+                                 {web, web_height, 0.0, tb + 0.5 * web_height},
+                                 {top, tt, 0.0, h - 0.5 * tt}});
+  } else if (type == "CHAN") {
+    // Flange width DIM1 along z (web included), height DIM2 along y, web DIM3, flanges DIM4.
+    const double b = dims[0], h = dims[1], web = dims[2], flange = dims[3];
+    if (!(web < b && 2.0 * flange < h)) {
+      error = fmt::format("expected a web thinner than the width (DIM3 < DIM1) and flanges thinner "
+                          "than half the height (2 DIM4 < DIM2), got {} and {}",
+                          web, flange);
+      return {};
+    }
+    const double arm = b - web;  // flange outside the web
+    section = composite_section({{web, h, 0.5 * web, 0.0},
+                                 {arm, flange, web + 0.5 * arm, 0.5 * (h - flange)},
+                                 {arm, flange, web + 0.5 * arm, -0.5 * (h - flange)}});
+  } else if (type == "T") {
+    // Flange DIM1 (z) x DIM3 (y) on top of a web DIM4 wide; total height DIM2.
+    const double b = dims[0], h = dims[1], flange = dims[2], web = dims[3];
+    if (!(flange < h && web < b)) {
+      error = fmt::format("expected a flange thinner than the height (DIM3 < DIM2) and a web "
+                          "narrower than the flange (DIM4 < DIM1), got {} and {}",
+                          flange, web);
+      return {};
+    }
+    section = composite_section({{web, h - flange, 0.0, 0.5 * (h - flange)},
+                                 {b, flange, 0.0, h - 0.5 * flange}});
+  } else if (type == "HAT") {
+    // Height DIM1 (y), wall thickness DIM2 everywhere, crown width DIM3 (outer), brims DIM4.
+    const double h = dims[0], t = dims[1], crown = dims[2], brim = dims[3];
+    if (!(2.0 * t < crown && 2.0 * t < h)) {
+      error = fmt::format("expected walls thinner than half the crown and the height (2 DIM2 < "
+                          "DIM3, DIM1), got {}",
+                          t);
+      return {};
+    }
+    // Walls inside the crown's edges; each brim runs from under its wall to DIM4 beyond it.
+    const double wall_z = 0.5 * crown - 0.5 * t, brim_z = 0.5 * crown + 0.5 * (brim - t);
+    section = composite_section({{crown, t, 0.0, h - 0.5 * t},
+                                 {t, h - 2.0 * t, -wall_z, 0.5 * h},
+                                 {t, h - 2.0 * t, wall_z, 0.5 * h},
+                                 {brim + t, t, -brim_z, 0.5 * t},
+                                 {brim + t, t, brim_z, 0.5 * t}});
   } else {
-    error = fmt::format("expected a PBARL type ROD, TUBE, BAR or BOX, got '{}'", type);
+    error = fmt::format("expected a PBARL type ROD, TUBE, BAR, BOX, I, CHAN, T or HAT, got '{}'", type);
     return {};
   }
   return section;

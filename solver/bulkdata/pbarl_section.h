@@ -12,6 +12,18 @@
 //         J = 2 t1 t2 (b − t2)² (h − t1)² / (b t2 + h t1 − t2² − t1²)  (Bredt's thin-walled
 //         closed section on the wall mid-lines; Roark's Formulas for Stress and Strain,
 //         table 10.7 "hollow rectangle")
+//   I     height h = DIM1 (y), bottom flange DIM2 (z) x DIM5 (y), top flange DIM3 x DIM6, web
+//         thickness DIM4 (z)
+//   CHAN  width DIM1 (z, web included), height DIM2 (y), web DIM3, flanges DIM4 (flanges
+//         pointing to +z)
+//   T     flange DIM1 (z) x DIM3 (y) on a web DIM4 wide, total height DIM2
+//   HAT   height DIM1 (y), wall thickness DIM2, crown width DIM3 (outer), brims DIM4 beyond
+//         the walls
+//   (dimensions as in the MSC/NX Nastran PBARL figures: y up, z across). These four are
+//   made of rectangles: A, I1 = ∫ y² dA and I2 = ∫ z² dA about the centroid by parallel axes;
+//   J = Σ b t³/3 over the rectangles (open thin-walled section; NASTRAN's corner terms differ
+//   by a few percent for thick walls). As in NASTRAN's PBARL, the offset between centroid
+//   and shear centre (CHAN, T, HAT) is not modelled: the beam axis is the centroidal axis.
 // Shear factors are left at fe::BeamSection's defaults; PBARL beams are Euler-Bernoulli.
 #pragma once
 

@@ -37,6 +37,13 @@ NodeGraph node_graph(const FeModel& model) {
   for (const BeamElement& beam : model.beams) add_clique(beam.nodes, pairs);
   for (const ShellElement& shell : model.shells) add_clique(shell.nodes, pairs);
   for (const ShellTriangle& triangle : model.triangles) add_clique(triangle.nodes, pairs);
+  for (const auto* matrices : {&model.dof_stiffnesses, &model.dof_masses}) {
+    for (const DofMatrix& matrix : *matrices) {
+      for (int a : matrix.dofs) {
+        for (int b : matrix.dofs) pairs.emplace_back(a / kDofsPerNode, b / kDofsPerNode);
+      }
+    }
+  }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
@@ -104,6 +111,20 @@ class BlockAdder {
     }
   }
 
+  // Adds a matrix on global DOFs to `values` (K's or M's, same pattern).
+  void add_dof_matrix(const DofMatrix& matrix, double* values) {
+    for (std::size_t j = 0; j < matrix.dofs.size(); ++j) {
+      const int col_node = matrix.dofs[j] / kDofsPerNode, b = matrix.dofs[j] % kDofsPerNode;
+      for (std::size_t i = 0; i < matrix.dofs.size(); ++i) {
+        const int row_node = matrix.dofs[i] / kDofsPerNode, a = matrix.dofs[i] % kDofsPerNode;
+        const int entry = first_entry(row_node, col_node) + b * column_length(col_node) + a;
+        values[entry] += matrix.values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      }
+    }
+  }
+  double* k_values() { return matrices_.stiffness.valuePtr(); }
+  double* m_values() { return matrices_.mass.valuePtr(); }
+
   // Adds a 6x6 block to M only, on the diagonal of `node`.
   void add_mass_block(int node, const Eigen::Matrix<double, 6, 6>& block) {
     const int first = first_entry(node, node);
@@ -126,8 +147,6 @@ class BlockAdder {
   int column_length(int node) const {
     return kDofsPerNode * (graph_.start[node + 1] - graph_.start[node]);
   }
-  double* k_values() { return matrices_.stiffness.valuePtr(); }
-  double* m_values() { return matrices_.mass.valuePtr(); }
 
   const NodeGraph& graph_;
   StructuralMatrices& matrices_;
@@ -191,6 +210,10 @@ StructuralMatrices assemble(const FeModel& model) {
     block.bottomRightCorner<3, 3>() = point.inertia;
     adder.add_mass_block(point.node, block);
   }
+
+  // Matrices on DOFs: springs, bushings and rods (K), general masses (M).
+  for (const DofMatrix& matrix : model.dof_stiffnesses) adder.add_dof_matrix(matrix, adder.k_values());
+  for (const DofMatrix& matrix : model.dof_masses) adder.add_dof_matrix(matrix, adder.m_values());
   return out;
 }
 

@@ -3,7 +3,9 @@
 // Global DOF of (node n, Dof d) is FeModel::dof_index(n, d) = 6 n + d. Beam matrices come
 // from beam_element_matrices (beam_element.h), shell matrices from shell_element_matrices
 // (shell_element.h), point masses add m to the translational and their inertia tensor
-// to the rotational diagonal block of their node.
+// to the rotational diagonal block of their node; DOF matrices (FeModel::dof_stiffnesses,
+// dof_masses) add their entries to K or M. Multipoint constraints are not applied here
+// (fe/multipoint_constraints.h).
 #pragma once
 
 #include <Eigen/SparseCore>

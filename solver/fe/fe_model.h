@@ -1,6 +1,7 @@
 // The finite-element model of one flexible component: nodes with 6 DOFs each
 // (ux, uy, uz, rx, ry, rz, in the component frame), beam and shell elements,
-// point masses, named node sets and single-point constraints (triangles: NASTRAN CTRIA3).
+// point masses, matrices on DOFs (springs, rods, general masses), multipoint constraints
+// (rigid elements), named node sets and single-point constraints (triangles: NASTRAN CTRIA3).
 //
 // Built and checked by FeModelBuilder (fe_model_builder.h); constant afterwards.
 // Units are SI throughout (m, kg, s, N, Pa).
@@ -111,6 +112,26 @@ struct PointMass {
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
 };
 
+// A symmetric matrix on a list of global DOFs (FeModel::dof_index), added to K or M as it is:
+// scalar springs (NASTRAN CELAS), bushings (CBUSH), rods (CROD), general masses (CONM1,
+// CMASS). `values` is dofs.size() square, in the order of `dofs`; units N/m, N m/rad, N/rad
+// (stiffness) or kg, kg m, kg m^2 (mass) as the DOF pair requires.
+struct DofMatrix {
+  std::vector<int> dofs;  // distinct global DOF indices
+  Eigen::MatrixXd values;
+};
+
+// A linear multipoint constraint (NASTRAN's rigid elements RBE2, RBE3 and MPC equations):
+//   u[dependent] = sum_k coefficients[k] u[independent[k]]   (global DOF indices).
+// Eliminated before the modal analysis by the master-slave transformation u = T u_r
+// (fe/multipoint_constraints.h). An independent DOF may itself be dependent in another
+// constraint (chains); a DOF is dependent in at most one constraint and is never fixed.
+struct MultipointConstraint {
+  int dependent = 0;
+  std::vector<int> independent;
+  std::vector<double> coefficients;
+};
+
 // A DOF held at zero (modal-analysis boundary condition).
 struct FixedDof {
   int node = 0;
@@ -126,6 +147,9 @@ struct FeModel {
   std::vector<ShellElement> shells;
   std::vector<ShellTriangle> triangles;
   std::vector<PointMass> point_masses;
+  std::vector<DofMatrix> dof_stiffnesses;  // springs, bushings, rods
+  std::vector<DofMatrix> dof_masses;       // general and rod masses
+  std::vector<MultipointConstraint> multipoint_constraints;
   std::map<std::string, std::vector<int>> node_sets;  // name -> node indices
   std::vector<FixedDof> fixed_dofs;
 

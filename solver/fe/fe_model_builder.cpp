@@ -8,6 +8,7 @@
 #include <cmath>
 #include <set>
 
+#include "fe/multipoint_constraints.h"
 #include "fe/shell_triangle.h"
 
 namespace limber::fe {
@@ -253,6 +254,98 @@ void FeModelBuilder::add_node_set(const std::string& name, const std::vector<int
   model_.node_sets.emplace(name, nodes);
 }
 
+namespace {
+
+constexpr const char* kDofNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+
+// "uz at node 101".
+std::string dof_text(const FeModel& model, int dof) {
+  return fmt::format("{} at node {}", kDofNames[dof % kDofsPerNode],
+                     model.node_ids[static_cast<std::size_t>(dof / kDofsPerNode)]);
+}
+
+}  // namespace
+
+void FeModelBuilder::add_dof_matrix(const DofMatrix& matrix, const std::string& what,
+                                    const SourceLocation& where, std::vector<DofMatrix>& into) {
+  const auto size = static_cast<Eigen::Index>(matrix.dofs.size());
+  if (size == 0 || matrix.values.rows() != size || matrix.values.cols() != size) {
+    throw InputError(fmt::format("{}: expected a {}x{} matrix on its DOFs, got {}x{}", what, size,
+                                 size, matrix.values.rows(), matrix.values.cols()),
+                     where);
+  }
+  std::set<int> seen;
+  for (int dof : matrix.dofs) {
+    if (dof < 0 || dof >= model_.dof_count()) {
+      throw InputError(fmt::format("{}: expected DOFs of existing nodes, got DOF index {}", what, dof), where);
+    }
+    if (!seen.insert(dof).second) {
+      throw InputError(fmt::format("{}: expected distinct DOFs, got {} twice", what, dof_text(model_, dof)), where);
+    }
+  }
+  if (!matrix.values.allFinite()) throw InputError(what + ": expected finite values", where);
+  const double largest = matrix.values.cwiseAbs().maxCoeff();
+  // 1e-9: the round-off of a matrix assembled from a few products, far below a real asymmetry.
+  if ((matrix.values - matrix.values.transpose()).cwiseAbs().maxCoeff() > 1e-9 * largest) {
+    throw InputError(what + ": expected a symmetric matrix, got an unsymmetric one", where);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(matrix.values);
+  if (size > 0 && eigen.eigenvalues()(0) < -1e-9 * largest) {
+    throw InputError(fmt::format("{}: expected a positive semi-definite matrix, got an eigenvalue "
+                                 "{:.6g}",
+                                 what, eigen.eigenvalues()(0)),
+                     where);
+  }
+  into.push_back(matrix);
+}
+
+void FeModelBuilder::add_dof_stiffness(const DofMatrix& matrix, const std::string& what,
+                                       const SourceLocation& where) {
+  add_dof_matrix(matrix, what, where, model_.dof_stiffnesses);
+}
+
+void FeModelBuilder::add_dof_mass(const DofMatrix& matrix, const std::string& what,
+                                  const SourceLocation& where) {
+  add_dof_matrix(matrix, what, where, model_.dof_masses);
+}
+
+void FeModelBuilder::add_multipoint_constraint(const MultipointConstraint& constraint,
+                                               const std::string& what,
+                                               const SourceLocation& where) {
+  const auto in_range = [&](int dof) { return dof >= 0 && dof < model_.dof_count(); };
+  if (!in_range(constraint.dependent) ||
+      !std::all_of(constraint.independent.begin(), constraint.independent.end(), in_range)) {
+    throw InputError(what + ": expected DOFs of existing nodes", where);
+  }
+  if (constraint.independent.size() != constraint.coefficients.size()) {
+    throw InputError(fmt::format("{}: expected one coefficient per independent DOF, got {} and {}",
+                                 what, constraint.coefficients.size(), constraint.independent.size()),
+                     where);
+  }
+  for (double c : constraint.coefficients) {
+    if (!std::isfinite(c)) throw InputError(what + ": expected finite coefficients", where);
+  }
+  if (std::find(constraint.independent.begin(), constraint.independent.end(),
+                constraint.dependent) != constraint.independent.end()) {
+    throw InputError(fmt::format("{}: expected the dependent DOF {} not among its independent DOFs",
+                                 what, dof_text(model_, constraint.dependent)),
+                     where);
+  }
+  if (auto found = constraint_of_dependent_.find(constraint.dependent);
+      found != constraint_of_dependent_.end()) {
+    const auto& [first_what, first_where] = constraint_origin_[static_cast<std::size_t>(found->second)];
+    throw InputError(fmt::format("{}: expected each DOF dependent in one rigid element or "
+                                 "constraint at most, got {} already dependent in {} ({})",
+                                 what, dof_text(model_, constraint.dependent), first_what,
+                                 first_where.to_string()),
+                     where);
+  }
+  constraint_of_dependent_.emplace(constraint.dependent,
+                                   static_cast<int>(model_.multipoint_constraints.size()));
+  constraint_origin_.emplace_back(what, where);
+  model_.multipoint_constraints.push_back(constraint);
+}
+
 void FeModelBuilder::fix(int node, Dof dof, const SourceLocation& where) {
   demand_node(node, "fixed DOF node", where);
   const bool already =
@@ -283,8 +376,8 @@ const std::vector<int>& FeModelBuilder::node_set(const std::string& name,
 
 FeModel FeModelBuilder::build(const SourceLocation& where) && {
   // At least one element.
-  const std::size_t elements =
-      model_.beams.size() + model_.shells.size() + model_.triangles.size();
+  const std::size_t elements = model_.beams.size() + model_.shells.size() +
+                               model_.triangles.size() + model_.dof_stiffnesses.size();
   if (elements == 0) {
     throw InputError(
         fmt::format("FE model: expected at least 1 element, got 0 ({} nodes)", model_.node_count()),
@@ -303,6 +396,15 @@ FeModel FeModelBuilder::build(const SourceLocation& where) && {
     for (int n : s.nodes) used[n] = true;
   }
   for (const PointMass& m : model_.point_masses) used[m.node] = true;
+  for (const auto* matrices : {&model_.dof_stiffnesses, &model_.dof_masses}) {
+    for (const DofMatrix& matrix : *matrices) {
+      for (int dof : matrix.dofs) used[dof / kDofsPerNode] = true;
+    }
+  }
+  for (const MultipointConstraint& c : model_.multipoint_constraints) {
+    used[c.dependent / kDofsPerNode] = true;
+    for (int dof : c.independent) used[dof / kDofsPerNode] = true;
+  }
   std::vector<int> unused;
   for (int n = 0; n < model_.node_count(); ++n) {
     if (!used[n]) unused.push_back(model_.node_ids[n]);
@@ -317,6 +419,27 @@ FeModel FeModelBuilder::build(const SourceLocation& where) && {
                     fmt::join(unused.begin(), unused.begin() + static_cast<long>(shown), ", "),
                     unused.size() > kShown ? ", ..." : ""),
         where);
+  }
+  // A dependent DOF is not also held (NASTRAN: not in two dependent sets either).
+  for (const FixedDof& f : model_.fixed_dofs) {
+    const int dof = FeModel::dof_index(f.node, f.dof);
+    if (auto found = constraint_of_dependent_.find(dof); found != constraint_of_dependent_.end()) {
+      const auto& [what, at] = constraint_origin_[static_cast<std::size_t>(found->second)];
+      throw InputError(fmt::format("{}: expected dependent DOFs that are not held by a "
+                                   "single-point constraint, got {} held",
+                                   what, dof_text(model_, dof)),
+                       at);
+    }
+  }
+  // Chains of constraints end at independent DOFs.
+  if (const auto cycle = constraint_cycle(model_)) {
+    std::vector<std::string> names;
+    for (int c : *cycle) names.push_back(constraint_origin_[static_cast<std::size_t>(c)].first);
+    names.push_back(names.front());
+    throw InputError(fmt::format("{}: expected chains of rigid elements and constraints that end "
+                                 "at independent DOFs, got the cycle {}",
+                                 names.front(), fmt::join(names, " -> ")),
+                     constraint_origin_[static_cast<std::size_t>(cycle->front())].second);
   }
   return std::move(model_);
 }

@@ -38,6 +38,19 @@ class FeModelBuilder {
   // Throws on an unknown node, a negative or non-finite mass [kg], or an inertia [kg m^2]
   // that is not symmetric positive semi-definite.
   void add_point_mass(const PointMass& point_mass, const SourceLocation& where = {});
+  // A stiffness or mass matrix on DOFs (fe_model.h, DofMatrix). Throw on unknown or repeated
+  // DOFs, a size mismatch, non-finite values, or a matrix that is not symmetric positive
+  // semi-definite (relative tolerance 1e-9 of its largest entry). `what` names the element.
+  void add_dof_stiffness(const DofMatrix& matrix, const std::string& what,
+                         const SourceLocation& where = {});
+  void add_dof_mass(const DofMatrix& matrix, const std::string& what,
+                    const SourceLocation& where = {});
+  // A multipoint constraint (fe_model.h). Throws on unknown DOFs, a size mismatch, non-finite
+  // coefficients, a dependent DOF that is already dependent (naming the first), or a
+  // dependent DOF among its own independent ones. build() further throws on a dependent DOF
+  // that is fixed and on a cycle of constraints, at the constraint's `where`.
+  void add_multipoint_constraint(const MultipointConstraint& constraint, const std::string& what,
+                                 const SourceLocation& where = {});
   // Throws on a name already used, an empty list, or an unknown node index.
   void add_node_set(const std::string& name, const std::vector<int>& nodes,
                     const SourceLocation& where = {});
@@ -48,15 +61,22 @@ class FeModelBuilder {
   const std::vector<int>& node_set(const std::string& name, const SourceLocation& where = {}) const;
   const FeModel& peek() const { return model_; }
 
-  // Final checks (at least one element, every node used by an element or a point mass)
+  // Final checks (at least one element, every node used by an element, a point mass, a DOF
+  // matrix or a multipoint constraint; constraints as above)
   // and hand-over of the frozen model.
   FeModel build(const SourceLocation& where = {}) &&;
 
  private:
   void demand_node(int node, const char* what, const SourceLocation& where) const;
 
+  void add_dof_matrix(const DofMatrix& matrix, const std::string& what, const SourceLocation& where,
+                      std::vector<DofMatrix>& into);
+
   FeModel model_;
   std::unordered_map<int, int> index_of_id_;
+  // Per multipoint constraint: what it came from and where (for build's errors).
+  std::vector<std::pair<std::string, SourceLocation>> constraint_origin_;
+  std::unordered_map<int, int> constraint_of_dependent_;
 };
 
 }  // namespace limber::fe

@@ -1,11 +1,16 @@
 #include "modal/component_modes.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
 #include "core/error.h"
+#include "modal/constrained_matrices.h"
 #include "modal/dof_selection.h"
 #include "modal/modal_invariants.h"
 #include "modal/normal_modes.h"
@@ -27,8 +32,11 @@ struct SiteDofs {
 };
 
 // Validates the sites of one kind and lists their DOFs (InputError on bad input).
+// `dependent`: DOFs made dependent by multipoint constraints (ascending), refused when
+// `independent_only` (a constraint mode prescribes a DOF, which a dependent DOF cannot take).
 SiteDofs site_dofs(const fe::FeModel& model, const std::vector<StaticModeSite>& sites,
-                   const std::vector<int>& free_dofs, const char* kind) {
+                   const std::vector<int>& free_dofs, const std::vector<int>& dependent,
+                   bool independent_only, const char* kind) {
   SiteDofs result;
   std::set<int> seen;
   for (const StaticModeSite& site : sites) {
@@ -50,6 +58,13 @@ SiteDofs site_dofs(const fe::FeModel& model, const std::vector<StaticModeSite>& 
             "{} mode site: expected a free DOF, got {} at node {}, which is fixed", kind,
             dof_name(dof), id));
       }
+      if (independent_only && std::binary_search(dependent.begin(), dependent.end(), index)) {
+        throw InputError(fmt::format(
+            "{} mode site: expected an independent DOF, got {} at node {}, which a rigid element "
+            "makes dependent (ask for it at the element's independent grid, or ask for an "
+            "attachment mode)",
+            kind, dof_name(dof), id));
+      }
       if (!seen.insert(index).second) {
         throw InputError(fmt::format(
             "{} mode sites: expected each DOF once, got {} at node {} twice", kind, dof_name(dof),
@@ -60,6 +75,36 @@ SiteDofs site_dofs(const fe::FeModel& model, const std::vector<StaticModeSite>& 
     }
   }
   return result;
+}
+
+// The combinations N (r x r', orthonormal) of the rigid motions `psi_free` (n x r, full
+// displacements) that the springs of the model (FeModel::dof_stiffnesses) do not resist: the
+// null space of psi_free^T K_springs psi_free, columns normalised first, eigenvalues below
+// 1e-9 of K's largest diagonal entry counted as zero (a spring softer than that is not a
+// support, and a two-node spring's rigid energy is round-off far below it). A grounded spring
+// restrains rigid motion as a fixed DOF does.
+Eigen::MatrixXd unresisted_rigid_motion(const fe::FeModel& model, const fe::SparseMatrix& stiffness,
+                                        const Eigen::MatrixXd& psi_free) {
+  const Eigen::VectorXd norms = psi_free.colwise().norm();
+  const Eigen::MatrixXd v = psi_free * norms.cwiseInverse().asDiagonal();
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(v.cols(), v.cols());
+  for (const fe::DofMatrix& spring : model.dof_stiffnesses) {
+    const Eigen::MatrixXd v_e = gather_rows(v, spring.dofs);
+    g += v_e.transpose() * spring.values * v_e;
+  }
+  const double scale = stiffness.diagonal().cwiseAbs().maxCoeff();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(0.5 * (g + g.transpose()));
+  std::vector<Eigen::Index> zero;
+  for (Eigen::Index i = 0; i < g.rows(); ++i) {
+    if (eigen.eigenvalues()(i) <= 1e-9 * scale) zero.push_back(i);
+  }
+  Eigen::MatrixXd n(g.rows(), static_cast<Eigen::Index>(zero.size()));
+  for (std::size_t j = 0; j < zero.size(); ++j) {
+    n.col(static_cast<Eigen::Index>(j)) = norms.cwiseInverse().asDiagonal() * eigen.eigenvectors().col(zero[j]);
+  }
+  // Back to unnormalised columns of psi_free, re-orthonormalised (Psi N must stay a basis).
+  if (n.cols() > 0) n = Eigen::HouseholderQR<Eigen::MatrixXd>(n).householderQ() * Eigen::MatrixXd::Identity(n.rows(), n.cols());
+  return n;
 }
 
 ModalResult failure(ModalStatus status, const std::string& what, const std::string& message,
@@ -80,9 +125,18 @@ ModalResult compute_component_modes(const fe::FeModel& model, const ModeRequest&
 ModalResult compute_component_modes(const fe::FeModel& model,
                                     const fe::StructuralMatrices& matrices,
                                     const ModeRequest& request) {
-  const fe::SparseMatrix& k = matrices.stiffness;
-  const fe::SparseMatrix& m = matrices.mass;
-  const std::vector<int> free_dofs = fe::free_dofs(model);
+  // Multipoint constraints eliminated (constrained_matrices.h): embedded T^T K T, T^T M T,
+  // dependent DOFs out of the free set; shapes are expanded by T at the end.
+  const Eigen::MatrixXd psi_full = rigid_body_modes(model);
+  std::optional<ConstrainedMatrices> constrained;
+  if (!model.multipoint_constraints.empty()) constrained = constrain(model, matrices, psi_full);
+  const fe::SparseMatrix& k = constrained ? constrained->stiffness : matrices.stiffness;
+  const fe::SparseMatrix& m = constrained ? constrained->mass : matrices.mass;
+  const Eigen::MatrixXd& psi = constrained ? constrained->psi : psi_full;
+  const std::vector<int> unheld_dofs = fe::free_dofs(model);
+  const std::vector<int> free_dofs = constrained ? constrained->free_dofs : unheld_dofs;
+  const std::vector<int> no_dofs;
+  const std::vector<int>& dependent = constrained ? constrained->transformation.dependent_dofs : no_dofs;
   const int n_free = static_cast<int>(free_dofs.size());
 
   // Validate the request.
@@ -104,19 +158,33 @@ ModalResult compute_component_modes(const fe::FeModel& model,
     throw InputError(fmt::format("mode request: expected a dependency tolerance in (0, 1), got {}",
                                  request.dependency_tolerance));
   }
-  const SiteDofs constraint = site_dofs(model, request.constraint_sites, free_dofs, "constraint");
-  const SiteDofs attachment = site_dofs(model, request.attachment_sites, free_dofs, "attachment");
+  const SiteDofs constraint =
+      site_dofs(model, request.constraint_sites, unheld_dofs, dependent, true, "constraint");
+  const SiteDofs attachment =
+      site_dofs(model, request.attachment_sites, unheld_dofs, dependent, false, "attachment");
 
-  // Rigid-body modes and the rigid motion the fixed DOFs leave free.
-  const Eigen::MatrixXd psi = rigid_body_modes(model);
+  // The rigid motion the fixed DOFs leave free.
   const std::vector<int> fixed = set_difference(
       [&] {
         std::vector<int> all(static_cast<std::size_t>(model.dof_count()));
         for (int i = 0; i < model.dof_count(); ++i) all[static_cast<std::size_t>(i)] = i;
         return all;
       }(),
-      free_dofs);
-  const Eigen::MatrixXd psi_free = unrestrained_rigid_motion(psi, fixed);
+      unheld_dofs);
+  Eigen::MatrixXd psi_free = unrestrained_rigid_motion(psi, fixed);
+  if (!model.dof_stiffnesses.empty() && psi_free.cols() > 0) {
+    const Eigen::MatrixXd full = constrained ? expand(*constrained, psi_free) : psi_free;
+    const Eigen::MatrixXd unresisted = unresisted_rigid_motion(model, matrices.stiffness, full);
+    // Static modes take the free rigid motion from the held DOFs alone (static_modes.h).
+    if (unresisted.cols() < psi_free.cols() && (!constraint.dofs.empty() || !attachment.dofs.empty())) {
+      throw InputError(fmt::format(
+          "mode request: expected no constraint or attachment modes on a body whose grounded "
+          "springs restrain rigid motion ({} of {} rigid motions), got static-mode sites (not "
+          "supported: hold the DOFs with fixed DOFs instead)",
+          psi_free.cols() - unresisted.cols(), psi_free.cols()));
+    }
+    psi_free = psi_free * unresisted;
+  }
   const int rigid_count = static_cast<int>(psi_free.cols());
   if (request.normal_count + rigid_count > n_free) {
     throw InputError(fmt::format(
@@ -171,8 +239,22 @@ ModalResult compute_component_modes(const fe::FeModel& model,
                                "constraint modes")) {
     return *failed;
   }
-  if (auto failed = add_static(attachment, ModeKind::kAttachment, compute_attachment_modes,
-                               "attachment modes")) {
+  // With constraints, a unit force at a DOF loads the independent DOFs with T^T e.
+  const auto constrained_attachment = [&](const fe::SparseMatrix& stiffness, const fe::SparseMatrix& mass,
+                                          const Eigen::MatrixXd& rigid, const std::vector<int>& free,
+                                          const std::vector<int>& chosen) {
+    Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(model.dof_count(), static_cast<Eigen::Index>(chosen.size()));
+    for (std::size_t j = 0; j < chosen.size(); ++j) unit(chosen[j], static_cast<Eigen::Index>(j)) = 1.0;
+    return compute_static_responses(stiffness, mass, rigid, free, reduce_loads(*constrained, unit),
+                                    "attachment modes");
+  };
+  if (constrained) {
+    if (auto failed = add_static(attachment, ModeKind::kAttachment, constrained_attachment,
+                                 "attachment modes")) {
+      return *failed;
+    }
+  } else if (auto failed = add_static(attachment, ModeKind::kAttachment, compute_attachment_modes,
+                                      "attachment modes")) {
     return *failed;
   }
 
@@ -198,7 +280,10 @@ ModalResult compute_component_modes(const fe::FeModel& model,
   result.notices = std::move(notices);
   result.mode_set = std::move(combined.mode_set);
   result.mode_set.rigid_modes = std::move(rigid_modes);
-  result.mode_set.invariants = compute_modal_invariants(m, psi, result.mode_set.shapes);
+  // Full displacements u = T u_r; Phi^T M Phi over the full model equals Phi_r^T M_r Phi_r.
+  if (constrained) result.mode_set.shapes = expand(*constrained, result.mode_set.shapes);
+  result.mode_set.invariants =
+      compute_modal_invariants(matrices.mass, psi_full, result.mode_set.shapes);
   return result;
 }
 

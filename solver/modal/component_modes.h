@@ -42,14 +42,17 @@ struct ModalResult {
   ModeSet mode_set;
 };
 
-// Runs the whole reduction: assemble K, M (fe::assemble); normal modes on the free DOFs
+// Runs the whole reduction: assemble K, M (fe::assemble); multipoint constraints (RBE2,
+// RBE3) eliminated by u = T u_r (constrained_matrices.h), the shapes returned as full
+// displacements T u_r; normal modes on the free DOFs
 // (normal_modes.h, rigid modes set aside for free components); constraint and attachment
 // modes (static_modes.h); orthonormalisation of [normal | constraint | attachment]
 // (orthonormalise_modes.h); invariants (modal_invariants.h).
 // Throws InputError (expected/got) for impossible requests: no modes requested, more
 // normal modes than free DOFs (after the rigid ones), a site on an unknown node, with no
-// DOFs, naming a DOF twice or on a fixed DOF, a dependency tolerance outside (0, 1), a
-// non-positive cut-off frequency.
+// DOFs, naming a DOF twice or on a fixed DOF, a constraint mode on a DOF a rigid element makes
+// dependent, constraints that a rigid motion violates, a dependency tolerance outside (0, 1),
+// a non-positive cut-off frequency.
 ModalResult compute_component_modes(const fe::FeModel& model, const ModeRequest& request);
 
 // The same with K and M already assembled for `model` (fixed DOFs not removed).

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "fe/beam_geometric_stiffness.h"
 #include "fe/shell_geometric_stiffness.h"
+#include "modal/constrained_matrices.h"
 #include "modal/rigid_body_modes.h"
 #include "modal/static_modes.h"
 
@@ -99,8 +100,17 @@ ModalGeometricStiffnessResult compute_modal_geometric_stiffness(const fe::FeMode
   out.load_nodes = load_nodes;
   // Static stress states of the unit load cases (inertia relief for free parts).
   const Eigen::MatrixXd loads = geometric_stiffness_load_cases(model, matrices.mass, load_nodes);
-  const StaticModes responses = compute_static_responses(matrices.stiffness, matrices.mass, rigid_body_modes(model),
-                                                         fe::free_dofs(model), loads, "geometric stiffness load cases");
+  StaticModes responses;
+  if (model.multipoint_constraints.empty()) {
+    responses = compute_static_responses(matrices.stiffness, matrices.mass, rigid_body_modes(model),
+                                         fe::free_dofs(model), loads, "geometric stiffness load cases");
+  } else {
+    // Rigid elements eliminated (constrained_matrices.h); responses as full displacements.
+    const ConstrainedMatrices c = constrain(model, matrices, rigid_body_modes(model));
+    responses = compute_static_responses(c.stiffness, c.mass, c.psi, c.free_dofs, reduce_loads(c, loads),
+                                         "geometric stiffness load cases");
+    if (responses.status == ModalStatus::kOk) responses.shapes = expand(c, responses.shapes);
+  }
   if (responses.status != ModalStatus::kOk) {
     result.status = responses.status;
     result.message = responses.message;

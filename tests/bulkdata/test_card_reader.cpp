@@ -125,6 +125,36 @@ TEST(CardReader, SkipsExecutiveAndCaseControlAndStopsAtEnddata) {
   }
 }
 
+TEST(CardReader, ContinuationMarkersPairCardsAcrossTheDeck) {
+  // PBEAM 7's continuation (marker +P7 in columns 73-80) comes after another card, in small
+  // field; GRID 2's free-field continuation (*G2 matches +G2) comes last; the CONM2 line's
+  // continuation, with an unmatched marker, continues the card above as before.
+  std::string text = fmt::format("{:<8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:<8}\n", "PBEAM", "7", "1", "1.",
+                                 "2.", "3.", "", "4.", "", "+P7");
+  text += "GRID,1,,0.,0.,0.\n";
+  text += "GRID,2,,1.,2.,3.,,,,+G2\n";
+  text += fmt::format("{:<8}{:>8}{:>8}\n", "+P7", "YES", "1.");
+  text += "CONM2,9,1,,2.,,,,,+X\n+Y,1.,,1.,,,1.\n";
+  text += "*G2,0\n";
+  const std::vector<Card> cards = read_cards_text(text, "deck.bdf");
+  ASSERT_EQ(cards.size(), 4u);
+  EXPECT_EQ(cards[0].name, "PBEAM");
+  ASSERT_EQ(cards[0].fields.size(), 16u);
+  EXPECT_EQ(cards[0].fields[8].text, "YES");
+  EXPECT_EQ(cards[0].fields[8].line, 4);
+  EXPECT_EQ(cards[2].name, "GRID");
+  ASSERT_EQ(cards[2].fields.size(), 12u);  // 8 small fields, then 4 large ones ('*')
+  EXPECT_EQ(cards[2].fields[8].text, "0");
+  EXPECT_EQ(cards[3].fields.size(), 16u);
+  // A continuation with no card before it and no matching marker.
+  try {
+    read_cards_text("+Q1,1.\nGRID,1,,0.,0.,0.,,,,+Q1\n", "deck.bdf");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().line, 1) << error.what();
+  }
+}
+
 TEST(CardReader, ErrorsNameLineAndColumn) {
   // A continuation with nothing before it, a bad name, too many free fields.
   const auto fails = [](const std::string& text, const std::string& where,

@@ -112,13 +112,13 @@ TEST(DeckErrors, Mat1TakesTwoOfEGNu) {
 }
 
 TEST(DeckErrors, UnsupportedCardsAreErrorsUnlessAllowed) {
-  const std::string text = kPlate + "CTRIA6,20,1,1,2,5\nRBE2,30,1,123456,2\nCTRIA6,21,1,2,3,6\n"
+  const std::string text = kPlate + "CTRIA6,20,1,1,2,5\nRBAR,30,1,2,123456\nCTRIA6,21,1,2,3,6\n"
                                     "FORCE,1,5,,1.,0.,0.,1.\n";
   DeckOptions options;
   options.where = {"case.yaml", 4, 16};
   // The error is at the case entry and lists each card with its count and lines.
   EXPECT_TRUE(fails_at(text, "case.yaml:4:16",
-                       "CTRIA6 (2 cards: deck.bdf:11, deck.bdf:13); RBE2 (1 card: deck.bdf:12)",
+                       "CTRIA6 (2 cards: deck.bdf:11, deck.bdf:13); RBAR (1 card: deck.bdf:12)",
                        options));
   // Allowed: a notice with the same list; FORCE (a load) is ignored either way.
   options.unsupported_is_error = false;
@@ -143,6 +143,18 @@ TEST(DeckSets, ThruRangesHoldTheGridsWithinThem) {
   text = kPlate + "SPC1,1,3,77\n";
   options.spc_set = 1;
   EXPECT_TRUE(fails_at(text, deck_location(text, "SPC1"), "expected a defined GRID id, got 77", options));
+}
+
+TEST(DeckSets, CaseControlSetLinesAreNodeSets) {
+  // SET 20 over two lines (a trailing comma continues), a set of ALL (no list: skipped), and
+  // a set whose id clashes with a SET1 (an error at the second).
+  std::string text = "SOL 103\nCEND\nSET 20 = 1, 3 THRU 5,\n   6\nSET 21 = ALL\nDISP = 20\nBEGIN BULK\n" + kPlate;
+  fe::FeModelBuilder builder;
+  add_deck(parse_deck(read_cards_text(text, "deck.bdf"), "deck.bdf"), {}, builder);
+  EXPECT_EQ(builder.peek().node_sets.at("set20"), (std::vector<int>{0, 2, 3, 4, 5}));
+  EXPECT_FALSE(builder.peek().node_sets.contains("set21"));
+  text = "SOL 103\nCEND\nSET 10 = 1, 2\nBEGIN BULK\n" + kPlate + "SET1,10,3,4\n";
+  EXPECT_TRUE(fails_at(text, deck_location(text, "10,3,4"), "expected a unique set id"));
 }
 
 TEST(DeckErrors, MassOffsetsAndRotatedConstraints) {

@@ -3,6 +3,7 @@
 // and builds, and bad `bulk_data` entries fail at their place in the case file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "input_error_matchers.h"
@@ -58,6 +59,28 @@ TEST(BulkDataCase, TheShippedDeckCaseReadsReducesAndBuilds) {
   // The base case's generated panel: first free-free modes 101.9 and 111.1 Hz (its header).
   EXPECT_NEAR(panel->result.mode_set.modes.at(0).frequency_hz, 101.9, 0.05);
   EXPECT_NEAR(panel->result.mode_set.modes.at(1).frequency_hz, 111.1, 0.05);
+  EXPECT_NO_THROW(build_mechanism(input, reduction));
+}
+
+TEST(BulkDataCase, TheSpiderDeckCaseCarriesItsHingesThroughTheRigidElements) {
+  const Case input = read_case_file(std::string(LIMBER_CASES_DIR) + "/satellite_deployment_spider.yaml");
+  ASSERT_TRUE(input.mechanism);
+  const CaseReduction reduction = reduce_case(input, ReductionScope::kMechanismBodies);
+  const BodyReduction* panel = reduction.find("panel");
+  ASSERT_NE(panel, nullptr);
+  const modal::ModeSet& modes = panel->result.mode_set;
+  // Still free-free with six rigid-body modes; constraints only raise eigenvalues (Rayleigh),
+  // so the spiders' panel is at least as stiff as the plain deck's (101.9, 111.1 Hz).
+  EXPECT_EQ(modes.rigid_modes.size(), 6u);
+  EXPECT_GT(modes.modes.at(0).frequency_hz, 101.9);
+  EXPECT_GT(modes.modes.at(1).frequency_hz, 111.08);
+  // The hinge grid 1001 and the coincident edge grid 5 it holds move together in every mode.
+  const fe::FeModel& model = input.flexible_bodies.at(0).model;
+  const int hinge = model.node_sets.at("root_edge").at(0);
+  ASSERT_EQ(model.node_ids[hinge], 1001);
+  const int edge = static_cast<int>(std::find(model.node_ids.begin(), model.node_ids.end(), 5) - model.node_ids.begin());
+  EXPECT_LT((modes.shapes.middleRows(6 * hinge, 6) - modes.shapes.middleRows(6 * edge, 6)).cwiseAbs().maxCoeff(),
+            1e-12 * modes.shapes.cwiseAbs().maxCoeff());
   EXPECT_NO_THROW(build_mechanism(input, reduction));
 }
 
