@@ -3,8 +3,10 @@
 // shift-invert mode 3 (Lehoucq, Sorensen & Yang, "ARPACK Users' Guide", SIAM 1998,
 // §3.2.3 and dsdrv4): the Lanczos operator is OP = (K - sigma M)^-1 M, its largest
 // eigenvalues theta = 1 / (lambda - sigma) belong to the lambda nearest sigma.
-// (K - sigma M) is factorised once with CHOLMOD's supernodal Cholesky; with sigma < 0,
-// K positive semi-definite and M positive definite it is SPD even for free components.
+// (K - sigma M) is factorised once with CHOLMOD's supernodal Cholesky (shifted_factor.h);
+// with sigma < 0, K positive semi-definite and M positive definite it is SPD even for free
+// components. A problem restricted to a DOF subset (the free DOFs of a held component) is
+// solved without copying K_ff or M_ff: products and norms go through the full matrices.
 //
 // Problems too small for ARPACK (2 nev >= n) are solved densely (Eigen's
 // GeneralizedSelfAdjointEigenSolver), which gives the same result to round-off.
@@ -12,6 +14,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -51,7 +54,11 @@ struct EigenSolution {
   // and dseupd), for benchmarks; 0 for the dense path.
   double factorisation_seconds = 0.0;
   double lanczos_seconds = 0.0;
+  int operator_applications = 0;  // applications of OP in the Lanczos iteration (ARPACK numop)
 };
+
+// Default Lanczos basis size for nev eigenpairs: max(2 nev + 1, nev + 20).
+inline int default_basis_size(int nev) { return nev + 20 > 2 * nev + 1 ? nev + 20 : 2 * nev + 1; }
 
 // The `nev` eigenpairs with lambda nearest above the shift (the lowest ones for a shift
 // below the spectrum). Preconditions (DEMAND): K, M square, same size n, symmetric with
@@ -60,6 +67,13 @@ struct EigenSolution {
 // (status message carries ARPACK's info code); eigenvalues/vectors are then empty.
 EigenSolution solve_lowest_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
                                       const Eigen::SparseMatrix<double>& mass, int nev,
+                                      const EigenSolverOptions& options = {});
+
+// The same for K(dofs, dofs), M(dofs, dofs) (dofs ascending, distinct, in range; DEMAND):
+// eigenvectors have dofs.size() rows. K and M are not copied.
+EigenSolution solve_lowest_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                                      const Eigen::SparseMatrix<double>& mass,
+                                      const std::vector<int>& dofs, int nev,
                                       const EigenSolverOptions& options = {});
 
 }  // namespace limber::modal
