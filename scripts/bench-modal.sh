@@ -53,7 +53,7 @@ column_minima() {
 }
 
 echo "bench-modal: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)," \
-     "$runs runs each, alternating; ccx $([[ $have_ccx == 1 ]] && ccx -v 2>/dev/null | grep -o '[0-9.]*$' | head -1 || echo 'not found')"
+     "$runs runs each, alternating; ccx $([[ $have_ccx == 1 ]] && ccx -v 2>&1 | grep -o '[0-9][0-9.]*' | head -1 || true; [[ $have_ccx == 1 ]] || echo 'not found')"
 for plate in "${plates[@]}"; do
   n=${plate%%:*}
   modes=${plate##*:}

@@ -9,7 +9,8 @@
 // With --ccx-deck FILE it also writes the same model as a CalculiX deck (S4 shells, same
 // nodes, element order and clamped edge, *FREQUENCY) for scripts/bench-modal.sh.
 //
-// Usage: limber_bench_modal [--free] [--modes M] [--split] [--ccx-deck FILE] [n]
+// Usage: limber_bench_modal [--free] [--modes M] [--split [--tol T] [--ncv K]]
+//                           [--ccx-deck FILE] [n]
 //        (defaults: cantilever, 10 modes, n = 100, i.e. 61 206 DOFs)
 //
 //   y
@@ -67,6 +68,7 @@ struct Options {
   int modes = 10;
   bool clamped = true;
   bool split = false;
+  limber::modal::EigenSolverOptions solver;  // --tol, --ncv: for the --split solution
   std::string ccx_deck;
 };
 
@@ -162,7 +164,12 @@ void run(const Options& options) {
   if (options.split) {
     const std::vector<int> free = limber::fe::free_dofs(model);
     const limber::modal::EigenSolution solution = limber::modal::solve_lowest_eigenpairs(
-        matrices.stiffness, matrices.mass, free, options.modes + (options.clamped ? 0 : 6));
+        matrices.stiffness, matrices.mass, free, options.modes + (options.clamped ? 0 : 6),
+        options.solver);
+    for (Eigen::Index i = 0; i < solution.eigenvalues.size(); ++i) {
+      fmt::print("  split mode {:2d}  {:18.10f} Hz\n", i + 1,
+                 limber::modal::frequency_hz(solution.eigenvalues[i]));
+    }
     fmt::print(
         "split: factorisation {:.3f} s, Lanczos {:.3f} s ({} operator applications), backward "
         "error {:.1e}\n",
@@ -183,14 +190,18 @@ int main(int argc, char** argv) {
       options.split = true;
     } else if (!std::strcmp(arg, "--modes") && i + 1 < argc) {
       options.modes = std::atoi(argv[++i]);
+    } else if (!std::strcmp(arg, "--tol") && i + 1 < argc) {
+      options.solver.tolerance = std::atof(argv[++i]);
+    } else if (!std::strcmp(arg, "--ncv") && i + 1 < argc) {
+      options.solver.basis_size = std::atoi(argv[++i]);
     } else if (!std::strcmp(arg, "--ccx-deck") && i + 1 < argc) {
       options.ccx_deck = argv[++i];
     } else if (arg[0] != '-' && std::atoi(arg) > 0) {
       options.n = std::atoi(arg);
     } else {
       fmt::print(stderr,
-                 "usage: limber_bench_modal [--free] [--modes M] [--split] [--ccx-deck FILE] "
-                 "[n]\n");
+                 "usage: limber_bench_modal [--free] [--modes M] [--split [--tol T] [--ncv K]] "
+                 "[--ccx-deck FILE] [n]\n");
       return 1;
     }
   }
