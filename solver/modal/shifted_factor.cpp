@@ -115,7 +115,17 @@ ShiftedFactor::~ShiftedFactor() {
 
 bool ShiftedFactor::ok() const { return cholmod_->ok; }
 
-void ShiftedFactor::solve(const double* x, double* y) {
+void ShiftedFactor::solve(const double* x, double* y) { apply({CHOLMOD_A}, x, y); }
+
+void ShiftedFactor::solve_transposed_factor(const double* x, double* y) {
+  apply({CHOLMOD_Lt, CHOLMOD_Pt}, x, y);
+}
+
+void ShiftedFactor::solve_factor(const double* x, double* y) {
+  apply({CHOLMOD_P, CHOLMOD_L}, x, y);
+}
+
+void ShiftedFactor::apply(std::initializer_list<int> systems, const double* x, double* y) {
   LIMBER_DEMAND(cholmod_->ok);
   const std::size_t n = cholmod_->rhs.size();
   // A dense header over our own right-hand side (copied: x may alias y).
@@ -128,10 +138,14 @@ void ShiftedFactor::solve(const double* x, double* y) {
   b.x = cholmod_->rhs.data();
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
-  const int solved = cholmod_solve2(CHOLMOD_A, cholmod_->factor, &b, nullptr, &cholmod_->x,
-                                    nullptr, &cholmod_->y, &cholmod_->e, &cholmod_->common);
-  LIMBER_DEMAND(solved);
-  std::memcpy(y, cholmod_->x->x, n * sizeof(double));
+  for (const int system : systems) {
+    const int solved = cholmod_solve2(system, cholmod_->factor, &b, nullptr, &cholmod_->x,
+                                      nullptr, &cholmod_->y, &cholmod_->e, &cholmod_->common);
+    LIMBER_DEMAND(solved);
+    // The result is the next system's right-hand side.
+    std::memcpy(cholmod_->rhs.data(), cholmod_->x->x, n * sizeof(double));
+  }
+  std::memcpy(y, cholmod_->rhs.data(), n * sizeof(double));
 }
 
 }  // namespace limber::modal

@@ -175,11 +175,12 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
   std::vector<double> v(static_cast<std::size_t>(n) * static_cast<std::size_t>(ncv));
   std::vector<double> workd(3 * static_cast<std::size_t>(n));
   std::vector<double> workl(static_cast<std::size_t>(lworkl));
+  std::vector<double> scratch(static_cast<std::size_t>(n));
   int iparam[11] = {};
   int ipntr[11] = {};
   iparam[0] = 1;                       // exact shifts
   iparam[2] = options.max_iterations;  // restarts
-  iparam[6] = 3;                       // mode 3: shift-invert, B = M
+  iparam[6] = 1;                       // mode 1: standard problem C w = theta w
 
   // Deterministic random start vector (info = 1: resid is supplied).
   std::mt19937 generator(20240611u);
@@ -187,24 +188,18 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
   for (double& r : resid) r = uniform(generator);
   int info = 1;
 
-  // Reverse-communication loop: apply OP = (K - sigma M)^-1 M or B = M as asked, in
-  // ARPACK's own work array (nothing allocated per step).
+  // Reverse-communication loop: y = C x = L^-1 P M P^T L^-T x in ARPACK's own work array
+  // (nothing allocated per step).
   int ido = 0;
   while (true) {
-    dsaupd_(&ido, "G", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
+    dsaupd_(&ido, "I", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
             workd.data(), workl.data(), &lworkl, &info, 1, 2);
-    if (ido != -1 && ido != 1 && ido != 2) break;
+    if (ido != -1 && ido != 1) break;
     const double* x = &workd[static_cast<std::size_t>(ipntr[0] - 1)];
     double* y = &workd[static_cast<std::size_t>(ipntr[1] - 1)];
-    if (ido == -1) {
-      multiply_submatrix(mass, dofs, problem.positions, x, y);
-      factor.solve(y, y);
-    } else if (ido == 1) {
-      // M x is already available at ipntr[2].
-      factor.solve(&workd[static_cast<std::size_t>(ipntr[2] - 1)], y);
-    } else {
-      multiply_submatrix(mass, dofs, problem.positions, x, y);
-    }
+    factor.solve_transposed_factor(x, scratch.data());
+    multiply_submatrix(mass, dofs, problem.positions, scratch.data(), y);
+    factor.solve_factor(y, y);
   }
   solution.arpack_info = info;
   solution.operator_applications = iparam[8];
@@ -219,23 +214,27 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
     return solution;
   }
 
-  // Ritz vectors; dseupd returns lambda (already transformed back from theta).
+  // Ritz pairs (theta, w) of C; then lambda = sigma + 1 / theta, phi = P^T L^-T w.
   const int rvec = 1;
   std::vector<int> select(static_cast<std::size_t>(ncv));
-  solution.eigenvalues.resize(nev);
+  Eigen::VectorXd theta(nev);
   solution.vectors.resize(n, nev);
-  dseupd_(&rvec, "A", select.data(), solution.eigenvalues.data(), solution.vectors.data(), &ldv,
-          &sigma, "G", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
-          workd.data(), workl.data(), &lworkl, &info, 1, 1, 2);
+  dseupd_(&rvec, "A", select.data(), theta.data(), solution.vectors.data(), &ldv, &sigma, "I",
+          &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(),
+          workl.data(), &lworkl, &info, 1, 1, 2);
   solution.lanczos_seconds = seconds_since(lanczos_start);
   if (info != 0 || iparam[4] < nev) {
     solution.arpack_info = info;
     solution.status = ModalStatus::kNotConverged;
     solution.message = fmt::format("ARPACK dseupd: info = {}, {} of {} eigenpairs converged", info,
                                    iparam[4], nev);
-    solution.eigenvalues.resize(0);
     solution.vectors.resize(0, 0);
     return solution;
+  }
+  solution.eigenvalues = sigma + theta.cwiseInverse().array();
+  for (Eigen::Index j = 0; j < nev; ++j) {
+    auto w = solution.vectors.col(j);
+    factor.solve_transposed_factor(w.data(), w.data());
   }
   finish(problem, solution);
   return solution;
