@@ -50,6 +50,23 @@ Cantilever cantilever_plate(int n) {
   return plate;
 }
 
+TEST(DofSelection, ProductAndNormOfASubmatrixWithoutCopyingIt) {
+  const Cantilever plate = cantilever_plate(4);
+  const SparseMatrix& m = plate.matrices.mass;
+  const SparseMatrix m_ff = submatrix(m, plate.free, plate.free);
+  const std::vector<int> positions = dof_positions(plate.free, static_cast<int>(m.rows()));
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(m_ff.rows(), -1.0, 2.0);
+  Eigen::VectorXd y(m_ff.rows());
+  multiply_submatrix(m, plate.free, positions, x.data(), y.data());
+  const Eigen::VectorXd expected = m_ff * x;
+  // The same sums in another order: round-off only (1e-14 of the largest entry).
+  EXPECT_LT((y - expected).cwiseAbs().maxCoeff(), 1e-14 * expected.cwiseAbs().maxCoeff());
+  double norm = 0.0;
+  for (Eigen::Index j = 0; j < m_ff.cols(); ++j) norm = std::max(norm, m_ff.col(j).cwiseAbs().sum());
+  EXPECT_NEAR(submatrix_norm_1(m, plate.free, positions), norm, 1e-14 * norm);
+  EXPECT_EQ(positions[0], -1);  // node 0 is clamped
+}
+
 TEST(RestrictedEigensolver, MatchesTheSolverOnCopiedSubmatrices) {
   const Cantilever plate = cantilever_plate(16);  // 1 734 DOFs, 1 632 free
   const SparseMatrix& k = plate.matrices.stiffness;
