@@ -166,9 +166,18 @@ void run(const Options& options) {
     const limber::modal::EigenSolution solution = limber::modal::solve_lowest_eigenpairs(
         matrices.stiffness, matrices.mass, free, options.modes + (options.clamped ? 0 : 6),
         options.solver);
+    // Each frequency also from the Rayleigh quotient of its vector (error quadratic in the
+    // vector's), as a check of the eigenvalue returned.
     for (Eigen::Index i = 0; i < solution.eigenvalues.size(); ++i) {
-      fmt::print("  split mode {:2d}  {:18.10f} Hz\n", i + 1,
-                 limber::modal::frequency_hz(solution.eigenvalues[i]));
+      Eigen::VectorXd phi = Eigen::VectorXd::Zero(model.dof_count());
+      for (std::size_t r = 0; r < free.size(); ++r) {
+        phi[free[r]] = solution.vectors(static_cast<Eigen::Index>(r), i);
+      }
+      const double quotient =
+          phi.dot(matrices.stiffness * phi) / phi.dot(matrices.mass * phi);
+      fmt::print("  split mode {:2d}  {:18.10f} Hz   Rayleigh quotient {:18.10f} Hz\n", i + 1,
+                 limber::modal::frequency_hz(solution.eigenvalues[i]),
+                 limber::modal::frequency_hz(quotient));
     }
     fmt::print(
         "split: factorisation {:.3f} s, Lanczos {:.3f} s ({} operator applications), backward "
