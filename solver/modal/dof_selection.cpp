@@ -1,6 +1,7 @@
 #include "modal/dof_selection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include "core/error.h"
@@ -28,6 +29,42 @@ SparseMatrix submatrix(const SparseMatrix& a, const std::vector<int>& rows,
                       static_cast<Eigen::Index>(cols.size()));
   result.setFromTriplets(entries.begin(), entries.end());
   return result;
+}
+
+void multiply_submatrix(const SparseMatrix& a, const std::vector<int>& dofs,
+                        const std::vector<int>& positions, const double* x, double* y) {
+  const std::size_t n = dofs.size();
+  std::fill(y, y + n, 0.0);
+  // Column by column: y += A(:, dofs[j]) x_j over the selected rows.
+  for (std::size_t j = 0; j < n; ++j) {
+    const double xj = x[j];
+    for (SparseMatrix::InnerIterator it(a, dofs[j]); it; ++it) {
+      const int i = positions[static_cast<std::size_t>(it.row())];
+      if (i >= 0) y[i] += it.value() * xj;
+    }
+  }
+}
+
+double submatrix_norm_1(const SparseMatrix& a, const std::vector<int>& dofs,
+                        const std::vector<int>& positions) {
+  double norm = 0.0;
+  for (int column : dofs) {
+    double sum = 0.0;
+    for (SparseMatrix::InnerIterator it(a, column); it; ++it) {
+      if (positions[static_cast<std::size_t>(it.row())] >= 0) sum += std::abs(it.value());
+    }
+    norm = std::max(norm, sum);
+  }
+  return norm;
+}
+
+std::vector<int> dof_positions(const std::vector<int>& dofs, int n) {
+  std::vector<int> positions(static_cast<std::size_t>(n), -1);
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    LIMBER_DEMAND(dofs[i] >= 0 && dofs[i] < n && (i == 0 || dofs[i - 1] < dofs[i]));
+    positions[static_cast<std::size_t>(dofs[i])] = static_cast<int>(i);
+  }
+  return positions;
 }
 
 std::vector<int> set_difference(const std::vector<int>& all, const std::vector<int>& removed) {

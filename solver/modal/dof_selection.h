@@ -17,6 +17,18 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 SparseMatrix submatrix(const SparseMatrix& a, const std::vector<int>& rows,
                        const std::vector<int>& cols);
 
+// y = A(dofs, dofs) x without forming the submatrix: x, y of size dofs.size(); `positions`
+// from dof_positions(dofs, A.rows()). Allocates nothing (used inside Lanczos iterations).
+void multiply_submatrix(const SparseMatrix& a, const std::vector<int>& dofs,
+                        const std::vector<int>& positions, const double* x, double* y);
+
+// Largest absolute column sum of A(dofs, dofs) (the 1-norm), without forming it.
+double submatrix_norm_1(const SparseMatrix& a, const std::vector<int>& dofs,
+                        const std::vector<int>& positions);
+
+// Position of each of the n global DOFs in `dofs`, or -1 when it is not there.
+std::vector<int> dof_positions(const std::vector<int>& dofs, int n);
+
 // The entries of `all` that are not in `removed` (both ascending).
 std::vector<int> set_difference(const std::vector<int>& all, const std::vector<int>& removed);
 

@@ -39,13 +39,6 @@ NormalModes compute_normal_modes(const Eigen::SparseMatrix<double>& stiffness,
   const int n_free = static_cast<int>(free_dofs.size());
   LIMBER_DEMAND(request.count > 0 || request.max_frequency_hz.has_value());
   LIMBER_DEMAND(request.count >= 0 && request.count + request.rigid_count <= n_free);
-  // K_ff, M_ff (copies only when some DOFs are fixed).
-  const bool all_free = n_free == n;
-  const SparseMatrix k_copy = all_free ? SparseMatrix() : submatrix(stiffness, free_dofs, free_dofs);
-  const SparseMatrix m_copy = all_free ? SparseMatrix() : submatrix(mass, free_dofs, free_dofs);
-  const SparseMatrix& k_ff = all_free ? stiffness : k_copy;
-  const SparseMatrix& m_ff = all_free ? mass : m_copy;
-
   // First block: the requested count, or 10 elastic modes when only a cut-off is given;
   // one mode beyond the rigid ones is needed for the classification reference.
   const int first_block = request.count > 0 ? request.count : 10;
@@ -54,7 +47,7 @@ NormalModes compute_normal_modes(const Eigen::SparseMatrix<double>& stiffness,
   EigenSolution solution;
   int rigid = 0;
   while (true) {
-    solution = solve_lowest_eigenpairs(k_ff, m_ff, nev, request.solver);
+    solution = solve_lowest_eigenpairs(stiffness, mass, free_dofs, nev, request.solver);
     if (solution.status != ModalStatus::kOk) {
       result.status = solution.status;
       result.message = solution.message;

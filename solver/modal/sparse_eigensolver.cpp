@@ -8,11 +8,13 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "modal/blas_threads.h"
+#include "modal/dof_selection.h"
+#include "modal/shifted_factor.h"
 
 // ARPACK (arpack-ng, gfortran ABI): hidden character lengths follow the arguments.
 extern "C" {
@@ -38,65 +40,67 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-double default_shift(const SparseMatrix& k, const SparseMatrix& m) {
+// The problem restricted to `dofs`, never formed: products and norms go through the
+// full matrices and the position map.
+struct Restricted {
+  const SparseMatrix& k;
+  const SparseMatrix& m;
+  const std::vector<int>& dofs;
+  std::vector<int> positions;  // global DOF -> position in dofs, or -1
+  int size() const { return static_cast<int>(dofs.size()); }
+};
+
+double default_shift(const Restricted& problem) {
   // Largest diagonal ratio K_ii / M_ii: an upper-end estimate of the spectrum.
-  const Eigen::VectorXd kd = k.diagonal();
-  const Eigen::VectorXd md = m.diagonal();
   double ratio = 0.0;
-  for (Eigen::Index i = 0; i < kd.size(); ++i) {
-    if (md[i] > 0.0) ratio = std::max(ratio, kd[i] / md[i]);
+  for (int g : problem.dofs) {
+    const double kd = problem.k.coeff(g, g);
+    const double md = problem.m.coeff(g, g);
+    if (md > 0.0) ratio = std::max(ratio, kd / md);
   }
   return -kDefaultShiftFactor * std::max(ratio, 1.0);
 }
 
-// Largest absolute column sum.
-double norm_1(const SparseMatrix& a) {
-  double norm = 0.0;
-  for (Eigen::Index j = 0; j < a.outerSize(); ++j) {
-    double column = 0.0;
-    for (SparseMatrix::InnerIterator it(a, j); it; ++it) column += std::abs(it.value());
-    norm = std::max(norm, column);
-  }
-  return norm;
-}
-
 // Sort ascending, M-normalise, and measure backward errors.
-void finish(const SparseMatrix& k, const SparseMatrix& m, EigenSolution& solution) {
+void finish(const Restricted& problem, EigenSolution& solution) {
   const Eigen::Index nev = solution.eigenvalues.size();
+  const Eigen::Index n = problem.size();
   std::vector<Eigen::Index> order(static_cast<std::size_t>(nev));
   std::iota(order.begin(), order.end(), Eigen::Index{0});
   std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
     return solution.eigenvalues[a] < solution.eigenvalues[b];
   });
-  const double k_norm = norm_1(k);
-  const double m_norm = norm_1(m);
+  const double k_norm = submatrix_norm_1(problem.k, problem.dofs, problem.positions);
+  const double m_norm = submatrix_norm_1(problem.m, problem.dofs, problem.positions);
   Eigen::VectorXd values(nev);
-  Eigen::MatrixXd vectors(solution.vectors.rows(), nev);
+  Eigen::MatrixXd vectors(n, nev);
+  Eigen::VectorXd m_phi(n);
+  Eigen::VectorXd k_phi(n);
   solution.max_backward_error = 0.0;
   for (Eigen::Index j = 0; j < nev; ++j) {
     // Mass normalisation phi^T M phi = 1 (seed paper eq. 5).
-    Eigen::VectorXd phi = solution.vectors.col(order[static_cast<std::size_t>(j)]);
-    Eigen::VectorXd m_phi = m * phi;
+    auto phi = vectors.col(j);
+    phi = solution.vectors.col(order[static_cast<std::size_t>(j)]);
+    multiply_submatrix(problem.m, problem.dofs, problem.positions, phi.data(), m_phi.data());
     const double scale = 1.0 / std::sqrt(phi.dot(m_phi));
     phi *= scale;
     m_phi *= scale;
+    multiply_submatrix(problem.k, problem.dofs, problem.positions, phi.data(), k_phi.data());
     const double lambda = solution.eigenvalues[order[static_cast<std::size_t>(j)]];
-    const Eigen::VectorXd residual = k * phi - lambda * m_phi;
-    const double error = residual.lpNorm<1>() /
+    const double error = (k_phi - lambda * m_phi).lpNorm<1>() /
                          ((k_norm + std::abs(lambda) * m_norm) * phi.lpNorm<1>());
     solution.max_backward_error = std::max(solution.max_backward_error, error);
     values[j] = lambda;
-    vectors.col(j) = phi;
   }
   solution.eigenvalues = std::move(values);
   solution.vectors = std::move(vectors);
 }
 
-EigenSolution solve_dense(const SparseMatrix& k, const SparseMatrix& m, int nev, double shift) {
+EigenSolution solve_dense(const Restricted& problem, int nev, double shift) {
   EigenSolution solution;
   solution.shift = shift;
-  const Eigen::MatrixXd kd(k);
-  const Eigen::MatrixXd md(m);
+  const Eigen::MatrixXd kd(submatrix(problem.k, problem.dofs, problem.dofs));
+  const Eigen::MatrixXd md(submatrix(problem.m, problem.dofs, problem.dofs));
   // Cholesky-reduced standard problem L^-1 K L^-T (M = L L^T).
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(kd, md);
   if (dense.info() != Eigen::Success) {
@@ -109,33 +113,48 @@ EigenSolution solve_dense(const SparseMatrix& k, const SparseMatrix& m, int nev,
   return solution;
 }
 
+std::vector<int> all_dofs(const SparseMatrix& stiffness) {
+  std::vector<int> dofs(static_cast<std::size_t>(stiffness.rows()));
+  std::iota(dofs.begin(), dofs.end(), 0);
+  return dofs;
+}
+
 }  // namespace
 
 EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                       int nev, const EigenSolverOptions& options) {
-  const int n = static_cast<int>(stiffness.rows());
-  LIMBER_DEMAND(stiffness.cols() == n && mass.rows() == n && mass.cols() == n);
+  return solve_lowest_eigenpairs(stiffness, mass, all_dofs(stiffness), nev, options);
+}
+
+EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const SparseMatrix& mass,
+                                      const std::vector<int>& dofs, int nev,
+                                      const EigenSolverOptions& options) {
+  LIMBER_DEMAND(stiffness.rows() == stiffness.cols() && mass.rows() == stiffness.rows() &&
+                mass.cols() == stiffness.cols());
+  const Restricted problem{stiffness, mass, dofs,
+                           dof_positions(dofs, static_cast<int>(stiffness.rows()))};
+  const int n = problem.size();
   LIMBER_DEMAND(nev >= 1 && nev <= n);
-  const double sigma = options.shift.value_or(default_shift(stiffness, mass));
+  const double sigma = options.shift.value_or(default_shift(problem));
 
   // Small problems: dense solution (ARPACK needs nev < ncv <= n and gains nothing).
   if (2 * nev >= n) {
-    EigenSolution solution = solve_dense(stiffness, mass, nev, sigma);
-    if (solution.status == ModalStatus::kOk) finish(stiffness, mass, solution);
+    EigenSolution solution = solve_dense(problem, nev, sigma);
+    if (solution.status == ModalStatus::kOk) finish(problem, solution);
     return solution;
   }
 
   EigenSolution solution;
   solution.shift = sigma;
+  // CHOLMOD's dense kernels and ARPACK's orthogonalisation on one BLAS thread: on a loaded
+  // machine extra threads spin more than they compute (docs/benchmarks.md).
+  const SingleThreadedBlas one_blas_thread;
 
-  // Factorise K - sigma M once (lower triangle is read).
+  // Factorise K - sigma M once.
   const Clock::time_point factorisation_start = Clock::now();
-  SparseMatrix shifted = stiffness - sigma * mass;
-  shifted.makeCompressed();
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> factor;
-  factor.compute(shifted);
+  ShiftedFactor factor(stiffness, mass, dofs, sigma);
   solution.factorisation_seconds = seconds_since(factorisation_start);
-  if (factor.info() != Eigen::Success) {
+  if (!factor.ok()) {
     solution.status = ModalStatus::kSingular;
     solution.message = fmt::format(
         "Cholesky factorisation of K - sigma M failed (sigma = {:.6g} 1/s^2): the matrix is "
@@ -147,7 +166,7 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
   // ARPACK work arrays (ARPACK Users' Guide, dsaupd documentation).
   const Clock::time_point lanczos_start = Clock::now();
   const int ncv = options.basis_size > 0 ? std::min(n, options.basis_size)
-                                         : std::min(n, std::max(2 * nev + 1, nev + 20));
+                                         : std::min(n, default_basis_size(nev));
   LIMBER_DEMAND(ncv > nev);
   const int ldv = n;
   const int lworkl = ncv * (ncv + 8);
@@ -156,11 +175,12 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
   std::vector<double> v(static_cast<std::size_t>(n) * static_cast<std::size_t>(ncv));
   std::vector<double> workd(3 * static_cast<std::size_t>(n));
   std::vector<double> workl(static_cast<std::size_t>(lworkl));
+  std::vector<double> scratch(static_cast<std::size_t>(n));
   int iparam[11] = {};
   int ipntr[11] = {};
   iparam[0] = 1;                       // exact shifts
   iparam[2] = options.max_iterations;  // restarts
-  iparam[6] = 3;                       // mode 3: shift-invert, B = M
+  iparam[6] = 1;                       // mode 1: standard problem C w = theta w
 
   // Deterministic random start vector (info = 1: resid is supplied).
   std::mt19937 generator(20240611u);
@@ -168,27 +188,21 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
   for (double& r : resid) r = uniform(generator);
   int info = 1;
 
-  // Reverse-communication loop: apply OP = (K - sigma M)^-1 M or B = M as asked.
+  // Reverse-communication loop: y = C x = L^-1 P M P^T L^-T x in ARPACK's own work array
+  // (nothing allocated per step).
   int ido = 0;
-  Eigen::VectorXd buffer(n);
   while (true) {
-    dsaupd_(&ido, "G", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
+    dsaupd_(&ido, "I", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
             workd.data(), workl.data(), &lworkl, &info, 1, 2);
-    if (ido != -1 && ido != 1 && ido != 2) break;
-    Eigen::Map<const Eigen::VectorXd> x(&workd[static_cast<std::size_t>(ipntr[0] - 1)], n);
-    Eigen::Map<Eigen::VectorXd> y(&workd[static_cast<std::size_t>(ipntr[1] - 1)], n);
-    if (ido == -1) {
-      buffer = mass * x;
-      y = factor.solve(buffer);
-    } else if (ido == 1) {
-      // M x is already available at ipntr[2].
-      Eigen::Map<const Eigen::VectorXd> mx(&workd[static_cast<std::size_t>(ipntr[2] - 1)], n);
-      y = factor.solve(Eigen::VectorXd(mx));
-    } else {
-      y = mass * x;
-    }
+    if (ido != -1 && ido != 1) break;
+    const double* x = &workd[static_cast<std::size_t>(ipntr[0] - 1)];
+    double* y = &workd[static_cast<std::size_t>(ipntr[1] - 1)];
+    factor.solve_transposed_factor(x, scratch.data());
+    multiply_submatrix(mass, dofs, problem.positions, scratch.data(), y);
+    factor.solve_factor(y, y);
   }
   solution.arpack_info = info;
+  solution.operator_applications = iparam[8];
   if (info != 0) {
     solution.status = ModalStatus::kNotConverged;
     solution.message =
@@ -200,25 +214,29 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
     return solution;
   }
 
-  // Ritz vectors; dseupd returns lambda (already transformed back from theta).
+  // Ritz pairs (theta, w) of C; then lambda = sigma + 1 / theta, phi = P^T L^-T w.
   const int rvec = 1;
   std::vector<int> select(static_cast<std::size_t>(ncv));
-  solution.eigenvalues.resize(nev);
+  Eigen::VectorXd theta(nev);
   solution.vectors.resize(n, nev);
-  dseupd_(&rvec, "A", select.data(), solution.eigenvalues.data(), solution.vectors.data(), &ldv,
-          &sigma, "G", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
-          workd.data(), workl.data(), &lworkl, &info, 1, 1, 2);
+  dseupd_(&rvec, "A", select.data(), theta.data(), solution.vectors.data(), &ldv, &sigma, "I",
+          &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(),
+          workl.data(), &lworkl, &info, 1, 1, 2);
   solution.lanczos_seconds = seconds_since(lanczos_start);
   if (info != 0 || iparam[4] < nev) {
     solution.arpack_info = info;
     solution.status = ModalStatus::kNotConverged;
     solution.message = fmt::format("ARPACK dseupd: info = {}, {} of {} eigenpairs converged", info,
                                    iparam[4], nev);
-    solution.eigenvalues.resize(0);
     solution.vectors.resize(0, 0);
     return solution;
   }
-  finish(stiffness, mass, solution);
+  solution.eigenvalues = sigma + theta.cwiseInverse().array();
+  for (Eigen::Index j = 0; j < nev; ++j) {
+    auto w = solution.vectors.col(j);
+    factor.solve_transposed_factor(w.data(), w.data());
+  }
+  finish(problem, solution);
   return solution;
 }
 

@@ -225,7 +225,10 @@ TEST(FlexibleBody, LinearRangeWarning) {
   // With the default limits the same deflection's end rotation is flagged.
   checks = check_linear_range(model, state);
   EXPECT_NE(checks[0].warning.find("rotation"), std::string::npos) << checks[0].warning;
-  EXPECT_EQ(checks[0].rotation_node, 0);
+  // The mode is symmetric: both ends rotate alike, equal to the eigen-solver's tolerance
+  // (1e-10), so either end may be the one named.
+  EXPECT_TRUE(checks[0].rotation_node == 0 || checks[0].rotation_node == rod.node_count() - 1)
+      << checks[0].rotation_node;
 }
 
 // A 1 m rod (20 beams, 4 free-free modes, no axial one) from the ground origin along x,
