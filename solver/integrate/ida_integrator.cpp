@@ -3,17 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <fmt/format.h>
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "core/error.h"
 #include "integrate/consistent_state.h"
+#include "integrate/dense_lu_solver.h"
 
 namespace limber::integrate {
 namespace {
@@ -25,6 +27,10 @@ constexpr double kLambdaWeight = 0.01;
 
 // Non-finite residuals IDA may recover from (by cutting the step) within one advance_to.
 constexpr int kMaxNonFiniteRetries = 10;
+
+// Accepted steps on IDA's difference-quotient matrix after a Newton failure with the
+// structured one (as generalized-α pauses its structured matrix for 20 steps).
+constexpr int kStructuredPause = 20;
 
 // Weighted RMS norm of x with IDA's weights 1/(rtol |y| + atol).
 double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double rtol, double atol) {
@@ -96,6 +102,14 @@ struct IdaIntegrator::Impl {
   Eigen::MatrixXd N, h_q;
   SystemEvaluation eval;  // M, Q, g, G, g_t, g_q at the residual's (t, q, v)
 
+  // Structured Newton matrix (jacobian below): the system's diagonal stiffness and damping,
+  // N⁺ = (NᵀN)⁻¹Nᵀ, and how the matrix is chosen.
+  Eigen::VectorXd stiffness, damping, qdot, q_perturbed;
+  Eigen::MatrixXd N_pinv, N_perturbed, D, g_q_along;
+  bool structured = false;     // IDA uses jacobian() (else its difference quotient)
+  int structured_pause = 0;    // accepted steps left on differences after a Newton failure
+  long seen_convergence_failures = 0;  // IDA's count at the last choose_jacobian
+
   ~Impl() { release(); }
 
   void release() {
@@ -150,6 +164,76 @@ struct IdaIntegrator::Impl {
     if (r.allFinite()) return 0;
     return ++nonfinite_residuals <= kMaxNonFiniteRetries ? 1 : -1;
   }
+
+  // The Newton matrix J = ∂F/∂y + c_j ∂F/∂y' (column-major n x n) from the form of F, one
+  // evaluation of the system at (t, q, v) and one of ∂g/∂q along the motion; no residual:
+  //   [c_j I − D   −N            0    g_qᵀ  h_qᵀ  0    ]   q
+  //   [k N⁺        c_j M + c     Gᵀ   0     0     0    ]   v
+  //   [L           G             0    0     0     0    ]   λ (velocity constraints)
+  //   [g_q; h_q    0             0    0     0     0    ]   μ (position constraints, invariants)
+  //   [0           0             0    0     0     c_j I]   z
+  // D = ∂(N v)/∂q by differences of N alone (the quaternion rates), k and c the system's
+  // diagonal stiffness and damping (as generalized-α's structured matrix; −∂Q/∂q ≈ k ∂ξ/∂q =
+  // k N⁺ on the tangent space, N⁺ = (NᵀN)⁻¹Nᵀ), and L = ∂(G v + g_t)/∂q = ∂(g_q q̇ + g_t)/∂q:
+  // by the symmetry of g's second derivatives, [g_q(t + ε, q + ε q̇) − g_q(t, q)]/ε + g_q D with
+  // q̇ = N v, one constraint pass. L is not small: the μ rows move q by O(g) whatever the step,
+  // and without L the velocity rows' Newton error stays O(1) as h → 0 (the seed set-up then
+  // failed its corrector down to h = 2e-10). Left out, each O(h) against the blocks kept
+  // once c_j ~ 1/h scales them: ∂(M v' + Gᵀλ − Q)/∂q beyond k, ∂Q/∂v beyond c (quadratic-
+  // velocity forces, force elements), ∂(g_qᵀμ)/∂q (μ = 0 on the solution) and the integrals'
+  // −∂f (nothing depends on z: its Newton iterates lag the others' by one iteration). They only
+  // slow Newton; after a Newton failure choose_jacobian hands over to IDA's difference quotient
+  // for a while. Returns 1 (recoverable) on non-finite values.
+  int jacobian(double t, double c_j, const double* y_data, const double* yp_data, double* J_data) {
+    unpack(y_data, yp_data);
+    Eigen::Map<Eigen::MatrixXd> J(J_data, n, n);
+    system->kinematic_matrix(q, N);
+    system->evaluate(t, q, v, true, eval);
+    system->coordinate_invariants(q, h, h_q);
+    // D = ∂(N v)/∂q by forward differences of N (no model evaluation).
+    const double root_epsilon = std::sqrt(std::numeric_limits<double>::epsilon());
+    qdot.noalias() = N * v;
+    q_perturbed = q;
+    for (int j = 0; j < nq; ++j) {
+      const double increment = root_epsilon * std::max(1.0, std::abs(q(j)));
+      q_perturbed(j) = q(j) + increment;
+      system->kinematic_matrix(q_perturbed, N_perturbed);
+      D.col(j).noalias() = N_perturbed * v;
+      D.col(j) = (D.col(j) - qdot) / increment;
+      q_perturbed(j) = q(j);
+    }
+    // ∂g/∂q a step ε along the motion (t + ε, q + ε q̇).
+    const double epsilon = root_epsilon * std::max(1.0, q.lpNorm<Eigen::Infinity>()) /
+                           std::max(1.0, qdot.lpNorm<Eigen::Infinity>());
+    q_perturbed.noalias() = q + epsilon * qdot;
+    system->constraint_jacobian_q(t + epsilon, q_perturbed, g_q_along);
+    N_pinv.noalias() = (N.transpose() * N).ldlt().solve(N.transpose());
+    J.setZero();
+    // Kinematic rows.
+    J.topLeftCorner(nq, nq) = -D;
+    J.topLeftCorner(nq, nq).diagonal().array() += c_j;
+    J.block(0, iv, nq, nv) = -N;
+    J.block(0, imu, nq, nc) = eval.g_q.transpose();
+    J.block(0, imu + nc, nq, nh) = h_q.transpose();
+    // Dynamics rows.
+    J.block(iv, 0, nv, nq).noalias() = stiffness.asDiagonal() * N_pinv;
+    J.block(iv, iv, nv, nv) = c_j * eval.M;
+    J.block(iv, iv, nv, nv).diagonal() += damping;
+    J.block(iv, ilambda, nv, nc) = eval.G.transpose();
+    // Velocity constraints.
+    J.block(ilambda, 0, nc, nq) = (g_q_along - eval.g_q) / epsilon;
+    J.block(ilambda, 0, nc, nq).noalias() += eval.g_q * D;
+    J.block(ilambda, iv, nc, nv) = eval.G;
+    // Position constraints, invariants, integrals.
+    J.block(imu, 0, nc, nq) = eval.g_q;
+    J.block(imu + nc, 0, nh, nq) = h_q;
+    J.block(iz, iz, nz, nz).diagonal().setConstant(c_j);
+    return J.allFinite() ? 0 : 1;
+  }
+
+  // Between steps: a Newton failure with the structured matrix hands the next kStructuredPause
+  // accepted steps to IDA's difference quotient (IDASetJacFn with none), then back.
+  void choose_jacobian();
 
   // IDA's counters since the last (re)start, added to `before` (the totals at that restart).
   void read_statistics(Statistics& stats, const Statistics& before) const {
@@ -260,6 +344,7 @@ struct IdaIntegrator::Impl {
     read_statistics(totals, restart_statistics);
     restart_statistics = totals;
     LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
+    seen_convergence_failures = 0;  // IDAReInit resets IDA's counters
     t_reached = t;
     if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
     set_stop_time();
@@ -276,6 +361,12 @@ struct IdaIntegrator::Impl {
 };
 
 namespace {
+
+int ida_jacobian(double t, double c_j, N_Vector y, N_Vector yp, N_Vector, SUNMatrix J,
+                 void* user_data, N_Vector, N_Vector, N_Vector) {
+  return static_cast<IdaIntegrator::Impl*>(user_data)->jacobian(
+      t, c_j, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), SUNDenseMatrix_Data(J));
+}
 
 int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
   return static_cast<IdaIntegrator::Impl*>(user_data)->residual(t, N_VGetArrayPointer(y),
@@ -315,6 +406,21 @@ StatusCode status_code(int flag) {
 }
 
 }  // namespace
+
+void IdaIntegrator::Impl::choose_jacobian() {
+  long failures = 0;
+  IDAGetNumNonlinSolvConvFails(ida, &failures);
+  const bool failed_now = failures > seen_convergence_failures;
+  seen_convergence_failures = failures;
+  if (structured && failed_now) {
+    structured = false;
+    structured_pause = kStructuredPause;
+    LIMBER_DEMAND(IDASetJacFn(ida, nullptr) == IDA_SUCCESS);
+  } else if (!structured && structured_pause > 0 && --structured_pause == 0) {
+    structured = true;
+    LIMBER_DEMAND(IDASetJacFn(ida, ida_jacobian) == IDA_SUCCESS);
+  }
+}
 
 IdaIntegrator::IdaIntegrator() : impl_(std::make_unique<Impl>()) {}
 IdaIntegrator::~IdaIntegrator() = default;
@@ -364,6 +470,15 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.f.resize(s.nz);
   s.N.resize(s.nq, s.nv);
   s.h_q.resize(s.nh, s.nq);
+  s.D.resize(s.nq, s.nq);
+  // Systems without a diagonal stiffness and damping get a structured matrix without them.
+  if (!system.diagonal_stiffness_damping(s.stiffness, s.damping)) {
+    s.stiffness.setZero(s.nv);
+    s.damping.setZero(s.nv);
+  }
+  s.structured = true;
+  s.structured_pause = 0;
+  s.seen_convergence_failures = 0;
 
   // Consistent initial state: projected q, v; v̇, λ from the saddle-point system.
   Eigen::VectorXd q = x0.q, v = x0.v, vdot, lambda;
@@ -399,10 +514,10 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   id.head(s.iv + s.nv).setOnes();
   id.segment(s.iz, s.nz).setOnes();
 
-  // IDA with a dense direct linear solver and its difference-quotient Jacobian.
+  // IDA with a dense direct linear solver and the structured Newton matrix (Impl::jacobian).
   s.ida = IDACreate(s.context);
   s.A = SUNDenseMatrix(s.n, s.n, s.context);
-  s.solver = SUNLinSol_Dense(s.y, s.A, s.context);
+  s.solver = make_dense_lu_solver(s.n, s.context);
   int flag = IDAInit(s.ida, ida_residual, x0.t, s.y, s.yp);
   flag = flag < 0 ? flag : IDASetUserData(s.ida, &s);
   flag = flag < 0 ? flag : IDASetErrHandlerFn(s.ida, ida_error_handler, &s);
@@ -422,6 +537,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   if (options.quadrature.atol > 0.0) atol.segment(s.iz, s.nz).setConstant(options.quadrature.atol);
   flag = flag < 0 ? flag : IDASVtolerances(s.ida, options.rtol, s.atol_vec);
   flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
+  flag = flag < 0 ? flag : IDASetJacFn(s.ida, ida_jacobian);
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
   flag = flag < 0 ? flag : IDASetSuppressAlg(s.ida, SUNTRUE);
   flag = flag < 0 ? flag : IDASetMaxNumSteps(s.ida, options.max_steps);
@@ -475,6 +591,7 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
         }
       }
       s.read_statistics(stats_, s.restart_statistics);
+      if (flag >= 0) s.choose_jacobian();
       if (flag < 0) {
         double t_fail = t_out;
         IDAGetCurrentTime(s.ida, &t_fail);

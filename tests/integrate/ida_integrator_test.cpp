@@ -36,21 +36,34 @@ double ida_pendulum_error(double tol, double t_end, Statistics* stats = nullptr)
 }
 
 TEST(IdaIntegrator, ErrorFallsWithTheTolerance) {
-  // rtol = atol = 1e-5 ... 1e-9 on the θ0 = 1 rad pendulum over 2 s (about one period).
-  // IDA controls the local error, so the global error is proportional to the tolerance only
-  // on average (order and step changes make the factor vary): each decade must cut the error
-  // at least 3-fold, four decades at least 1000-fold, and the error must stay within 30 tol
-  // (measured: 7–15 tol over one period).
-  const std::vector<double> tolerances{1e-5, 1e-6, 1e-7, 1e-8, 1e-9};
-  std::vector<double> errors;
-  for (const double tol : tolerances) {
+  // rtol = atol from 1e-5 to 1e-10 every quarter decade on the θ0 = 1 rad pendulum over 2 s
+  // (about one period). IDA controls the local error, so the global error is proportional to
+  // the tolerance only on average: order and step changes scatter error/tol from point to
+  // point (measured 2.6–31 over these 21 tolerances, geometric mean 8–9, with IDA's difference
+  // quotient as with the structured Newton matrix), so single points are bounded loosely and the
+  // trend tightly. Bounds: each error within 50 tol; geometric mean of error/tol within 20; the
+  // least-squares slope of log error against log tol (measured 0.89–0.91) within 0.75–1.1.
+  double sum_x = 0.0, sum_y = 0.0, sum_xx = 0.0, sum_xy = 0.0;
+  const int count = 21;
+  for (int k = 0; k < count; ++k) {
+    const double log_tol = -5.0 - 0.25 * k;
+    const double tol = std::pow(10.0, log_tol);
     Statistics stats;
-    errors.push_back(ida_pendulum_error(tol, 2.0, &stats));
-    std::printf("tol %.0e: error %.3e, steps %ld\n", tol, errors.back(), stats.steps);
-    EXPECT_LT(errors.back(), 30.0 * tol);
+    const double error = ida_pendulum_error(tol, 2.0, &stats);
+    std::printf("tol %.2e: error %.3e (%.1f tol), steps %ld\n", tol, error, error / tol, stats.steps);
+    EXPECT_LT(error, 50.0 * tol);
+    const double log_error = std::log10(error);
+    sum_x += log_tol;
+    sum_y += log_error;
+    sum_xx += log_tol * log_tol;
+    sum_xy += log_tol * log_error;
   }
-  for (size_t i = 1; i < errors.size(); ++i) EXPECT_GT(errors[i - 1] / errors[i], 3.0);
-  EXPECT_GT(errors.front() / errors.back(), 1000.0);
+  const double slope = (count * sum_xy - sum_x * sum_y) / (count * sum_xx - sum_x * sum_x);
+  const double mean_ratio = std::pow(10.0, (sum_y - sum_x) / count);
+  std::printf("slope %.3f, geometric mean error/tol %.2f\n", slope, mean_ratio);
+  EXPECT_LT(mean_ratio, 20.0);
+  EXPECT_GT(slope, 0.75);
+  EXPECT_LT(slope, 1.1);
 }
 
 TEST(IdaIntegrator, UndampedPendulumKeepsEnergyAndConstraint) {
