@@ -28,11 +28,6 @@ constexpr double kLambdaWeight = 0.01;
 // Non-finite residuals IDA may recover from (by cutting the step) within one advance_to.
 constexpr int kMaxNonFiniteRetries = 10;
 
-// Three Newton failures with the structured matrix within kFailureWindow accepted steps hand
-// the next kStructuredPause accepted steps to IDA's difference quotient (Impl::jacobian).
-constexpr long kFailureWindow = 20;
-constexpr int kStructuredPause = 20;
-
 // Weighted RMS norm of x with IDA's weights 1/(rtol |y| + atol).
 double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double rtol, double atol) {
   if (x.size() == 0) return 0.0;
@@ -103,15 +98,10 @@ struct IdaIntegrator::Impl {
   Eigen::MatrixXd N, h_q;
   SystemEvaluation eval;  // M, Q, g, G, g_t, g_q at the residual's (t, q, v)
 
-  // For the Newton matrix (jacobian below): the system's diagonal stiffness and damping,
-  // scratch space, and which matrix IDA uses (choose_jacobian).
+  // For the structured Newton matrix (jacobian below): the system's diagonal stiffness and
+  // damping, and scratch space.
   Eigen::VectorXd stiffness, damping, qdot, q_perturbed;
   Eigen::MatrixXd N_pinv, N_perturbed, D, g_q_along;
-  bool structured = true;         // jacobian() (else IDA's difference quotient)
-  int structured_pause = 0;       // accepted steps left on differences
-  long accepted = 0;              // accepted steps seen by choose_jacobian
-  long failure_steps[2] = {-kFailureWindow, -kFailureWindow};  // of the two last failures
-  long seen_failures = 0;         // IDA's Newton failure count at the last choose_jacobian
 
   ~Impl() { release(); }
 
@@ -186,9 +176,10 @@ struct IdaIntegrator::Impl {
   // velocity forces, force elements), ∂(g_qᵀμ)/∂q (μ = 0 on the solution) and the integrals'
   // −∂f (nothing depends on z: its Newton iterates lag the others' by one iteration). They only
   // slow Newton, which IDA watches (a slow or failed iteration gets a fresh matrix, then a
-  // smaller step). Where they matter (the satellite deployment: hinge springs, dampers and
-  // latches, a free-floating bus) Newton fails step after step: choose_jacobian then hands
-  // over to IDA's difference quotient for a while. Returns 1 (recoverable) on non-finite values.
+  // smaller step). Where they matter Newton fails step after step (the satellite deployment:
+  // 36 006 steps, 17 464 rejected, against 6 408 with differences), so this matrix is chosen per
+  // case (IntegratorOptions::ida_newton_matrix); handing over to differences mid-run made IDA
+  // fail at a driver's kink and on the spinning beam. Returns 1 (recoverable) on non-finite values.
   int jacobian(double t, double c_j, const double* y_data, const double* yp_data, double* J_data) {
     unpack(y_data, yp_data);
     Eigen::Map<Eigen::MatrixXd> J(J_data, n, n);
@@ -235,14 +226,6 @@ struct IdaIntegrator::Impl {
     J.block(iz, iz, nz, nz).diagonal().setConstant(c_j);
     return J.allFinite() ? 0 : 1;
   }
-
-  // Between steps: three Newton failures with the structured matrix within kFailureWindow
-  // accepted steps hand the next kStructuredPause steps to IDA's difference quotient
-  // (IDASetJacFn with none), then back. Scattered failures (the seed set-up: a step too long
-  // for Newton now and then) keep the structured matrix: a pause after every failure cost that
-  // run 15 % and saved no step; on the deployment (rtol 1e-4) the structured matrix alone took
-  // 36 006 steps (17 464 rejected) where differences take 6 408.
-  void choose_jacobian();
 
   // IDA's counters since the last (re)start, added to `before` (the totals at that restart).
   void read_statistics(Statistics& stats, const Statistics& before) const {
@@ -353,7 +336,6 @@ struct IdaIntegrator::Impl {
     read_statistics(totals, restart_statistics);
     restart_statistics = totals;
     LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
-    seen_failures = 0;  // IDAReInit resets IDA's counters
     t_reached = t;
     if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
     set_stop_time();
@@ -416,31 +398,6 @@ StatusCode status_code(int flag) {
 
 }  // namespace
 
-void IdaIntegrator::Impl::choose_jacobian() {
-  long failures = 0;
-  IDAGetNumNonlinSolvConvFails(ida, &failures);
-  const bool failed_now = failures > seen_failures;
-  seen_failures = failures;
-  ++accepted;
-  if (!structured) {
-    if (--structured_pause <= 0) {
-      structured = true;
-      failure_steps[0] = failure_steps[1] = -kFailureWindow;
-      LIMBER_DEMAND(IDASetJacFn(ida, ida_jacobian) == IDA_SUCCESS);
-    }
-    return;
-  }
-  if (!failed_now) return;
-  if (accepted - failure_steps[0] < kFailureWindow) {
-    structured = false;
-    structured_pause = kStructuredPause;
-    LIMBER_DEMAND(IDASetJacFn(ida, nullptr) == IDA_SUCCESS);
-    return;
-  }
-  failure_steps[0] = failure_steps[1];
-  failure_steps[1] = accepted;
-}
-
 IdaIntegrator::IdaIntegrator() : impl_(std::make_unique<Impl>()) {}
 IdaIntegrator::~IdaIntegrator() = default;
 
@@ -490,11 +447,6 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.N.resize(s.nq, s.nv);
   s.h_q.resize(s.nh, s.nq);
   s.D.resize(s.nq, s.nq);
-  s.structured = true;
-  s.structured_pause = 0;
-  s.accepted = 0;
-  s.failure_steps[0] = s.failure_steps[1] = -kFailureWindow;
-  s.seen_failures = 0;
   // Systems without a diagonal stiffness and damping get a structured matrix without them.
   if (!system.diagonal_stiffness_damping(s.stiffness, s.damping)) {
     s.stiffness.setZero(s.nv);
@@ -535,7 +487,8 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   id.head(s.iv + s.nv).setOnes();
   id.segment(s.iz, s.nz).setOnes();
 
-  // IDA with a dense direct linear solver and the structured Newton matrix (Impl::jacobian).
+  // IDA with Eigen's dense LU and the Newton matrix the options ask for: IDA's difference
+  // quotient or the structured one (Impl::jacobian).
   s.ida = IDACreate(s.context);
   s.A = SUNDenseMatrix(s.n, s.n, s.context);
   s.solver = make_dense_lu_solver(s.n, s.context);
@@ -558,7 +511,9 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   if (options.quadrature.atol > 0.0) atol.segment(s.iz, s.nz).setConstant(options.quadrature.atol);
   flag = flag < 0 ? flag : IDASVtolerances(s.ida, options.rtol, s.atol_vec);
   flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
-  flag = flag < 0 ? flag : IDASetJacFn(s.ida, ida_jacobian);
+  if (options.ida_newton_matrix == IdaNewtonMatrix::kStructured) {
+    flag = flag < 0 ? flag : IDASetJacFn(s.ida, ida_jacobian);
+  }
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
   flag = flag < 0 ? flag : IDASetSuppressAlg(s.ida, SUNTRUE);
   flag = flag < 0 ? flag : IDASetMaxNumSteps(s.ida, options.max_steps);
@@ -612,7 +567,6 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
         }
       }
       s.read_statistics(stats_, s.restart_statistics);
-      if (flag >= 0) s.choose_jacobian();
       if (flag < 0) {
         double t_fail = t_out;
         IDAGetCurrentTime(s.ida, &t_fail);

@@ -12,7 +12,7 @@
 //   limber_bench_seed_setup [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL[:ATOL[:MAX_ORDER]] ...]
 //   (default: galpha:1e-3 galpha:5e-4 galpha:2e-4 ida:1e-4 ida:1e-5 ida:1e-6 ida:1e-7 ida:1e-8;
 //    IDA's atol is rtol / 100 and its BDF order at most 2 (as `limber run` sets it with flexible
-//    bodies) unless given)
+//    bodies) unless given; IDA with the structured Newton matrix, as the case sets it)
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
       // ida:RTOL[:ATOL[:MAX_ORDER]] (atol rtol / 100 and BDF order ≤ 2 unless given)
       integrate::IntegratorOptions options = integrate::IntegratorOptions::ida(value, value / 100);
       options.max_order = 2;
+      options.ida_newton_matrix = integrate::IdaNewtonMatrix::kStructured;
       if (const std::size_t colon = setting.find(':', 4); colon != std::string::npos) {
         options.atol = std::stod(setting.substr(colon + 1));
         if (const std::size_t order = setting.find(':', colon + 1); order != std::string::npos) {
