@@ -17,6 +17,14 @@ enum class Method {
 // "ida" / "galpha" (the names of `limber run --integrator`).
 const char* to_string(Method method);
 
+// IDA's Newton matrix ∂F/∂y + c ∂F/∂y′ (docs/integrators.md, "SUNDIALS IDA"):
+enum class IdaNewtonMatrix {
+  kDifferences,  // IDA's difference quotient: ~n residuals per matrix, exact to O(√ε)
+  kStructured,   // from F's form and one system evaluation; leaves out force-element,
+                 // constraint-force and geometric-stiffness derivatives (slower Newton where
+                 // they matter: fine on the seed set-up, 6× the steps on the satellite deployment)
+};
+
 // Integrals ∫ f(t, q, v, v̇, λ) dt accumulated along the run, e.g. the work of a force
 // (f = its power [W]). `integrand` writes `size` values into f (pre-sized).
 struct Quadrature {
@@ -51,6 +59,8 @@ struct IntegratorOptions {
   // modes, whose eigenvalues lie near the imaginary axis, make them fail the error test step
   // after step. `limber run` picks 2 for mechanisms with flexible bodies (docs/integrators.md).
   int max_order = 0;
+  // IDA: how its Newton matrix is formed (above).
+  IdaNewtonMatrix ida_newton_matrix = IdaNewtonMatrix::kDifferences;
 
   // Generalized-α: fixed step h [s] and spectral radius at infinity ρ∞ ∈ [0, 1]
   // (Chung & Hulbert 1993: ρ∞ = 1 no numerical damping, ρ∞ = 0 asymptotic annihilation).

@@ -8,7 +8,7 @@ namespace limber::io {
 
 RunSettings read_run_settings(const YamlValue& entry) {
   entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "rho_inf", "max_steps", "max_wall",
-                    "max_order", "event_tolerance", "t_end", "sample_interval"});
+                    "max_order", "newton_matrix", "event_tolerance", "t_end", "sample_interval"});
   RunSettings settings;
   integrate::IntegratorOptions& options = settings.integrator;
   // Integrator and its settings (those of the other integrator are allowed and kept).
@@ -37,6 +37,11 @@ RunSettings read_run_settings(const YamlValue& entry) {
     if (options.max_order > 5) {
       order->fail("expected 1 <= max_order <= 5 for 'max_order', got '" + order->node().Scalar() + "'");
     }
+  }
+  if (const auto matrix = entry.find("newton_matrix")) {
+    options.ida_newton_matrix = matrix->as_choice({"differences", "structured"}) == "structured"
+                                    ? integrate::IdaNewtonMatrix::kStructured
+                                    : integrate::IdaNewtonMatrix::kDifferences;
   }
   if (const auto budget = entry.find("max_steps")) options.max_steps = budget->as_positive_integer();
   if (const auto wall = entry.find("max_wall")) options.max_wall_seconds = wall->as_positive();

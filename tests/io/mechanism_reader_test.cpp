@@ -65,6 +65,7 @@ run:
   integrator: galpha
   step: 2e-4
   rho_inf: 0.9
+  newton_matrix: structured
   t_end: 0.5
   sample_interval: 0.01
   max_steps: 1000
@@ -137,6 +138,7 @@ TEST(MechanismReader, ValuesLandInTheModelAndSettings) {
   EXPECT_EQ(mechanism.run.integrator.method, integrate::Method::kGeneralizedAlpha);
   EXPECT_EQ(mechanism.run.integrator.step, 2e-4);
   EXPECT_EQ(mechanism.run.integrator.rho_inf, 0.9);
+  EXPECT_EQ(mechanism.run.integrator.ida_newton_matrix, integrate::IdaNewtonMatrix::kStructured);
   EXPECT_EQ(mechanism.run.integrator.max_steps, 1000);
   EXPECT_EQ(mechanism.run.t_end, 0.5);
   EXPECT_EQ(mechanism.run.sample_interval, 0.01);
@@ -220,6 +222,8 @@ TEST(MechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   EXPECT_TRUE(fails_at(text, location_of(text, "1.0e-300"), "number of samples"));
   text = edited("integrator: galpha", "integrator: euler");
   EXPECT_TRUE(fails_at(text, location_of(text, "euler"), "expected one of ida, galpha"));
+  text = edited("newton_matrix: structured", "newton_matrix: analytic");
+  EXPECT_TRUE(fails_at(text, location_of(text, "analytic"), "expected one of differences, structured"));
   // Joint with both markers and a position.
   text = edited("{type: revolute, body_i: ground,", "{type: revolute, marker_i: tip, body_i: ground,");
   EXPECT_TRUE(fails_at(text, location_of(text, "{type: revolute"), "got both"));

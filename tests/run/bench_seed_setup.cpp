@@ -9,9 +9,10 @@
 // other jobs on the machine), minimum over the repetitions.
 // Not a test: prints a table for docs/benchmarks.md.
 //
-//   limber_bench_seed_setup [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL ...]
+//   limber_bench_seed_setup [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL[:ATOL[:MAX_ORDER]] ...]
 //   (default: galpha:1e-3 galpha:5e-4 galpha:2e-4 ida:1e-4 ida:1e-5 ida:1e-6 ida:1e-7 ida:1e-8;
-//    IDA's atol is rtol / 100)
+//    IDA's atol is rtol / 100 and its BDF order at most 2 (as `limber run` sets it with flexible
+//    bodies) unless given; IDA with the structured Newton matrix, as the case sets it)
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
     } else if (arg.rfind("galpha:", 0) == 0 || arg.rfind("ida:", 0) == 0) {
       settings.push_back(arg);
     } else {
-      fmt::print(stderr, "usage: {} [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL ...]\n", argv[0]);
+      fmt::print(stderr, "usage: {} [--reps N] [--no-file] [galpha:H[:NEWTON_TOL] ...] [ida:RTOL[:ATOL[:MAX_ORDER]] ...]\n", argv[0]);
       return 1;
     }
   }
@@ -146,10 +147,19 @@ int main(int argc, char** argv) {
   for (const std::string& setting : settings) {
     const double value = std::stod(setting.substr(setting.find(':') + 1));
     if (setting.rfind("ida:", 0) == 0) {
-      print_row("IDA (BDF ≤ 2)", fmt::format("rtol {:.0e}, atol {:.0e}", value, value / 100),
-                run_once(mechanism, integrate::IntegratorOptions::ida(value, value / 100),
-                         repetitions, write_file),
-                reference);
+      // ida:RTOL[:ATOL[:MAX_ORDER]] (atol rtol / 100 and BDF order ≤ 2 unless given)
+      integrate::IntegratorOptions options = integrate::IntegratorOptions::ida(value, value / 100);
+      options.max_order = 2;
+      options.ida_newton_matrix = integrate::IdaNewtonMatrix::kStructured;
+      if (const std::size_t colon = setting.find(':', 4); colon != std::string::npos) {
+        options.atol = std::stod(setting.substr(colon + 1));
+        if (const std::size_t order = setting.find(':', colon + 1); order != std::string::npos) {
+          options.max_order = std::stoi(setting.substr(order + 1));
+        }
+      }
+      print_row(fmt::format("IDA (BDF ≤ {})", options.max_order).c_str(),
+                fmt::format("rtol {:.0e}, atol {:.0e}", value, options.atol),
+                run_once(mechanism, options, repetitions, write_file), reference);
     } else {
       // galpha:H[:NEWTON_TOLERANCE]
       integrate::IntegratorOptions options = integrate::IntegratorOptions::generalized_alpha(value, 0.8);
