@@ -12,8 +12,9 @@
 // correct") linear theory, independent of the modal load cases, the inertia relief, the
 // floating frame and IDA. Without stiffening the linear modes diverge at Ωs = 10 rad/s,
 // where the reference stays bounded.
-// The joint-force cases (full stiffening) on a pinned rod pushed axially through its joints:
-// the first bending frequency falls as f0 √(1 − P/P_cr) (Euler column).
+// The node-load cases (full stiffening) on a pinned rod loaded axially through its joints, by
+// a point load or by a spring at its end node: the first bending frequency falls as
+// f0 √(1 − P/P_cr) (Euler column).
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -264,12 +265,20 @@ TEST(GeometricStiffening, KaneSpinUpBeamAt10RadPerSecondStaysBoundedWithStiffeni
   EXPECT_GT(largest, kLength);  // a linear deflection larger than the beam: diverged
 }
 
-TEST(GeometricStiffening, RodPushedThroughItsJointsVibratesAsAnEulerColumn) {
-  // The seed's rod (1 m, 0.01 x 0.02 m steel, 20 elements, no rotary inertia) with its
-  // pinned-pinned modes (node 0: ux uy uz rx; node 20: uy uz), hinged to the ground at node 0
-  // and at node 20 to a 1 kg slider on a translational joint along x, pushed by P along −x.
-  // In-plane bending (y, weak axis Iz): P_cr = π² E Iz / L² = 3.40 kN. The rod starts bent in
-  // its first mode; its period is measured from the zero crossings of η1.
+// How the axial load P (compression > 0) reaches the rod of rod_frequency.
+enum class RodLoad {
+  kThroughJoints,   // a point load on the slider: the rod gets it from the joints' multipliers
+  kPointLoadAtNode,  // a point load on the rod's end node (the slider carries no axial load)
+  kSpringAtNode,     // a preloaded spring from a ground anchor to the rod's end node
+};
+
+// The seed's rod (1 m, 0.01 x 0.02 m steel, 20 elements, no rotary inertia) with its
+// pinned-pinned modes (node 0: ux uy uz rx; node 20: uy uz), hinged to the ground at node 0
+// and at node 20 to a 1 kg slider on a translational joint along x, loaded along −x by P as
+// `path` says. In-plane bending (y, weak axis Iz): P_cr = π² E Iz / L² = 3.40 kN. The rod
+// starts bent in its first mode; returns its first bending frequency over ω0 (unloaded
+// modes), measured from the zero crossings of η1 over 12 periods.
+double rod_frequency(RodLoad path, GeometricStiffening stiffening, double ratio) {
   fe::FeModelBuilder fe_builder;
   fe::BeamProperty property;
   property.name = "rod";
@@ -292,72 +301,101 @@ TEST(GeometricStiffening, RodPushedThroughItsJointsVibratesAsAnEulerColumn) {
   modal::ModeRequest request;
   request.normal_count = 4;
   const modal::ModalResult modes = modal::compute_component_modes(rod, km, request);
-  ASSERT_EQ(modes.status, modal::ModalStatus::kOk);
+  LIMBER_DEMAND(modes.status == modal::ModalStatus::kOk);
   // Mode 0 is the first in-plane (y) bending mode: the weak axis has the lowest frequency.
-  ASSERT_GT(std::abs(modes.mode_set.shapes(6 * (kElements / 2) + 1, 0)), 1e-3);
+  LIMBER_DEMAND(std::abs(modes.mode_set.shapes(6 * (kElements / 2) + 1, 0)) > 1e-3);
   const double w0 = std::sqrt(modes.mode_set.modal_stiffness(0));
-  const double p_cr = kPi * kPi * 206.8e9 * property.section.inertia_z;
-  const auto frequency = [&](GeometricStiffening stiffening, double load) {
-    FlexibleBodySpec spec;
-    spec.name = "rod";
-    spec.modes = modes.mode_set;
-    spec.node_positions_B = rod.node_positions;
-    spec.damping = ModalDamping::ratio(0.0);
-    spec.stiffening = stiffening;
-    spec.geometric = modal::compute_modal_geometric_stiffness(rod, km, modes.mode_set.shapes, {0, kElements}).stiffness;
-    spec.initial_modal_coordinates = Eigen::VectorXd::Unit(4, 0) * 1e-4;
-    ModelBuilder builder;
-    builder.add_flexible_body(spec);
-    RigidBodySpec slider;
-    slider.name = "slider";
-    slider.mass = 1.0;
-    slider.inertia_com_B = 1e-3 * Eigen::Matrix3d::Identity();
-    slider.initial_pose.position = Eigen::Vector3d(1.0, 0, 0);
-    builder.add_rigid_body(slider);
-    Eigen::Matrix3d along_x;
-    along_x << 0, 0, 1, 1, 0, 0, 0, 1, 0;  // marker z along ground x
-    builder.add_marker("pin.ground", "ground", Eigen::Vector3d::Zero());
-    builder.add_node_marker("pin.rod", "rod", 0);
-    builder.add_joint("pin", JointType::kRevolute, "pin.ground", "pin.rod");
-    builder.add_node_marker("end.rod", "rod", kElements);
-    builder.add_marker("end.slider", "slider", Eigen::Vector3d::Zero());
-    builder.add_joint("end", JointType::kRevolute, "end.rod", "end.slider");
-    builder.add_marker("guide.ground", "ground", Eigen::Vector3d(1.0, 0, 0), along_x);
-    builder.add_marker("guide.slider", "slider", Eigen::Vector3d::Zero(), along_x);
-    builder.add_joint("guide", JointType::kTranslational, "guide.ground", "guide.slider");
-    builder.add_point_load({"push", "end.slider", Eigen::Vector3d(-load, 0, 0)});
-    const Model model = builder.build();
-    Workspace ws(model);
-    State start = initial_state(model);
-    LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
-    assemble_velocities(model, start, ws);
-    const MultibodySystem system(model, analyse_redundancy(model, start, ws));
-    const double period = 2 * kPi / w0;
-    std::vector<double> crossings;
-    double previous = 0.0, previous_t = 0.0;
-    const auto result = integrate::simulate(
-        system, integrate::IntegratorOptions::ida(1e-10, 1e-14), {0.0, start.q, start.v},
-        integrate::uniform_sample_times(0.0, 12 * period, period / 200), [&](const integrate::Sample& s) {
-          const double eta = s.q(7);
-          if (s.t > 0.0 && previous < 0.0 && eta >= 0.0) {
-            crossings.push_back(previous_t + (s.t - previous_t) * previous / (previous - eta));
-          }
-          previous = eta, previous_t = s.t;
-        });
-    EXPECT_TRUE(result.status.ok()) << result.status.message;
-    LIMBER_DEMAND(crossings.size() >= 3);
-    return 2 * kPi * (crossings.size() - 1) / (crossings.back() - crossings.front());
-  };
-  for (double ratio : {0.5, -0.5}) {
-    const double measured = frequency(GeometricStiffening::kFull, ratio * p_cr);
-    std::printf("  P = %+.2f P_cr: ω = %.6f ω0 (Euler column %.6f), linear modes %.6f ω0\n", ratio, measured / w0,
-                std::sqrt(1.0 - ratio), frequency(GeometricStiffening::kOff, ratio * p_cr) / w0);
-    // The modal test (modal/) gives P_cr to 1e-6; here the joint forces come from the
-    // instantaneous multipliers, whose dynamic part (the bending's transverse reactions) has no
-    // axial component to first order; crossings at 200 samples per period, IDA at rtol 1e-10:
-    // 1e-4 relative.
-    EXPECT_NEAR(measured / w0, std::sqrt(1.0 - ratio), 1e-4);
+  const double load = ratio * kPi * kPi * 206.8e9 * property.section.inertia_z;
+  FlexibleBodySpec spec;
+  spec.name = "rod";
+  spec.modes = modes.mode_set;
+  spec.node_positions_B = rod.node_positions;
+  spec.damping = ModalDamping::ratio(0.0);
+  spec.stiffening = stiffening;
+  spec.geometric = modal::compute_modal_geometric_stiffness(rod, km, modes.mode_set.shapes, {0, kElements}).stiffness;
+  spec.initial_modal_coordinates = Eigen::VectorXd::Unit(4, 0) * 1e-4;
+  ModelBuilder builder;
+  builder.add_flexible_body(spec);
+  RigidBodySpec slider;
+  slider.name = "slider";
+  slider.mass = 1.0;
+  slider.inertia_com_B = 1e-3 * Eigen::Matrix3d::Identity();
+  slider.initial_pose.position = Eigen::Vector3d(1.0, 0, 0);
+  builder.add_rigid_body(slider);
+  Eigen::Matrix3d along_x;
+  along_x << 0, 0, 1, 1, 0, 0, 0, 1, 0;  // marker z along ground x
+  builder.add_marker("pin.ground", "ground", Eigen::Vector3d::Zero());
+  builder.add_node_marker("pin.rod", "rod", 0);
+  builder.add_joint("pin", JointType::kRevolute, "pin.ground", "pin.rod");
+  builder.add_node_marker("end.rod", "rod", kElements);
+  builder.add_marker("end.slider", "slider", Eigen::Vector3d::Zero());
+  builder.add_joint("end", JointType::kRevolute, "end.rod", "end.slider");
+  builder.add_marker("guide.ground", "ground", Eigen::Vector3d(1.0, 0, 0), along_x);
+  builder.add_marker("guide.slider", "slider", Eigen::Vector3d::Zero(), along_x);
+  builder.add_joint("guide", JointType::kTranslational, "guide.ground", "guide.slider");
+  switch (path) {
+    case RodLoad::kThroughJoints:
+      builder.add_point_load({"push", "end.slider", Eigen::Vector3d(-load, 0, 0)});
+      break;
+    case RodLoad::kPointLoadAtNode:
+      builder.add_point_load({"push", "end.rod", Eigen::Vector3d(-load, 0, 0)});
+      break;
+    case RodLoad::kSpringAtNode: {
+      // Anchor 1 m beyond the end; the rod has no axial mode, so the spring keeps its length
+      // and force f = −k (l − l0) = P (along −x on the rod).
+      constexpr double k = 1e4, l = 1.0;
+      builder.add_marker("anchor", "ground", Eigen::Vector3d(2.0, 0, 0));
+      builder.add_tsda({"spring", "anchor", "end.rod", k, 0.0, l + load / k, TimeFunction::constant(0.0)});
+      break;
+    }
   }
+  const Model model = builder.build();
+  Workspace ws(model);
+  State start = initial_state(model);
+  LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
+  assemble_velocities(model, start, ws);
+  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  const double period = 2 * kPi / w0;
+  std::vector<double> crossings;
+  double previous = 0.0, previous_t = 0.0;
+  const auto result = integrate::simulate(
+      system, integrate::IntegratorOptions::ida(1e-10, 1e-14), {0.0, start.q, start.v},
+      integrate::uniform_sample_times(0.0, 12 * period, period / 200), [&](const integrate::Sample& s) {
+        const double eta = s.q(7);
+        if (s.t > 0.0 && previous < 0.0 && eta >= 0.0) {
+          crossings.push_back(previous_t + (s.t - previous_t) * previous / (previous - eta));
+        }
+        previous = eta, previous_t = s.t;
+      });
+  EXPECT_TRUE(result.status.ok()) << result.status.message;
+  LIMBER_DEMAND(crossings.size() >= 3);
+  return 2 * kPi * (crossings.size() - 1) / (crossings.back() - crossings.front()) / w0;
+}
+
+// Full stiffening against the Euler column f0 √(1 − P/P_cr) at P = ±P_cr/2, and linear modes.
+void check_euler_column(RodLoad path, const char* label) {
+  for (double ratio : {0.5, -0.5}) {
+    const double measured = rod_frequency(path, GeometricStiffening::kFull, ratio);
+    std::printf("  %s, P = %+.2f P_cr: ω = %.6f ω0 (Euler column %.6f), linear modes %.6f ω0\n", label, ratio, measured,
+                std::sqrt(1.0 - ratio), rod_frequency(path, GeometricStiffening::kOff, ratio));
+    // The modal test (modal/) gives P_cr to 1e-6; here the loads come from the instantaneous
+    // multipliers and force elements, whose dynamic part (the bending's transverse reactions)
+    // has no axial component to first order; crossings at 200 samples per period, IDA at
+    // rtol 1e-10: 1e-4 relative.
+    EXPECT_NEAR(measured, std::sqrt(1.0 - ratio), 1e-4);
+  }
+}
+
+TEST(GeometricStiffening, RodPushedThroughItsJointsVibratesAsAnEulerColumn) {
+  check_euler_column(RodLoad::kThroughJoints, "through the joints");
+}
+
+TEST(GeometricStiffening, RodLoadedByAPointLoadAtItsNodeVibratesAsAnEulerColumn) {
+  check_euler_column(RodLoad::kPointLoadAtNode, "point load at the node");
+}
+
+TEST(GeometricStiffening, RodLoadedByASpringAtItsNodeVibratesAsAnEulerColumn) {
+  check_euler_column(RodLoad::kSpringAtNode, "spring at the node");
 }
 
 }  // namespace
