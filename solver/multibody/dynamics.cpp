@@ -2,6 +2,7 @@
 
 #include "multibody/body.h"
 #include "multibody/constraints.h"
+#include "multibody/flexible_body.h"
 #include "multibody/flexible_dynamics.h"
 #include "multibody/geometric_stiffening.h"
 #include "multibody/hinge_limit.h"
@@ -118,8 +119,14 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
     // Modal damping removes Σ c_i η̇_i² (flexible_dynamics.cpp applies Q_η = −c η̇).
     const Body& body = model.bodies[b];
     if (powers && body.kind == BodyKind::kFlexible) {
-      const auto eta_dot = state.v.segment(body.v_offset + 6, body.flexible->mode_count());
+      const int nm = body.flexible->mode_count();
+      const auto eta_dot = state.v.segment(body.v_offset + 6, nm);
       powers->dissipation += eta_dot.dot(body.flexible->damping.cwiseProduct(eta_dot));
+      // The centrifugal geometric force's power (flexible_dynamics.cpp adds the force).
+      if (body.flexible->stiffening != GeometricStiffening::kOff) {
+        powers->geometric -= eta_dot.dot(centrifugal_geometric_force(
+            body.flexible->geometric, state.v.segment<3>(body.v_offset + 3), state.q.segment(body.q_offset + 7, nm)));
+      }
     }
   }
   // Force elements through marker kinematics.
@@ -132,7 +139,7 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
     }
   }
   // Geometric stiffening from joint loads and frame accelerations (bodies asking for it).
-  add_load_geometric_stiffness(model, state, ws);
+  add_load_geometric_stiffness(model, state, ws, powers ? &powers->geometric : nullptr);
 }
 
 EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {

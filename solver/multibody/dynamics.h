@@ -22,6 +22,7 @@ struct PowerTerms {
   double dissipation = 0.0;  // Σ c θ̇² + Σ c l̇² + Σ c_i η̇_i² ≥ 0, removed by dampers
   double actuators = 0.0;    // Σ a θ̇ (RSDA) + Σ a l̇ (TSDA)
   double loads = 0.0;        // Σ F·ṗ + T·ω of point loads
+  double geometric = 0.0;    // −Σ η̇ᵀ K_geo η of the geometric stiffening (geometric_stiffening.h)
 };
 
 // ws.Q = Q(t, q, v). Updates ws.markers (velocity stage). When powers is non-null, also

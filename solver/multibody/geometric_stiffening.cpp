@@ -113,7 +113,7 @@ AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eige
   return out;
 }
 
-void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws) {
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power) {
   if (std::none_of(model.bodies.begin(), model.bodies.end(), has_full_stiffening)) return;
   // Accelerations and multipliers at this state, from the forces so far.
   mass_matrix(model, state, ws);
@@ -126,7 +126,9 @@ void add_load_geometric_stiffness(const Model& model, const State& state, Worksp
     if (!has_full_stiffening(body)) continue;
     const int nm = body.flexible->mode_count();
     const Eigen::VectorXd eta = state.q.segment(body.q_offset + 7, nm);
-    ws.Q.segment(body.v_offset + 6, nm) -= load_stiffness(model, b, state, ws, estimate, element_loads) * eta;
+    const Eigen::VectorXd force = load_stiffness(model, b, state, ws, estimate, element_loads) * eta;
+    ws.Q.segment(body.v_offset + 6, nm) -= force;
+    if (power) *power -= state.v.segment(body.v_offset + 6, nm).dot(force);
   }
 }
 

@@ -45,6 +45,7 @@ AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eige
 // of their joints, and so do the force elements' loads (dynamics.h, force_element_loads), all
 // as forces and moments. Updates ws.M, ws.G, ws.g, ws.g_t, ws.gamma and ws.markers (velocity
 // stage). A no-op (no solve) when no body asks for kFull.
-void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws);
+// When `power` is non-null, also adds the power of these forces, −Σ η̇ᵀ (K_geo − centrifugal) η [W].
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power = nullptr);
 
 }  // namespace limber::multibody
