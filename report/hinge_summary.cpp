@@ -62,11 +62,9 @@ std::optional<EnergyBalance> energy_balance(const RunData& run) {
     return total;
   };
   const auto stored = sum({"kinetic", "gravity", "spring", "strain"});
-  auto work = sum({"driver_work", "force_work"});
+  const auto work = sum({"driver_work", "force_work"});
   const auto dissipated = sum({"dissipated"});
   if (!stored || !work || !dissipated || ns == 0) return std::nullopt;
-  // Geometric stiffening's work, in files that have it (written since it was added).
-  if (const auto geometric = sum({"geometric_work"})) *work += *geometric;
   EnergyBalance b;
   b.stored_change = stored->array() - (*stored)(0);
   b.work = work->array() - (*work)(0);
@@ -87,10 +85,6 @@ std::optional<Series> energy_residual(const RunData& run) {
   for (const char* name : work) {
     const Series* s = find_series(run.energies, name);
     if (!s || s->values.size() != balance.size()) return std::nullopt;
-    balance -= s->values;
-  }
-  // Geometric stiffening's work, in files that have it.
-  if (const Series* s = find_series(run.energies, "geometric_work"); s && s->values.size() == balance.size()) {
     balance -= s->values;
   }
   if (balance.size() == 0) return std::nullopt;

@@ -33,17 +33,15 @@ struct LatchUpPeaks {
 std::vector<LatchUpPeaks> latch_up_peaks(const RunData& run);
 
 // The terms of the energy balance, each minus its value at the first sample [J], ns each:
-// stored (kinetic + gravity + spring + strain), work put in (driver_work + force_work, and
-// geometric_work where the file has it),
+// stored (kinetic + gravity + spring + strain), work put in (driver_work + force_work),
 // dissipated, and residual = stored_change + dissipated − work (zero when the balance closes).
 struct EnergyBalance {
   Eigen::VectorXd stored_change, work, dissipated, residual;
 };
 std::optional<EnergyBalance> energy_balance(const RunData& run);
 
-// kinetic + gravity + spring + strain + dissipated − driver_work − force_work (− geometric_work
-// where the file has it) minus its value at the first sample [J]: zero when the balance
-// closes. Empty unless every other energy is present.
+// kinetic + gravity + spring + strain + dissipated − driver_work − force_work minus its value
+// at the first sample [J]: zero when the balance closes. Empty unless every energy is present.
 std::optional<Series> energy_residual(const RunData& run);
 
 }  // namespace limber::report

@@ -97,7 +97,7 @@ void print_stiffening(std::FILE* out, const multibody::Model& model) {
   if (line.empty()) return;
   fmt::print(out, "geometric stiffening: {}\n", line);
   if (full) {
-    fmt::print(out, "  (first order: the geometric forces' work is in the energy balance as geometric_work)\n");
+    fmt::print(out, "  (first order: the geometric forces' work is counted in the energy balance's force_work)\n");
   }
 }
 

@@ -1,9 +1,9 @@
 // The powers a run driver integrates for the energy bookkeeping of the results file
 // (docs/results-format.md: dissipated, driver_work, force_work), in one call suitable for
 // integrate::Quadrature. Energy balance: T + V_gravity + V_spring + U_strain + dissipated
-//   = E(0) + driver_work + force_work + geometric_work
-// (checked in tests/multibody/integration_test.cpp; geometric_work, the work of the geometric
-// stiffening's modal forces −K_geo η, in tests/multibody/geometric_stiffening_test.cpp).
+//   = E(0) + driver_work + force_work, force_work = ∫ (forces + geometric) dt
+// (checked in tests/multibody/integration_test.cpp; the geometric stiffening's work, of its
+// modal forces −K_geo η, in tests/multibody/geometric_stiffening_test.cpp).
 #pragma once
 
 #include <Eigen/Dense>

@@ -12,14 +12,8 @@ namespace limber::run {
 
 namespace {
 
-// kinetic + gravity + spring + strain + dissipated − driver, force and geometric work
-// (kEnergyNames: the stored and dissipated terms first, the work put in after them).
-double energy_balance(const std::vector<double>& e) {
-  constexpr std::size_t kStoredAndDissipated = 5;
-  double balance = 0.0;
-  for (std::size_t k = 0; k < e.size(); ++k) balance += k < kStoredAndDissipated ? e[k] : -e[k];
-  return balance;
-}
+// kinetic + gravity + spring + strain + dissipated − driver work − force work (kEnergyNames).
+double energy_balance(const std::vector<double>& e) { return e[0] + e[1] + e[2] + e[3] + e[4] - e[5] - e[6]; }
 
 // Diagonal of the bounding box of the joint points and the body origins.
 double mechanism_spread(const results::Sample& sample) {

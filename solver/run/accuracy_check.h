@@ -1,8 +1,7 @@
 // The run's own accuracy estimate (`limber run`, docs/integrators.md "Accuracy check"): a fast
 // setting must not buy a wrong answer that is reported as success. Three independent measures:
 //   energy balance  max |E_bal(t) − E_bal(0)| over the samples, E_bal = kinetic + gravity +
-//                   spring + strain + dissipated − driver work − force work − geometric work
-//                   (the geometric stiffening's modal forces; the integrator's
+//                   spring + strain + dissipated − driver work − force work (the integrator's
 //                   own quadrature of the powers), relative to the run's energy scale (the sum of
 //                   each term's largest magnitude): zero for an exact solution of any mechanism;
 //   local error     generalized-α's estimate of its steps' local error (generalized_alpha.h),

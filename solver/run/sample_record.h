@@ -20,9 +20,9 @@ namespace limber::run {
 // Energy datasets, in the order of results::Sample::energies [J]. The last three are integrals
 // of powers accumulated by the integrator's quadrature (multibody/energy_rates.h), in the
 // order of kEnergyIntegrals.
-inline constexpr std::array<const char*, 8> kEnergyNames = {
-    "kinetic", "gravity", "spring", "strain", "dissipated", "driver_work", "force_work", "geometric_work"};
-inline constexpr int kEnergyIntegrals = 4;
+inline constexpr std::array<const char*, 7> kEnergyNames = {
+    "kinetic", "gravity", "spring", "strain", "dissipated", "driver_work", "force_work"};
+inline constexpr int kEnergyIntegrals = 3;
 
 // Declares every body (with its shapes; flexible bodies with their mesh and modes), joint,
 // driver, energy and clearance pair (when there are any) of `model` in `writer`,
