@@ -80,7 +80,7 @@ void print_reduction(std::FILE* out, const io::CaseReduction& reduction) {
 }
 
 // "geometric stiffening: rod full (2 load nodes), ..." for the bodies that have it
-// (docs/geometric-stiffening.md), with the caveat on the energy balance of full stiffening.
+// (docs/geometric-stiffening.md), with a note on the energy balance of full stiffening.
 void print_stiffening(std::FILE* out, const multibody::Model& model) {
   std::string line;
   bool full = false;
@@ -97,8 +97,7 @@ void print_stiffening(std::FILE* out, const multibody::Model& model) {
   if (line.empty()) return;
   fmt::print(out, "geometric stiffening: {}\n", line);
   if (full) {
-    fmt::print(out, "  (first order: the energy balance leaves out the geometric-stiffness work, which a smaller step "
-                    "does not remove)\n");
+    fmt::print(out, "  (first order: the geometric forces' work is counted in the energy balance's force_work)\n");
   }
 }
 

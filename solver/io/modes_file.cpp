@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "io/hdf5_file.h"
+#include "modal/modal_stress.h"
 #include "results/link_name.h"
 
 namespace limber::io {
@@ -186,6 +187,13 @@ void write_body(const H5Group& bodies, const BodyModesRef& body) {
                       set.modal_stiffness.data());
   write_mode_infos(group.create_group("rigid_modes"), set.rigid_modes);
   write_invariants(group.create_group("invariants"), set.invariants, nm);
+  // Modal stresses: element resultants per unit modal coordinate (docs/stress-recovery.md).
+  const modal::ModalStress stress = modal::modal_stress(model, set.shapes);
+  const H5Group stresses = group.create_group("stress");
+  stresses.write_attribute("beam_resultants", "N Vy Vz T My Mz at end 0, then at end 1; local axes");
+  stresses.write_attribute("shell_resultants", "Nxx Nyy Nxy Mxx Myy Mxy at the centre; local axes");
+  write_matrix(stresses, "beam_modal", stress.beam_modal);
+  write_matrix(stresses, "shell_modal", stress.shell_modal);
 }
 
 BodyModes read_body(const H5Group& group, const std::string& name) {
@@ -224,6 +232,12 @@ BodyModes read_body(const H5Group& group, const std::string& name) {
   }
   body.mode_set.rigid_modes = read_mode_infos(group.open_group("rigid_modes"));
   body.mode_set.invariants = read_invariants(group.open_group("invariants"));
+  // Modal stresses (files written before they were added lack them).
+  if (group.has("stress")) {
+    const H5Group stresses = group.open_group("stress");
+    body.beam_stress_modal = read_matrix(stresses, "beam_modal");
+    body.shell_stress_modal = read_matrix(stresses, "shell_modal");
+  }
   return body;
 }
 

@@ -31,6 +31,10 @@ struct BodyModes {
   modal::ModeSet mode_set;
   // Translational part of each mode shape, nm entries of nn x 3 [m per unit modal coordinate].
   std::vector<Eigen::MatrixX3d> translations;
+  // Modal stresses (modal/modal_stress.h, ModalStress::beam_modal and shell_modal): element
+  // resultants per unit modal coordinate, (12 beams) x nm and (6 shells) x nm; empty when the
+  // file predates them.
+  Eigen::MatrixXd beam_stress_modal, shell_stress_modal;
 };
 
 struct ModesFile {

@@ -33,7 +33,7 @@ Eigen::Matrix3d centrifugal_field(int c) {
 Eigen::MatrixXd geometric_stiffness_load_cases(const fe::FeModel& model, const fe::SparseMatrix& mass,
                                                const std::vector<int>& load_nodes) {
   const int n = model.dof_count();
-  const Eigen::Index cases = kInertiaCases + 3 * static_cast<Eigen::Index>(load_nodes.size());
+  const Eigen::Index cases = kInertiaCases + 6 * static_cast<Eigen::Index>(load_nodes.size());
   // Rigid acceleration fields a (translational rows; rotational rows of the angular case).
   Eigen::MatrixXd fields = Eigen::MatrixXd::Zero(n, kInertiaCases);
   for (int p = 0; p < model.node_count(); ++p) {
@@ -46,11 +46,11 @@ Eigen::MatrixXd geometric_stiffness_load_cases(const fe::FeModel& model, const f
     }
   }
   Eigen::MatrixXd loads = Eigen::MatrixXd::Zero(n, cases);
-  // d'Alembert forces of the fields, then unit node forces.
+  // d'Alembert forces of the fields, then unit node forces and moments.
   loads.leftCols(kInertiaCases) = -(mass * fields);
   for (std::size_t j = 0; j < load_nodes.size(); ++j) {
     LIMBER_DEMAND(load_nodes[j] >= 0 && load_nodes[j] < model.node_count());
-    for (int k = 0; k < 3; ++k) loads(6 * load_nodes[j] + k, kInertiaCases + 3 * static_cast<Eigen::Index>(j) + k) = 1.0;
+    for (int k = 0; k < 6; ++k) loads(6 * load_nodes[j] + k, kInertiaCases + 6 * static_cast<Eigen::Index>(j) + k) = 1.0;
   }
   return loads;
 }
@@ -124,8 +124,13 @@ ModalGeometricStiffnessResult compute_modal_geometric_stiffness(const fe::FeMode
     out.translational_acceleration[k] = project(9 + k);
   }
   out.node_forces.resize(load_nodes.size());
+  out.node_moments.resize(load_nodes.size());
   for (std::size_t j = 0; j < load_nodes.size(); ++j) {
-    for (int k = 0; k < 3; ++k) out.node_forces[j][k] = project(kInertiaCases + 3 * static_cast<Eigen::Index>(j) + k);
+    const Eigen::Index first = kInertiaCases + 6 * static_cast<Eigen::Index>(j);
+    for (int k = 0; k < 3; ++k) {
+      out.node_forces[j][k] = project(first + k);
+      out.node_moments[j][k] = project(first + 3 + k);
+    }
   }
   return result;
 }

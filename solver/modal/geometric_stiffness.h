@@ -26,10 +26,13 @@
 //   angular acceleration (3): a_p = e_k × x_p (and e_k on the rotational rows). Per rad/s².
 //   translational acceleration (3): a_p = e_k. Per m/s².
 //   node force (3 per load node): a unit force along e_k at the node's translational DOFs. Per N.
+//   node moment (3 per load node): a unit moment about e_k at the node's rotational DOFs. Per N·m.
+//       On a straight beam a moment makes no axial force (its matrices vanish); on a frame or a
+//       curved part it does (the legs of an L-frame carry the moment's couple as axial forces).
 // For a free-free component the two acceleration cases are rigid-body inertia fields that
 // inertia relief balances exactly: their matrices are zero (to round-off), as they should be.
-// Nodal moments are not load cases (a beam's K_G here depends on its axial force only, a
-// shell's on its membrane forces only).
+// The node cases take any load at a load node: joint and driver reactions, springs, point
+// loads (multibody/geometric_stiffening.h).
 #pragma once
 
 #include <array>
@@ -51,7 +54,8 @@ struct ModalGeometricStiffness {
   std::array<Eigen::MatrixXd, 3> angular_acceleration;      // per rad/s², body axes
   std::array<Eigen::MatrixXd, 3> translational_acceleration;  // per m/s², body axes
   std::vector<int> load_nodes;                              // node indices
-  std::vector<std::array<Eigen::MatrixXd, 3>> node_forces;  // per N, body axes, one per load node
+  std::vector<std::array<Eigen::MatrixXd, 3>> node_forces;   // per N, body axes, one per load node
+  std::vector<std::array<Eigen::MatrixXd, 3>> node_moments;  // per N·m, body axes, one per load node
 };
 
 struct ModalGeometricStiffnessResult {
@@ -60,7 +64,8 @@ struct ModalGeometricStiffnessResult {
   ModalGeometricStiffness stiffness;
 };
 
-// The load vectors f_k (n x (12 + 3 load nodes)) of the cases above, in that order.
+// The load vectors f_k (n x (12 + 6 load nodes)) of the cases above, in that order (per load
+// node: its three forces, then its three moments).
 // Preconditions (DEMAND): load nodes within the model.
 Eigen::MatrixXd geometric_stiffness_load_cases(const fe::FeModel& model, const fe::SparseMatrix& mass,
                                                const std::vector<int>& load_nodes);

@@ -2,6 +2,7 @@
 
 #include "multibody/body.h"
 #include "multibody/constraints.h"
+#include "multibody/flexible_body.h"
 #include "multibody/flexible_dynamics.h"
 #include "multibody/geometric_stiffening.h"
 #include "multibody/hinge_limit.h"
@@ -22,7 +23,17 @@ struct ForceVisitor {
   const State& state;
   Workspace& ws;
   PowerTerms* powers;
-  bool engaged = false;  // mode of the element being visited
+  std::vector<MarkerLoad>* loads = nullptr;  // when set, collects the loads instead of adding Q
+  bool engaged = false;                      // mode of the element being visited
+
+  // Force and torque (ground axes) at the origin of marker m.
+  void apply(int m, const Eigen::Vector3d& f_W, const Eigen::Vector3d& tau_W) const {
+    if (loads) {
+      loads->push_back({m, f_W, tau_W});
+    } else {
+      add_frame_load(ws.markers[m], f_W, tau_W, ws.Q);
+    }
+  }
 
   void operator()(const Rsda& r) const {
     const FrameKinematics& mi = ws.markers[r.marker_i];
@@ -32,7 +43,8 @@ struct ForceVisitor {
     // Torque on body j about z_i: spring, damper, actuator of t or θ.
     const double a = r.actuator.evaluate(r.actuator_of_angle ? theta : state.t).value;
     const double tau = -r.stiffness * (theta - r.free_angle) - r.damping * angle.rate + a;
-    ws.Q.noalias() += tau * (mj.J_w - mi.J_w).transpose() * angle.u;
+    apply(r.marker_j, Eigen::Vector3d::Zero(), tau * angle.u);
+    apply(r.marker_i, Eigen::Vector3d::Zero(), -tau * angle.u);
     if (powers) {
       powers->dissipation += r.damping * angle.rate * angle.rate;
       powers->actuators += a * angle.rate;
@@ -50,7 +62,8 @@ struct ForceVisitor {
     const double rate = e.dot(mj.v_W - mi.v_W);
     const double a = s.actuator.evaluate(state.t).value;
     const double f = -s.stiffness * (length - s.free_length) - s.damping * rate + a;
-    ws.Q.noalias() += f * (mj.J_p - mi.J_p).transpose() * e;
+    apply(s.marker_j, f * e, Eigen::Vector3d::Zero());
+    apply(s.marker_i, -f * e, Eigen::Vector3d::Zero());
     if (powers) {
       powers->dissipation += s.damping * rate * rate;
       powers->actuators += a * rate;
@@ -63,7 +76,7 @@ struct ForceVisitor {
     // Marker-axis loads turn with the marker.
     const Eigen::Matrix3d R = p.frame == LoadFrame::kMarker ? m.R_WF : Eigen::Matrix3d::Identity();
     const Eigen::Vector3d f_W = scale * R * p.force, tau_W = scale * R * p.torque;
-    add_frame_load(m, f_W, tau_W, ws.Q);
+    apply(p.marker, f_W, tau_W);
     if (powers) powers->loads += f_W.dot(m.v_W) + tau_W.dot(m.w_W);
   }
 
@@ -73,7 +86,8 @@ struct ForceVisitor {
     const FrameKinematics& mj = ws.markers[h.marker_j];
     const RelativeAngle angle = relative_angle(mi, mj, Stage::kVelocity);
     const HingeLimitForce f = hinge_limit_force(h, hinge_limit_angle(h, angle), angle.rate, engaged);
-    ws.Q.noalias() += f.torque * (mj.J_w - mi.J_w).transpose() * angle.u;
+    apply(h.marker_j, Eigen::Vector3d::Zero(), f.torque * angle.u);
+    apply(h.marker_i, Eigen::Vector3d::Zero(), -f.torque * angle.u);
     if (powers) powers->dissipation += f.dissipation;
   }
 };
@@ -85,6 +99,17 @@ void mass_matrix(const Model& model, const State& state, Workspace& ws) {
   for (size_t b = 0; b < model.bodies.size(); ++b) add_body_mass_matrix(model, b, state.q, ws.M);
 }
 
+void force_element_loads(const Model& model, const State& state, Workspace& ws, std::vector<MarkerLoad>& loads) {
+  loads.clear();
+  if (model.forces.empty()) return;
+  update_marker_kinematics(model, state, Stage::kVelocity, ws);
+  ForceVisitor visitor{state, ws, nullptr, &loads};
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    visitor.engaged = is_engaged(state, k);
+    std::visit(visitor, model.forces[k]);
+  }
+}
+
 void generalized_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
   ws.Q.setZero(model.nv);
   if (powers) *powers = PowerTerms{};
@@ -94,8 +119,14 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
     // Modal damping removes Σ c_i η̇_i² (flexible_dynamics.cpp applies Q_η = −c η̇).
     const Body& body = model.bodies[b];
     if (powers && body.kind == BodyKind::kFlexible) {
-      const auto eta_dot = state.v.segment(body.v_offset + 6, body.flexible->mode_count());
+      const int nm = body.flexible->mode_count();
+      const auto eta_dot = state.v.segment(body.v_offset + 6, nm);
       powers->dissipation += eta_dot.dot(body.flexible->damping.cwiseProduct(eta_dot));
+      // The centrifugal geometric force's power (flexible_dynamics.cpp adds the force).
+      if (body.flexible->stiffening != GeometricStiffening::kOff) {
+        powers->geometric -= eta_dot.dot(centrifugal_geometric_force(
+            body.flexible->geometric, state.v.segment<3>(body.v_offset + 3), state.q.segment(body.q_offset + 7, nm)));
+      }
     }
   }
   // Force elements through marker kinematics.
@@ -108,7 +139,7 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
     }
   }
   // Geometric stiffening from joint loads and frame accelerations (bodies asking for it).
-  add_load_geometric_stiffness(model, state, ws);
+  add_load_geometric_stiffness(model, state, ws, powers ? &powers->geometric : nullptr);
 }
 
 EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {

@@ -5,6 +5,8 @@
 // hinge latches and stops (hinge_limit.h) like an RSDA, in the mode state.engaged gives.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Dense>
 
 #include "multibody/model.h"
@@ -20,12 +22,24 @@ struct PowerTerms {
   double dissipation = 0.0;  // Σ c θ̇² + Σ c l̇² + Σ c_i η̇_i² ≥ 0, removed by dampers
   double actuators = 0.0;    // Σ a θ̇ (RSDA) + Σ a l̇ (TSDA)
   double loads = 0.0;        // Σ F·ṗ + T·ω of point loads
+  double geometric = 0.0;    // −Σ η̇ᵀ K_geo η of the geometric stiffening (geometric_stiffening.h)
 };
 
 // ws.Q = Q(t, q, v). Updates ws.markers (velocity stage). When powers is non-null, also
 // returns the instantaneous powers of the force elements.
 void generalized_forces(const Model& model, const State& state, Workspace& ws,
                         PowerTerms* powers = nullptr);
+
+// A force element's load at one of its markers: force and torque about the marker's origin,
+// ground axes [N, N·m] (an RSDA or TSDA gives one per marker, equal and opposite).
+struct MarkerLoad {
+  int marker = 0;
+  Eigen::Vector3d force_W = Eigen::Vector3d::Zero(), torque_W = Eigen::Vector3d::Zero();
+};
+
+// The loads that generalized_forces applies through the force elements, marker by marker
+// (their sum through the marker Jacobians is that part of Q). Updates ws.markers (velocity stage).
+void force_element_loads(const Model& model, const State& state, Workspace& ws, std::vector<MarkerLoad>& loads);
 
 struct EnergyTerms {
   double kinetic = 0.0;  // ½ vᵀ M v [J]

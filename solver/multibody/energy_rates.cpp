@@ -15,6 +15,7 @@ EnergyRates energy_rates(const Model& model, const ConstraintPartition& partitio
   generalized_forces(model, state, ws, &powers);
   rates.dissipation = powers.dissipation;
   rates.forces = powers.actuators + powers.loads;
+  rates.geometric = powers.geometric;
   // Drivers: effort = −λ of their (independent) row; a redundant driver row falls back on
   // the minimum-norm multipliers.
   bool all_independent = true;

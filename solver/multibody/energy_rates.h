@@ -1,7 +1,9 @@
 // The powers a run driver integrates for the energy bookkeeping of the results file
 // (docs/results-format.md: dissipated, driver_work, force_work), in one call suitable for
-// integrate::Quadrature. Energy balance: T + V_gravity + V_spring + dissipated
-//   = E(0) + driver_work + force_work   (checked in tests/multibody/integration_test.cpp).
+// integrate::Quadrature. Energy balance: T + V_gravity + V_spring + U_strain + dissipated
+//   = E(0) + driver_work + force_work, force_work = ∫ (forces + geometric) dt
+// (checked in tests/multibody/integration_test.cpp; the geometric stiffening's work, of its
+// modal forces −K_geo η, in tests/multibody/geometric_stiffening_test.cpp).
 #pragma once
 
 #include <Eigen/Dense>
@@ -16,6 +18,7 @@ struct EnergyRates {
   double dissipation = 0.0;  // damper power removed, ≥ 0 [W]
   double driver = 0.0;       // Σ effort · ḟ(t) of the drivers [W]
   double forces = 0.0;       // actuators of RSDA/TSDA and point loads [W]
+  double geometric = 0.0;    // −Σ η̇ᵀ K_geo η of the geometric stiffening [W]
 };
 
 // lambda: multipliers of the independent rows (partition.independent), e.g. from an

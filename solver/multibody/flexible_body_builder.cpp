@@ -47,11 +47,13 @@ void check_mode_set_sizes(const std::string& name, const modal::ModeSet& set, in
 void check_geometric_stiffness(const std::string& name, const modal::ModalGeometricStiffness& g, Eigen::Index nm,
                                int nodes, const SourceLocation& where) {
   const auto square = [&](const Eigen::MatrixXd& k) { return k.rows() == nm && k.cols() == nm; };
-  bool ok = g.node_forces.size() == g.load_nodes.size();
+  bool ok = g.node_forces.size() == g.load_nodes.size() && g.node_moments.size() == g.load_nodes.size();
   for (const Eigen::MatrixXd& k : g.centrifugal) ok = ok && square(k);
   for (int i = 0; i < 3; ++i) ok = ok && square(g.angular_acceleration[i]) && square(g.translational_acceleration[i]);
-  for (const auto& node : g.node_forces) {
-    for (const Eigen::MatrixXd& k : node) ok = ok && square(k);
+  for (const auto* cases : {&g.node_forces, &g.node_moments}) {
+    for (const auto& node : *cases) {
+      for (const Eigen::MatrixXd& k : node) ok = ok && square(k);
+    }
   }
   for (int node : g.load_nodes) ok = ok && node >= 0 && node < nodes;
   if (!ok) {

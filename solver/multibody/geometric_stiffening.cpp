@@ -19,17 +19,28 @@ bool has_full_stiffening(const Body& b) {
   return b.kind == BodyKind::kFlexible && b.flexible->stiffening == GeometricStiffening::kFull;
 }
 
-// Force on `body` at a frame on it equivalent to the generalized force Q (its columns), ground axes.
-Eigen::Vector3d frame_force(const Body& body, const FrameKinematics& frame, const Eigen::VectorXd& Q) {
+// Force and torque on `body` about a frame on it equivalent to the generalized force Q (its
+// columns), ground axes: the 6-vector [F; T].
+Eigen::Matrix<double, 6, 1> frame_wrench(const Body& body, const FrameKinematics& frame, const Eigen::VectorXd& Q) {
   Eigen::MatrixXd J(body.nv, 6);
   J.leftCols<3>() = frame.J_p.middleCols(body.v_offset, body.nv).transpose();
   J.rightCols<3>() = frame.J_w.middleCols(body.v_offset, body.nv).transpose();
-  return J.colPivHouseholderQr().solve(Q.segment(body.v_offset, body.nv)).head<3>();
+  return J.colPivHouseholderQr().solve(Q.segment(body.v_offset, body.nv));
 }
 
-// K_geo of one body less its centrifugal part, from the estimate.
+// Adds Σ_k F_k K_F,k + T_k K_T,k of a load (force F_B, torque T_B, body axes) at `node`;
+// nodes that are not load nodes carry no load case (the case reader lists every marker's node).
+void add_node_load(const modal::ModalGeometricStiffness& g, int node, const Eigen::Vector3d& F_B,
+                   const Eigen::Vector3d& T_B, Eigen::MatrixXd& K) {
+  const auto found = std::find(g.load_nodes.begin(), g.load_nodes.end(), node);
+  if (found == g.load_nodes.end()) return;
+  const size_t j = static_cast<size_t>(found - g.load_nodes.begin());
+  for (int k = 0; k < 3; ++k) K += F_B(k) * g.node_forces[j][k] + T_B(k) * g.node_moments[j][k];
+}
+
+// K_geo of one body less its centrifugal part, from the estimate and the force elements' loads.
 Eigen::MatrixXd load_stiffness(const Model& model, size_t b, const State& state, const Workspace& ws,
-                               const AccelerationEstimate& estimate) {
+                               const AccelerationEstimate& estimate, const std::vector<MarkerLoad>& element_loads) {
   const Body& body = model.bodies[b];
   const modal::ModalGeometricStiffness& g = body.flexible->geometric;
   const int o = body.v_offset;
@@ -39,19 +50,26 @@ Eigen::MatrixXd load_stiffness(const Model& model, size_t b, const State& state,
   const Eigen::Vector3d alpha_B = estimate.v_dot.segment<3>(o + 3);
   const Eigen::Vector3d a_B = A.transpose() * (estimate.v_dot.segment<3>(o) - model.gravity_W);
   for (int k = 0; k < 3; ++k) K += alpha_B(k) * g.angular_acceleration[k] + a_B(k) * g.translational_acceleration[k];
-  // Joint forces at the load nodes, body axes.
-  for (const Joint& joint : model.joints) {
+  // Joint reactions and driver efforts at the load nodes, body axes.
+  for (size_t jn = 0; jn < model.joints.size(); ++jn) {
+    const Joint& joint = model.joints[jn];
     for (const int m : {joint.marker_i, joint.marker_j}) {
       const Marker& marker = model.markers[m];
       if (marker.body != static_cast<int>(b) || marker.node < 0) continue;
-      const auto found = std::find(g.load_nodes.begin(), g.load_nodes.end(), marker.node);
-      if (found == g.load_nodes.end()) continue;
-      const Eigen::VectorXd Q_joint = -ws.G.middleRows(joint.first_row, joint.rows).transpose() *
-                                      estimate.lambda.segment(joint.first_row, joint.rows);
-      const Eigen::Vector3d F_B = A.transpose() * frame_force(body, ws.markers[m], Q_joint);
-      const auto& cases = g.node_forces[static_cast<size_t>(found - g.load_nodes.begin())];
-      for (int k = 0; k < 3; ++k) K += F_B(k) * cases[k];
+      Eigen::VectorXd Q_joint = -ws.G.middleRows(joint.first_row, joint.rows).transpose() *
+                                estimate.lambda.segment(joint.first_row, joint.rows);
+      for (const Driver& d : model.drivers) {
+        if (d.joint == static_cast<int>(jn)) Q_joint -= ws.G.row(d.row).transpose() * estimate.lambda(d.row);
+      }
+      const Eigen::Matrix<double, 6, 1> w_W = frame_wrench(body, ws.markers[m], Q_joint);
+      add_node_load(g, marker.node, A.transpose() * w_W.head<3>(), A.transpose() * w_W.tail<3>(), K);
     }
+  }
+  // Springs, dampers, actuators, point loads and locked hinges at the load nodes.
+  for (const MarkerLoad& load : element_loads) {
+    const Marker& marker = model.markers[load.marker];
+    if (marker.body != static_cast<int>(b) || marker.node < 0) continue;
+    add_node_load(g, marker.node, A.transpose() * load.force_W, A.transpose() * load.torque_W, K);
   }
   return K;
 }
@@ -95,18 +113,22 @@ AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eige
   return out;
 }
 
-void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws) {
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power) {
   if (std::none_of(model.bodies.begin(), model.bodies.end(), has_full_stiffening)) return;
   // Accelerations and multipliers at this state, from the forces so far.
   mass_matrix(model, state, ws);
   evaluate_constraints(model, state, Stage::kVelocity, ws);
   const AccelerationEstimate estimate = estimate_accelerations(ws.M, ws.G, ws.Q, ws.gamma);
+  std::vector<MarkerLoad> element_loads;
+  force_element_loads(model, state, ws, element_loads);
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
     if (!has_full_stiffening(body)) continue;
     const int nm = body.flexible->mode_count();
     const Eigen::VectorXd eta = state.q.segment(body.q_offset + 7, nm);
-    ws.Q.segment(body.v_offset + 6, nm) -= load_stiffness(model, b, state, ws, estimate) * eta;
+    const Eigen::VectorXd force = load_stiffness(model, b, state, ws, estimate, element_loads) * eta;
+    ws.Q.segment(body.v_offset + 6, nm) -= force;
+    if (power) *power -= state.v.segment(body.v_offset + 6, nm).dot(force);
   }
 }
 

@@ -2,10 +2,12 @@
 // modal geometric-stiffness matrices of modal/geometric_stiffness.h, precomputed per unit
 // load case, scaled by the current loads (the SID-file approach of Wallrapp, Mech. Struct.
 // Mach. 22(3), 1994), added to the modal equations as
-//   Q_η −= K_geo η,   K_geo = Σ_c p_c(ω) K_c + Σ_k α_k K_α,k + Σ_k a_k K_a,k + Σ_nodes Σ_k F_k K_F,k
+//   Q_η −= K_geo η,   K_geo = Σ_c p_c(ω) K_c + Σ_k α_k K_α,k + Σ_k a_k K_a,k
+//                            + Σ_nodes Σ_k (F_k K_F,k + T_k K_T,k)
 // with p_c the products ω_x², ω_y², ω_z², ω_xω_y, ω_yω_z, ω_zω_x of the frame's angular
 // velocity, α its angular acceleration, a = Aᵀ(r̈ − g) its translational acceleration less
-// gravity, and F the joint forces on the body at its load nodes, all in body axes.
+// gravity, and F, T the forces and moments on the body at its load nodes (joint reactions,
+// driver efforts, springs, dampers, actuators, point loads, locked hinge limits), body axes.
 // Only the modal equations get the term: the frame equations lack the matching second-order
 // terms, so energy is conserved to first order in the loads only (the SID convention).
 #pragma once
@@ -39,9 +41,11 @@ AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eige
 // to ws.Q (the centrifugal part is added with the body's other forces, flexible_dynamics.h):
 // the loads come from estimate_accelerations at `state` with ws.Q as it stands (first order:
 // the load-dependent terms themselves are not in the estimate). Joint forces count at the
-// load nodes only (markers on nodes listed in geometric.load_nodes); driver efforts, force
-// elements and nodal moments are not load cases. Updates ws.M, ws.G, ws.g, ws.g_t, ws.gamma
-// and ws.markers (velocity stage). A no-op (no solve) when no body asks for kFull.
-void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws);
+// load nodes only (markers on nodes listed in geometric.load_nodes), with the driver efforts
+// of their joints, and so do the force elements' loads (dynamics.h, force_element_loads), all
+// as forces and moments. Updates ws.M, ws.G, ws.g, ws.g_t, ws.gamma and ws.markers (velocity
+// stage). A no-op (no solve) when no body asks for kFull.
+// When `power` is non-null, also adds the power of these forces, −Σ η̇ᵀ (K_geo − centrifugal) η [W].
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power = nullptr);
 
 }  // namespace limber::multibody

@@ -123,7 +123,8 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                                   Eigen::VectorXd& f) {
     const multibody::EnergyRates rates =
         multibody::energy_rates(model, partition, multibody::State{t, q, v, engaged}, v_dot, lambda, *ws);
-    f << rates.dissipation, rates.driver, rates.forces;
+    // force_work counts the geometric stiffening's modal forces too (docs/results-format.md).
+    f << rates.dissipation, rates.driver, rates.forces + rates.geometric;
   };
   // At a velocity jump of a prescribed motion the constraint impulses change the kinetic
   // energy; only the drivers' rows move with time (the joints' impulses do no work, G v = 0

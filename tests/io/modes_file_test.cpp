@@ -4,11 +4,16 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "core/error.h"
+#include "fe/assembly.h"
 #include "io/case_reader.h"
 #include "io/hdf5_file.h"
+#include "modal/modal_stress.h"
+#include "modal/rigid_body_modes.h"
+#include "modal/static_modes.h"
 
 namespace limber::io {
 namespace {
@@ -119,6 +124,53 @@ TEST(ModesFile, RoundTripIsExact) {
   EXPECT_EQ(body.translations[2].rows(), model.node_count());
   EXPECT_EQ(body.translations[2](4, 1), set.shapes(6 * 4 + 1, 2));
   EXPECT_EQ(body.translations[0](0, 2), set.shapes(2, 0));
+  // Modal stresses: 12 rows per beam, 6 per shell.
+  const modal::ModalStress stress = modal::modal_stress(model, set.shapes);
+  EXPECT_EQ(body.beam_stress_modal, stress.beam_modal);
+  EXPECT_EQ(body.shell_stress_modal, stress.shell_modal);
+  EXPECT_EQ(body.shell_stress_modal.rows(), 6 * static_cast<Eigen::Index>(model.shells.size()));
+  std::filesystem::remove(path);
+}
+
+TEST(ModesFile, ModalStressesOfAStaticDeflectionGiveTheCantileversMoments) {
+  // A 2 m cantilever (4 beams, clamped at node 1) whose first "mode" is its static deflection
+  // under a 100 N tip force along z: the stored resultants per unit η of that mode are the
+  // cantilever's at η = 1, N = 0, |Vz| = F and |My| = F L at the root, 0 at the tip (exact for
+  // end-loaded Hermite beams). Read back bit for bit as modal_stress computes them.
+  const std::string text = R"(materials: {steel: {E: 2e11, nu: 0.3, rho: 7800}}
+sections: {s: {shape: circle, diameter: 0.02}}
+flexible_bodies:
+  b:
+    beams: [{from: [0, 0, 0], to: [2, 0, 0], elements: 4, section: s, material: steel}]
+    fixed: [{nodes: 1, dofs: [ux, uy, uz, rx, ry, rz]}]
+    modes: {normal: 3}
+)";
+  const fe::FeModel model = read_case_text(text, "cantilever.yaml").flexible_bodies.at(0).model;
+  const double force = 100.0, length = 2.0;
+  const fe::StructuralMatrices km = fe::assemble(model);
+  Eigen::MatrixXd load = Eigen::MatrixXd::Zero(model.dof_count(), 1);
+  load(6 * 4 + 2, 0) = force;  // node index 4: the tip
+  const modal::StaticModes response = modal::compute_static_responses(
+      km.stiffness, km.mass, modal::rigid_body_modes(model), fe::free_dofs(model), load, "tip load");
+  ASSERT_EQ(response.status, modal::ModalStatus::kOk);
+  modal::ModeSet set = synthetic_modes(model.dof_count(), 3);
+  set.shapes.col(0) = response.shapes.col(0);
+  const std::string path = scratch_path("modes_stress.h5");
+  write_modes_file(path, "stress", "cantilever.yaml", {{"b", &model, &set}});
+  const BodyModes body = read_modes_file(path).bodies.at(0);
+  EXPECT_EQ(body.beam_stress_modal, modal::modal_stress(model, set.shapes).beam_modal);
+  ASSERT_EQ(body.beam_stress_modal.rows(), 12 * 4);
+  ASSERT_EQ(body.beam_stress_modal.cols(), 3);
+  EXPECT_EQ(body.shell_stress_modal.rows(), 0);
+  // Root (element 0, end 0): rows N Vy Vz T My Mz, in the beam's local axes (shear and moment
+  // by magnitude across the section's two axes); tip (element 3, end 1). The static solve's
+  // round-off: 1e-9.
+  const Eigen::VectorXd r = body.beam_stress_modal.col(0);
+  const double moment = force * length;
+  EXPECT_NEAR(r(0), 0.0, 1e-9 * moment);
+  EXPECT_NEAR(std::hypot(r(1), r(2)), force, 1e-9 * force);
+  EXPECT_NEAR(std::hypot(r(4), r(5)), moment, 1e-9 * moment);
+  EXPECT_NEAR(std::hypot(r(12 * 3 + 6 + 4), r(12 * 3 + 6 + 5)), 0.0, 1e-9 * moment);
   std::filesystem::remove(path);
 }
 

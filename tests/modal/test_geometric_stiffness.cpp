@@ -10,7 +10,9 @@
 //  - a free-free rod: the frame's rigid acceleration fields are balanced by inertia relief
 //    and carry no geometric stiffness;
 //  - a simply supported square plate under uniaxial compression: buckling at
-//    N_cr = 4 π² D / b² (Timoshenko & Gere, "Theory of Elastic Stability", 2nd ed., 1961, §9.2).
+//    N_cr = 4 π² D / b² (Timoshenko & Gere, "Theory of Elastic Stability", 2nd ed., 1961, §9.2);
+//  - node moments: on a bent frame a couple loads the legs axially (statics by hand), on a
+//    straight rod it does not.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -235,6 +237,64 @@ TEST(GeometricStiffness, SimplySupportedPlateBucklesAtTheClassicalLoad) {
   // buckling load bound the discretisation error.
   EXPECT_NEAR(w_fe / w11, 1.0, 1e-2);
   EXPECT_NEAR(low / n_cr, 1.0, 2e-2);
+}
+
+TEST(GeometricStiffness, NodeMomentOnABentFrameLoadsItsLegAxially) {
+  // An L-frame in the x-y plane: leg 1 from A = (0, 0) to the corner C = (L, 0), leg 2 from C
+  // to B = (L, d). In plane, A is pinned (ux uy) and B rolls along y (ux held): statically
+  // determinate. A couple M_z anywhere on it is balanced by R_Bx = M/d at B and −M/d at A,
+  // so leg 1 carries the axial force N1 = M/d (tension) and leg 2 none (R_By = 0). Out of
+  // plane A holds uz rx ry and B uz: no in-plane load reaches them.
+  constexpr int kLeg = 10;
+  const double d = 0.4;
+  fe::FeModelBuilder builder;
+  const int property = builder.add_beam_property(testing::rod_property(false));
+  fe::StraightBeamMesh leg1;
+  leg1.end = kLength * Eigen::Vector3d::UnitX();
+  leg1.elements = kLeg;
+  leg1.orientation = Eigen::Vector3d::UnitY();
+  leg1.property = property;
+  const std::vector<int> nodes1 = fe::add_straight_beam(builder, leg1);
+  // Leg 2 from the corner node: its own nodes after the corner.
+  std::vector<int> nodes2{nodes1.back()};
+  for (int i = 1; i <= kLeg; ++i) {
+    nodes2.push_back(builder.add_node(100 + i, Eigen::Vector3d(kLength, d * i / kLeg, 0.0)));
+    builder.add_beam({{nodes2[i - 1], nodes2[i]}, -Eigen::Vector3d::UnitX(), property});
+  }
+  using fe::Dof;
+  for (Dof dof : {Dof::kUx, Dof::kUy, Dof::kUz, Dof::kRx, Dof::kRy}) builder.fix(nodes1.front(), dof);
+  for (Dof dof : {Dof::kUx, Dof::kUz}) builder.fix(nodes2.back(), dof);
+  const fe::FeModel model = std::move(builder).build();
+  const int corner = nodes1.back();
+  const Reduced r = reduce(model, 6, {corner, nodes1[kLeg / 2]});
+  // Hand statics: K_G of leg 1 at N = 1/d per unit couple, projected on the same modes.
+  const fe::BeamProperty& beam = model.beam_properties[0];
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(r.modes.shapes.cols(), r.modes.shapes.cols());
+  Eigen::MatrixXd phi_e(12, r.modes.shapes.cols());
+  for (const fe::BeamElement& e : model.beams) {
+    const Eigen::Vector3d &p0 = model.node_positions[e.nodes[0]], &p1 = model.node_positions[e.nodes[1]];
+    if (std::abs(p1.y() - p0.y()) > 0.0) continue;  // leg 2: no axial force
+    for (int end = 0; end < 2; ++end) phi_e.middleRows(6 * end, 6) = r.modes.shapes.middleRows(6 * e.nodes[end], 6);
+    expected += phi_e.transpose() * fe::beam_geometric_stiffness(p0, p1, e.orientation, beam, 1.0 / d) * phi_e;
+  }
+  // The static solve's round-off relative to the matrices' size (the FE statics are exact
+  // for end loads on Hermite beams: N is constant along leg 1).
+  const double scale = expected.cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0.0);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_LT((r.geometric.node_moments[j][2] - expected).cwiseAbs().maxCoeff(), 1e-8 * scale) << "load node " << j;
+  }
+  std::printf("L-frame couple: |K_T,z − K_G(N = 1/d)| / |K_G| = %.2e\n",
+              (r.geometric.node_moments[0][2] - expected).cwiseAbs().maxCoeff() / scale);
+  // A couple about the straight rod's own axis or across it makes no axial force there.
+  const Reduced straight = reduce(rod({{0, {Dof::kUx, Dof::kUy, Dof::kUz, Dof::kRx}}, {kElements, {Dof::kUy, Dof::kUz}}}),
+                                  4, {kElements / 2});
+  // (Scale: the axial node force there, which does stress the rod's first half.)
+  const double rod_scale = straight.geometric.node_forces[0][0].cwiseAbs().maxCoeff();
+  ASSERT_GT(rod_scale, 0.0);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LE(straight.geometric.node_moments[0][k].cwiseAbs().maxCoeff(), 1e-8 * rod_scale) << "axis " << k;
+  }
 }
 
 }  // namespace
