@@ -45,13 +45,16 @@ WatchedRun run_with_modes(const std::string& name, const std::string& modes, dou
 
 TEST(RedundantRowWatch, FindsTheRodsTwistRedundancyAndNamesTheMissingFreedom) {
   const WatchedRun run = run_with_modes("watch_start", "      normal: 10", 0.0);
+  // Which of the rod's two twist rows is dropped is a pivoting choice between equals (rounding
+  // in the mode shapes decides it): R2.rot_x at node 1 or R3.rot_x at node 101.
   ASSERT_EQ(run.start.redundant.size(), 1u);
-  EXPECT_EQ(run.start.redundant[0].name, "R3.rot_x");
+  const std::string& name = run.start.redundant[0].name;
+  EXPECT_TRUE(name == "R2.rot_x" || name == "R3.rot_x") << name;
   ASSERT_EQ(run.start.deformation_redundant.size(), 1u);
   const DeformationRedundancy& d = run.start.deformation_redundant[0];
-  EXPECT_EQ(run.model.equations[static_cast<std::size_t>(d.row)].name, "R3.rot_x");
-  // The rotation the row holds is about the rod's axis (FE x) at its end node 101.
-  EXPECT_EQ(d.node_id, 101);
+  EXPECT_EQ(run.model.equations[static_cast<std::size_t>(d.row)].name, name);
+  // The rotation the row holds is about the rod's axis (FE x) at that end's node.
+  EXPECT_EQ(d.node_id, name == "R2.rot_x" ? 1 : 101);
   EXPECT_EQ(d.dof, "rx");
   // A 1 mm probe on the 1 m rod gives the row a direction O(1e-3) (measured 3.3e-4), far above
   // the redundancy threshold 1e-6 it was below at the start.
@@ -68,8 +71,9 @@ TEST(RedundantRowWatch, StopsTheTenModeRunWhenTheTwistComesLooseWithTheRemedy) {
   EXPECT_LT(run.summary.t_reached, 0.33);
   EXPECT_LT(run.summary.max_position_violation, 1e-4);
   EXPECT_NE(run.summary.message.find("rot_x"), std::string::npos) << run.summary.message;
-  EXPECT_NE(run.summary.message.find("attachment: [{nodes: [101], dofs: [rx]}]"), std::string::npos)
-      << run.summary.message;
+  const bool remedy = run.summary.message.find("attachment: [{nodes: [1], dofs: [rx]}]") != std::string::npos ||
+                      run.summary.message.find("attachment: [{nodes: [101], dofs: [rx]}]") != std::string::npos;
+  EXPECT_TRUE(remedy) << run.summary.message;
 }
 
 TEST(RedundantRowWatch, TheRemedyMakesTheSameRunHoldItsJoints) {
