@@ -12,6 +12,10 @@
 #include <string>
 #include <vector>
 
+namespace limber::results {
+class H5Reader;
+}  // namespace limber::results
+
 namespace limber::render {
 
 using RowMatrix3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
@@ -87,10 +91,9 @@ struct Results {
 // is missing, not HDF5 (e.g. truncated), not a limber results file, or lacks a required dataset.
 Results read_results(const std::filesystem::path& directory);
 
-class H5Reader;
 // The mesh and mode translations of the group `body` (e.g. "/bodies/plate": mesh/nodes, lines,
 // quads, beam_radius; modes/translations [nm, nn, 3], frequencies_hz): the same layout in
 // results.h5 and modes.h5. Throws InputError when a dataset is missing or malformed.
-FlexibleMesh read_flexible_mesh(const H5Reader& file, const std::string& body);
+FlexibleMesh read_flexible_mesh(const results::H5Reader& file, const std::string& body);
 
 }  // namespace limber::render

@@ -7,17 +7,21 @@
 
 #include "core/error.h"
 #include "io/hdf5_file.h"
+#include "results/link_name.h"
+#include "results/results_layout.h"
 
 namespace limber::sweep {
 
 namespace {
+
+namespace layout = results::layout;
 
 constexpr const char* kAxisNames = "xyz";
 
 // The text name of a group (attribute `name`), else its link name.
 std::string display_name(const io::H5Group& group, const std::string& link) {
   try {
-    return group.read_string_attribute("name");
+    return group.read_string_attribute(results::kNameAttribute);
   } catch (const InputError&) {
     return link;
   }
@@ -38,43 +42,43 @@ RunSeries read_run_series(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) throw InputError("expected a results file, got none at '" + file.string() + "'");
   const io::H5Group root = io::H5Group::open_file(file.string());
   RunSeries series;
-  series.status = root.read_string_attribute("status");
+  series.status = root.read_string_attribute(layout::kStatusAttribute);
   try {
-    series.message = root.read_string_attribute("message");
+    series.message = root.read_string_attribute(layout::kMessageAttribute);
   } catch (const InputError&) {
   }
-  const std::vector<double> time = root.read_doubles("time");
+  const std::vector<double> time = root.read_doubles(layout::kTime);
   // A killed run may leave datasets one row apart: take the fewest rows (docs/results-format.md).
   Eigen::Index ns = static_cast<Eigen::Index>(time.size());
   std::vector<std::pair<std::string, std::vector<double>>> blocks;  // name prefix, ns x 3 row-major
   std::vector<std::string> units;
-  if (root.has("joints")) {
-    const io::H5Group joints = root.open_group("joints");
+  if (root.has(layout::kJoints)) {
+    const io::H5Group joints = root.open_group(layout::kJoints);
     for (const std::string& link : joints.links()) {
       const io::H5Group joint = joints.open_group(link);
       const std::string name = display_name(joint, link);
-      blocks.emplace_back(name + " force", joint.read_doubles("force_joint"));
+      blocks.emplace_back(name + " force", joint.read_doubles(layout::joint::kForceJoint));
       units.push_back("N");
-      blocks.emplace_back(name + " torque", joint.read_doubles("torque_joint"));
+      blocks.emplace_back(name + " torque", joint.read_doubles(layout::joint::kTorqueJoint));
       units.push_back("N m");
     }
   }
-  if (root.has("bodies")) {
-    const io::H5Group bodies = root.open_group("bodies");
+  if (root.has(layout::kBodies)) {
+    const io::H5Group bodies = root.open_group(layout::kBodies);
     for (const std::string& link : bodies.links()) {
       const io::H5Group body = bodies.open_group(link);
-      if (!body.has("deflection")) continue;
-      blocks.emplace_back(display_name(body, link) + " deflection", body.read_doubles("deflection"));
+      if (!body.has(layout::body::kDeflection)) continue;
+      blocks.emplace_back(display_name(body, link) + " deflection", body.read_doubles(layout::body::kDeflection));
       units.push_back("m");
     }
   }
   // Equations of the redundancy groups, as reaction components.
-  if (root.has("constraints")) {
-    const io::H5Group constraints = root.open_group("constraints");
+  if (root.has(layout::kConstraints)) {
+    const io::H5Group constraints = root.open_group(layout::kConstraints);
     std::vector<std::string> equations;
-    if (constraints.has("redundant")) equations = constraints.read_strings("redundant");
-    if (constraints.has("redundant_with")) {
-      for (const std::string& list : constraints.read_strings("redundant_with")) {
+    if (constraints.has(layout::constraints::kRedundant)) equations = constraints.read_strings(layout::constraints::kRedundant);
+    if (constraints.has(layout::constraints::kRedundantWith)) {
+      for (const std::string& list : constraints.read_strings(layout::constraints::kRedundantWith)) {
         std::size_t start = 0;
         while (start < list.size()) {
           const std::size_t end = std::min(list.find(", ", start), list.size());
@@ -111,7 +115,7 @@ RunSeries read_run_series(const std::filesystem::path& file) {
 std::string read_run_status(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return "";
   try {
-    return io::H5Group::open_file(file.string()).read_string_attribute("status");
+    return io::H5Group::open_file(file.string()).read_string_attribute(layout::kStatusAttribute);
   } catch (const InputError&) {
     return "";
   }
