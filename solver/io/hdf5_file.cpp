@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "results/h5_handle.h"
+#include "results/h5_write.h"
 
 namespace limber::io {
 
@@ -35,11 +36,6 @@ hsize_t element_count(const H5Dims& dims) {
   return std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
 }
 
-H5Handle make_space(const H5Dims& dims) {
-  if (dims.empty()) return H5Handle(H5Screate(H5S_SCALAR));
-  return H5Handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
-}
-
 // Variable-length UTF-8 string type.
 H5Handle string_type() {
   hid_t type = H5Tcopy(H5T_C_S1);
@@ -48,16 +44,11 @@ H5Handle string_type() {
   return H5Handle(type);
 }
 
-// Writes one dataset of `file_type` from memory of `memory_type`.
+// Writes one dataset of `file_type` from memory of `memory_type` (results/h5_write.h, the
+// writing calls results.h5's writer uses too).
 void write_dataset(hid_t location, const std::string& name, const std::string& path,
                    hid_t file_type, hid_t memory_type, const H5Dims& dims, const void* data) {
-  H5Handle space = make_space(dims);
-  H5Handle dataset(H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT,
-                            H5P_DEFAULT, H5P_DEFAULT));
-  if (!dataset.valid()) fail("cannot create dataset", path + "/" + name);
-  // Empty datasets hold nothing to write.
-  if (element_count(dims) == 0) return;
-  if (H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
+  if (!results::try_write_dataset(location, name.c_str(), file_type, memory_type, dims, data)) {
     fail("cannot write dataset", path + "/" + name);
   }
 }
@@ -149,20 +140,16 @@ void H5Group::write_strings(const std::string& name, const std::vector<std::stri
 
 void H5Group::write_attribute(const std::string& name, const std::string& value) const {
   H5Handle type = string_type();
-  H5Handle space(H5Screate(H5S_SCALAR));
-  H5Handle attribute(
-      H5Acreate2(self_->handle.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
   const char* text = value.c_str();
-  if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), &text) < 0) {
+  if (!results::try_write_scalar_attribute(self_->handle.get(), name.c_str(), type.get(),
+                                           type.get(), &text)) {
     fail("cannot write attribute", path_ + "@" + name);
   }
 }
 
 void H5Group::write_attribute(const std::string& name, int value) const {
-  H5Handle space(H5Screate(H5S_SCALAR));
-  H5Handle attribute(
-      H5Acreate2(self_->handle.get(), name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
-  if (!attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_INT, &value) < 0) {
+  if (!results::try_write_scalar_attribute(self_->handle.get(), name.c_str(), H5T_STD_I32LE,
+                                           H5T_NATIVE_INT, &value)) {
     fail("cannot write attribute", path_ + "@" + name);
   }
 }

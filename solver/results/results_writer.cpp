@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "results/directory_lock.h"
 #include "results/h5_handle.h"
+#include "results/h5_write.h"
 #include "results/link_name.h"
 #include "results/results_layout.h"
 
@@ -27,26 +28,20 @@ H5Handle checked(hid_t id, const char* what) {
   return H5Handle(id);
 }
 
+// A fixed-length, null-padded string attribute (replacing one of the same name: status is
+// rewritten at finish).
 void write_string_attribute(hid_t object, const char* name, const std::string& value) {
-  // Replace an existing attribute of the same name (status is rewritten at finish).
-  if (H5Aexists(object, name) > 0) check(H5Adelete(object, name), "delete an attribute");
   H5Handle type = checked(H5Tcopy(H5T_C_S1), "copy the string type");
   check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "size a string");
   check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "pad a string");
-  H5Handle space = checked(H5Screate(H5S_SCALAR), "create a scalar dataspace");
-  H5Handle attribute =
-      checked(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-              "create a string attribute");
   const std::string padded = value.empty() ? std::string(1, '\0') : value;
-  check(H5Awrite(attribute.get(), type.get(), padded.data()), "write a string attribute");
+  check(try_write_scalar_attribute(object, name, type.get(), type.get(), padded.data()) ? 0 : -1,
+        "write a string attribute");
 }
 
 void write_int_attribute(hid_t object, const char* name, int value) {
-  H5Handle space = checked(H5Screate(H5S_SCALAR), "create a scalar dataspace");
-  H5Handle attribute = checked(
-      H5Acreate2(object, name, H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-      "create an integer attribute");
-  check(H5Awrite(attribute.get(), H5T_NATIVE_INT, &value), "write an integer attribute");
+  check(try_write_scalar_attribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT, &value) ? 0 : -1,
+        "write an integer attribute");
 }
 
 void write_doubles_attribute(hid_t object, const char* name, const double* values,
@@ -63,22 +58,11 @@ H5Handle create_group(hid_t parent, const std::string& name) {
                  "create a group");
 }
 
-// Writes a whole fixed-size dataset; rank 0 means a scalar.
+// Writes a whole fixed-size dataset (results/h5_write.h); rank 0 means a scalar.
 void write_dataset(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
-                   const std::vector<hsize_t>& dims, const void* data) {
-  H5Handle space = checked(dims.empty() ? H5Screate(H5S_SCALAR)
-                                        : H5Screate_simple(static_cast<int>(dims.size()),
-                                                           dims.data(), nullptr),
-                           "create a dataspace");
-  H5Handle dataset = checked(H5Dcreate2(parent, name, file_type, space.get(), H5P_DEFAULT,
-                                        H5P_DEFAULT, H5P_DEFAULT),
-                             "create a dataset");
-  // Empty datasets (e.g. a mesh without quads) hold no data to write.
-  const bool empty = std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
-  if (!empty) {
-    check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-          "write a dataset");
-  }
+                         const std::vector<hsize_t>& dims, const void* data) {
+  check(try_write_dataset(parent, name, file_type, memory_type, dims, data) ? 0 : -1,
+        "write a dataset");
 }
 
 const char* shape_type_name(ShapeSpec::Type type) {
