@@ -1,5 +1,6 @@
 // Reads DIR/results.h5 (docs/results-format.md) into plain values for rendering and export.
-// Independent of the solver and of the writer: its own HDF5 C-API reader.
+// Independent of the solver and of the writer's code: reads through limber_results' HDF5
+// reader (results/h5_reader.h) at the paths of results/results_layout.h.
 //
 // A file from a killed run (status "running") is read as it is: ns is the smallest row count
 // of the per-sample datasets read, so every sample returned is complete.

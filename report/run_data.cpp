@@ -107,7 +107,7 @@ void truncate(RunData& run, Eigen::Index n) {
   if (run.velocity_violation) run.velocity_violation->values.conservativeResize(n);
 }
 
-// Reads the series render's reader leaves out; returns the smallest row count met.
+// Reads the series render's results reader leaves out; returns the smallest row count met.
 hsize_t read_series(const H5Reader& file, RunData& run) {
   hsize_t ns = static_cast<hsize_t>(run.sample_count());
   hsize_t rows = 0;
