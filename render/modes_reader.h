@@ -1,6 +1,7 @@
 // Reads a modes.h5 written by `limber modes` (docs/modes-format.md) for the mode-shape
 // animations: each body's mesh and the translations, frequencies, kinds and labels of its
-// modes. Like results_reader, its own HDF5 reader: no solver classes.
+// modes. Like results_reader, through limber_results' reader (results/h5_reader.h): no solver
+// classes.
 #pragma once
 
 #include "results_reader.h"

@@ -1,5 +1,6 @@
 // Reads DIR/results.h5 (docs/results-format.md) into plain values for rendering and export.
-// Independent of the solver and of the writer: its own HDF5 C-API reader.
+// Independent of the solver and of the writer's code: reads through limber_results' HDF5
+// reader (results/h5_reader.h) at the paths of results/results_layout.h.
 //
 // A file from a killed run (status "running") is read as it is: ns is the smallest row count
 // of the per-sample datasets read, so every sample returned is complete.
@@ -11,6 +12,10 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+namespace limber::results {
+class H5Reader;
+}  // namespace limber::results
 
 namespace limber::render {
 
@@ -87,10 +92,9 @@ struct Results {
 // is missing, not HDF5 (e.g. truncated), not a limber results file, or lacks a required dataset.
 Results read_results(const std::filesystem::path& directory);
 
-class H5Reader;
 // The mesh and mode translations of the group `body` (e.g. "/bodies/plate": mesh/nodes, lines,
 // quads, beam_radius; modes/translations [nm, nn, 3], frequencies_hz): the same layout in
 // results.h5 and modes.h5. Throws InputError when a dataset is missing or malformed.
-FlexibleMesh read_flexible_mesh(const H5Reader& file, const std::string& body);
+FlexibleMesh read_flexible_mesh(const results::H5Reader& file, const std::string& body);
 
 }  // namespace limber::render

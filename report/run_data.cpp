@@ -4,172 +4,57 @@
 #include "body_pose.h"
 #include "modes_reader.h"
 #include "relative_deflection.h"
-#include "results/h5_handle.h"
+#include "results/h5_reader.h"
 #include "results/link_name.h"
-
-#include <hdf5.h>
+#include "results/results_layout.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <set>
 
 namespace limber::report {
 namespace {
 
-using results::H5Handle;
-using results::SilentHdf5Errors;
+namespace layout = results::layout;
+using results::H5Reader;
 
 // Root attributes shown elsewhere in the report (not as solver settings).
-const std::set<std::string> kKnownRootAttributes = {"format", "version", "title",
-                                                    "case_file", "status", "message", "axis_names"};
+const std::set<std::string> kKnownRootAttributes = {
+    layout::kFormatAttribute, layout::kVersionAttribute, layout::kTitleAttribute,
+    layout::kCaseFileAttribute, layout::kStatusAttribute, layout::kMessageAttribute,
+    layout::kAxisNamesAttribute};
 
-bool exists(hid_t file, const std::string& path) {
-  // Check each link on the way: H5Lexists fails on a path through a missing group.
-  std::size_t at = 1;
-  while (at <= path.size()) {
-    const std::size_t next = std::min(path.find('/', at), path.size());
-    if (H5Lexists(file, path.substr(0, next).c_str(), H5P_DEFAULT) <= 0) return false;
-    at = next + 1;
-  }
-  return true;
-}
-
-std::vector<std::string> members(hid_t file, const std::string& group) {
-  std::vector<std::string> names;
-  if (!exists(file, group)) return names;
-  H5Handle id(H5Gopen2(file, group.c_str(), H5P_DEFAULT));
-  H5G_info_t info;
-  if (!id.valid() || H5Gget_info(id.get(), &info) < 0) return names;
-  for (hsize_t k = 0; k < info.nlinks; ++k) {
-    const ssize_t n = H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0,
-                                         H5P_DEFAULT);
-    std::string name(static_cast<std::size_t>(n), '\0');
-    H5Lget_name_by_idx(id.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(),
-                       static_cast<std::size_t>(n) + 1, H5P_DEFAULT);
-    names.push_back(name);
-  }
-  return names;
-}
-
-// A float64 dataset of `width` columns (0: one-dimensional), all rows, row-major; empty when
-// absent or of another shape.
-std::vector<double> read_doubles(hid_t file, const std::string& path, hsize_t width,
+// A real dataset of `width` columns (0: one-dimensional), all rows, row-major; empty when
+// absent or of another shape (the series are optional).
+std::vector<double> read_doubles(const H5Reader& file, const std::string& path, hsize_t width,
                                  hsize_t& rows) {
   rows = 0;
-  if (!exists(file, path)) return {};
-  H5Handle dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
-  H5Handle space(H5Dget_space(dataset.get()));
-  hsize_t dims[2] = {0, 0};
-  const int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank != (width == 0 ? 1 : 2) || rank > 2) return {};
-  H5Sget_simple_extent_dims(space.get(), dims, nullptr);
-  if (width != 0 && dims[1] != width) return {};
-  std::vector<double> values(dims[0] * std::max<hsize_t>(width, 1));
-  if (!values.empty() && H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                 values.data()) < 0) {
-    return {};
-  }
+  if (!file.exists(path)) return {};
+  const std::vector<hsize_t> dims = file.dims(path);
+  if (dims.size() != (width == 0 ? 1U : 2U) || (width != 0 && dims[1] != width)) return {};
   rows = dims[0];
-  return values;
+  return file.read<double>(path, H5T_NATIVE_DOUBLE, rows);
 }
 
-// A string dataset (variable or fixed length), one string per element; empty when absent.
-std::vector<std::string> read_strings(hid_t file, const std::string& path) {
-  std::vector<std::string> out;
-  if (!exists(file, path)) return out;
-  H5Handle dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
-  H5Handle type(H5Dget_type(dataset.get()));
-  H5Handle space(H5Dget_space(dataset.get()));
-  if (H5Tget_class(type.get()) != H5T_STRING) return out;
-  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
-  if (H5Tis_variable_str(type.get()) > 0) {
-    H5Handle memory(H5Tcopy(H5T_C_S1));
-    H5Tset_size(memory.get(), H5T_VARIABLE);
-    std::vector<char*> text(n, nullptr);
-    if (H5Dread(dataset.get(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0) {
-      return out;
-    }
-    for (char* s : text) out.emplace_back(s != nullptr ? s : "");
-    H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, text.data());
-    return out;
-  }
-  const std::size_t size = H5Tget_size(type.get());
-  std::vector<char> buffer(n * size);
-  if (H5Dread(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) {
-    return out;
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::string s(buffer.data() + k * size, size);
-    out.push_back(s.substr(0, s.find('\0')));
-  }
-  return out;
+// A string dataset, one string per element; empty when absent.
+std::vector<std::string> read_strings(const H5Reader& file, const std::string& path) {
+  return file.exists(path) ? file.strings(path) : std::vector<std::string>{};
 }
 
-// An attribute's value as text: strings as they are, numbers "%g", arrays comma-separated.
-std::string attribute_text(hid_t attribute) {
-  H5Handle type(H5Aget_type(attribute));
-  H5Handle space(H5Aget_space(attribute));
-  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
-  switch (H5Tget_class(type.get())) {
-    case H5T_STRING: {
-      if (H5Tis_variable_str(type.get()) > 0) {
-        H5Handle memory(H5Tcopy(H5T_C_S1));
-        H5Tset_size(memory.get(), H5T_VARIABLE);
-        char* text = nullptr;
-        if (n != 1 || H5Aread(attribute, memory.get(), &text) < 0) return "(unreadable)";
-        std::string value = text != nullptr ? text : "";
-        H5free_memory(text);
-        return value;
-      }
-      std::string value(H5Tget_size(type.get()) * n, '\0');
-      if (H5Aread(attribute, type.get(), value.data()) < 0) return "(unreadable)";
-      return value.substr(0, value.find('\0'));
-    }
-    case H5T_INTEGER:
-    case H5T_FLOAT: {
-      std::vector<double> values(n);
-      if (H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()) < 0) return "(unreadable)";
-      std::string text;
-      for (std::size_t k = 0; k < n; ++k) {
-        char number[32];
-        std::snprintf(number, sizeof number, "%.6g", values[k]);
-        text += (k > 0 ? ", " : "") + std::string(number);
-      }
-      return text;
-    }
-    default:
-      return "(not shown)";
-  }
-}
-
-// Every attribute of `object` except `skip`, in creation (else name) order.
-std::vector<std::pair<std::string, std::string>> attributes(hid_t file, const std::string& object,
+// Every attribute of `object` except `skip`, in name order, as text.
+std::vector<std::pair<std::string, std::string>> attributes(const H5Reader& file,
+                                                            const std::string& object,
                                                             const std::set<std::string>& skip) {
   std::vector<std::pair<std::string, std::string>> out;
-  if (object != "/" && !exists(file, object)) return out;
-  H5O_info_t info;
-  if (H5Oget_info_by_name2(file, object.c_str(), &info, H5O_INFO_NUM_ATTRS, H5P_DEFAULT) < 0) {
-    return out;
-  }
-  for (hsize_t k = 0; k < info.num_attrs; ++k) {
-    H5Handle attribute(H5Aopen_by_idx(file, object.c_str(), H5_INDEX_NAME, H5_ITER_INC, k,
-                                      H5P_DEFAULT, H5P_DEFAULT));
-    if (!attribute.valid()) continue;
-    const ssize_t length = H5Aget_name(attribute.get(), 0, nullptr);
-    std::string name(static_cast<std::size_t>(length), '\0');
-    H5Aget_name(attribute.get(), static_cast<std::size_t>(length) + 1, name.data());
-    if (skip.count(name) == 0) out.emplace_back(name, attribute_text(attribute.get()));
+  for (auto& attribute : file.attribute_texts(object)) {
+    if (skip.count(attribute.first) == 0) out.push_back(std::move(attribute));
   }
   return out;
 }
 
 // The name of the group or dataset at `path`: its attribute `name`, else (a file written
 // before names had one) its link name `link`.
-std::string display_name(hid_t file, const std::string& path, const std::string& link) {
-  for (const auto& [key, value] : attributes(file, path, {})) {
-    if (key == results::kNameAttribute) return value;
-  }
-  return link;
+std::string display_name(const H5Reader& file, const std::string& path, const std::string& link) {
+  return file.string_attribute(path, results::kNameAttribute, false, link);
 }
 
 RowMatrix3d as_rows3(const std::vector<double>& values, hsize_t rows) {
@@ -222,34 +107,35 @@ void truncate(RunData& run, Eigen::Index n) {
   if (run.velocity_violation) run.velocity_violation->values.conservativeResize(n);
 }
 
-// Reads the series render's reader leaves out; returns the smallest row count met.
-hsize_t read_series(hid_t file, RunData& run) {
+// Reads the series render's results reader leaves out; returns the smallest row count met.
+hsize_t read_series(const H5Reader& file, RunData& run) {
   hsize_t ns = static_cast<hsize_t>(run.sample_count());
   hsize_t rows = 0;
 
   // Joint reactions (joint frame, and ground axes when written); a joint without joint-frame
   // forces has no plot.
   for (const render::JointTrack& joint : run.results.joints) {
-    const std::string g = joint.group + "/";
+    const std::string& g = joint.group;
     hsize_t torque_rows = 0;
-    const std::vector<double> force = read_doubles(file, g + "force_joint", 3, rows);
-    const std::vector<double> torque = read_doubles(file, g + "torque_joint", 3, torque_rows);
+    const std::vector<double> force = read_doubles(file, layout::at(g, layout::joint::kForceJoint), 3, rows);
+    const std::vector<double> torque =
+        read_doubles(file, layout::at(g, layout::joint::kTorqueJoint), 3, torque_rows);
     if (force.empty()) continue;
     JointReactions reactions{joint.name, as_rows3(force, rows), RowMatrix3d::Zero(rows, 3), {}, {}, {}};
     if (!torque.empty()) reactions.torque_joint = as_rows3(torque, torque_rows);
     ns = std::min({ns, rows, torque.empty() ? rows : torque_rows});
     hsize_t ground_rows = 0;
-    const std::vector<double> ground = read_doubles(file, g + "force_ground", 3, ground_rows);
+    const std::vector<double> ground = read_doubles(file, layout::at(g, layout::joint::kForceGround), 3, ground_rows);
     if (!ground.empty()) {
       reactions.force_ground = as_rows3(ground, ground_rows);
       ns = std::min(ns, ground_rows);
     }
-    const std::vector<double> ground_torque = read_doubles(file, g + "torque_ground", 3, ground_rows);
+    const std::vector<double> ground_torque = read_doubles(file, layout::at(g, layout::joint::kTorqueGround), 3, ground_rows);
     if (!ground_torque.empty()) {
       reactions.torque_ground = as_rows3(ground_torque, ground_rows);
       ns = std::min(ns, ground_rows);
     }
-    const std::vector<double> indeterminate = read_doubles(file, g + "indeterminate", 0, ground_rows);
+    const std::vector<double> indeterminate = read_doubles(file, layout::at(g, layout::joint::kIndeterminate), 0, ground_rows);
     if (!indeterminate.empty()) {
       reactions.indeterminate = as_vector(indeterminate);
       ns = std::min(ns, ground_rows);
@@ -260,27 +146,27 @@ hsize_t read_series(hid_t file, RunData& run) {
   // Deflection probes of flexible bodies.
   for (const render::BodyTrack& body : run.results.bodies) {
     if (!body.flexible) continue;
-    const std::vector<double> probe = read_doubles(file, body.group + "/deflection", 3, rows);
+    const std::vector<double> probe = read_doubles(file, layout::at(body.group, layout::body::kDeflection), 3, rows);
     if (probe.empty()) continue;
     run.deflections.push_back({body.name, as_rows3(probe, rows)});
     ns = std::min(ns, rows);
   }
 
   // Driver efforts and energies, listed by link name, shown by name.
-  for (const std::string& driver : members(file, "/drivers")) {
-    const std::string g = "/drivers/" + driver;
-    const std::vector<double> v = read_doubles(file, g + "/effort", 0, rows);
+  for (const std::string& driver : file.members(layout::kDrivers)) {
+    const std::string g = layout::at(layout::kDrivers, driver);
+    const std::vector<double> v = read_doubles(file, layout::at(g, layout::driver::kEffort), 0, rows);
     if (v.empty()) continue;
     run.drivers.push_back({display_name(file, g, driver), as_vector(v)});
     std::string unit;
     for (const auto& [key, value] : attributes(file, g, {})) {
-      if (key == "unit") unit = value;
+      if (key == layout::driver::kUnitAttribute) unit = value;
     }
     run.driver_units.push_back(unit);
     ns = std::min(ns, rows);
   }
-  for (const std::string& energy : members(file, "/energy")) {
-    const std::string path = "/energy/" + energy;
+  for (const std::string& energy : file.members(layout::kEnergy)) {
+    const std::string path = layout::at(layout::kEnergy, energy);
     const std::vector<double> v = read_doubles(file, path, 0, rows);
     if (v.empty()) continue;
     run.energies.push_back({display_name(file, path, energy), as_vector(v)});
@@ -288,31 +174,32 @@ hsize_t read_series(hid_t file, RunData& run) {
   }
 
   // Hinge latches and stops in the model's order, and their events.
-  for (const std::string& link : members(file, "/hinge_limits")) {
-    const std::string g = "/hinge_limits/" + link;
+  for (const std::string& link : file.members(layout::kHingeLimits)) {
+    const std::string g = layout::at(layout::kHingeLimits, link);
     hsize_t torque_rows = 0;
-    const std::vector<double> angle = read_doubles(file, g + "/angle", 0, rows);
-    const std::vector<double> torque = read_doubles(file, g + "/torque", 0, torque_rows);
+    const std::vector<double> angle = read_doubles(file, layout::at(g, layout::hinge_limit::kAngle), 0, rows);
+    const std::vector<double> torque =
+        read_doubles(file, layout::at(g, layout::hinge_limit::kTorque), 0, torque_rows);
     if (angle.empty() || torque.empty()) continue;
     HingeLimitTrack track{link, "", "", 0.0, as_vector(angle), as_vector(torque)};
     int index = static_cast<int>(run.hinge_limits.size());
     for (const auto& [key, value] : attributes(file, g, {})) {
       if (key == results::kNameAttribute) track.name = value;
-      if (key == "kind") track.kind = value;
-      if (key == "joint") track.joint = value;
-      if (key == "angle") track.limit_angle = std::stod(value);
-      if (key == "index") index = std::stoi(value);
+      if (key == layout::hinge_limit::kKindAttribute) track.kind = value;
+      if (key == layout::hinge_limit::kJointAttribute) track.joint = value;
+      if (key == layout::hinge_limit::kAngleAttribute) track.limit_angle = std::stod(value);
+      if (key == layout::hinge_limit::kIndexAttribute) index = std::stoi(value);
     }
     run.hinge_limits.resize(std::max<std::size_t>(run.hinge_limits.size(), index + 1));
     run.hinge_limits[static_cast<std::size_t>(index)] = std::move(track);
     ns = std::min({ns, rows, torque_rows});
   }
   hsize_t events = 0;
-  const std::vector<double> event_time = read_doubles(file, "/events/time", 0, events);
-  const std::vector<double> event_limit = read_doubles(file, "/events/limit", 0, rows);
-  const std::vector<double> event_engaged = read_doubles(file, "/events/engaged", 0, rows);
-  const std::vector<double> event_angle = read_doubles(file, "/events/angle", 0, rows);
-  const std::vector<double> event_rate = read_doubles(file, "/events/rate", 0, rows);
+  const std::vector<double> event_time = read_doubles(file, layout::at(layout::kEvents, layout::events::kTime), 0, events);
+  const std::vector<double> event_limit = read_doubles(file, layout::at(layout::kEvents, layout::events::kLimit), 0, rows);
+  const std::vector<double> event_engaged = read_doubles(file, layout::at(layout::kEvents, layout::events::kEngaged), 0, rows);
+  const std::vector<double> event_angle = read_doubles(file, layout::at(layout::kEvents, layout::events::kAngle), 0, rows);
+  const std::vector<double> event_rate = read_doubles(file, layout::at(layout::kEvents, layout::events::kRate), 0, rows);
   for (std::size_t k = 0; k < event_time.size() && k < event_limit.size() && k < event_engaged.size() &&
                           k < event_angle.size() && k < event_rate.size();
        ++k) {
@@ -322,40 +209,37 @@ hsize_t read_series(hid_t file, RunData& run) {
   }
 
   // Clearance between bodies.
-  const std::vector<double> clearance = read_doubles(file, "/clearance/minimum", 0, rows);
+  const std::vector<double> clearance = read_doubles(file, layout::at(layout::kClearance, layout::clearance::kMinimum), 0, rows);
   hsize_t pair_rows = 0;
-  const std::vector<double> pair = read_doubles(file, "/clearance/pair", 0, pair_rows);
+  const std::vector<double> pair = read_doubles(file, layout::at(layout::kClearance, layout::clearance::kPair), 0, pair_rows);
   if (!clearance.empty() && pair_rows == rows) {
     run.clearance = Series{"clearance", as_vector(clearance)};
-    run.clearance_pairs = read_strings(file, "/clearance/pairs");
+    run.clearance_pairs = read_strings(file, layout::at(layout::kClearance, layout::clearance::kPairs));
     for (double p : pair) run.clearance_pair.push_back(static_cast<int>(p));
     ns = std::min(ns, rows);
   }
 
   // Constraint violations and the step counter.
-  for (auto [name, target] : {std::pair{"position_violation", &run.position_violation},
-                              std::pair{"velocity_violation", &run.velocity_violation}}) {
-    const std::vector<double> v = read_doubles(file, std::string("/constraints/") + name, 0, rows);
+  for (auto [name, target] : {std::pair{layout::constraints::kPositionViolation, &run.position_violation},
+                              std::pair{layout::constraints::kVelocityViolation, &run.velocity_violation}}) {
+    const std::vector<double> v = read_doubles(file, layout::at(layout::kConstraints, name), 0, rows);
     if (v.empty()) continue;
     *target = Series{name, as_vector(v)};
     ns = std::min(ns, rows);
   }
-  if (exists(file, "/solver/steps")) {
-    H5Handle dataset(H5Dopen2(file, "/solver/steps", H5P_DEFAULT));
-    H5Handle space(H5Dget_space(dataset.get()));
-    hsize_t n = 0;
-    if (H5Sget_simple_extent_ndims(space.get()) == 1) H5Sget_simple_extent_dims(space.get(), &n, nullptr);
-    std::vector<long long> steps(n);
-    if (n > 0 && H5Dread(dataset.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                         steps.data()) >= 0) {
+  const std::string steps_path = layout::at(layout::kSolver, layout::solver::kSteps);
+  if (file.exists(steps_path) && file.dims(steps_path).size() == 1) {
+    const hsize_t n = file.dims(steps_path)[0];
+    const std::vector<long long> steps = file.read<long long>(steps_path, H5T_NATIVE_LLONG, n);
+    if (n > 0) {
       ns = std::min(ns, n);
       if (ns > 0) run.steps = steps[ns - 1];
     }
   }
 
   // Redundant constraint equations found at the start (names and what they depend on).
-  const std::vector<std::string> redundant = read_strings(file, "/constraints/redundant");
-  const std::vector<std::string> with = read_strings(file, "/constraints/redundant_with");
+  const std::vector<std::string> redundant = read_strings(file, layout::at(layout::kConstraints, layout::constraints::kRedundant));
+  const std::vector<std::string> with = read_strings(file, layout::at(layout::kConstraints, layout::constraints::kRedundantWith));
   for (std::size_t k = 0; k < redundant.size(); ++k) {
     run.redundant_equations.emplace_back(redundant[k], k < with.size() ? with[k] : "");
   }
@@ -363,9 +247,9 @@ hsize_t read_series(hid_t file, RunData& run) {
 }
 
 // Root attribute axis_names: "X, Y, Z" (three names, ", "-separated); the default otherwise.
-void read_axis_names(hid_t file, RunData& run) {
+void read_axis_names(const H5Reader& file, RunData& run) {
   for (const auto& [key, value] : attributes(file, "/", {})) {
-    if (key != "axis_names") continue;
+    if (key != layout::kAxisNamesAttribute) continue;
     std::array<std::string, 3> names;
     std::size_t at = 0;
     for (int k = 0; k < 3; ++k) {
@@ -439,18 +323,13 @@ RunData read_run_data(const std::filesystem::path& directory) {
   run.results = render::read_results(directory);
 
   // The series it leaves out, the solver settings, mode tables and media.
-  SilentHdf5Errors silent;
   {
-    H5Handle file(H5Fopen(run.results.file.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-    if (!file.valid()) {
-      throw InputError("expected a readable results file '" + run.results.file.string() +
-                       "', got an HDF5 open failure");
-    }
-    const hsize_t ns = read_series(file.get(), run);
+    const H5Reader file(run.results.file, "results file", " (run `limber run` first)");
+    const hsize_t ns = read_series(file, run);
     truncate(run, static_cast<Eigen::Index>(ns));
-    run.solver_attributes = attributes(file.get(), "/", kKnownRootAttributes);
-    read_axis_names(file.get(), run);
-    for (auto& attribute : attributes(file.get(), "/solver", {})) {
+    run.solver_attributes = attributes(file, "/", kKnownRootAttributes);
+    read_axis_names(file, run);
+    for (auto& attribute : attributes(file, layout::kSolver, {})) {
       run.solver_attributes.push_back(std::move(attribute));
     }
   }

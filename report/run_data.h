@@ -1,6 +1,6 @@
 // Everything the report shows about one run directory, read from its files only:
-// DIR/results.h5 (docs/results-format.md) through render's reader plus the per-sample series
-// render does not need (reactions, drivers, energies, violations, steps), DIR/modes.h5
+// DIR/results.h5 (docs/results-format.md) through render's reader plus, through the same HDF5
+// reader (results/h5_reader.h) at the layout's paths, the per-sample series render does not need (reactions, drivers, energies, violations, steps), DIR/modes.h5
 // (docs/modes-format.md) for mode kinds and labels, the media `limber render` left in DIR, and
 // the CSV files `limber select` left in DIR/selection (selection_data.h) and `limber sweep`'s
 // work-precision table in DIR/sweep (sweep_data.h).

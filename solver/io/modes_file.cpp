@@ -4,13 +4,15 @@
 #include "io/hdf5_file.h"
 #include "modal/modal_stress.h"
 #include "results/link_name.h"
+#include "results/modes_layout.h"
 
 namespace limber::io {
 
 namespace {
 
-constexpr const char* kFormat = "limber-modes";
-constexpr int kVersion = 1;
+namespace layout = results::layout;
+namespace modes_layout = results::modes_layout;
+namespace invariants = results::modes_layout::invariants;
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
@@ -70,9 +72,9 @@ void write_mode_infos(const H5Group& group, const std::vector<modal::ModeInfo>& 
     kinds.emplace_back(modal::to_string(mode.kind));
     labels.push_back(mode.label);
   }
-  group.write_doubles("frequencies_hz", {modes.size()}, frequencies.data());
-  group.write_strings("kinds", kinds);
-  group.write_strings("labels", labels);
+  group.write_doubles(layout::modes::kFrequenciesHz, {modes.size()}, frequencies.data());
+  group.write_strings(modes_layout::modes::kKinds, kinds);
+  group.write_strings(modes_layout::modes::kLabels, labels);
 }
 
 modal::ModeKind kind_from_string(const std::string& text, const std::string& where) {
@@ -84,16 +86,16 @@ modal::ModeKind kind_from_string(const std::string& text, const std::string& whe
 }
 
 std::vector<modal::ModeInfo> read_mode_infos(const H5Group& group) {
-  const std::vector<double> frequencies = group.read_doubles("frequencies_hz");
-  const std::vector<std::string> kinds = group.read_strings("kinds");
-  const std::vector<std::string> labels = group.read_strings("labels");
+  const std::vector<double> frequencies = group.read_doubles(layout::modes::kFrequenciesHz);
+  const std::vector<std::string> kinds = group.read_strings(modes_layout::modes::kKinds);
+  const std::vector<std::string> labels = group.read_strings(modes_layout::modes::kLabels);
   if (kinds.size() != frequencies.size() || labels.size() != frequencies.size()) {
     throw InputError("HDF5: expected as many kinds and labels as frequencies in '" + group.path() +
                      "'");
   }
   std::vector<modal::ModeInfo> modes(frequencies.size());
   for (std::size_t i = 0; i < modes.size(); ++i) {
-    modes[i] = {kind_from_string(kinds[i], group.path() + "/kinds"), frequencies[i], labels[i]};
+    modes[i] = {kind_from_string(kinds[i], layout::at(group.path(), modes_layout::modes::kKinds)), frequencies[i], labels[i]};
   }
   return modes;
 }
@@ -103,54 +105,54 @@ void write_mesh(const H5Group& group, const fe::FeModel& model) {
   std::vector<double> nodes;
   for (const Eigen::Vector3d& p : model.node_positions)
     nodes.insert(nodes.end(), {p.x(), p.y(), p.z()});
-  group.write_doubles("nodes", {static_cast<hsize_t>(nn), 3}, nodes.data());
-  group.write_ints("node_ids", {static_cast<hsize_t>(nn)}, model.node_ids.data());
+  group.write_doubles(layout::mesh::kNodes, {static_cast<hsize_t>(nn), 3}, nodes.data());
+  group.write_ints(layout::mesh::kNodeIds, {static_cast<hsize_t>(nn)}, model.node_ids.data());
   std::vector<int> lines;
   for (const fe::BeamElement& beam : model.beams)
     lines.insert(lines.end(), beam.nodes.begin(), beam.nodes.end());
-  group.write_ints("lines", {model.beams.size(), 2}, lines.data());
+  group.write_ints(layout::mesh::kLines, {model.beams.size(), 2}, lines.data());
   std::vector<int> quads;
   for (const fe::ShellElement& shell : model.shells)
     quads.insert(quads.end(), shell.nodes.begin(), shell.nodes.end());
   // Triangles as quads with the last node repeated (docs/modes-format.md).
   for (const fe::ShellTriangle& t : model.triangles)
     quads.insert(quads.end(), {t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]});
-  group.write_ints("quads", {model.shells.size() + model.triangles.size(), 4}, quads.data());
+  group.write_ints(layout::mesh::kQuads, {model.shells.size() + model.triangles.size(), 4}, quads.data());
 }
 
 void write_dofs(const H5Group& group, const fe::FeModel& model) {
-  group.write_attribute("dofs_per_node", fe::kDofsPerNode);
-  group.write_attribute("dof_index", "6 * node_index + local_dof");
-  group.write_strings("names", {"ux", "uy", "uz", "rx", "ry", "rz"});
+  group.write_attribute(modes_layout::dofs::kPerNodeAttribute, fe::kDofsPerNode);
+  group.write_attribute(modes_layout::dofs::kIndexAttribute, "6 * node_index + local_dof");
+  group.write_strings(modes_layout::dofs::kNames, {"ux", "uy", "uz", "rx", "ry", "rz"});
   std::vector<int> fixed;
   for (const fe::FixedDof& f : model.fixed_dofs)
     fixed.insert(fixed.end(), {f.node, static_cast<int>(f.dof)});
-  group.write_ints("fixed", {model.fixed_dofs.size(), 2}, fixed.data());
+  group.write_ints(modes_layout::dofs::kFixed, {model.fixed_dofs.size(), 2}, fixed.data());
 }
 
 void write_invariants(const H5Group& group, const modal::ModalInvariants& inv, Eigen::Index nm) {
-  group.write_doubles("mass", {}, &inv.mass);
-  group.write_doubles("first_moment", {3}, inv.first_moment.data());
-  write_matrix(group, "inertia", inv.inertia);
-  write_matrix(group, "translation_coupling", inv.translation_coupling);
-  write_matrix(group, "rotation_coupling", inv.rotation_coupling);
-  write_matrices(group, "inertia_first_order", inv.inertia_first_order, 3, 3);
-  write_matrices(group, "inertia_second_order", inv.inertia_second_order, 3, 3);
-  write_matrices(group, "rotation_coupling_first_order", inv.rotation_coupling_first_order, 3, nm);
+  group.write_doubles(invariants::kMass, {}, &inv.mass);
+  group.write_doubles(invariants::kFirstMoment, {3}, inv.first_moment.data());
+  write_matrix(group, invariants::kInertia, inv.inertia);
+  write_matrix(group, invariants::kTranslationCoupling, inv.translation_coupling);
+  write_matrix(group, invariants::kRotationCoupling, inv.rotation_coupling);
+  write_matrices(group, invariants::kInertiaFirstOrder, inv.inertia_first_order, 3, 3);
+  write_matrices(group, invariants::kInertiaSecondOrder, inv.inertia_second_order, 3, 3);
+  write_matrices(group, invariants::kRotationCouplingFirstOrder, inv.rotation_coupling_first_order, 3, nm);
 }
 
 modal::ModalInvariants read_invariants(const H5Group& group) {
   modal::ModalInvariants inv;
-  inv.mass = group.read_doubles("mass").at(0);
-  const std::vector<double> first_moment = group.read_doubles("first_moment");
+  inv.mass = group.read_doubles(invariants::kMass).at(0);
+  const std::vector<double> first_moment = group.read_doubles(invariants::kFirstMoment);
   inv.first_moment = Eigen::Vector3d(first_moment.at(0), first_moment.at(1), first_moment.at(2));
-  inv.inertia = read_matrix(group, "inertia");
-  inv.translation_coupling = read_matrix(group, "translation_coupling");
-  inv.rotation_coupling = read_matrix(group, "rotation_coupling");
-  inv.inertia_first_order = read_matrices<Eigen::Matrix3d>(group, "inertia_first_order");
-  inv.inertia_second_order = read_matrices<Eigen::Matrix3d>(group, "inertia_second_order");
+  inv.inertia = read_matrix(group, invariants::kInertia);
+  inv.translation_coupling = read_matrix(group, invariants::kTranslationCoupling);
+  inv.rotation_coupling = read_matrix(group, invariants::kRotationCoupling);
+  inv.inertia_first_order = read_matrices<Eigen::Matrix3d>(group, invariants::kInertiaFirstOrder);
+  inv.inertia_second_order = read_matrices<Eigen::Matrix3d>(group, invariants::kInertiaSecondOrder);
   inv.rotation_coupling_first_order =
-      read_matrices<Eigen::MatrixXd>(group, "rotation_coupling_first_order");
+      read_matrices<Eigen::MatrixXd>(group, invariants::kRotationCouplingFirstOrder);
   return inv;
 }
 
@@ -165,78 +167,80 @@ void write_body(const H5Group& bodies, const BodyModesRef& body) {
   // The group at the name's link (results/link_name.h, as in results.h5), the name beside it.
   const H5Group group = bodies.create_group(results::link_name(body.name));
   group.write_attribute(results::kNameAttribute, body.name);
-  group.write_attribute("dof_count", model.dof_count());
-  group.write_attribute("mode_count", static_cast<int>(nm));
-  write_mesh(group.create_group("mesh"), model);
-  write_dofs(group.create_group("dofs"), model);
+  group.write_attribute(modes_layout::kDofCountAttribute, model.dof_count());
+  group.write_attribute(modes_layout::kModeCountAttribute, static_cast<int>(nm));
+  write_mesh(group.create_group(modes_layout::kMesh), model);
+  write_dofs(group.create_group(modes_layout::kDofs), model);
 
   // Mode shapes in full, then their translations for drawing.
-  const H5Group modes = group.create_group("modes");
-  write_matrix(modes, "shapes", set.shapes);
+  const H5Group modes = group.create_group(modes_layout::kModes);
+  write_matrix(modes, modes_layout::modes::kShapes, set.shapes);
   std::vector<double> translations;
   for (Eigen::Index i = 0; i < nm; ++i) {
     const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> t =
         mode_translations(set.shapes, static_cast<int>(i));
     translations.insert(translations.end(), t.data(), t.data() + t.size());
   }
-  modes.write_doubles("translations",
+  modes.write_doubles(layout::modes::kTranslations,
                       {static_cast<hsize_t>(nm), static_cast<hsize_t>(model.node_count()), 3},
                       translations.data());
   write_mode_infos(modes, set.modes);
-  modes.write_doubles("modal_stiffness", {static_cast<hsize_t>(set.modal_stiffness.size())},
+  modes.write_doubles(modes_layout::modes::kModalStiffness, {static_cast<hsize_t>(set.modal_stiffness.size())},
                       set.modal_stiffness.data());
-  write_mode_infos(group.create_group("rigid_modes"), set.rigid_modes);
-  write_invariants(group.create_group("invariants"), set.invariants, nm);
+  write_mode_infos(group.create_group(modes_layout::kRigidModes), set.rigid_modes);
+  write_invariants(group.create_group(modes_layout::kInvariants), set.invariants, nm);
   // Modal stresses: element resultants per unit modal coordinate (docs/stress-recovery.md).
   const modal::ModalStress stress = modal::modal_stress(model, set.shapes);
-  const H5Group stresses = group.create_group("stress");
-  stresses.write_attribute("beam_resultants", "N Vy Vz T My Mz at end 0, then at end 1; local axes");
-  stresses.write_attribute("shell_resultants", "Nxx Nyy Nxy Mxx Myy Mxy at the centre; local axes");
-  write_matrix(stresses, "beam_modal", stress.beam_modal);
-  write_matrix(stresses, "shell_modal", stress.shell_modal);
+  const H5Group stresses = group.create_group(modes_layout::kStress);
+  stresses.write_attribute(modes_layout::stress::kBeamResultantsAttribute,
+                           "N Vy Vz T My Mz at end 0, then at end 1; local axes");
+  stresses.write_attribute(modes_layout::stress::kShellResultantsAttribute,
+                           "Nxx Nyy Nxy Mxx Myy Mxy at the centre; local axes");
+  write_matrix(stresses, modes_layout::stress::kBeamModal, stress.beam_modal);
+  write_matrix(stresses, modes_layout::stress::kShellModal, stress.shell_modal);
 }
 
 BodyModes read_body(const H5Group& group, const std::string& name) {
   BodyModes body;
   body.name = name;
   // Mesh.
-  const H5Group mesh = group.open_group("mesh");
-  const Eigen::MatrixXd nodes = read_matrix(mesh, "nodes");
+  const H5Group mesh = group.open_group(modes_layout::kMesh);
+  const Eigen::MatrixXd nodes = read_matrix(mesh, layout::mesh::kNodes);
   for (Eigen::Index i = 0; i < nodes.rows(); ++i) body.nodes.emplace_back(nodes.row(i).transpose());
-  body.node_ids = mesh.read_ints("node_ids");
-  const std::vector<int> lines = mesh.read_ints("lines");
+  body.node_ids = mesh.read_ints(layout::mesh::kNodeIds);
+  const std::vector<int> lines = mesh.read_ints(layout::mesh::kLines);
   for (std::size_t i = 0; i + 1 < lines.size(); i += 2)
     body.lines.push_back({lines[i], lines[i + 1]});
-  const std::vector<int> quads = mesh.read_ints("quads");
+  const std::vector<int> quads = mesh.read_ints(layout::mesh::kQuads);
   for (std::size_t i = 0; i + 3 < quads.size(); i += 4) {
     body.quads.push_back({quads[i], quads[i + 1], quads[i + 2], quads[i + 3]});
   }
   // DOF layout.
-  const std::vector<int> fixed = group.open_group("dofs").read_ints("fixed");
+  const std::vector<int> fixed = group.open_group(modes_layout::kDofs).read_ints(modes_layout::dofs::kFixed);
   for (std::size_t i = 0; i + 1 < fixed.size(); i += 2) {
     body.fixed_dofs.push_back({fixed[i], static_cast<fe::Dof>(fixed[i + 1])});
   }
   // Modes, rigid modes found, invariants.
-  const H5Group modes = group.open_group("modes");
-  body.mode_set.shapes = read_matrix(modes, "shapes");
+  const H5Group modes = group.open_group(modes_layout::kModes);
+  body.mode_set.shapes = read_matrix(modes, modes_layout::modes::kShapes);
   body.mode_set.modes = read_mode_infos(modes);
-  const std::vector<double> stiffness = modes.read_doubles("modal_stiffness");
+  const std::vector<double> stiffness = modes.read_doubles(modes_layout::modes::kModalStiffness);
   body.mode_set.modal_stiffness = Eigen::Map<const Eigen::VectorXd>(
       stiffness.data(), static_cast<Eigen::Index>(stiffness.size()));
   H5Dims dims;
-  const std::vector<double> translations = modes.read_doubles("translations", &dims);
+  const std::vector<double> translations = modes.read_doubles(layout::modes::kTranslations, &dims);
   for (hsize_t i = 0; dims.size() == 3 && i < dims[0]; ++i) {
     body.translations.push_back(
         Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
             translations.data() + i * dims[1] * 3, static_cast<Eigen::Index>(dims[1]), 3));
   }
-  body.mode_set.rigid_modes = read_mode_infos(group.open_group("rigid_modes"));
-  body.mode_set.invariants = read_invariants(group.open_group("invariants"));
+  body.mode_set.rigid_modes = read_mode_infos(group.open_group(modes_layout::kRigidModes));
+  body.mode_set.invariants = read_invariants(group.open_group(modes_layout::kInvariants));
   // Modal stresses (files written before they were added lack them).
-  if (group.has("stress")) {
-    const H5Group stresses = group.open_group("stress");
-    body.beam_stress_modal = read_matrix(stresses, "beam_modal");
-    body.shell_stress_modal = read_matrix(stresses, "shell_modal");
+  if (group.has(modes_layout::kStress)) {
+    const H5Group stresses = group.open_group(modes_layout::kStress);
+    body.beam_stress_modal = read_matrix(stresses, modes_layout::stress::kBeamModal);
+    body.shell_stress_modal = read_matrix(stresses, modes_layout::stress::kShellModal);
   }
   return body;
 }
@@ -255,29 +259,30 @@ Eigen::MatrixX3d mode_translations(const Eigen::MatrixXd& shapes, int mode) {
 void write_modes_file(const std::string& path, const std::string& title,
                       const std::string& case_file, const std::vector<BodyModesRef>& bodies) {
   const H5Group file = H5Group::create_file(path);
-  file.write_attribute("format", kFormat);
-  file.write_attribute("version", kVersion);
-  file.write_attribute("title", title);
-  file.write_attribute("case_file", case_file);
+  file.write_attribute(layout::kFormatAttribute, modes_layout::kFormat);
+  file.write_attribute(layout::kVersionAttribute, modes_layout::kVersion);
+  file.write_attribute(layout::kTitleAttribute, title);
+  file.write_attribute(layout::kCaseFileAttribute, case_file);
   // Body names in order (HDF5 lists group members alphabetically).
   std::vector<std::string> names;
   for (const BodyModesRef& body : bodies) names.push_back(body.name);
-  file.write_strings("body_names", names);
-  const H5Group group = file.create_group("bodies");
+  file.write_strings(modes_layout::kBodyNames, names);
+  const H5Group group = file.create_group(modes_layout::kBodies);
   for (const BodyModesRef& body : bodies) write_body(group, body);
 }
 
 ModesFile read_modes_file(const std::string& path) {
   const H5Group file = H5Group::open_file(path);
-  if (!file.has("bodies") || file.read_string_attribute("format") != kFormat) {
-    throw InputError("expected a limber modes file (format '" + std::string(kFormat) + "'), got '" +
+  if (!file.has(modes_layout::kBodies) ||
+      file.read_string_attribute(layout::kFormatAttribute) != modes_layout::kFormat) {
+    throw InputError("expected a limber modes file (format '" + std::string(modes_layout::kFormat) + "'), got '" +
                      path + "'");
   }
   ModesFile result;
-  result.title = file.read_string_attribute("title");
-  result.case_file = file.read_string_attribute("case_file");
-  const H5Group bodies = file.open_group("bodies");
-  for (const std::string& name : file.read_strings("body_names")) {
+  result.title = file.read_string_attribute(layout::kTitleAttribute);
+  result.case_file = file.read_string_attribute(layout::kCaseFileAttribute);
+  const H5Group bodies = file.open_group(modes_layout::kBodies);
+  for (const std::string& name : file.read_strings(modes_layout::kBodyNames)) {
     if (name.empty()) {
       throw InputError("expected non-empty body names in '" + path + "', got \"\"");
     }

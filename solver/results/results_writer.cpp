@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "results/directory_lock.h"
 #include "results/h5_handle.h"
+#include "results/h5_write.h"
 #include "results/link_name.h"
 #include "results/results_layout.h"
 
@@ -27,26 +28,20 @@ H5Handle checked(hid_t id, const char* what) {
   return H5Handle(id);
 }
 
+// A fixed-length, null-padded string attribute (replacing one of the same name: status is
+// rewritten at finish).
 void write_string_attribute(hid_t object, const char* name, const std::string& value) {
-  // Replace an existing attribute of the same name (status is rewritten at finish).
-  if (H5Aexists(object, name) > 0) check(H5Adelete(object, name), "delete an attribute");
   H5Handle type = checked(H5Tcopy(H5T_C_S1), "copy the string type");
   check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "size a string");
   check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "pad a string");
-  H5Handle space = checked(H5Screate(H5S_SCALAR), "create a scalar dataspace");
-  H5Handle attribute =
-      checked(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-              "create a string attribute");
   const std::string padded = value.empty() ? std::string(1, '\0') : value;
-  check(H5Awrite(attribute.get(), type.get(), padded.data()), "write a string attribute");
+  check(try_write_scalar_attribute(object, name, type.get(), type.get(), padded.data()) ? 0 : -1,
+        "write a string attribute");
 }
 
 void write_int_attribute(hid_t object, const char* name, int value) {
-  H5Handle space = checked(H5Screate(H5S_SCALAR), "create a scalar dataspace");
-  H5Handle attribute = checked(
-      H5Acreate2(object, name, H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-      "create an integer attribute");
-  check(H5Awrite(attribute.get(), H5T_NATIVE_INT, &value), "write an integer attribute");
+  check(try_write_scalar_attribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT, &value) ? 0 : -1,
+        "write an integer attribute");
 }
 
 void write_doubles_attribute(hid_t object, const char* name, const double* values,
@@ -63,47 +58,36 @@ H5Handle create_group(hid_t parent, const std::string& name) {
                  "create a group");
 }
 
-// Writes a whole fixed-size dataset; rank 0 means a scalar.
+// Writes a whole fixed-size dataset (results/h5_write.h); rank 0 means a scalar.
 void write_dataset(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
-                   const std::vector<hsize_t>& dims, const void* data) {
-  H5Handle space = checked(dims.empty() ? H5Screate(H5S_SCALAR)
-                                        : H5Screate_simple(static_cast<int>(dims.size()),
-                                                           dims.data(), nullptr),
-                           "create a dataspace");
-  H5Handle dataset = checked(H5Dcreate2(parent, name, file_type, space.get(), H5P_DEFAULT,
-                                        H5P_DEFAULT, H5P_DEFAULT),
-                             "create a dataset");
-  // Empty datasets (e.g. a mesh without quads) hold no data to write.
-  const bool empty = std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
-  if (!empty) {
-    check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-          "write a dataset");
-  }
+                         const std::vector<hsize_t>& dims, const void* data) {
+  check(try_write_dataset(parent, name, file_type, memory_type, dims, data) ? 0 : -1,
+        "write a dataset");
 }
 
 const char* shape_type_name(ShapeSpec::Type type) {
   switch (type) {
-    case ShapeSpec::Type::kBox: return "box";
-    case ShapeSpec::Type::kCylinder: return "cylinder";
-    case ShapeSpec::Type::kSphere: return "sphere";
+    case ShapeSpec::Type::kBox: return layout::shape::kBox;
+    case ShapeSpec::Type::kCylinder: return layout::shape::kCylinder;
+    case ShapeSpec::Type::kSphere: return layout::shape::kSphere;
   }
   LIMBER_DEMAND(false);
 }
 
 void write_shapes(hid_t body_group, const std::vector<ShapeSpec>& shapes) {
   if (shapes.empty()) return;
-  H5Handle group = create_group(body_group, "shapes");
+  H5Handle group = create_group(body_group, layout::body::kShapes);
   for (std::size_t k = 0; k < shapes.size(); ++k) {
     const ShapeSpec& shape = shapes[k];
     H5Handle shape_group = create_group(group.get(), std::to_string(k));
-    write_string_attribute(shape_group.get(), "type", shape_type_name(shape.type));
-    write_doubles_attribute(shape_group.get(), "size", shape.size.data(), 3);
+    write_string_attribute(shape_group.get(), layout::shape::kTypeAttribute, shape_type_name(shape.type));
+    write_doubles_attribute(shape_group.get(), layout::shape::kSizeAttribute, shape.size.data(), 3);
     // Offset: position xyz then quaternion wxyz.
     const Eigen::Quaterniond& q = shape.offset_orientation;
     const double offset[7] = {shape.offset_position.x(), shape.offset_position.y(),
                               shape.offset_position.z(), q.w(), q.x(), q.y(), q.z()};
-    write_doubles_attribute(shape_group.get(), "offset", offset, 7);
-    write_doubles_attribute(shape_group.get(), "color", shape.color.data(), 3);
+    write_doubles_attribute(shape_group.get(), layout::shape::kOffsetAttribute, offset, 7);
+    write_doubles_attribute(shape_group.get(), layout::shape::kColorAttribute, shape.color.data(), 3);
   }
 }
 
@@ -284,10 +268,10 @@ struct ResultsWriter::Impl {
     LIMBER_DEMAND(body.stress_every >= 1);
     LIMBER_DEMAND(std::is_sorted(body.stress_elements.begin(), body.stress_elements.end()));
     auto stress = std::make_unique<StressSeries>();
-    stress->group = create_group(body_group, "stress");
-    write_int_attribute(stress->group.get(), "every", body.stress_every);
+    stress->group = create_group(body_group, layout::body::kStress);
+    write_int_attribute(stress->group.get(), layout::stress::kEveryAttribute, body.stress_every);
     const hid_t g = stress->group.get();
-    write_dataset(g, "elements", H5T_STD_I32LE, H5T_NATIVE_INT, {body.stress_elements.size()},
+    write_dataset(g, layout::stress::kElements, H5T_STD_I32LE, H5T_NATIVE_INT, {body.stress_elements.size()},
                   body.stress_elements.data());
     hsize_t beams = 0, shells = 0;
     for (int e : body.stress_elements) {
@@ -297,19 +281,19 @@ struct ResultsWriter::Impl {
     stress->elements = body.stress_elements.size();
     stress->beam_width = 12 * beams;
     stress->shell_width = 8 * shells;
-    stress->peak = create_series(g, "peak", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-    stress->peak_element = create_series(g, "peak_element", H5T_STD_I32LE, H5T_NATIVE_INT, 0);
-    stress->time = create_series(g, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-    stress->equivalent = create_series(g, "equivalent", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->elements);
+    stress->peak = create_series(g, layout::stress::kPeak, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    stress->peak_element = create_series(g, layout::stress::kPeakElement, H5T_STD_I32LE, H5T_NATIVE_INT, 0);
+    stress->time = create_series(g, layout::stress::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    stress->equivalent = create_series(g, layout::stress::kEquivalent, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->elements);
     LIMBER_DEMAND(stress->elements > 0);
     // Resultants of the kinds of element declared (a width of 0 would make a [ns] series).
     if (beams > 0) {
       stress->beam_resultants =
-          create_series(g, "beam_resultants", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->beam_width);
+          create_series(g, layout::stress::kBeamResultants, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->beam_width);
     }
     if (shells > 0) {
       stress->shell_resultants =
-          create_series(g, "shell_resultants", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->shell_width);
+          create_series(g, layout::stress::kShellResultants, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, stress->shell_width);
     }
     return stress;
   }
@@ -360,12 +344,12 @@ struct ResultsWriter::Impl {
                       const std::vector<ShapeSpec>& shapes) {
     demand_declaring();
     H5Handle body = create_named_group(bodies_group.get(), body_links, name);
-    write_string_attribute(body.get(), "kind", kind);
+    write_string_attribute(body.get(), layout::body::kKindAttribute, kind);
     write_shapes(body.get(), shapes);
     std::vector<Series> series;
-    series.push_back(create_series(body.get(), "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+    series.push_back(create_series(body.get(), layout::body::kPosition, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
     series.push_back(
-        create_series(body.get(), "orientation", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
+        create_series(body.get(), layout::body::kOrientation, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
     body_series.push_back(std::move(series));
     body_stress.emplace_back();
     return body;
@@ -401,21 +385,21 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
 
   // Root attributes and the groups every file has.
   const hid_t root = impl_->file.get();
-  write_string_attribute(root, "format", "limber-results");
-  write_int_attribute(root, "version", 1);
-  write_string_attribute(root, "title", title);
-  write_string_attribute(root, "case_file", case_file);
-  write_string_attribute(root, "status", "running");
-  write_string_attribute(root, "message", "");
-  impl_->bodies_group = create_group(root, "bodies");
-  H5Handle constraints = create_group(root, "constraints");
-  impl_->position_violation = impl_->create_series(constraints.get(), "position_violation",
+  write_string_attribute(root, layout::kFormatAttribute, layout::kFormat);
+  write_int_attribute(root, layout::kVersionAttribute, 1);
+  write_string_attribute(root, layout::kTitleAttribute, title);
+  write_string_attribute(root, layout::kCaseFileAttribute, case_file);
+  write_string_attribute(root, layout::kStatusAttribute, "running");
+  write_string_attribute(root, layout::kMessageAttribute, "");
+  impl_->bodies_group = create_group(root, layout::kBodies);
+  H5Handle constraints = create_group(root, layout::kConstraints);
+  impl_->position_violation = impl_->create_series(constraints.get(), layout::constraints::kPositionViolation,
                                                    H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-  impl_->velocity_violation = impl_->create_series(constraints.get(), "velocity_violation",
+  impl_->velocity_violation = impl_->create_series(constraints.get(), layout::constraints::kVelocityViolation,
                                                    H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-  H5Handle solver = create_group(root, "solver");
-  impl_->steps = impl_->create_series(solver.get(), "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, 0);
-  impl_->time = impl_->create_series(root, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+  H5Handle solver = create_group(root, layout::kSolver);
+  impl_->steps = impl_->create_series(solver.get(), layout::solver::kSteps, H5T_STD_I64LE, H5T_NATIVE_INT64, 0);
+  impl_->time = impl_->create_series(root, layout::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 }
 
@@ -431,7 +415,7 @@ ResultsWriter::~ResultsWriter() {
 }
 
 int ResultsWriter::add_rigid_body(const RigidBodySpec& body) {
-  impl_->begin_body(body.name, "rigid", body.shapes);
+  impl_->begin_body(body.name, layout::body::kRigid, body.shapes);
   impl_->body_nmodes.push_back(-1);
   return static_cast<int>(impl_->body_series.size()) - 1;
 }
@@ -446,42 +430,42 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
   LIMBER_DEMAND(body.lines.size() == 0 || (body.lines.minCoeff() >= 0 && body.lines.maxCoeff() < nn));
   LIMBER_DEMAND(body.quads.size() == 0 || (body.quads.minCoeff() >= 0 && body.quads.maxCoeff() < nn));
 
-  H5Handle group = impl_->begin_body(body.name, "flexible", body.shapes);
+  H5Handle group = impl_->begin_body(body.name, layout::body::kFlexible, body.shapes);
 
   // Mesh: nodes, ids, elements, tube radius.
-  H5Handle mesh = create_group(group.get(), "mesh");
+  H5Handle mesh = create_group(group.get(), layout::body::kMesh);
   const auto n = static_cast<hsize_t>(nn);
-  write_dataset(mesh.get(), "nodes", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {n, 3}, body.nodes.data());
+  write_dataset(mesh.get(), layout::mesh::kNodes, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {n, 3}, body.nodes.data());
   std::vector<int> ids = body.node_ids;
   if (ids.empty()) {
     for (Eigen::Index i = 0; i < nn; ++i) ids.push_back(static_cast<int>(i) + 1);
   }
-  write_dataset(mesh.get(), "node_ids", H5T_STD_I32LE, H5T_NATIVE_INT, {n}, ids.data());
-  write_dataset(mesh.get(), "lines", H5T_STD_I32LE, H5T_NATIVE_INT,
+  write_dataset(mesh.get(), layout::mesh::kNodeIds, H5T_STD_I32LE, H5T_NATIVE_INT, {n}, ids.data());
+  write_dataset(mesh.get(), layout::mesh::kLines, H5T_STD_I32LE, H5T_NATIVE_INT,
                 {static_cast<hsize_t>(body.lines.rows()), 2}, body.lines.data());
-  write_dataset(mesh.get(), "quads", H5T_STD_I32LE, H5T_NATIVE_INT,
+  write_dataset(mesh.get(), layout::mesh::kQuads, H5T_STD_I32LE, H5T_NATIVE_INT,
                 {static_cast<hsize_t>(body.quads.rows()), 4}, body.quads.data());
-  write_dataset(mesh.get(), "beam_radius", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {},
+  write_dataset(mesh.get(), layout::mesh::kBeamRadius, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {},
                 &body.beam_radius);
 
   // Modes: column-major (3 nn) x nm is exactly the row-major [nm, nn, 3] layout.
-  H5Handle modes = create_group(group.get(), "modes");
+  H5Handle modes = create_group(group.get(), layout::body::kModes);
   const Eigen::MatrixXd translations =
       nm == 0 ? Eigen::MatrixXd(3 * nn, 0) : body.mode_translations;
-  write_dataset(modes.get(), "translations", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+  write_dataset(modes.get(), layout::modes::kTranslations, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                 {static_cast<hsize_t>(nm), n, 3}, translations.data());
-  write_dataset(modes.get(), "frequencies_hz", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+  write_dataset(modes.get(), layout::modes::kFrequenciesHz, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                 {static_cast<hsize_t>(nm)}, body.frequencies_hz.data());
 
   // Modal coordinates and rates; a flexible body without modes keeps [ns, 0] datasets.
-  for (const char* name : {"modal_coordinates", "modal_velocities"}) {
+  for (const char* name : {layout::body::kModalCoordinates, layout::body::kModalVelocities}) {
     impl_->body_series.back().push_back(impl_->create_series(
         group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(nm)));
   }
   impl_->body_nmodes.push_back(static_cast<int>(nm));
   if (body.has_deflection) {
     impl_->body_series.back().push_back(impl_->create_series(
-        group.get(), "deflection", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+        group.get(), layout::body::kDeflection, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
   }
   if (body.has_stress) impl_->body_stress.back() = impl_->create_stress(group.get(), body);
   return static_cast<int>(impl_->body_series.size()) - 1;
@@ -489,19 +473,20 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
 
 int ResultsWriter::add_joint(const JointSpec& joint) {
   impl_->demand_declaring();
-  H5Handle group = create_named_group(impl_->group(impl_->joints_group, "joints"),
+  H5Handle group = create_named_group(impl_->group(impl_->joints_group, layout::kJoints),
                                       impl_->joint_links, joint.name);
-  write_string_attribute(group.get(), "type", joint.type);
-  write_string_attribute(group.get(), "body_i", joint.body_i);
-  write_string_attribute(group.get(), "body_j", joint.body_j);
+  write_string_attribute(group.get(), layout::joint::kTypeAttribute, joint.type);
+  write_string_attribute(group.get(), layout::joint::kBodyIAttribute, joint.body_i);
+  write_string_attribute(group.get(), layout::joint::kBodyJAttribute, joint.body_j);
   std::vector<Series> series;
   for (const char* name :
-       {"position", "force_joint", "torque_joint", "force_ground", "torque_ground"}) {
+       {layout::joint::kPosition, layout::joint::kForceJoint, layout::joint::kTorqueJoint,
+        layout::joint::kForceGround, layout::joint::kTorqueGround}) {
     series.push_back(
         impl_->create_series(group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
   }
   series.push_back(
-      impl_->create_series(group.get(), "indeterminate", H5T_STD_I8LE, H5T_NATIVE_INT8, 0));
+      impl_->create_series(group.get(), layout::joint::kIndeterminate, H5T_STD_I8LE, H5T_NATIVE_INT8, 0));
   // The two marker frames: the frames a reader can express the reaction in.
   for (int side = 0; side < 2; ++side) {
     H5Handle marker = create_group(group.get(), layout::kMarkerGroups[side]);
@@ -519,10 +504,10 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
 int ResultsWriter::add_driver(const std::string& name, const std::string& unit) {
   impl_->demand_declaring();
   H5Handle group =
-      create_named_group(impl_->group(impl_->drivers_group, "drivers"), impl_->driver_links, name);
-  if (!unit.empty()) write_string_attribute(group.get(), "unit", unit);
+      create_named_group(impl_->group(impl_->drivers_group, layout::kDrivers), impl_->driver_links, name);
+  if (!unit.empty()) write_string_attribute(group.get(), layout::driver::kUnitAttribute, unit);
   impl_->driver_series.push_back(
-      impl_->create_series(group.get(), "effort", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
+      impl_->create_series(group.get(), layout::driver::kEffort, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
   return static_cast<int>(impl_->driver_series.size()) - 1;
 }
 
@@ -530,7 +515,7 @@ int ResultsWriter::add_energy(const std::string& name) {
   impl_->demand_declaring();
   // A dataset per energy, its name in its `name` attribute as for groups.
   const std::string link = new_link(impl_->energy_links, name);
-  impl_->energy_series.push_back(impl_->create_series(impl_->group(impl_->energy_group, "energy"),
+  impl_->energy_series.push_back(impl_->create_series(impl_->group(impl_->energy_group, layout::kEnergy),
                                                       link.c_str(), H5T_IEEE_F64LE,
                                                       H5T_NATIVE_DOUBLE, 0));
   write_string_attribute(impl_->energy_series.back().dataset.get(), kNameAttribute, name);
@@ -541,24 +526,24 @@ int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
   Impl& m = *impl_;
   m.demand_declaring();
   H5Handle group =
-      create_named_group(m.group(m.limits_group, "hinge_limits"), m.limit_links, limit.name);
-  write_string_attribute(group.get(), "kind", limit.kind);
-  write_string_attribute(group.get(), "joint", limit.joint);
-  write_doubles_attribute(group.get(), "angle", &limit.angle, 1);
+      create_named_group(m.group(m.limits_group, layout::kHingeLimits), m.limit_links, limit.name);
+  write_string_attribute(group.get(), layout::hinge_limit::kKindAttribute, limit.kind);
+  write_string_attribute(group.get(), layout::hinge_limit::kJointAttribute, limit.joint);
+  write_doubles_attribute(group.get(), layout::hinge_limit::kAngleAttribute, &limit.angle, 1);
   // Groups list by name; the index keeps the model's order that /events/limit refers to.
-  write_int_attribute(group.get(), "index", static_cast<int>(m.limit_series.size()));
+  write_int_attribute(group.get(), layout::hinge_limit::kIndexAttribute, static_cast<int>(m.limit_series.size()));
   m.limit_series.push_back(
-      {m.create_series(group.get(), "angle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
-       m.create_series(group.get(), "torque", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
-       m.create_series(group.get(), "engaged", H5T_STD_I8LE, H5T_NATIVE_INT8, 0)});
+      {m.create_series(group.get(), layout::hinge_limit::kAngle, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+       m.create_series(group.get(), layout::hinge_limit::kTorque, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+       m.create_series(group.get(), layout::hinge_limit::kEngaged, H5T_STD_I8LE, H5T_NATIVE_INT8, 0)});
   // The event table exists in every file with hinge limits, empty until the first switch.
   if (!m.events_group.valid()) {
-    const hid_t events = m.group(m.events_group, "events");
-    m.event_time = m.create_series(events, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-    m.event_limit = m.create_series(events, "limit", H5T_STD_I32LE, H5T_NATIVE_INT32, 0);
-    m.event_engaged = m.create_series(events, "engaged", H5T_STD_I8LE, H5T_NATIVE_INT8, 0);
-    m.event_angle = m.create_series(events, "angle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-    m.event_rate = m.create_series(events, "rate", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    const hid_t events = m.group(m.events_group, layout::kEvents);
+    m.event_time = m.create_series(events, layout::events::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_limit = m.create_series(events, layout::events::kLimit, H5T_STD_I32LE, H5T_NATIVE_INT32, 0);
+    m.event_engaged = m.create_series(events, layout::events::kEngaged, H5T_STD_I8LE, H5T_NATIVE_INT8, 0);
+    m.event_angle = m.create_series(events, layout::events::kAngle, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_rate = m.create_series(events, layout::events::kRate, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
   }
   return static_cast<int>(m.limit_series.size()) - 1;
 }
@@ -584,32 +569,32 @@ void ResultsWriter::set_redundant_equations(const std::vector<std::string>& name
   impl_->demand_declaring();
   LIMBER_DEMAND(names.size() == depends_on.size());
   H5Handle constraints =
-      checked(H5Gopen2(impl_->file.get(), "constraints", H5P_DEFAULT), "open /constraints");
-  LIMBER_DEMAND(H5Lexists(constraints.get(), "redundant", H5P_DEFAULT) == 0);
-  write_string_dataset(constraints.get(), "redundant", names);
-  write_string_dataset(constraints.get(), "redundant_with", depends_on);
+      checked(H5Gopen2(impl_->file.get(), layout::kConstraints, H5P_DEFAULT), "open /constraints");
+  LIMBER_DEMAND(H5Lexists(constraints.get(), layout::constraints::kRedundant, H5P_DEFAULT) == 0);
+  write_string_dataset(constraints.get(), layout::constraints::kRedundant, names);
+  write_string_dataset(constraints.get(), layout::constraints::kRedundantWith, depends_on);
 }
 
 void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
   impl_->demand_declaring();
   LIMBER_DEMAND(!impl_->has_clearance);
-  H5Handle group = create_group(impl_->file.get(), "clearance");
-  write_string_dataset(group.get(), "pairs", pairs);
+  H5Handle group = create_group(impl_->file.get(), layout::kClearance);
+  write_string_dataset(group.get(), layout::clearance::kPairs, pairs);
   impl_->clearance_minimum =
-      impl_->create_series(group.get(), "minimum", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+      impl_->create_series(group.get(), layout::clearance::kMinimum, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
   impl_->clearance_pair =
-      impl_->create_series(group.get(), "pair", H5T_STD_I32LE, H5T_NATIVE_INT, 0);
+      impl_->create_series(group.get(), layout::clearance::kPair, H5T_STD_I32LE, H5T_NATIVE_INT, 0);
   impl_->has_clearance = true;
 }
 
 void ResultsWriter::set_integrator(const std::string& name) {
   impl_->demand_declaring();
-  write_string_attribute(impl_->file.get(), "integrator", name);
+  write_string_attribute(impl_->file.get(), layout::kIntegratorAttribute, name);
 }
 
 void ResultsWriter::set_axis_names(const std::array<std::string, 3>& names) {
   impl_->demand_declaring();
-  write_string_attribute(impl_->file.get(), "axis_names", names[0] + ", " + names[1] + ", " + names[2]);
+  write_string_attribute(impl_->file.get(), layout::kAxisNamesAttribute, names[0] + ", " + names[1] + ", " + names[2]);
 }
 
 void ResultsWriter::append_sample(const Sample& sample) {
@@ -699,10 +684,10 @@ void ResultsWriter::set_accuracy(double energy_relative, double local_error, dou
                                  const std::string& warnings) {
   LIMBER_DEMAND(!impl_->finished);
   const hid_t root = impl_->file.get();
-  write_doubles_attribute(root, "accuracy_energy_relative", &energy_relative, 1);
-  write_doubles_attribute(root, "accuracy_local_error", &local_error, 1);
-  write_doubles_attribute(root, "accuracy_drift_relative", &drift_relative, 1);
-  write_string_attribute(root, "accuracy_warnings", warnings);
+  write_doubles_attribute(root, layout::kAccuracyEnergyAttribute, &energy_relative, 1);
+  write_doubles_attribute(root, layout::kAccuracyLocalErrorAttribute, &local_error, 1);
+  write_doubles_attribute(root, layout::kAccuracyDriftAttribute, &drift_relative, 1);
+  write_string_attribute(root, layout::kAccuracyWarningsAttribute, warnings);
 }
 
 void ResultsWriter::set_singular_passages(const std::vector<double>& time,
@@ -713,14 +698,14 @@ void ResultsWriter::set_singular_passages(const std::vector<double>& time,
   LIMBER_DEMAND(time.size() == ratio.size() && time.size() == joints.size() &&
                 time.size() == velocity_jump.size());
   H5Handle constraints =
-      checked(H5Gopen2(impl_->file.get(), "constraints", H5P_DEFAULT), "open /constraints");
-  LIMBER_DEMAND(H5Lexists(constraints.get(), "singular_passages", H5P_DEFAULT) == 0);
-  H5Handle group = create_group(constraints.get(), "singular_passages");
+      checked(H5Gopen2(impl_->file.get(), layout::kConstraints, H5P_DEFAULT), "open /constraints");
+  LIMBER_DEMAND(H5Lexists(constraints.get(), layout::constraints::kSingularPassages, H5P_DEFAULT) == 0);
+  H5Handle group = create_group(constraints.get(), layout::constraints::kSingularPassages);
   const std::vector<hsize_t> dims{time.size()};
-  write_dataset(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, time.data());
-  write_dataset(group.get(), "ratio", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, ratio.data());
-  write_string_dataset(group.get(), "joints", joints);
-  write_dataset(group.get(), "velocity_jump", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims,
+  write_dataset(group.get(), layout::singular::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, time.data());
+  write_dataset(group.get(), layout::singular::kRatio, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, ratio.data());
+  write_string_dataset(group.get(), layout::singular::kJoints, joints);
+  write_dataset(group.get(), layout::singular::kVelocityJump, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims,
                 velocity_jump.data());
 }
 
@@ -729,19 +714,19 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();
   m.write_block();
-  write_string_attribute(root, "status", status == RunStatus::kOk           ? "ok"
+  write_string_attribute(root, layout::kStatusAttribute, status == RunStatus::kOk           ? "ok"
                                          : status == RunStatus::kInaccurate ? "ok_inaccurate"
                                          : status == RunStatus::kFailed     ? "failed"
                                                                             : "interrupted");
-  write_string_attribute(root, "message", message);
+  write_string_attribute(root, layout::kMessageAttribute, message);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 
   // The run's peak stress per body, where and when.
   for (const std::unique_ptr<StressSeries>& stress : m.body_stress) {
     if (!stress || stress->max_element < 0) continue;
-    write_doubles_attribute(stress->group.get(), "peak_value", &stress->max_value, 1);
-    write_int_attribute(stress->group.get(), "peak_element", stress->max_element);
-    write_doubles_attribute(stress->group.get(), "peak_time", &stress->max_time, 1);
+    write_doubles_attribute(stress->group.get(), layout::stress::kPeakValueAttribute, &stress->max_value, 1);
+    write_int_attribute(stress->group.get(), layout::stress::kPeakElementAttribute, stress->max_element);
+    write_doubles_attribute(stress->group.get(), layout::stress::kPeakTimeAttribute, &stress->max_time, 1);
   }
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 

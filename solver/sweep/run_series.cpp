@@ -6,21 +6,22 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
-#include "io/hdf5_file.h"
+#include "results/h5_reader.h"
+#include "results/link_name.h"
+#include "results/results_layout.h"
 
 namespace limber::sweep {
 
 namespace {
 
+namespace layout = results::layout;
+
 constexpr const char* kAxisNames = "xyz";
 
-// The text name of a group (attribute `name`), else its link name.
-std::string display_name(const io::H5Group& group, const std::string& link) {
-  try {
-    return group.read_string_attribute("name");
-  } catch (const InputError&) {
-    return link;
-  }
+// Every row of a dataset, row-major.
+std::vector<double> all_rows(const results::H5Reader& file, const std::string& path) {
+  const std::vector<hsize_t> dims = file.dims(path);
+  return file.read<double>(path, H5T_NATIVE_DOUBLE, dims.empty() ? 1 : dims[0]);
 }
 
 // The unit and kind of a quantity name: "[N]" force, "[N m]" torque, "[m]" deflection.
@@ -36,45 +37,40 @@ std::string without_unit(const std::string& name) { return name.substr(0, name.r
 
 RunSeries read_run_series(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) throw InputError("expected a results file, got none at '" + file.string() + "'");
-  const io::H5Group root = io::H5Group::open_file(file.string());
+  const results::H5Reader root(file, "results file", "");
   RunSeries series;
-  series.status = root.read_string_attribute("status");
-  try {
-    series.message = root.read_string_attribute("message");
-  } catch (const InputError&) {
-  }
-  const std::vector<double> time = root.read_doubles("time");
+  series.status = root.string_attribute("/", layout::kStatusAttribute);
+  series.message = root.string_attribute("/", layout::kMessageAttribute, false);
+  const std::vector<double> time = all_rows(root, layout::kTime);
   // A killed run may leave datasets one row apart: take the fewest rows (docs/results-format.md).
   Eigen::Index ns = static_cast<Eigen::Index>(time.size());
   std::vector<std::pair<std::string, std::vector<double>>> blocks;  // name prefix, ns x 3 row-major
   std::vector<std::string> units;
-  if (root.has("joints")) {
-    const io::H5Group joints = root.open_group("joints");
-    for (const std::string& link : joints.links()) {
-      const io::H5Group joint = joints.open_group(link);
-      const std::string name = display_name(joint, link);
-      blocks.emplace_back(name + " force", joint.read_doubles("force_joint"));
-      units.push_back("N");
-      blocks.emplace_back(name + " torque", joint.read_doubles("torque_joint"));
-      units.push_back("N m");
-    }
+  // Groups are listed by link name and shown by name (the link in files older than names).
+  for (const std::string& link : root.members(layout::kJoints)) {
+    const std::string joint = layout::at(layout::kJoints, link);
+    const std::string name = root.string_attribute(joint, results::kNameAttribute, false, link);
+    blocks.emplace_back(name + " force", all_rows(root, layout::at(joint, layout::joint::kForceJoint)));
+    units.push_back("N");
+    blocks.emplace_back(name + " torque", all_rows(root, layout::at(joint, layout::joint::kTorqueJoint)));
+    units.push_back("N m");
   }
-  if (root.has("bodies")) {
-    const io::H5Group bodies = root.open_group("bodies");
-    for (const std::string& link : bodies.links()) {
-      const io::H5Group body = bodies.open_group(link);
-      if (!body.has("deflection")) continue;
-      blocks.emplace_back(display_name(body, link) + " deflection", body.read_doubles("deflection"));
-      units.push_back("m");
-    }
+  for (const std::string& link : root.members(layout::kBodies)) {
+    const std::string body = layout::at(layout::kBodies, link);
+    const std::string deflection = layout::at(body, layout::body::kDeflection);
+    if (!root.exists(deflection)) continue;
+    const std::string name = root.string_attribute(body, results::kNameAttribute, false, link);
+    blocks.emplace_back(name + " deflection", all_rows(root, deflection));
+    units.push_back("m");
   }
   // Equations of the redundancy groups, as reaction components.
-  if (root.has("constraints")) {
-    const io::H5Group constraints = root.open_group("constraints");
+  {
+    const std::string redundant = layout::at(layout::kConstraints, layout::constraints::kRedundant);
+    const std::string with = layout::at(layout::kConstraints, layout::constraints::kRedundantWith);
     std::vector<std::string> equations;
-    if (constraints.has("redundant")) equations = constraints.read_strings("redundant");
-    if (constraints.has("redundant_with")) {
-      for (const std::string& list : constraints.read_strings("redundant_with")) {
+    if (root.exists(redundant)) equations = root.strings(redundant);
+    if (root.exists(with)) {
+      for (const std::string& list : root.strings(with)) {
         std::size_t start = 0;
         while (start < list.size()) {
           const std::size_t end = std::min(list.find(", ", start), list.size());
@@ -111,7 +107,7 @@ RunSeries read_run_series(const std::filesystem::path& file) {
 std::string read_run_status(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return "";
   try {
-    return io::H5Group::open_file(file.string()).read_string_attribute("status");
+    return results::H5Reader(file, "results file", "").string_attribute("/", layout::kStatusAttribute);
   } catch (const InputError&) {
     return "";
   }

@@ -1,6 +1,7 @@
-// Read-only access to limber's HDF5 files for render/ (results.h5, modes.h5) through the HDF5
-// C API, independent of the solver's writers. Every failure is an InputError naming the file:
-// "<kind> '<path>': expected ..., got ...". Internal to limber_render (exposes HDF5 types).
+// Read-only access to limber's HDF5 files (results.h5, modes.h5) through the HDF5 C API: the
+// one reading layer of render's readers and the report (paths in results/results_layout.h and
+// results/modes_layout.h). Every failure is an InputError naming the file:
+// "<kind> '<path>': expected ..., got ...". Exposes HDF5 types.
 #pragma once
 
 #include <hdf5.h>
@@ -12,12 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace limber::render {
-
-// HDF5 identifiers and error silencing of the results-file library (plain HDF5, no solver
-// classes).
-using H5Id = results::H5Handle;
-using results::SilentHdf5Errors;
+namespace limber::results {
 
 class H5Reader {
  public:
@@ -43,8 +39,11 @@ class H5Reader {
   // The first `rows` rows of a dataset, row-major, converted to T (`memory_type`).
   template <typename T>
   std::vector<T> read(const std::string& dataset, hid_t memory_type, hsize_t rows) const;
-  // A one-dimensional dataset of strings (variable-length).
+  // A one-dimensional dataset of strings (variable length, or fixed length and null-padded).
   std::vector<std::string> strings(const std::string& dataset) const;
+  // Every attribute of `object` ("/" for the root) as text, in name order: strings as they are,
+  // numbers "%.6g", arrays ", "-separated, other types "(not shown)"; empty when absent.
+  std::vector<std::pair<std::string, std::string>> attribute_texts(const std::string& object) const;
   // Names of the members of a group, alphabetical (empty when the group is absent).
   std::vector<std::string> members(const std::string& group) const;
 
@@ -55,7 +54,7 @@ class H5Reader {
   std::filesystem::path path_;
   std::string kind_;
   SilentHdf5Errors silent_;
-  H5Id file_;
+  H5Handle file_;
 };
 
 template <typename T>
@@ -68,4 +67,4 @@ std::vector<T> H5Reader::read(const std::string& dataset, hid_t memory_type, hsi
   return values;
 }
 
-}  // namespace limber::render
+}  // namespace limber::results

@@ -1,8 +1,10 @@
-#include "h5_reader.h"
+#include "results/h5_reader.h"
 
 #include "core/error.h"
 
-namespace limber::render {
+#include <cstdio>
+
+namespace limber::results {
 
 namespace {
 
@@ -23,6 +25,44 @@ hid_t open_checked(const std::filesystem::path& path, const std::string& kind,
     throw InputError("expected a readable " + kind + " '" + name + "', got an HDF5 open failure");
   }
   return file;
+}
+
+// An attribute's value as text: strings as they are, numbers "%.6g", arrays ", "-separated.
+std::string attribute_text(hid_t attribute) {
+  H5Handle type(H5Aget_type(attribute));
+  H5Handle space(H5Aget_space(attribute));
+  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+  switch (H5Tget_class(type.get())) {
+    case H5T_STRING: {
+      if (H5Tis_variable_str(type.get()) > 0) {
+        H5Handle memory(H5Tcopy(H5T_C_S1));
+        H5Tset_size(memory.get(), H5T_VARIABLE);
+        H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
+        char* text = nullptr;
+        if (n != 1 || H5Aread(attribute, memory.get(), &text) < 0) return "(unreadable)";
+        std::string value = text != nullptr ? text : "";
+        H5free_memory(text);
+        return value;
+      }
+      std::string value(H5Tget_size(type.get()) * n, '\0');
+      if (H5Aread(attribute, type.get(), value.data()) < 0) return "(unreadable)";
+      return value.substr(0, value.find('\0'));
+    }
+    case H5T_INTEGER:
+    case H5T_FLOAT: {
+      std::vector<double> values(n);
+      if (H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()) < 0) return "(unreadable)";
+      std::string text;
+      for (std::size_t k = 0; k < n; ++k) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.6g", values[k]);
+        text += (k > 0 ? ", " : "") + std::string(number);
+      }
+      return text;
+    }
+    default:
+      return "(not shown)";
+  }
 }
 
 }  // namespace
@@ -46,12 +86,12 @@ std::string H5Reader::string_attribute(const std::string& object, const char* na
     if (required) fail(std::string("attribute '") + name + "' on " + object, "none");
     return fallback;
   }
-  H5Id attribute(H5Aopen_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
-  H5Id type(H5Aget_type(attribute.get()));
+  H5Handle attribute(H5Aopen_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
+  H5Handle type(H5Aget_type(attribute.get()));
   if (H5Tget_class(type.get()) != H5T_STRING) fail(std::string("a string ") + name, "another type");
   if (H5Tis_variable_str(type.get()) > 0) {
     // The memory type takes the file's character set (HDF5 does not convert ASCII <-> UTF-8).
-    H5Id memory_type(H5Tcopy(H5T_C_S1));
+    H5Handle memory_type(H5Tcopy(H5T_C_S1));
     H5Tset_size(memory_type.get(), H5T_VARIABLE);
     H5Tset_cset(memory_type.get(), H5Tget_cset(type.get()));
     char* text = nullptr;
@@ -70,8 +110,8 @@ std::vector<double> H5Reader::doubles_attribute(const std::string& object, const
   if (H5Aexists_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT) <= 0) {
     fail(std::string("attribute '") + name + "' on " + object, "none");
   }
-  H5Id attribute(H5Aopen_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
-  H5Id space(H5Aget_space(attribute.get()));
+  H5Handle attribute(H5Aopen_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT));
+  H5Handle space(H5Aget_space(attribute.get()));
   if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != n) {
     fail(std::to_string(n) + " values in " + object + "@" + name, "another count");
   }
@@ -82,8 +122,8 @@ std::vector<double> H5Reader::doubles_attribute(const std::string& object, const
 
 std::vector<hsize_t> H5Reader::dims(const std::string& dataset) const {
   if (!exists(dataset)) fail("dataset " + dataset, "none");
-  H5Id id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
-  H5Id space(H5Dget_space(id.get()));
+  H5Handle id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  H5Handle space(H5Dget_space(id.get()));
   std::vector<hsize_t> d(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
   H5Sget_simple_extent_dims(space.get(), d.data(), nullptr);
   return d;
@@ -99,14 +139,14 @@ hsize_t H5Reader::rows(const std::string& dataset, hsize_t width) const {
 void H5Reader::read_rows(const std::string& dataset, hid_t memory_type, hsize_t rows,
                          void* values) const {
   const std::vector<hsize_t> d = dims(dataset);
-  H5Id id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
-  H5Id file_space(H5Dget_space(id.get()));
+  H5Handle id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  H5Handle file_space(H5Dget_space(id.get()));
   // Select the leading rows only (a killed run may have longer datasets).
   std::vector<hsize_t> start(d.size(), 0), count = d;
   if (!count.empty()) count[0] = rows;
   H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
                       nullptr);
-  H5Id memory_space(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr));
+  H5Handle memory_space(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr));
   if (H5Dread(id.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT,
               values) < 0) {
     fail("readable data in " + dataset, "a read failure (damaged file?)");
@@ -115,13 +155,26 @@ void H5Reader::read_rows(const std::string& dataset, hid_t memory_type, hsize_t 
 
 std::vector<std::string> H5Reader::strings(const std::string& dataset) const {
   const hsize_t n = rows(dataset, 0);
-  H5Id id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
-  H5Id file_type(H5Dget_type(id.get()));
-  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) <= 0) {
-    fail("variable-length strings in " + dataset, "another type");
+  H5Handle id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  H5Handle file_type(H5Dget_type(id.get()));
+  if (H5Tget_class(file_type.get()) != H5T_STRING) fail("strings in " + dataset, "another type");
+  if (H5Tis_variable_str(file_type.get()) <= 0) {
+    // Fixed length, null-padded (results.h5's redundant equations, clearance pairs).
+    const std::size_t size = H5Tget_size(file_type.get());
+    std::vector<char> buffer(static_cast<std::size_t>(n) * size);
+    if (n > 0 && H5Dread(id.get(), file_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                         buffer.data()) < 0) {
+      fail("readable strings in " + dataset, "a read failure (damaged file?)");
+    }
+    std::vector<std::string> values;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
+      const std::string text(buffer.data() + k * size, size);
+      values.push_back(text.substr(0, text.find('\0')));
+    }
+    return values;
   }
   // Read as C strings in the file's character set, copy, then let HDF5 free its buffers.
-  H5Id memory_type(H5Tcopy(H5T_C_S1));
+  H5Handle memory_type(H5Tcopy(H5T_C_S1));
   H5Tset_size(memory_type.get(), H5T_VARIABLE);
   H5Tset_cset(memory_type.get(), H5Tget_cset(file_type.get()));
   std::vector<char*> pointers(static_cast<std::size_t>(n), nullptr);
@@ -140,7 +193,7 @@ std::vector<std::string> H5Reader::strings(const std::string& dataset) const {
 std::vector<std::string> H5Reader::members(const std::string& group) const {
   std::vector<std::string> names;
   if (!exists(group)) return names;
-  H5Id id(H5Gopen2(file_.get(), group.c_str(), H5P_DEFAULT));
+  H5Handle id(H5Gopen2(file_.get(), group.c_str(), H5P_DEFAULT));
   H5G_info_t info;
   H5Gget_info(id.get(), &info);
   for (hsize_t k = 0; k < info.nlinks; ++k) {
@@ -154,4 +207,25 @@ std::vector<std::string> H5Reader::members(const std::string& group) const {
   return names;
 }
 
-}  // namespace limber::render
+std::vector<std::pair<std::string, std::string>> H5Reader::attribute_texts(
+    const std::string& object) const {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (object != "/" && !exists(object)) return out;
+  H5O_info_t info;
+  if (H5Oget_info_by_name2(file_.get(), object.c_str(), &info, H5O_INFO_NUM_ATTRS,
+                           H5P_DEFAULT) < 0) {
+    return out;
+  }
+  for (hsize_t k = 0; k < info.num_attrs; ++k) {
+    H5Handle attribute(H5Aopen_by_idx(file_.get(), object.c_str(), H5_INDEX_NAME, H5_ITER_INC, k,
+                                      H5P_DEFAULT, H5P_DEFAULT));
+    if (!attribute.valid()) continue;
+    const ssize_t length = H5Aget_name(attribute.get(), 0, nullptr);
+    std::string name(static_cast<std::size_t>(length), '\0');
+    H5Aget_name(attribute.get(), static_cast<std::size_t>(length) + 1, name.data());
+    out.emplace_back(name, attribute_text(attribute.get()));
+  }
+  return out;
+}
+
+}  // namespace limber::results
