@@ -5,32 +5,40 @@
 namespace limber::report {
 namespace {
 
-// The equations of `joint` named in the redundant sets (component names after "<joint>.").
+// The equations of `joint` named in the redundant sets.
 std::vector<std::string> named_components(const RunData& run, const std::string& joint) {
   std::vector<std::string> components;
-  const std::string prefix = joint + ".";
-  auto scan = [&](const std::string& list) {
-    std::size_t at = 0;
-    while (at < list.size()) {
-      const std::size_t end = std::min(list.find(", ", at), list.size());
-      const std::string equation = list.substr(at, end - at);
-      if (equation.rfind(prefix, 0) == 0) {
-        const std::string component = equation.substr(prefix.size());
+  for (const auto& [equation, with] : run.redundant_equations) {
+    for (const std::string& list : {equation, with}) {
+      for (const std::string& component : joint_components(list, joint)) {
         if (std::find(components.begin(), components.end(), component) == components.end()) {
           components.push_back(component);
         }
       }
-      at = end + 2;
     }
-  };
-  for (const auto& [equation, with] : run.redundant_equations) {
-    scan(equation);
-    scan(with);
   }
   return components;
 }
 
 }  // namespace
+
+std::vector<std::string> joint_components(const std::string& list, const std::string& joint) {
+  std::vector<std::string> components;
+  const std::string prefix = joint + ".";
+  std::size_t at = 0;
+  while (at < list.size()) {
+    const std::size_t end = std::min(list.find(", ", at), list.size());
+    const std::string equation = list.substr(at, end - at);
+    if (equation.rfind(prefix, 0) == 0) {
+      const std::string component = equation.substr(prefix.size());
+      if (std::find(components.begin(), components.end(), component) == components.end()) {
+        components.push_back(component);
+      }
+    }
+    at = end + 2;
+  }
+  return components;
+}
 
 std::optional<UndeterminedDirections> undetermined_directions(const RunData& run,
                                                               const JointReactions& joint) {

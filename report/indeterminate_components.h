@@ -19,6 +19,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace limber::report {
@@ -27,6 +28,10 @@ namespace limber::report {
 // as indeterminate: 1e-6, i.e. the axis is more than 1e-6 rad away from perpendicular (a
 // planar mechanism gives 0 to rounding, ~1e-16).
 inline constexpr double kDirectionTolerance = 1e-6;
+
+// The components of `joint` ("x", "rot_x", ...) that a comma-separated list of equation names
+// ("R1.rot_x, R2.z") names, in order, once each.
+std::vector<std::string> joint_components(const std::string& list, const std::string& joint);
 
 // Unit directions in ground along which the joint's force and torque are undetermined, per
 // sample (empty lists where the joint is not flagged).

@@ -205,30 +205,17 @@ Indeterminacy indeterminacy(const RunData& run, const JointReactions& joint) {
   if (!joint.is_indeterminate()) return which;
   // The joint's equations named in the redundant sets: "R2.rot_x" is a torque equation,
   // "R2.x" a force one. None named: both are reported indeterminate.
-  const std::string prefix = joint.name + ".";
   bool named = false;
-  auto scan = [&](const std::string& list) {
-    std::size_t at = 0;
-    while (at < list.size()) {
-      const std::size_t end = std::min(list.find(", ", at), list.size());
-      const std::string equation = list.substr(at, end - at);
-      if (equation.rfind(prefix, 0) == 0) {
-        named = true;
-        const std::string component = equation.substr(prefix.size());
-        const bool rotation = component.rfind("rot", 0) == 0 || component.rfind("angle", 0) == 0;
-        (rotation ? which.torque : which.force) = true;
-      }
-      at = end + 2;
-    }
-  };
   for (const auto& [equation, with] : run.redundant_equations) {
-    const std::size_t before = which.sets.size();
-    const bool was_named = named;
-    named = false;
-    scan(equation);
-    scan(with);
-    if (named) which.sets += (before > 0 ? "; " : "") + equation + " depends on " + with;
-    named = named || was_named;
+    std::vector<std::string> components = joint_components(equation, joint.name);
+    for (const std::string& component : joint_components(with, joint.name)) components.push_back(component);
+    if (components.empty()) continue;
+    which.sets += (named ? "; " : "") + equation + " depends on " + with;
+    named = true;
+    for (const std::string& component : components) {
+      const bool rotation = component.rfind("rot", 0) == 0 || component.rfind("angle", 0) == 0;
+      (rotation ? which.torque : which.force) = true;
+    }
   }
   if (!named) which.force = which.torque = true;
   return which;

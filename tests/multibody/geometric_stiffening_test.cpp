@@ -197,9 +197,10 @@ double hub_angle(double spin, double t) {
   return spin / kSpinUpTime * (0.5 * t * t + c * c * (std::cos(t / c) - 1.0));
 }
 
-// The geometrically nonlinear reference (corotational_spin_beam.h), 40 elements, h = 1 ms.
+// The geometrically nonlinear reference (corotational_spin_beam.h), 40 elements, h = 1 ms
+// (corotational_beam.h defaults).
 std::vector<double> corotational_tip(double spin, double t_end, double dt) {
-  test::CorotationalSpinBeam p;
+  test::CorotationalBeam p;
   p.length = kLength;
   p.EA = kYoung * kArea;
   p.EI = kYoung * kInertia;
