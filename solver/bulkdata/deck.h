@@ -85,23 +85,17 @@ struct BeamCard {
   SourceLocation orientation_where;
 };
 
-// CQUAD4 (4 grids).
-struct QuadCard {
+// A shell element card with N grids: CQUAD4 (4) or CTRIA3 (3).
+template <int N>
+struct ShellCard {
   int id = 0;
   int property = 0;
-  std::array<int, 4> grids{};
+  std::array<int, N> grids{};
   SourceLocation where, property_where;
-  std::array<SourceLocation, 4> grid_where;
+  std::array<SourceLocation, N> grid_where;
 };
-
-// CTRIA3 (3 grids).
-struct TriangleCard {
-  int id = 0;
-  int property = 0;
-  std::array<int, 3> grids{};
-  SourceLocation where, property_where;
-  std::array<SourceLocation, 3> grid_where;
-};
+using QuadCard = ShellCard<4>;
+using TriangleCard = ShellCard<3>;
 
 // CONM2 without offset: mass and inertia about the grid in system `system` (-1, 0: basic).
 struct MassCard {

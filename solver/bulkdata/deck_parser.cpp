@@ -420,50 +420,38 @@ class Parser {
     insert_unique(deck_.beams, std::move(b), f, "element", &element_ids_);
   }
 
-  void cquad4(const CardFields& f) {
-    QuadCard q;
-    q.id = f.id(2, "EID");
-    q.property = f.blank(3) ? q.id : f.id(3, "PID");
+  // CQUAD4 and CTRIA3: id, property (EID by default), N grids from field 4, ZOFFS at
+  // `offset_field`, no corner thicknesses (TFLAG and T1.. from field 13).
+  template <int N>
+  ShellCard<N> shell_card(const CardFields& f, int offset_field) {
+    ShellCard<N> c;
+    c.id = f.id(2, "EID");
+    c.property = f.blank(3) ? c.id : f.id(3, "PID");
     const char* names[] = {"G1", "G2", "G3", "G4"};
-    for (int k = 0; k < 4; ++k) {
-      q.grids[k] = f.id(4 + k, names[k]);
-      q.grid_where[k] = f.where(4 + k);
+    for (int k = 0; k < N; ++k) {
+      c.grids[k] = f.id(4 + k, names[k]);
+      c.grid_where[k] = f.where(4 + k);
     }
-    q.where = f.card().where();
-    q.property_where = f.where(3);
-    demand_zero(f, 9, "ZOFFS", "a shell offset is");
+    c.where = f.card().where();
+    c.property_where = f.where(3);
+    demand_zero(f, offset_field, "ZOFFS", "a shell offset is");
     if (!f.blank(13)) f.fail(13, "TFLAG", "expected blank (corner thicknesses are not supported)");
     const char* corners[] = {"T1", "T2", "T3", "T4"};
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < N; ++k) {
       if (!f.blank(14 + k)) {
         f.fail(14 + k, corners[k],
                "expected blank (corner thicknesses are not supported: PSHELL's T is used)");
       }
     }
-    insert_unique(deck_.quads, std::move(q), f, "element", &element_ids_);
+    return c;
+  }
+
+  void cquad4(const CardFields& f) {
+    insert_unique(deck_.quads, shell_card<4>(f, 9), f, "element", &element_ids_);
   }
 
   void ctria3(const CardFields& f) {
-    TriangleCard t;
-    t.id = f.id(2, "EID");
-    t.property = f.blank(3) ? t.id : f.id(3, "PID");
-    const char* names[] = {"G1", "G2", "G3"};
-    for (int k = 0; k < 3; ++k) {
-      t.grids[k] = f.id(4 + k, names[k]);
-      t.grid_where[k] = f.where(4 + k);
-    }
-    t.where = f.card().where();
-    t.property_where = f.where(3);
-    demand_zero(f, 8, "ZOFFS", "a shell offset is");
-    if (!f.blank(13)) f.fail(13, "TFLAG", "expected blank (corner thicknesses are not supported)");
-    const char* corners[] = {"T1", "T2", "T3"};
-    for (int k = 0; k < 3; ++k) {
-      if (!f.blank(14 + k)) {
-        f.fail(14 + k, corners[k],
-               "expected blank (corner thicknesses are not supported: PSHELL's T is used)");
-      }
-    }
-    insert_unique(deck_.triangles, std::move(t), f, "element", &element_ids_);
+    insert_unique(deck_.triangles, shell_card<3>(f, 8), f, "element", &element_ids_);
   }
 
   void conm2(const CardFields& f) {

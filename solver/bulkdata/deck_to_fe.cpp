@@ -214,26 +214,25 @@ class Translator {
     return index;
   }
 
-  void add_quad(const QuadCard& quad) {
-    const std::string label = fmt::format("CQUAD4 {}", quad.id);
-    fe::ShellElement element;
-    for (int k = 0; k < 4; ++k) {
-      element.nodes[k] = node(quad.grids[k], quad.grid_where[k],
+  // The element's nodes and shell property from its card (`name` CQUAD4 or CTRIA3).
+  template <int N, typename Element>
+  Element shell_element(const ShellCard<N>& card, const char* name) {
+    const std::string label = fmt::format("{} {}", name, card.id);
+    Element element;
+    for (int k = 0; k < N; ++k) {
+      element.nodes[k] = node(card.grids[k], card.grid_where[k],
                               fmt::format("{}, field {} (G{})", label, 4 + k, k + 1));
     }
-    element.property = shell_property(quad.property, quad.property_where, label);
-    builder_.add_shell(element, quad.where);
+    element.property = shell_property(card.property, card.property_where, label);
+    return element;
+  }
+
+  void add_quad(const QuadCard& quad) {
+    builder_.add_shell(shell_element<4, fe::ShellElement>(quad, "CQUAD4"), quad.where);
   }
 
   void add_triangle(const TriangleCard& triangle) {
-    const std::string label = fmt::format("CTRIA3 {}", triangle.id);
-    fe::ShellTriangle element;
-    for (int k = 0; k < 3; ++k) {
-      element.nodes[k] = node(triangle.grids[k], triangle.grid_where[k],
-                              fmt::format("{}, field {} (G{})", label, 4 + k, k + 1));
-    }
-    element.property = shell_property(triangle.property, triangle.property_where, label);
-    builder_.add_triangle(element, triangle.where);
+    builder_.add_triangle(shell_element<3, fe::ShellTriangle>(triangle, "CTRIA3"), triangle.where);
   }
 
   // The size of the model (for tolerances on positions).
