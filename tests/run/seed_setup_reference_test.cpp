@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_error.h"
 #include "corotational_rod.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
@@ -65,17 +66,6 @@ double peak(const std::vector<double>& x) {
   return m;
 }
 
-// rms of a − b over the common samples, relative to the rms of b.
-double rms_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double d = 0.0, r = 0.0;
-  const std::size_t n = std::min(a.size(), b.size());
-  for (std::size_t k = 0; k < n; ++k) {
-    d += (a[k] - b[k]) * (a[k] - b[k]);
-    r += b[k] * b[k];
-  }
-  return std::sqrt(d / r);
-}
-
 TEST(SeedSetupReference, StiffenedModalRodFollowsTheCorotationalBeamTheLinearOneDoesNot) {
   const std::vector<double> reference =
       test::corotational_midspan_deflection(seed_rod(50, 2e-5), kTEnd, kSample);
@@ -87,11 +77,11 @@ TEST(SeedSetupReference, StiffenedModalRodFollowsTheCorotationalBeamTheLinearOne
   std::printf("  peaks [mm]: corotational %.2f (finer %.2f), stiffened %.2f, linear %.2f\n",
               1e3 * peak(reference), 1e3 * peak(finer), 1e3 * peak(stiffened), 1e3 * peak(linear));
   std::printf("  rms difference to corotational: finer %.3f, stiffened %.3f, linear %.3f\n",
-              rms_difference(finer, reference), rms_difference(stiffened, reference),
-              rms_difference(linear, reference));
+              bench::relative_rms_error(finer, reference), bench::relative_rms_error(stiffened, reference),
+              bench::relative_rms_error(linear, reference));
   // The reference is converged: twice the elements at half the step differ by 0.2 % rms
   // (measured; peaks 38.50 and 38.51 mm). Bound 1 %, a twentieth of the stiffened rod's gap.
-  EXPECT_LT(rms_difference(finer, reference), 1e-2);
+  EXPECT_LT(bench::relative_rms_error(finer, reference), 1e-2);
   // Measured: stiffened peak 37.92 mm, 1.5 % under the nonlinear beam's 38.50 mm (a peer
   // tool's unreduced nonlinear FE rod: 39 mm); the linear modal rod 61.81 mm, 61 % over.
   // Bounds: 3 % (twice the gap: first order in the loads, 5 modes) and 40 %.
@@ -100,8 +90,8 @@ TEST(SeedSetupReference, StiffenedModalRodFollowsTheCorotationalBeamTheLinearOne
   // Over the whole history: 18.6 % rms for the stiffened rod (the undamped ringing drifts in
   // phase: 5 modes against 150 DOFs), 98 % for the linear one, whose history has no likeness
   // to the reference after the first 10 ms. Bounds 30 % and 80 %.
-  EXPECT_LT(rms_difference(stiffened, reference), 0.3);
-  EXPECT_GT(rms_difference(linear, reference), 0.8);
+  EXPECT_LT(bench::relative_rms_error(stiffened, reference), 0.3);
+  EXPECT_GT(bench::relative_rms_error(linear, reference), 0.8);
 }
 
 }  // namespace
