@@ -5,39 +5,35 @@
 
 #include <fmt/format.h>
 
-#include "multibody/constraints.h"
-
 namespace limber::run {
 
 RedundantRowWatch::RedundantRowWatch(const multibody::Model& model,
                                      const multibody::ConstraintPartition& partition,
                                      std::vector<DeformationRedundancy> known)
-    : model_(model), partition_(partition), known_(std::move(known)), workspace_(model) {}
+    : model_(model), partition_(partition), known_(std::move(known)) {}
 
-integrate::Status RedundantRowWatch::check(const multibody::State& state, double size) {
-  if (partition_.redundant.empty()) return integrate::Status::success(state.t);
-  multibody::evaluate_constraints(model_, state, multibody::Stage::kPosition, workspace_);
+integrate::Status RedundantRowWatch::check(double t, const Eigen::VectorXd& g, double size) const {
+  if (partition_.redundant.empty()) return integrate::Status::success(t);
   double held = 0.0;
-  for (int row : partition_.independent) held = std::max(held, std::abs(workspace_.g(row)));
+  for (int row : partition_.independent) held = std::max(held, std::abs(g(row)));
   for (const multibody::RedundantEquation& r : partition_.redundant) {
-    const double residual = std::abs(workspace_.g(r.row));
+    const double residual = std::abs(g(r.row));
     const bool length = model_.equations[static_cast<std::size_t>(r.row)].kind == multibody::EquationKind::kDot2;
     const double limit = std::max(kLooseRedundantRow * (length ? size : 1.0), kLooseOverHeld * held);
     if (residual > limit) {
-      return {integrate::StatusCode::kRedundantViolated, state.t, message(r.row, residual, held, state)};
+      return {integrate::StatusCode::kRedundantViolated, t, message(r.row, residual, held, t)};
     }
   }
-  return integrate::Status::success(state.t);
+  return integrate::Status::success(t);
 }
 
-std::string RedundantRowWatch::message(int row, double residual, double held,
-                                       const multibody::State& state) const {
+std::string RedundantRowWatch::message(int row, double residual, double held, double t) const {
   const multibody::ConstraintEquation& eq = model_.equations[static_cast<std::size_t>(row)];
   const char* unit = eq.kind == multibody::EquationKind::kDot2 ? "m" : "rad";
   std::string text = fmt::format(
       "at t = {:.6g} s: the redundant equation {}, which the run does not hold, is off by {:.3g} {} "
       "(the held ones by {:.2g}): the mechanism has a freedom there that the model does not",
-      state.t, eq.name, residual, unit, held);
+      t, eq.name, residual, unit, held);
   // The start's diagnosis of its dependency (a reselection may have dropped another row of it).
   const auto known = std::find_if(known_.begin(), known_.end(), [&](const DeformationRedundancy& d) {
     return std::find(d.group.begin(), d.group.end(), row) != d.group.end();

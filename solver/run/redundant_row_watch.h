@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "integrate/status.h"
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
-#include "multibody/state.h"
 #include "run/deformation_redundancy.h"
 
 namespace limber::run {
@@ -34,17 +35,17 @@ class RedundantRowWatch {
   RedundantRowWatch(const multibody::Model& model, const multibody::ConstraintPartition& partition,
                     std::vector<DeformationRedundancy> known);
 
-  // The residuals at `state`; a failure status when a redundant row has come loose.
-  // `size` is the mechanism's size [m] (AccuracyMonitor).
-  integrate::Status check(const multibody::State& state, double size);
+  // A failure status when a redundant row has come loose, from the residuals `g` of all rows
+  // at time t (SampleRecorder::constraint_residuals); `size` is the mechanism's size [m]
+  // (AccuracyMonitor).
+  integrate::Status check(double t, const Eigen::VectorXd& g, double size) const;
 
  private:
   const multibody::Model& model_;
   const multibody::ConstraintPartition& partition_;
   std::vector<DeformationRedundancy> known_;
-  multibody::Workspace workspace_;
 
-  std::string message(int row, double residual, double held, const multibody::State& state) const;
+  std::string message(int row, double residual, double held, double t) const;
 };
 
 }  // namespace limber::run

@@ -170,9 +170,10 @@ RunSummary run_mechanism(const multibody::Model& model,
     if (hooks.on_sample) hooks.on_sample(sample, record);
   };
   // A redundant row that comes loose ends the run there (redundant_row_watch.h).
-  RedundantRowWatch redundant_rows(model, system.partition(), start.deformation_redundant);
+  // Checked after on_sample, on the residuals its recorder has just evaluated.
+  const RedundantRowWatch redundant_rows(model, system.partition(), start.deformation_redundant);
   const auto check = [&](const integrate::Sample& sample) {
-    return redundant_rows.check({sample.t, sample.q, sample.v}, accuracy.size());
+    return redundant_rows.check(sample.t, recorder.constraint_residuals(), accuracy.size());
   };
   const integrate::SimulationResult result = integrate::simulate(
       system, options, {0.0, start.state.q, start.state.v},

@@ -51,6 +51,8 @@ class SampleRecorder {
 
   // Precondition: sample.integrals holds kEnergyIntegrals values (energy_quadrature).
   results::Sample record(const integrate::Sample& sample);
+  // The residuals g of all constraint rows (model.equations) at the last recorded sample.
+  const Eigen::VectorXd& constraint_residuals() const { return workspace_.g; }
 
  private:
   const multibody::Model& model_;
