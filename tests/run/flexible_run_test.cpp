@@ -134,10 +134,10 @@ TEST(FlexibleSliderCrank, IdaAtTightToleranceRunsThroughTheRowSwitches) {
 TEST(FlexibleSliderCrank, EnergyBalanceHoldsStrainAndModalDamping) {
   // T + V_gravity + V_spring + U_strain + dissipated − driver_work − force_work is constant:
   // the driver is the only source, modal damping (1 %) the only sink.
-  // rtol 1e-7: at 1e-6 IDA's path through the row re-selection at the crank's 270° (t = 0.288 s)
-  // is fragile; one build of these modes took 2 519 rejected steps there (h ~ 5e-6 s for 10 ms)
-  // and drifted 1.0e-3 of the kinetic energy, others 1.4e-4 (issue 16's note).
-  const FlexibleRun run = run_slider_crank(integrate::IntegratorOptions::ida(1e-7, 1e-9), 0.3);
+  // IDA at rtol 1e-6: with IDA's default step growth (2) it once crawled at h ≈ 5 µs for 14 ms
+  // here, order 1 on the 291 Hz mode, and drifted 1.0e-3 of the kinetic energy; with growth
+  // capped at 1.5 (ida_integrator.cpp) 246 of its 5 239 steps are rejected.
+  const FlexibleRun run = run_slider_crank(integrate::IntegratorOptions::ida(1e-6, 1e-8), 0.3);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   const auto balance = [](const results::Sample& s) {
     const std::vector<double>& e = s.energies;  // order of kEnergyNames
@@ -151,7 +151,7 @@ TEST(FlexibleSliderCrank, EnergyBalanceHoldsStrainAndModalDamping) {
   }
   EXPECT_GT(strain, 0.1);                           // the rod stores energy
   EXPECT_GT(run.samples.back().energies[4], 0.01);  // and damping removes some
-  // Measured at rtol 1e-7: drift 2.8e-5 of the largest kinetic energy (53 J); strain up to
+  // Measured: drift 7.7e-5 of the largest kinetic energy (53 J); strain up to
   // 2.0 J, 0.2 J dissipated. Bound 1e-3: a missing strain or damping term breaks it by far more.
   EXPECT_LT(drift, 1e-3 * kinetic) << drift << " J of " << kinetic << " J";
 }
