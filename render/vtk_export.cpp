@@ -120,6 +120,7 @@ vtkSmartPointer<vtkUnstructuredGrid> rigid_grid(const BodyTrack& body, const Bod
     vtkNew<vtkTransformPolyDataFilter> placed;
     placed->SetInputConnection(source->GetOutputPort());
     placed->SetTransform(transform);
+    placed->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);  // as the XDMF scene
     append->AddInputConnection(placed->GetOutputPort());
   }
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
