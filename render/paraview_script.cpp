@@ -1,5 +1,6 @@
 #include "paraview_script.h"
 
+#include "scene.h"
 #include "xdmf_layout.h"
 
 #include <fmt/core.h>
@@ -65,17 +66,33 @@ deformed.ScaleFactor = 1.0
 
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = VIEW_SIZE
-view.Background = [0.86, 0.89, 0.93]
+view.Background = BACKGROUND
 try:
     view.UseColorPaletteForBackground = 0
 except AttributeError:
     pass
 view.OrientationAxesVisibility = 1
 shown = Show(deformed, view)
-if COLOR_BY == "stress":
-    ColorBy(shown, ("CELLS", "stress"))
-else:
-    ColorBy(shown, ("POINTS", COLOR_BY))
+shown.LineWidth = 2.0
+
+# Beams as solids: their lines swept into tubes of the section's radius (cell data beam_radius,
+# averaged onto the points; 0 on surfaces, where the tube filter draws nothing).
+displays = [shown]
+if BEAMS:
+    radius = CellDatatoPointData(registrationName="beam radius at points", Input=deformed)
+    radius.PassCellData = 1
+    lines = ExtractSurface(registrationName="surface", Input=radius)
+    tubes = Tube(registrationName="beams as tubes", Input=lines)
+    tubes.Scalars = ["POINTS", "beam_radius"]
+    tubes.VaryRadius = "By Absolute Scalar"
+    tubes.NumberofSides = 16
+    tubes.Capping = 1
+    displays.append(Show(tubes, view))
+for display in displays:
+    if COLOR_BY == "stress":
+        ColorBy(display, ("CELLS", "stress"))
+    else:
+        ColorBy(display, ("POINTS", COLOR_BY))
 colors = GetColorTransferFunction(COLOR_BY)
 colors.ApplyPreset("Cool to Warm", True)
 colors.RescaleTransferFunction(0.0, max(COLOR_MAX, 1e-300))
@@ -84,11 +101,14 @@ shown.SetScalarBarVisibility(view, True)
 bar = GetScalarBar(colors, view)
 bar.Title = COLOR_TITLE
 bar.ComponentTitle = ""
+bar.TitleColor = TEXT_COLOR
+bar.LabelColor = TEXT_COLOR
 if TITLE:
     title = Text(registrationName="title", Text=TITLE)
     title_shown = Show(title, view)
     title_shown.WindowLocation = "Upper Left Corner"
     title_shown.FontSize = 14
+    title_shown.Color = TEXT_COLOR
 
 # The render's camera: its direction and view angle, fitted to the whole motion.
 view.CameraFocalPoint = FOCAL_POINT
@@ -155,6 +175,9 @@ std::string paraview_script(const ParaViewView& view, const std::filesystem::pat
   text += fmt::format("DISTANCE = {:.17g}  # [m]\n", view.distance);
   text += fmt::format("VIEW_ANGLE = {:g}  # [deg]\n", kViewAngleDeg);
   text += fmt::format("VIEW_SIZE = [{}, {}]  # [pixels]\n", view.width, view.height);
+  text += fmt::format("BEAMS = {}  # some body has beam elements (drawn as tubes)\n", view.beams ? "True" : "False");
+  text += fmt::format("BACKGROUND = [{:g}, {:g}, {:g}]\n", kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
+  text += "TEXT_COLOR = [0.1, 0.1, 0.15]\n";
   return text + kBody;
 }
 

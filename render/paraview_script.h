@@ -3,7 +3,7 @@
 // the deformed shape at the render's scale (points warped by displacement + (s - 1)
 // relative_deflection, so joints stay connected at any scale s), coloured by the relative
 // deflection |u_rel| [m] (or by the element stress [Pa] when the run recorded it) with a colour
-// bar over the run's range, the render's camera (direction, up, 30 degree view angle, fitted to
+// bar over the run's range, beams as tubes of their section radius, the render's camera (direction, up, 30 degree view angle, fitted to
 // the whole motion), and the time steps of the samples.
 //   paraview --script=open_in_paraview.py                   the GUI, ready
 //   pvpython open_in_paraview.py [--interact]                a window (interactive on request)
@@ -26,6 +26,7 @@ struct ParaViewView {
   std::array<double, 3> focal_point{0.0, 0.0, 0.0};     // [m]
   double distance = 1.0;                    // eye to focal point [m]
   int width = 1280, height = 720;           // view size [pixels]
+  bool beams = false;                       // some body has line cells (tubes of beam_radius)
 };
 
 // The camera of the render for points inside the box [lo, hi] [m]: looking along `direction`

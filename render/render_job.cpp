@@ -125,6 +125,7 @@ RenderSummary render_results(const RenderOptions& options) {
       view.title = results.title;
       view.scale = options.scale;
       view.color_by_stress = scene.stress;
+      view.beams = scene.beams;
       view.color_max = scene.stress ? scene.stress_max : scene.relative_deflection_max;
       view.width = options.width;
       view.height = options.height;

@@ -179,6 +179,7 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
     if (track.flexible) out.fit = rigid_fit_basis(track.mesh.nodes, joint_nodes(results, track));
     if (track.flexible && stresses[b]) out.stress = &*stresses[b];
     summary.stress = summary.stress || out.stress != nullptr;
+    summary.beams = summary.beams || (track.flexible && track.mesh.lines.rows() > 0);
     const std::string link = results::link_name(track.name);
     const H5Handle group = file.group(bodies.get(), link);
     file.string_attribute(group.get(), results::kNameAttribute, track.name);

@@ -32,6 +32,7 @@ struct XdmfSceneSummary {
   double relative_deflection_max = 0.0;  // largest |u_rel| [m]
   double stress_max = 0.0;               // largest recorded stress [Pa] (0: none)
   bool stress = false;                   // some body carries stress
+  bool beams = false;                    // some body has line cells
 };
 
 // Writes DIR/vtk/scene.h5 and scene.xmf for the samples with t0 <= t <= t1; a progress bar

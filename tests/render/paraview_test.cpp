@@ -148,9 +148,9 @@ TEST(ParaView, StateScriptSavesTheViewUnderPvbatch) {
   EXPECT_EQ(dims[0], options.width);
   EXPECT_EQ(dims[1], options.height);
 
-  // The bodies in the colour map's low end: at the last sample (t = 1 s, sin(2 pi) = 0) no
-  // body is deflected, so every body is drawn in "Cool to Warm"'s lowest colour, RGB
-  // (59, 76, 192), shaded by the lights (a blue that dominates red and green); the rest is
+  // The bodies in the colour map's low end: at the last sample (t = 1 s) the plate is flat
+  // (sin 2 pi = 0) and the box rigid, both drawn in "Cool to Warm"'s lowest colour, RGB
+  // (59, 76, 192), shaded by the lights (a blue well above red and green); the rest is mostly
   // the render's background (219, 227, 237).
   vtkUnsignedCharArray* pixels =
       vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
