@@ -129,7 +129,7 @@ RenderSummary render_results(const RenderOptions& options) {
       view.color_max = scene.stress ? scene.stress_max : scene.relative_deflection_max;
       view.width = options.width;
       view.height = options.height;
-      write_paraview_script(view, vtk);
+      write_paraview_script(view, std::filesystem::absolute(vtk));
     }
     if (pvd) summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
     summary.paraview_seconds =
