@@ -126,6 +126,37 @@ TEST(XdmfExport, SceneMatchesTheClosedForms) {
   EXPECT_NE(xml.find("scene.h5:/bodies/plate0/samples/00010/points"), std::string::npos);
 }
 
+// A joint at the beam's mid node: the relative deflection is u(x) - u(L/2) (a one-node rigid fit
+// is the translation u(L/2)), in ground axes (the beam frame is not rotated); the displacement
+// stays u. Tolerance 1e-14 m: differences of values <= 0.05 m.
+TEST(XdmfExport, RelativeDeflectionIsMeasuredFromTheJointNode) {
+  const auto dir = testing::fresh_directory("xdmf_relative");
+  TestScene scene;
+  scene.beam_mid_joint = true;
+  testing::write_test_results(dir, scene);
+  write_xdmf_scene(read_results(dir), dir / "vtk", 0.0, 1.0, false);
+  const results::H5Reader file(dir / "vtk" / xdmf::kFileName, "ParaView scene", "");
+  for (int k : {2, 3, 9}) {
+    const double t = scene.duration * k / (scene.samples - 1);
+    const std::vector<double> u = reals(file, sample_path("beam", k, xdmf::sample::kDisplacement));
+    const std::vector<double> u_rel = reals(file, sample_path("beam", k, xdmf::sample::kRelativeDeflection));
+    const std::vector<double> u_rel_norm =
+        reals(file, sample_path("beam", k, xdmf::sample::kRelativeDeflectionMagnitude));
+    ASSERT_EQ(u_rel.size(), 3u * testing::kBeamNodes);
+    const Eigen::Vector3d u_mid = testing::beam_displacement(scene, 0.5 * testing::kBeamLength, t);
+    for (int n = 0; n < testing::kBeamNodes; ++n) {
+      const double x = testing::kBeamLength * n / (testing::kBeamNodes - 1);
+      const Eigen::Vector3d expected_u = testing::beam_displacement(scene, x, t);
+      const Eigen::Vector3d expected = expected_u - u_mid;
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(u[3 * n + c], expected_u(c), 1e-14);
+        EXPECT_NEAR(u_rel[3 * n + c], expected(c), 1e-14) << "node " << n << " t " << t;
+      }
+      EXPECT_NEAR(u_rel_norm[n], expected.norm(), 1e-14);
+    }
+  }
+}
+
 TEST(XdmfExport, TimeRangeSelectsSamples) {
   const auto dir = testing::fresh_directory("xdmf_range");
   testing::write_test_results(dir, TestScene{});
