@@ -152,8 +152,8 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
                                   double t0, double t1, bool progress) {
   std::filesystem::create_directories(vtk_directory);
   SceneFile file(vtk_directory / xdmf::kFileName);
-  file.string_attribute(file.root(), "format", xdmf::kFormat);
-  file.int_attribute(file.root(), "version", xdmf::kVersion);
+  file.string_attribute(file.root(), xdmf::kFormatAttribute, xdmf::kFormat);
+  file.int_attribute(file.root(), xdmf::kVersionAttribute, xdmf::kVersion);
 
   // The samples in [t0, t1].
   std::vector<double> times;
@@ -184,7 +184,7 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
     const std::string link = results::link_name(track.name);
     const H5Handle group = file.group(bodies.get(), link);
     file.string_attribute(group.get(), results::kNameAttribute, track.name);
-    file.string_attribute(group.get(), "kind", track.flexible ? "flexible" : "rigid");
+    file.string_attribute(group.get(), xdmf::body::kKindAttribute, track.flexible ? "flexible" : "rigid");
     file.int_attribute(group.get(), xdmf::body::kCellCountAttribute, out.grid.cells);
     file.ints(group.get(), xdmf::body::kTopology, out.grid.topology);
     const auto np = static_cast<hsize_t>(out.grid.points_B.rows());

@@ -19,8 +19,10 @@ inline constexpr const char* kFileName = "scene.h5";
 inline constexpr const char* kDescriptionName = "scene.xmf";
 inline constexpr const char* kScriptName = "open_in_paraview.py";
 
-// Root attribute format = "limber-paraview-scene", version = 1.
+// Root attributes.
+inline constexpr const char* kFormatAttribute = "format";  // string kFormat
 inline constexpr const char* kFormat = "limber-paraview-scene";
+inline constexpr const char* kVersionAttribute = "version";  // int kVersion
 inline constexpr int kVersion = 1;
 
 // float64 [ns]: sample times [s] (results.h5 /time inside [t0, t1]).
@@ -28,9 +30,11 @@ inline constexpr const char* kTime = "/time";
 // int32 [ns]: each sample's row in results.h5.
 inline constexpr const char* kSampleRows = "/sample_rows";
 
-// /bodies/<body>/ (link name as results.h5's, results/link_name.h): attributes name, kind.
+// /bodies/<body>/ (link name as results.h5's, results/link_name.h): attributes name (the
+// case's, results::kNameAttribute), kind and cells.
 inline constexpr const char* kBodies = "/bodies";
 namespace body {
+inline constexpr const char* kKindAttribute = "kind";  // "rigid" | "flexible"
 inline constexpr const char* kTopology = "topology";  // int32 [nt], XDMF Mixed (below)
 inline constexpr const char* kCellCountAttribute = "cells";  // int, nc
 // float64 [nc] [m]: the beam's section radius on line cells (results.h5 mesh/beam_radius),

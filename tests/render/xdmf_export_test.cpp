@@ -38,6 +38,9 @@ TEST(XdmfExport, SceneMatchesTheClosedForms) {
   EXPECT_EQ(summary.grids, 3 * scene.samples);
   const results::H5Reader file(dir / "vtk" / xdmf::kFileName, "ParaView scene", "");
 
+  EXPECT_EQ(file.string_attribute("/", xdmf::kFormatAttribute), xdmf::kFormat);
+  EXPECT_EQ(file.string_attribute(xdmf::at(xdmf::kBodies, "plate0"), results::kNameAttribute), "plate0");
+
   // Times t_k = k T / (ns - 1), exactly as results.h5 holds them.
   const std::vector<double> times = reals(file, xdmf::kTime);
   ASSERT_EQ(times.size(), static_cast<std::size_t>(scene.samples));
