@@ -35,10 +35,13 @@ std::string triple(const std::array<double, 3>& v) {
 // The script after its settings: reader, warp, colours, camera, time, screenshot.
 constexpr const char* kBody = R"PY(
 
+ARGUMENTS = list(getattr(sys, "argv", []))  # the GUI's interpreter may have none
+
+
 def option(name, default=None):
     """The value after `name` on the command line, or `default`."""
-    if name in sys.argv[:-1]:
-        return sys.argv[sys.argv.index(name) + 1]
+    if name in ARGUMENTS[:-1]:
+        return ARGUMENTS[ARGUMENTS.index(name) + 1]
     return default
 
 
@@ -129,7 +132,7 @@ if screenshot:
 else:
     animation.AnimationTime = times[0]
     Render(view)
-    if "--interact" in sys.argv:
+    if "--interact" in ARGUMENTS:
         Interact(view)
 )PY";
 

@@ -9,6 +9,8 @@
 
 namespace limber::render {
 
+// One grid of each sample. A further grid per body (e.g. beam solids as surface cells) is one
+// more entry, with its own group holding its topology and per-sample points.
 struct XdmfBody {
   std::string name;        // the case's name (the grid's name)
   std::string group;       // its group in scene.h5, e.g. "/bodies/crank"
