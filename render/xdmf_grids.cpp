@@ -1,17 +1,13 @@
 #include "xdmf_grids.h"
 
 #include "core/error.h"
+#include "primitive_source.h"
 #include "xdmf_layout.h"
 
 #include <vtkAppendPolyData.h>
-#include <vtkCellArray.h>
-#include <vtkCubeSource.h>
-#include <vtkCylinderSource.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-#include <vtkSphereSource.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 
@@ -37,28 +33,6 @@ BodyGrid flexible_body_grid(const BodyTrack& body) {
     grid.beam_radius(mesh.quads.rows() + e) = mesh.beam_radius;
   }
   return grid;
-}
-
-// The primitive's surface in its own frame (cylinders along z), as vtk_export.cpp draws it.
-vtkSmartPointer<vtkPolyDataAlgorithm> primitive_source(const Shape& shape, vtkTransform* transform) {
-  if (shape.type == Shape::Type::kBox) {
-    auto box = vtkSmartPointer<vtkCubeSource>::New();
-    box->SetXLength(shape.size.x());
-    box->SetYLength(shape.size.y());
-    box->SetZLength(shape.size.z());
-    return box;
-  }
-  if (shape.type == Shape::Type::kCylinder) {
-    auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
-    cylinder->SetRadius(shape.size.x());
-    cylinder->SetHeight(shape.size.z());
-    cylinder->SetResolution(32);
-    transform->RotateX(90.0);
-    return cylinder;
-  }
-  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-  sphere->SetRadius(shape.size.x());
-  return sphere;
 }
 
 // A rigid body's primitives in the body frame, merged in shape order (points not merged).

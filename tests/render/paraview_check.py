@@ -1,15 +1,16 @@
 # ParaView itself opens limber's output, as a user would. Run by paraview_test.cpp:
 #   pvpython paraview_check.py pvd SCENE.pvd POINTS TIME...
 #       the PVD reader: the time steps, and the points of every part at the first one;
-#   pvpython paraview_check.py xdmf|xdmf3 SCENE.xmf STEMS TIME...
+#   pvpython paraview_check.py xdmf|xdmf3 SCENE.xmf BODIES TIME...
 #       the XDMF Reader (xdmf) or Xdmf3ReaderS (xdmf3) on scene.xmf: the time steps, then at
-#       EVERY step, block b (body b of the comma-separated STEMS) against the VTU of the same
-#       sample beside it, STEM_<k>.vtu, read with ParaView's VTU reader (a second writer): the
+#       EVERY step, block b (BODIES: their count) against the VTU of the same sample and part
+#       b listed in scene.pvd beside it, read with ParaView's VTU reader (a second writer): the
 #       number of points and cells, the cell types, the point positions and the point arrays
 #       displacement and displacement_magnitude to 1e-12 relative.
 # Exit status 0 when all match; otherwise a message (expected/got) and status 1.
 import os
 import sys
+from xml.etree import ElementTree
 
 from paraview import servermanager
 from paraview.simple import Delete, PVDReader, XDMFReader, Xdmf3ReaderS, XMLUnstructuredGridReader
@@ -56,11 +57,15 @@ if kind == "pvd":
     print(f"{path}: {len(steps)} time steps, {got} points")
     sys.exit(0)
 
-stems = sys.argv[3].split(",")
+bodies = int(sys.argv[3])
 times = [float(t) for t in sys.argv[4:]]
 reader = XDMFReader(FileNames=[path]) if kind == "xdmf" else Xdmf3ReaderS(FileName=[path])
 steps = check_times(reader, times)
 directory = os.path.dirname(path)
+# The VTU of each (time, part), from the PVD written beside the scene.
+vtu_files = {}
+for dataset in ElementTree.parse(os.path.join(directory, "scene.pvd")).getroot().iter("DataSet"):
+    vtu_files[(float(dataset.get("timestep")), int(dataset.get("part")))] = dataset.get("file")
 # Tolerance 1e-12 relative: both writers store the same float64 products of the same
 # results.h5 values (the VTU's pose applied by vtkTransform, the scene's by Eigen), which differ
 # by a few ulps.
@@ -68,13 +73,14 @@ tolerance = 1e-12
 for k, t in enumerate(steps):
     reader.UpdatePipeline(t)
     got = blocks(servermanager.Fetch(reader))
-    if len(got) != len(stems):
-        sys.exit(f"{path} ({kind}): expected {len(stems)} blocks at t = {t}, got {len(got)}")
-    for stem, block in zip(stems, got):
-        vtu = XMLUnstructuredGridReader(FileName=[os.path.join(directory, f"{stem}_{k:05d}.vtu")])
+    if len(got) != bodies:
+        sys.exit(f"{path} ({kind}): expected {bodies} blocks at t = {t}, got {len(got)}")
+    for part, block in enumerate(got):
+        vtu_file = vtu_files[(t, part)]
+        vtu = XMLUnstructuredGridReader(FileName=[os.path.join(directory, vtu_file)])
         vtu.UpdatePipeline()
         expected = servermanager.Fetch(vtu)
-        where = f"{path} ({kind}), {stem} at t = {t}"
+        where = f"{path} ({kind}), {vtu_file} at t = {t}"
         for what, a, b in (("points", block.GetNumberOfPoints(), expected.GetNumberOfPoints()),
                            ("cells", block.GetNumberOfCells(), expected.GetNumberOfCells())):
             if a != b:
@@ -97,4 +103,4 @@ for k, t in enumerate(steps):
             if difference > tolerance:
                 sys.exit(f"{where}: expected {name} as in the VTU to {tolerance} relative, got {difference:.3g}")
         Delete(vtu)
-print(f"{path} ({kind}): {len(steps)} time steps, {len(stems)} blocks each, as the VTU series")
+print(f"{path} ({kind}): {len(steps)} time steps, {bodies} blocks each, as the VTU series")

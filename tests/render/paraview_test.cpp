@@ -4,7 +4,6 @@
 // open_in_paraview.py under pvbatch saves a screenshot of the ready view. Skipped when pvpython
 // (pvbatch, and xvfb-run for its display) is not installed (Debian packages python3-paraview,
 // paraview and xvfb).
-#include "file_stem.h"
 #include "render_job.h"
 #include "vtk_export.h"
 #include "xdmf_export.h"
@@ -108,11 +107,10 @@ TEST(ParaView, BothXdmfReadersReadEveryStepAsTheVtuSeries) {
   write_xdmf_scene(results, dir / "vtk", t0, t1, false);
   write_vtk_series(results, dir / "vtk", t0, t1);
 
-  std::string stems;
-  for (const BodyTrack& body : results.bodies) stems += (stems.empty() ? "" : ",") + file_stem(body.name);
+  const std::string bodies = std::to_string(results.bodies.size());
   for (const char* reader : {"xdmf", "xdmf3"}) {
     EXPECT_EQ(run(pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " " + reader + " " +
-                      (dir / "vtk" / "scene.xmf").string() + " " + stems + time_arguments(results),
+                      (dir / "vtk" / "scene.xmf").string() + " " + bodies + time_arguments(results),
                   dir / (std::string(reader) + ".log")),
               "");
   }
