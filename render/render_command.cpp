@@ -20,9 +20,12 @@ cli::Command add_render_command(CLI::App& app) {
   auto anti_aliasing = std::make_shared<std::string>("fxaa");
   auto no_fxaa = std::make_shared<bool>(false);
   auto color = std::make_shared<std::string>("deflection");
+  auto paraview = std::make_shared<std::string>("xdmf");
+  auto no_vtk = std::make_shared<bool>(false);
 
   CLI::App* command = app.add_subcommand(
-      "render", "Render DIR/results.h5 offscreen: PNG frames, MP4 (and GIF), VTU/PVD for ParaView");
+      "render", "Render DIR/results.h5 offscreen: PNG frames, MP4 (and GIF), and a ParaView scene "
+      "(DIR/vtk/scene.xmf over scene.h5, opened by DIR/vtk/open_in_paraview.py)");
   command->add_option("DIR", options->directory, "run directory holding results.h5")
       ->required();
   auto slow_motion = std::make_shared<double>(1.0);
@@ -51,7 +54,13 @@ cli::Command add_render_command(CLI::App& app) {
   CLI::Option* t1_option = command->add_option("--t1", *t1, "last time rendered [s]");
   command->add_flag("--gif", options->write_gif, "also write DIR/animation.gif");
   command->add_flag("--no-video", *no_video, "skip DIR/animation.mp4");
-  command->add_flag("!--no-vtk", options->write_vtk, "skip the VTU/PVD series");
+  CLI::Option* paraview_option = command->add_option(
+      "--paraview", *paraview,
+      "ParaView output in DIR/vtk: xdmf (one scene.xmf over one scene.h5, every sample, and "
+      "open_in_paraview.py: paraview --script=DIR/vtk/open_in_paraview.py), pvd (scene.pvd and "
+      "one .vtu per body and sample), both, or none");
+  paraview_option->capture_default_str();
+  command->add_flag("--no-vtk", *no_vtk, "same as --paraview none")->excludes(paraview_option);
   command->add_flag("!--no-ground", options->ground, "no ground plane");
   command->add_flag("!--no-joint-axes", options->joint_axes,
                     "no joint axis glyphs (revolute: a cylinder along the pin axis; "
@@ -75,15 +84,28 @@ cli::Command add_render_command(CLI::App& app) {
     parse_frame_size(*size, options->width, options->height);
     options->camera = parse_camera_preset(*camera);
     options->color = parse_color_by(*color);
+    options->paraview = *no_vtk ? ParaViewOutput::kNone : parse_paraview_output(*paraview);
     options->anti_aliasing = *no_fxaa ? AntiAliasing::kNone : parse_anti_aliasing(*anti_aliasing);
     if (fps_option->count() == 0) options->fps = *slow_motion * options->playback_fps;
     if (t0_option->count() > 0) options->t0 = *t0;
     if (t1_option->count() > 0) options->t1 = *t1;
     options->write_video = !*no_video;
     const RenderSummary summary = render_results(*options);
-    fmt::print("rendered {} frames of t = [{}, {}] s at {}x{} ({}); {} VTU files\n",
-               summary.frames, summary.t0, summary.t1, options->width, options->height,
-               summary.backend, summary.vtu_files);
+    fmt::print("rendered {} frames of t = [{}, {}] s at {}x{} ({})\n", summary.frames,
+               summary.t0, summary.t1, options->width, options->height, summary.backend);
+    const std::filesystem::path vtk = options->directory / "vtk";
+    if (summary.xdmf_samples > 0) {
+      fmt::print("  ParaView: {} ({} time steps over scene.h5); open with\n"
+                 "    paraview --script={}\n",
+                 (vtk / "scene.xmf").string(), summary.xdmf_samples,
+                 (vtk / "open_in_paraview.py").string());
+    }
+    if (summary.vtu_files > 0) {
+      fmt::print("  ParaView: {} ({} VTU files)\n", (vtk / "scene.pvd").string(), summary.vtu_files);
+    }
+    if (options->paraview != ParaViewOutput::kNone) {
+      fmt::print("  ParaView output written in {:.2f} s\n", summary.paraview_seconds);
+    }
     fmt::print("  {:g} frames per simulated second played at {:g} frames/s: {:g}x slow motion, "
                "{:.2f} s of video\n",
                options->fps, options->playback_fps, render::slow_motion(*options),

@@ -4,7 +4,10 @@
 #include "png_frame_writer.h"
 #include "progress_bar.h"
 #include "video_encoder.h"
+#include "paraview_script.h"
 #include "vtk_export.h"
+#include "xdmf_export.h"
+#include "xdmf_layout.h"
 
 #include <chrono>
 #include <cmath>
@@ -100,11 +103,37 @@ RenderSummary render_results(const RenderOptions& options) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  // ParaView series.
-  if (options.write_vtk) {
+  // ParaView output: the one-file XDMF scene and its script, and/or the VTU/PVD series. The
+  // other kind's files of an earlier render are removed, so DIR/vtk holds what was asked for.
+  if (options.paraview != ParaViewOutput::kNone) {
+    const auto start = std::chrono::steady_clock::now();
     const std::filesystem::path vtk = options.directory / "vtk";
+    const bool xdmf = options.paraview != ParaViewOutput::kPvd;
+    const bool pvd = options.paraview != ParaViewOutput::kXdmf;
     remove_stale(vtk, "", ".vtu");
-    summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
+    if (!pvd) remove_stale(vtk, "scene", ".pvd");
+    if (!xdmf) {
+      for (const char* name : {xdmf::kFileName, xdmf::kDescriptionName, xdmf::kScriptName}) {
+        remove_stale(vtk, name, "");
+      }
+    }
+    if (xdmf) {
+      const XdmfSceneSummary scene =
+          write_xdmf_scene(results, vtk, summary.t0, summary.t1, options.progress);
+      summary.xdmf_samples = scene.samples;
+      ParaViewView view = fit_view(view_direction(options), scene.lo, scene.hi);
+      view.title = results.title;
+      view.scale = options.scale;
+      view.color_by_stress = scene.stress;
+      view.beams = scene.beams;
+      view.color_max = scene.stress ? scene.stress_max : scene.relative_deflection_max;
+      view.width = options.width;
+      view.height = options.height;
+      write_paraview_script(view, std::filesystem::absolute(vtk));
+    }
+    if (pvd) summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
+    summary.paraview_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   // Videos from the frames, when ffmpeg is installed.

@@ -1,4 +1,5 @@
-// `limber render` as a library call: results.h5 -> PNG frames, MP4 (+ GIF), VTU/PVD series.
+// `limber render` as a library call: results.h5 -> PNG frames, MP4 (+ GIF), ParaView output
+// (XDMF scene and script, VTU/PVD series).
 #pragma once
 
 #include "frame_renderer.h"
@@ -16,6 +17,8 @@ struct RenderSummary {
   double t0 = 0.0, t1 = 0.0;  // time range rendered [s]
   int frames = 0;             // PNG frames written
   int vtu_files = 0;          // .vtu files written
+  int xdmf_samples = 0;       // time steps of DIR/vtk/scene.xmf (0: not written)
+  double paraview_seconds = 0.0;  // writing the ParaView output (XDMF and/or PVD) [s]
   std::filesystem::path video, gif;  // written videos (empty when not written)
   std::vector<std::string> warnings;  // e.g. ffmpeg missing: the frames are still there
   std::string backend;        // EGL route and OpenGL renderer

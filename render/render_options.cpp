@@ -38,6 +38,30 @@ ColorBy parse_color_by(const std::string& text) {
   throw InputError("--color: expected deflection or von_mises, got '" + text + "'");
 }
 
+ParaViewOutput parse_paraview_output(const std::string& text) {
+  if (text == "xdmf") return ParaViewOutput::kXdmf;
+  if (text == "pvd") return ParaViewOutput::kPvd;
+  if (text == "both") return ParaViewOutput::kBoth;
+  if (text == "none") return ParaViewOutput::kNone;
+  throw InputError("--paraview: expected xdmf, pvd, both or none, got '" + text + "'");
+}
+
+std::array<double, 3> view_direction(const RenderOptions& options) {
+  std::array<double, 3> d{0.0, 0.0, 1.0};
+  if (options.camera_direction) {
+    d = *options.camera_direction;
+  } else {
+    switch (options.camera) {
+      case CameraPreset::kIso: d = {1.0, -1.0, 0.8}; break;
+      case CameraPreset::kFront: d = {0.0, -1.0, 0.0}; break;
+      case CameraPreset::kTop: d = {0.0, 0.0, 1.0}; break;
+      case CameraPreset::kSide: d = {1.0, 0.0, 0.0}; break;
+    }
+  }
+  const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {d[0] / norm, d[1] / norm, d[2] / norm};
+}
+
 AntiAliasing parse_anti_aliasing(const std::string& text) {
   if (text == "fxaa") return AntiAliasing::kFxaa;
   if (text == "gl-fxaa") return AntiAliasing::kGlFxaa;

@@ -24,6 +24,11 @@ enum class AntiAliasing {
 // Mises stress, a beam's extreme-fibre stress; docs/stress-recovery.md).
 enum class ColorBy { kDeflection, kVonMises };
 
+// ParaView output in DIR/vtk (docs/rendering.md): the one-file XDMF scene (scene.xmf over
+// scene.h5, render/xdmf_export.h, with open_in_paraview.py), the VTU/PVD series (scene.pvd and
+// one .vtu per body and sample, render/vtk_export.h), both, or none.
+enum class ParaViewOutput { kXdmf, kPvd, kBoth, kNone };
+
 struct RenderOptions {
   std::filesystem::path directory;  // run directory holding results.h5; outputs go there
   // Sampling and playback are separate: `fps` frames are rendered per second of simulated time,
@@ -52,7 +57,7 @@ struct RenderOptions {
   std::optional<std::array<double, 3>> camera_direction;
   AntiAliasing anti_aliasing = AntiAliasing::kFxaa;  // ~2 ms per 1280 x 720 frame
   bool write_png = true;      // DIR/frames/frame_00000.png ...
-  bool write_vtk = true;      // DIR/vtk/scene.pvd + one .vtu per body and sample
+  ParaViewOutput paraview = ParaViewOutput::kXdmf;
   bool write_video = true;    // DIR/animation.mp4 through the ffmpeg program
   bool write_gif = false;     // DIR/animation.gif
   bool progress = true;       // progress bar, shown only when stderr is a terminal
@@ -71,6 +76,13 @@ CameraPreset parse_camera_preset(const std::string& text);
 
 // Parses "deflection" or "von_mises"; throws InputError otherwise.
 ColorBy parse_color_by(const std::string& text);
+
+// Parses "xdmf", "pvd", "both" or "none"; throws InputError otherwise.
+ParaViewOutput parse_paraview_output(const std::string& text);
+
+// The camera's direction, from the focal point towards the eye, ground axes, unit length:
+// options.camera_direction when set, else the preset's.
+std::array<double, 3> view_direction(const RenderOptions& options);
 
 // Parses "fxaa", "gl-fxaa" or "none"; throws InputError otherwise.
 AntiAliasing parse_anti_aliasing(const std::string& text);

@@ -103,16 +103,6 @@ double shape_radius(const Shape& shape) {
   return 0.0;
 }
 
-Eigen::Vector3d view_direction(CameraPreset preset) {
-  switch (preset) {
-    case CameraPreset::kIso: return Eigen::Vector3d(1.0, -1.0, 0.8).normalized();
-    case CameraPreset::kFront: return -Eigen::Vector3d::UnitY();
-    case CameraPreset::kTop: return Eigen::Vector3d::UnitZ();
-    case CameraPreset::kSide: return Eigen::Vector3d::UnitX();
-  }
-  return Eigen::Vector3d::UnitZ();
-}
-
 // Draws the 3D labels (billboard texts) as opaque geometry after every other prop: a
 // translucent prop makes VTK 9.1 run its order-independent translucency pass, several
 // full-frame passes that cost llvmpipe about 11 ms of CPU per 1280 x 720 frame
@@ -373,9 +363,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     : impl_(std::make_unique<Impl>(results, options)) {
   Impl& s = *impl_;
   LIMBER_DEMAND(results.sample_count() >= 1);
-  s.direction = options.camera_direction
-                    ? Eigen::Vector3d(options.camera_direction->data()).normalized()
-                    : view_direction(options.camera);
+  s.direction = Eigen::Vector3d(view_direction(options).data());
 
   // Colour range and camera extent from the samples in [t0, t1] (at least one sample).
   Bounds all;

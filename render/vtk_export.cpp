@@ -2,19 +2,17 @@
 
 #include "body_pose.h"
 #include "file_stem.h"
+#include "primitive_source.h"
 #include "stress_reader.h"
 
 #include <vtkAppendFilter.h>
 #include <vtkCellType.h>
-#include <vtkCubeSource.h>
-#include <vtkCylinderSource.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
-#include <vtkSphereSource.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkUnstructuredGrid.h>
@@ -91,27 +89,9 @@ vtkSmartPointer<vtkUnstructuredGrid> rigid_grid(const BodyTrack& body, const Bod
   append->MergePointsOff();
   for (const Shape& shape : body.shapes) {
     // The primitive's surface in its own frame (cylinders along z).
-    vtkSmartPointer<vtkPolyDataAlgorithm> source;
     vtkNew<vtkTransform> transform;
     transform->PostMultiply();
-    if (shape.type == Shape::Type::kBox) {
-      auto box = vtkSmartPointer<vtkCubeSource>::New();
-      box->SetXLength(shape.size.x());
-      box->SetYLength(shape.size.y());
-      box->SetZLength(shape.size.z());
-      source = box;
-    } else if (shape.type == Shape::Type::kCylinder) {
-      auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
-      cylinder->SetRadius(shape.size.x());
-      cylinder->SetHeight(shape.size.z());
-      cylinder->SetResolution(32);
-      source = cylinder;
-      transform->RotateX(90.0);
-    } else {
-      auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-      sphere->SetRadius(shape.size.x());
-      source = sphere;
-    }
+    const vtkSmartPointer<vtkPolyDataAlgorithm> source = primitive_source(shape, transform);
     // Shape offset, then body pose.
     const Eigen::Vector3d p = state.position + state.orientation * shape.offset_position;
     const Eigen::AngleAxisd rotation(state.orientation * shape.offset_orientation);
@@ -120,6 +100,7 @@ vtkSmartPointer<vtkUnstructuredGrid> rigid_grid(const BodyTrack& body, const Bod
     vtkNew<vtkTransformPolyDataFilter> placed;
     placed->SetInputConnection(source->GetOutputPort());
     placed->SetTransform(transform);
+    placed->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);  // as the XDMF scene
     append->AddInputConnection(placed->GetOutputPort());
   }
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();

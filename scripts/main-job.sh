@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: the seed paper's two examples, end to end. Builds limber, then for each scene
 # runs limber modes (frequency table, modes.h5, mode-shape animations), limber run
-# (results.h5), limber render (PNG frames, animation.mp4, vtk/scene.pvd for ParaView) and
+# (results.h5), limber render (PNG frames, animation.mp4, vtk/scene.xmf for ParaView) and
 # limber report (report/index.html):
 #   1. cases/slider_crank.yaml           the flexible slider-crank, 1 s at 20 rev/s; two crank
 #                                        turns (0.5-0.6 s) rendered in 50x slow motion

@@ -92,7 +92,22 @@ TEST(LimberRender, RendersTheTestSceneAndRejectsAMissingFile) {
   // [0, 1] s at 4 frames/s: 5 frames.
   EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "frame_00004.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "frame_00005.png"));
+  // The default ParaView output: the one-file scene and its script, no VTU series.
+  EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "scene.xmf"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "scene.h5"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "open_in_paraview.py"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "vtk" / "scene.pvd"));
+
+  // --paraview pvd: the VTU series replaces the scene of the earlier render.
+  const CommandRun pvd = run_limber("render " + dir.string() +
+                                        " --size 160x120 --fps 4 --no-video --no-progress --paraview pvd",
+                                    dir);
+  EXPECT_EQ(pvd.exit_code, 0) << pvd.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "scene.pvd"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "vtk" / "scene.xmf"));
+  const CommandRun bad = run_limber("render " + dir.string() + " --paraview vtk", dir);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--paraview: expected xdmf, pvd, both or none, got 'vtk'"), std::string::npos) << bad.err;
 
   // Bad input: "limber: error: expected ..., got ..." and exit code 1.
   const auto empty = testing::fresh_directory("cli_render_missing");

@@ -1,8 +1,12 @@
-// ParaView itself opens the VTU/PVD series: its PVD reader (pvpython, tests/render/
-// paraview_check.py) finds every time step and the points of every body. Skipped when pvpython
-// is not installed (Debian: package python3-paraview, which conflicts with libvtk9-dev on
-// Debian 12, so a limber build machine usually lacks it).
+// ParaView itself opens limber's output (pvpython on tests/render/paraview_check.py): the
+// VTU/PVD series with its PVD reader; the one-file scene (scene.xmf over scene.h5) with both of
+// its XDMF readers, every time step against the VTU of the same sample; and
+// open_in_paraview.py under pvbatch saves a screenshot of the ready view. Skipped when pvpython
+// (pvbatch, and xvfb-run for its display) is not installed (Debian packages python3-paraview,
+// paraview and xvfb).
+#include "render_job.h"
 #include "vtk_export.h"
+#include "xdmf_export.h"
 
 #include "test_dir.h"
 #include "test_results.h"
@@ -11,10 +15,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -24,25 +33,50 @@
 namespace limber::render {
 namespace {
 
-// Path of pvpython on PATH, if any.
-std::optional<std::filesystem::path> find_pvpython() {
+// Path of `program` on PATH, if any.
+std::optional<std::filesystem::path> find_program(const char* program) {
   const char* path = std::getenv("PATH");
   if (path == nullptr) return std::nullopt;
   std::stringstream directories(path);
   std::string directory;
   while (std::getline(directories, directory, ':')) {
-    const auto candidate = std::filesystem::path(directory) / "pvpython";
+    const auto candidate = std::filesystem::path(directory) / program;
     if (!directory.empty() && access(candidate.c_str(), X_OK) == 0) return candidate;
   }
   return std::nullopt;
 }
 
-TEST(ParaView, OpensTheSeriesWithEveryTimeAndPoint) {
-  const auto pvpython = find_pvpython();
-  if (!pvpython) {
-    GTEST_SKIP() << "pvpython not on PATH: ParaView's reader not tried (Debian package "
-                    "python3-paraview; it conflicts with libvtk9-dev on Debian 12)";
+// Runs `command` without a display, its output into `log`; "" when it exits with 0, else the
+// command and its output.
+std::string run(const std::string& command, const std::filesystem::path& log) {
+  const int status = std::system(("env -u DISPLAY " + command + " >" + log.string() + " 2>&1").c_str());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return command + "\n" + text.str();
+}
+
+// " t0 t1 ..." with 17 significant digits.
+std::string time_arguments(const Results& results) {
+  std::string text;
+  for (Eigen::Index i = 0; i < results.time.size(); ++i) {
+    char time[32];
+    std::snprintf(time, sizeof time, " %.17g", results.time(i));
+    text += time;
   }
+  return text;
+}
+
+#define REQUIRE_PROGRAM(variable, name)                                                         \
+  const auto variable = find_program(name);                                                   \
+  if (!variable) {                                                                            \
+    GTEST_SKIP() << name " not on PATH: ParaView not tried (Debian packages python3-paraview " \
+                    "and paraview)";                                                          \
+  }
+
+TEST(ParaView, OpensTheSeriesWithEveryTimeAndPoint) {
+  REQUIRE_PROGRAM(pvpython, "pvpython");
   const auto dir = testing::fresh_directory("paraview");
   testing::write_test_results(dir, testing::TestScene{});
   const Results results = read_results(dir);
@@ -57,21 +91,79 @@ TEST(ParaView, OpensTheSeriesWithEveryTimeAndPoint) {
     points += reader->GetOutput()->GetNumberOfPoints();
   }
   ASSERT_GT(points, 0);
+  EXPECT_EQ(run(pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " pvd " +
+                    (dir / "vtk" / "scene.pvd").string() + " " + std::to_string(points) +
+                    time_arguments(results),
+                dir / "pvpython.log"),
+            "");
+}
 
-  // pvpython paraview_check.py scene.pvd POINTS TIME...; stdout and stderr into a log.
-  std::string command = pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " " +
-                        (dir / "vtk" / "scene.pvd").string() + " " + std::to_string(points);
-  for (Eigen::Index i = 0; i < results.time.size(); ++i) {
-    char time[32];
-    std::snprintf(time, sizeof time, " %.17g", results.time(i));
-    command += time;
+TEST(ParaView, BothXdmfReadersReadEveryStepAsTheVtuSeries) {
+  REQUIRE_PROGRAM(pvpython, "pvpython");
+  const auto dir = testing::fresh_directory("paraview_xdmf");
+  testing::write_test_results(dir, testing::TestScene{});
+  const Results results = read_results(dir);
+  const double t0 = results.time(0), t1 = results.time(results.time.size() - 1);
+  write_xdmf_scene(results, dir / "vtk", t0, t1, false);
+  write_vtk_series(results, dir / "vtk", t0, t1);
+
+  const std::string bodies = std::to_string(results.bodies.size());
+  for (const char* reader : {"xdmf", "xdmf3"}) {
+    EXPECT_EQ(run(pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " " + reader + " " +
+                      (dir / "vtk" / "scene.xmf").string() + " " + bodies + time_arguments(results),
+                  dir / (std::string(reader) + ".log")),
+              "");
   }
-  const auto log = dir / "pvpython.log";
-  const int status = std::system(("env -u DISPLAY " + command + " >" + log.string() + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command << "\n" << text.str();
+}
+
+TEST(ParaView, StateScriptSavesTheViewUnderPvbatch) {
+  REQUIRE_PROGRAM(pvbatch, "pvbatch");
+  // Debian's ParaView draws through X: without a display, in a virtual one (package xvfb).
+  const auto xvfb_run = find_program("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run not on PATH: pvbatch has no display to draw in (Debian package xvfb)";
+  const auto dir = testing::fresh_directory("paraview_script");
+  testing::write_test_results(dir, testing::TestScene{});
+  RenderOptions options;
+  options.directory = dir;
+  options.write_png = false;
+  options.write_video = false;
+  options.progress = false;
+  options.width = 400;
+  options.height = 300;
+  options.scale = 5.0;
+  render_results(options);
+
+  const auto png = dir / "view.png";
+  ASSERT_EQ(run(xvfb_run->string() + " -a " + pvbatch->string() + " " + (dir / "vtk" / "open_in_paraview.py").string() +
+                    " --screenshot " + png.string(),
+                dir / "pvbatch.log"),
+            "");
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(png.c_str());
+  reader->Update();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], options.width);
+  EXPECT_EQ(dims[1], options.height);
+
+  // The bodies in the colour map's low end: at the last sample (t = 1 s) the plate is flat
+  // (sin 2 pi = 0) and the box rigid, both drawn in "Cool to Warm"'s lowest colour, RGB
+  // (59, 76, 192), shaded by the lights (a blue well above red and green); the rest is mostly
+  // the render's background (219, 227, 237).
+  vtkUnsignedCharArray* pixels =
+      vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
+  ASSERT_NE(pixels, nullptr);
+  const int channels = pixels->GetNumberOfComponents();
+  long body = 0, background = 0;
+  for (vtkIdType p = 0; p < pixels->GetNumberOfTuples(); ++p) {
+    const int r = pixels->GetValue(p * channels), g = pixels->GetValue(p * channels + 1),
+              b = pixels->GetValue(p * channels + 2);
+    if (b > 100 && b > r + 60 && b > g + 40) ++body;
+    if (std::abs(r - 219) <= 2 && std::abs(g - 227) <= 2 && std::abs(b - 237) <= 2) ++background;
+  }
+  const long total = static_cast<long>(dims[0]) * dims[1];
+  EXPECT_GT(body, total / 100) << "body pixels";
+  EXPECT_GT(background, total / 4) << "background pixels";
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ TEST(RenderCommand, WritesFramesSeriesAndVideo) {
   const auto dir = testing::fresh_directory("command");
   testing::write_test_results(dir, testing::TestScene{});
   EXPECT_EQ(run_render_command({dir.string(), "--size", "160x120", "--fps", "10", "--t1", "0.5",
-                                "--gif", "--no-progress"}),
+                                "--gif", "--no-progress", "--paraview", "both"}),
             0);
 
   // [0, 0.5] s at 10 frames/s: 6 frames of 160 x 120.
@@ -62,6 +62,7 @@ TEST(RenderCommand, WritesFramesSeriesAndVideo) {
   EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "scene.pvd"));
   EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "plate0_00005.vtu"));
   EXPECT_FALSE(std::filesystem::exists(dir / "vtk" / "plate0_00006.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "scene.xmf"));
 
   // Videos: an ISO-BMFF 'ftyp' box and a GIF89a header.
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg not installed: video not checked";
@@ -91,7 +92,7 @@ TEST(RenderCommand, BadInputIsAnInputError) {
   options.directory = dir;
   options.color = ColorBy::kVonMises;
   options.write_video = false;
-  options.write_vtk = false;
+  options.paraview = ParaViewOutput::kNone;
   options.progress = false;
   try {
     render_results(options);

@@ -102,6 +102,7 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
   for (int k = 0; k < scene.plates; ++k) writer.add_flexible_body(plate_spec(scene, k));
   if (scene.with_beam) writer.add_flexible_body(beam_spec());
   if (scene.with_box) writer.add_joint({"pin", "spherical", "ground", "box"});
+  if (scene.with_beam && scene.beam_mid_joint) writer.add_joint({"mid", "revolute", "ground", "beam"});
 
   // Samples: closed-form poses and modal coordinates.
   for (int s = 0; s < scene.samples; ++s) {
@@ -131,6 +132,12 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
       results::JointSample pin;
       pin.position = box_position(t);
       sample.joints.push_back(pin);
+    }
+    if (scene.with_beam && scene.beam_mid_joint) {
+      results::JointSample mid;
+      mid.position = beam_origin() + Eigen::Vector3d(0.5 * kBeamLength, 0.0, 0.0) +
+                     beam_displacement(scene, 0.5 * kBeamLength, t);
+      sample.joints.push_back(mid);
     }
     writer.append_sample(sample);
   }

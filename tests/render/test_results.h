@@ -6,7 +6,7 @@
 //  - "beam": flexible 21-node line along body x, length 1 m, tube radius 0.02 m, frame at
 //    (0, 0.9, 0.3) m; mode 0: phi_y = (x/L)^2, mode 1: phi_z = (x/L)^2;
 //    eta(t) = (B sin(2 pi f t), B cos(2 pi f t));
-//  - joint "pin" at the box centre.
+//  - joint "pin" at the box centre; with beam_mid_joint, joint "mid" at the beam's mid node.
 // Samples at t_k = k T/(ns - 1), k = 0..ns-1.
 #pragma once
 
@@ -28,6 +28,10 @@ struct TestScene {
   double frequency = 1.0;      // f [Hz]
   bool with_beam = true;
   bool with_box = true;
+  // Joint "mid" (revolute, ground - beam) at the beam's mid node (x = L/2), following it: the
+  // beam's relative deflection is then u(x) - u(L/2) (one joint node: the rigid fit is a
+  // translation).
+  bool beam_mid_joint = false;
   std::string title = "render test scene";
 };
 

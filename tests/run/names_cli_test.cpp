@@ -75,9 +75,10 @@ TEST(NamesCli, FreeTextNamesRunRenderAndReport) {
   EXPECT_EQ(read_string_attribute(file, "/joints/%2E.", "body_j"), "arm/left");
   H5Fclose(file);
 
-  // render: one VTU series per body under distinct safe names, the names in the PVD.
+  // render: one VTU series per body under distinct safe names, the names in the PVD; in the
+  // XDMF scene each body's grid is named as the body and reads its body's group.
   const test::CommandRun render =
-      run_limber("render " + dir.string() + " --no-video --size 320x180 --no-progress");
+      run_limber("render " + dir.string() + " --no-video --size 320x180 --no-progress --paraview both");
   ASSERT_EQ(render.exit_code, 0) << render.err;
   for (const char* stem : {"arm~2Fleft", "arm~252Fleft", "arm~2Eleft"}) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "vtk" / (std::string(stem) + "_00020.vtu")))
@@ -85,6 +86,11 @@ TEST(NamesCli, FreeTextNamesRunRenderAndReport) {
   }
   const std::string pvd = test::read_text((dir / "vtk" / "scene.pvd").string());
   EXPECT_NE(pvd.find("name=\"arm%2Fleft\" file=\"arm~252Fleft_00000.vtu\""), std::string::npos);
+  const std::string xmf = test::read_text((dir / "vtk" / "scene.xmf").string());
+  const std::size_t grid = xmf.find("<Grid Name=\"arm%2Fleft\" GridType=\"Uniform\">");
+  ASSERT_NE(grid, std::string::npos);
+  EXPECT_EQ(xmf.find("scene.h5:/bodies/arm%252Fleft/topology", grid), xmf.find("scene.h5:/bodies/", grid))
+      << "the grid of 'arm%2Fleft' reads its own group";
 
   // report: a reaction plot per joint, named apart, and the names on the page.
   const test::CommandRun report = run_limber("report " + dir.string());
