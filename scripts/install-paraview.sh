@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs ParaView 5.11 for the tests that open limber's output in ParaView itself
-# (tests/render/paraview_check.py), and for users who want pvpython beside limber's build.
+# (tests/render/paraview_check.py), and for users who want pvpython beside limber's build;
+# with xvfb, since Debian's pvbatch draws through X and a test saves a screenshot with it.
 # Debian's `paraview` package brings the libraries and pvbatch; pvpython and the Python modules
 # come in `python3-paraview`, which conflicts with python3-vtk9, a dependency of libvtk9-dev
 # that limber builds with. So python3-paraview is unpacked beside, into
@@ -14,10 +15,14 @@ sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 export DEBIAN_FRONTEND=noninteractive
 
-if ! dpkg-query -W -f='${Status}' paraview 2>/dev/null | grep -q "install ok installed"; then
-  echo "limber: installing ParaView (Debian package paraview, about 70 MB to download)"
+missing=()
+for p in paraview xvfb xauth; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "limber: installing ${missing[*]} (ParaView: about 70 MB to download)"
   "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends paraview
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
 version=$(dpkg-query -W -f='${Version}' paraview)

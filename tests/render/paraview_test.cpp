@@ -2,8 +2,8 @@
 // VTU/PVD series with its PVD reader; the one-file scene (scene.xmf over scene.h5) with both of
 // its XDMF readers, every time step against the VTU of the same sample; and
 // open_in_paraview.py under pvbatch saves a screenshot of the ready view. Skipped when pvpython
-// (pvbatch, and xvfb-run for its display) is not installed (Debian packages python3-paraview,
-// paraview and xvfb).
+// (pvbatch, and xvfb-run for its display) is not installed: scripts/install-paraview.sh, which
+// the README's test command runs, installs them.
 #include "render_job.h"
 #include "vtk_export.h"
 #include "xdmf_export.h"
@@ -71,8 +71,8 @@ std::string time_arguments(const Results& results) {
 #define REQUIRE_PROGRAM(variable, name)                                                         \
   const auto variable = find_program(name);                                                   \
   if (!variable) {                                                                            \
-    GTEST_SKIP() << name " not on PATH: ParaView not tried (Debian packages python3-paraview " \
-                    "and paraview)";                                                          \
+    GTEST_SKIP() << name " not on PATH: ParaView not tried (scripts/install-paraview.sh "     \
+                    "installs it)";                                                           \
   }
 
 TEST(ParaView, OpensTheSeriesWithEveryTimeAndPoint) {
@@ -120,7 +120,8 @@ TEST(ParaView, StateScriptSavesTheViewUnderPvbatch) {
   REQUIRE_PROGRAM(pvbatch, "pvbatch");
   // Debian's ParaView draws through X: without a display, in a virtual one (package xvfb).
   const auto xvfb_run = find_program("xvfb-run");
-  if (!xvfb_run) GTEST_SKIP() << "xvfb-run not on PATH: pvbatch has no display to draw in (Debian package xvfb)";
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run not on PATH: pvbatch has no display to draw in (scripts/install-paraview.sh "
+                                 "installs it)";
   const auto dir = testing::fresh_directory("paraview_script");
   testing::write_test_results(dir, testing::TestScene{});
   RenderOptions options;
