@@ -192,6 +192,45 @@ NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const F
                    {title, kTimeLabel, quantity + " [" + unit + "]", curves, false}, warning);
 }
 
+using JointHolders = std::vector<std::pair<std::size_t, const JointReactions*>>;  // (run, joint)
+
+// "run 1: a, run 3: c": the labels of the runs at places `which` of `held`.
+std::string runs_named(const std::vector<std::size_t>& which, const JointHolders& held,
+                       const std::vector<std::string>& labels) {
+  std::string text;
+  for (std::size_t k : which) text += (text.empty() ? "" : ", ") + labels[held[k].first];
+  return text;
+}
+
+// The note of a comparison plot of one force component: in which runs it is minimum-norm
+// (with each run's redundant set) and in which it is determined; "" when determined in all.
+std::string comparison_note(const std::vector<RunData>& runs, const std::vector<std::string>& labels,
+                            const JointHolders& held, const std::vector<std::size_t>& minimum_norm,
+                            const std::string& component) {
+  if (minimum_norm.empty()) return "";
+  const std::string& joint = held.front().second->name;
+  std::string note = "Indeterminate in " + std::string(minimum_norm.size() == held.size() ? "every run" : "some runs") +
+                     ": the component " + component + " of joint " + joint +
+                     "'s reaction force is the minimum-norm split of the load over a redundant set "
+                     "of constraints, one of infinitely many that satisfy the equations, so the "
+                     "model does not determine it, in ";
+  for (std::size_t i = 0; i < minimum_norm.size(); ++i) {
+    const auto& [r, reactions] = held[minimum_norm[i]];
+    const std::string sets = indeterminacy(runs[r], *reactions).sets;
+    note += (i == 0 ? "" : "; ") + labels[r] + (sets.empty() ? std::string() : " (" + sets + ")");
+  }
+  note += ".";
+  std::vector<std::size_t> determined;
+  for (std::size_t k = 0; k < held.size(); ++k) {
+    if (std::find(minimum_norm.begin(), minimum_norm.end(), k) == minimum_norm.end()) determined.push_back(k);
+  }
+  if (!determined.empty()) {
+    note += " Determined in " + runs_named(determined, held, labels) +
+            ": where the curves part, only those are the reaction the model predicts.";
+  }
+  return note;
+}
+
 std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<Series>& series) {
   std::vector<Curve> curves;
   for (const Series& s : series) curves.push_back({s.name, time, s.values});
@@ -604,7 +643,7 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                                         const PlotOptions& options) {
   // Joint name -> runs holding its reactions, in first-seen order.
   std::vector<std::string> order;
-  std::map<std::string, std::vector<std::pair<std::size_t, const JointReactions*>>> holders;
+  std::map<std::string, JointHolders> holders;
   for (std::size_t r = 0; r < runs.size(); ++r) {
     for (const JointReactions& joint : runs[r].joints) {
       if (holders.count(joint.name) == 0) order.push_back(joint.name);
@@ -620,24 +659,33 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
     // orientations), else the joint frame.
     const FrameRequest& asked = options.frames.front();
     bool use_asked = asked.kind != ReactionFrame::kJoint;
-    std::vector<RowMatrix3d> forces;
+    std::vector<FrameView> views;
     for (const auto& [r, joint] : held) {
-      const std::optional<FrameView> view = use_asked ? frame_view(runs[r], *joint, asked) : std::nullopt;
+      std::optional<FrameView> view = use_asked ? frame_view(runs[r], *joint, asked) : std::nullopt;
       use_asked = use_asked && view.has_value();
-      if (view) forces.push_back(view->force);
+      if (view) views.push_back(std::move(*view));
     }
     if (!use_asked) {
-      forces.clear();
-      for (const auto& [r, joint] : held) forces.push_back(joint->force_joint);
+      views.clear();
+      for (const auto& [r, joint] : held) views.push_back(*frame_view(runs[r], *joint, ReactionFrame::kJoint));
+    }
+    // Per run, which force components its redundancy leaves undetermined in this frame: a
+    // component can be minimum-norm in one run (rigid, redundant) and determined in another.
+    std::vector<std::array<bool, 3>> undetermined;
+    for (std::size_t k = 0; k < held.size(); ++k) {
+      undetermined.push_back(indeterminate_in_frame(runs[held[k].first], *held[k].second, views[k], false));
     }
     const bool ground = use_asked && asked.kind == ReactionFrame::kGround;
     const bool named = use_asked && asked.kind == ReactionFrame::kNamed;
     const RunData& first = runs[held.front().first];
     for (int c = 0; c < 3; ++c) {
       std::vector<Curve> curves;
+      std::vector<std::size_t> minimum_norm;  // places in `held` of the runs where c is undetermined
       for (std::size_t k = 0; k < held.size(); ++k) {
         const std::size_t r = held[k].first;
-        curves.push_back({labels[r], runs[r].results.time, forces[k].col(c)});
+        const bool open = undetermined[k][static_cast<std::size_t>(c)];
+        if (open) minimum_norm.push_back(k);
+        curves.push_back({labels[r] + (open ? " (minimum-norm)" : ""), runs[r].results.time, views[k].force.col(c)});
       }
       const std::string component =
           ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
@@ -651,8 +699,10 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
       plots.push_back({PlotSection::kComparison, "compare_" + file_stem(name) + "_" + tag + ".png",
                        "Reaction " + component + " at joint " + name + " (" + note + ") in " +
                            std::to_string(held.size()) + " runs.",
-                       {"Joint " + name + ": " + component + " (" + frame + ")", kTimeLabel,
-                        "force [N]", curves, false}});
+                       {"Joint " + name + ": " + component + " (" + frame + ")" +
+                            (minimum_norm.empty() ? "" : ", minimum-norm in " + runs_named(minimum_norm, held, labels)),
+                        kTimeLabel, "force [N]", curves, false},
+                       comparison_note(runs, labels, held, minimum_norm, component)});
     }
   }
 

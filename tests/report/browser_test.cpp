@@ -3,14 +3,26 @@
 // (chromium logs console messages as "CONSOLE" lines with --enable-logging). Links to missing
 // or remote files are checked by report_job_test.cpp. Skipped, saying why, only when chromium
 // is not installed (scripts/install-deps.sh installs it).
+#include "curve_export.h"
+#include "decimate.h"
+#include "interactive.h"
 #include "reaction_runs.h"
 #include "report_job.h"
 #include "report_test_util.h"
+#include "run_data.h"
 #include "test_results.h"
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <tuple>
+#include <iostream>
+#include <numbers>
 
 namespace limber::report {
 namespace {
@@ -135,6 +147,202 @@ TEST(Browser, HeadlessChromiumRendersTheReportWithoutConsoleErrors) {
   EXPECT_EQ(images, img_tags) << "charts printed, or figures missing";
   const std::vector<std::string> console = console_lines(testing::read_text(root / "dom.err"));
   EXPECT_TRUE(console.empty()) << console.front();
+}
+
+// The text of <pre id="ID"> in a DOM chromium dumped ("" when absent).
+std::string pre_text(const std::string& dom, const std::string& id) {
+  const std::string open = "<pre id=\"" + id + "\">";
+  const std::size_t start = dom.find(open);
+  if (start == std::string::npos) return "";
+  const std::size_t end = dom.find("</pre>", start);
+  return dom.substr(start + open.size(), end - start - open.size());
+}
+
+// Line `k` of `text` split at blanks, as numbers (strtod reads JavaScript's shortest form of
+// a double back to the same double, and "NaN").
+std::vector<double> numbers_on_line(const std::string& text, int k) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int i = 0; i <= k; ++i) std::getline(lines, line);
+  std::vector<double> out;
+  std::istringstream words(line);
+  for (std::string word; words >> word;) out.push_back(std::strtod(word.c_str(), nullptr));
+  return out;
+}
+
+// The samples of ascending x inside [lo, hi] and one beyond each edge: [first, last] as the
+// page's windowOf, found here with the standard library's binary searches.
+std::pair<Eigen::Index, Eigen::Index> window_of(const Eigen::VectorXd& x, double lo, double hi) {
+  const double* begin = x.data();
+  const double* end = x.data() + x.size();
+  const Eigen::Index first = std::max<Eigen::Index>(std::upper_bound(begin, end, lo) - begin - 1, 0);
+  const Eigen::Index last = std::min<Eigen::Index>(std::lower_bound(begin, end, hi) - begin, x.size() - 1);
+  return {first, std::max(first, last)};
+}
+
+// The page's re-decimation (interactive.cpp, run by chromium) against decimate.h's m4_indices
+// (C++) on the same window of the same 10^5 samples: the same indices, in order. The data go
+// to the page as base64 doubles (curve_export.h): the page's decoded values equal the C++
+// doubles bit for bit. Exact equality is the claim: both follow one rule in IEEE arithmetic.
+TEST(Browser, PageRedecimationIsTheCppM4OnTheSameWindow) {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh)";
+  const auto root = testing::fresh_directory("browser_m4");
+  constexpr Eigen::Index n = 100000;
+  constexpr int columns = 1000;
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, 0.0, 10.0);
+  Eigen::VectorXd y(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    y(k) = std::sin(2 * std::numbers::pi * 3 * x(k)) + 0.3 * std::sin(2 * std::numbers::pi * 517 * x(k));
+  }
+  y(12345) = 7.0;
+  y(67890) = -9.0;
+  y(50000) = std::numeric_limits<double>::quiet_NaN();  // kept by both, never an extreme
+  // Whole run (beyond both ends), 1001 samples (all kept), a decimated window, one around the
+  // NaN and a spike, one narrower than a sample step.
+  const std::vector<std::array<double, 2>> windows{
+      {-1.0, 11.0}, {2.5, 2.6}, {1.0, 7.3}, {4.99, 6.8}, {1.23455, 1.23456}};
+  std::string input = "{\"x\":\"" + base64_doubles(x) + "\",\"y\":\"" + base64_doubles(y) +
+                      "\",\"columns\":" + std::to_string(columns) + ",\"windows\":[";
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    input += fmt::format("{}[{},{}]", w > 0 ? "," : "", windows[w][0], windows[w][1]);
+  }
+  input += "]}";
+  const std::string page =
+      "<!DOCTYPE html><html><head><meta charset=\"utf-8\"></head><body>\n"
+      "<script type=\"application/json\" id=\"input\">" + input + "</script>\n" +
+      interactive_scripts(InteractiveLibrary{"", ""}) + R"(<script>
+var input = JSON.parse(document.getElementById("input").textContent);
+var r = window.limberReport, x = r.decode(input.x), y = r.decode(input.y), lines = [];
+input.windows.forEach(function (w) {
+  var range = r.windowOf(x, w[0], w[1]);
+  lines.push(r.m4(x, y, range[0], range[1], input.columns, []).join(" "));
+});
+lines.push(Array.prototype.map.call(y.subarray(49990, 50010), String).join(" "));
+var pre = document.createElement("pre"); pre.id = "result"; pre.textContent = lines.join("\n");
+document.body.appendChild(pre);
+</script></body></html>
+)";
+  std::ofstream(root / "m4.html") << page;
+  run_chromium(chromium, root / "profile", "--dump-dom", root / "m4.html", root / "dom.html", root / "dom.err");
+  const std::string result = pre_text(testing::read_text(root / "dom.html"), "result");
+  ASSERT_FALSE(result.empty()) << testing::read_text(root / "dom.err");
+
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    SCOPED_TRACE(fmt::format("window [{}, {}]", windows[w][0], windows[w][1]));
+    const auto [first, last] = window_of(x, windows[w][0], windows[w][1]);
+    const Eigen::Index count = last - first + 1;
+    std::vector<double> expected;
+    for (Eigen::Index k : m4_indices(x.segment(first, count), y.segment(first, count), columns)) {
+      expected.push_back(static_cast<double>(first + k));
+    }
+    const std::vector<double> page_indices = numbers_on_line(result, static_cast<int>(w));
+    EXPECT_EQ(page_indices, expected);
+    if (w == 1) {
+      EXPECT_EQ(page_indices.size(), static_cast<std::size_t>(count));  // ~1000 samples: all kept
+    }
+    if (w == 2) {
+      EXPECT_LT(page_indices.size(), static_cast<std::size_t>(count));  // decimated
+    }
+  }
+  // Decoded values: bit for bit (NaN read back as NaN).
+  const std::vector<double> decoded = numbers_on_line(result, static_cast<int>(windows.size()));
+  ASSERT_EQ(decoded.size(), 20u);
+  for (Eigen::Index k = 0; k < 20; ++k) {
+    const double expected = y(49990 + k);
+    if (std::isnan(expected)) {
+      EXPECT_TRUE(std::isnan(decoded[static_cast<std::size_t>(k)]));
+    } else {
+      EXPECT_EQ(decoded[static_cast<std::size_t>(k)], expected) << k;
+    }
+  }
+}
+
+// A report of a run with 10^5 samples per curve: the page carries every sample; zoomed to
+// 1/100 of the run (1001 samples, fewer than the chart's 1000 columns hold at 4 per column),
+// the chart shows every sample of the window with the values of results.h5. The page's own
+// timing (load until the charts are built, and one zoom with its re-decimation and redraw) is
+// printed, not asserted: speed is measured, not tested. A second zoom is left to the page's
+// timer, as a reader's drag would be.
+TEST(Browser, ZoomShowsEverySampleOfA100kSampleRun) {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh)";
+  const auto root = testing::fresh_directory("browser_zoom");
+  testing::ReactionRun run;
+  run.samples = 100001;  // t_k = k 1e-5 s
+  testing::write_reaction_run(root / "run", run);
+  ReportOptions options;
+  options.directories = {root / "run"};
+  options.output = root / "report";
+  options.mode_shapes = false;
+  const std::filesystem::path index = generate_report(options).index;
+  const std::string html = testing::read_text(index);
+  std::cout << "[ figures ] page of 10^5 samples per curve: " << html.size() / 1e6 << " MB\n";
+
+  // The first chart is joint R3's force in ground axes (X, Y, Z, |F|).
+  constexpr double kFrom = 0.5, kTo = 0.51, kFrom2 = 0.25, kTo2 = 0.2502;
+  const std::string probe = fmt::format(R"(<script>
+(function () {{
+  var loaded = performance.now(), r = window.limberReport, g = r.charts[0], lines = [];
+  // Rows of the chart inside [a, b]: their times and X values.
+  function shown(a, b) {{
+    var t = [], v = [];
+    for (var i = 0; i < g.numRows(); ++i) {{
+      var x = g.getValue(i, 0);
+      if (x >= a && x <= b) {{ t.push(String(x)); v.push(String(g.getValue(i, 1))); }}
+    }}
+    return [t.join(" "), v.join(" ")];
+  }}
+  var start = performance.now();
+  g.updateOptions({{ dateWindow: [{0}, {1}] }});
+  g.limberRefine();
+  var zoom = performance.now() - start;
+  lines.push(loaded.toFixed(1) + " " + zoom.toFixed(1) + " " + g.numRows());
+  lines = lines.concat(shown({0}, {1}));
+  // The reader's way: the window moves, the page re-decimates from its timer.
+  g.updateOptions({{ dateWindow: [{2}, {3}] }});
+  setTimeout(function () {{
+    lines = lines.concat(shown({2}, {3}));
+    var pre = document.createElement("pre"); pre.id = "result"; pre.textContent = lines.join("\n");
+    document.body.appendChild(pre);
+  }}, 100);
+}})();
+</script>
+</body>)", kFrom, kTo, kFrom2, kTo2);
+  std::string zoom_page = html;
+  zoom_page.replace(zoom_page.rfind("</body>"), 7, probe);
+  std::ofstream(root / "report/zoom.html") << zoom_page;
+  const auto wall_start = std::chrono::steady_clock::now();
+  run_chromium(chromium, root / "profile", "--dump-dom --virtual-time-budget=2000", root / "report/zoom.html",
+               root / "dom.html", root / "dom.err");
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const std::string result = pre_text(testing::read_text(root / "dom.html"), "result");
+  ASSERT_FALSE(result.empty()) << testing::read_text(root / "dom.err");
+  const std::vector<double> timing = numbers_on_line(result, 0);
+  ASSERT_EQ(timing.size(), 3u);
+  std::cout << "[ figures ] headless chromium: page loaded and charts built at " << timing[0]
+            << " ms, zoom to 1001 samples (re-decimation and redraw) " << timing[1]
+            << " ms; chart rows after the zoom " << timing[2] << "; chromium's wall time " << wall
+            << " s\n";
+  EXPECT_TRUE(console_lines(testing::read_text(root / "dom.err")).empty()) << testing::read_text(root / "dom.err");
+
+  const RunData data = read_run_data(root / "run");
+  const Eigen::VectorXd& t = data.results.time;
+  for (const auto& [line, from, to] : {std::tuple{1, kFrom, kTo}, std::tuple{3, kFrom2, kTo2}}) {
+    SCOPED_TRACE(fmt::format("window [{}, {}]", from, to));
+    const std::vector<double> times = numbers_on_line(result, line);
+    const std::vector<double> values = numbers_on_line(result, line + 1);
+    std::vector<double> expected_times, expected_values;
+    for (Eigen::Index k = 0; k < t.size(); ++k) {
+      if (t(k) >= from && t(k) <= to) {
+        expected_times.push_back(t(k));
+        expected_values.push_back(data.joints[0].force_ground(k, 0));
+      }
+    }
+    EXPECT_GT(expected_times.size(), 20u);
+    EXPECT_EQ(times, expected_times);    // every sample of the window, no other
+    EXPECT_EQ(values, expected_values);  // the stored doubles
+  }
 }
 
 }  // namespace

@@ -150,6 +150,66 @@ TEST(FrameReactions, IndeterminacyIsPerComponentOnTheRigidSliderCrank) {
             "force Y and torque X, Z minimum-norm (indeterminate, ground axes; other components determined)");
 }
 
+// A comparison of the rigid slider-crank (3 redundant out-of-plane equations, so every joint's
+// force Y in ground axes is minimum-norm) with the flexible one (the rod's flexibility takes
+// the redundancy away: no redundant equation): the overlay of Y says which run is
+// minimum-norm, naming its redundant set, and which is determined; X and Z carry no note; the
+// joints table of the comparison says it per run.
+TEST(FrameReactions, ComparisonNotesIndeterminacyPerRun) {
+  const std::filesystem::path rigid_dir = run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml",
+                                                   "compare_rigid", "--t-end 0.05");
+  const std::filesystem::path flexible_dir = run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml",
+                                                      "compare_flexible", "--t-end 0.05");
+  const RunData rigid = read_run_data(rigid_dir);
+  const RunData flexible = read_run_data(flexible_dir);
+  ASSERT_EQ(rigid.redundant_equations.size(), 3u);
+  ASSERT_TRUE(flexible.redundant_equations.empty());
+  for (const JointReactions& joint : flexible.joints) EXPECT_FALSE(joint.is_indeterminate()) << joint.name;
+
+  const std::vector<NamedPlot> plots = comparison_plots({rigid, flexible}, {"rigid", "flexible"}, PlotOptions{});
+  for (const char* joint : {"R1", "R2", "R3"}) {
+    SCOPED_TRACE(joint);
+    auto plot_of = [&](const std::string& axis) {
+      const std::string file = "compare_" + std::string(joint) + "_ground_" + axis + ".png";
+      const auto found = std::find_if(plots.begin(), plots.end(), [&](const NamedPlot& p) { return p.file == file; });
+      EXPECT_NE(found, plots.end()) << file;
+      return found;
+    };
+    const auto y = plot_of("y");
+    ASSERT_NE(y, plots.end());
+    ASSERT_EQ(y->spec.curves.size(), 2u);
+    EXPECT_EQ(y->spec.curves[0].label, "rigid (minimum-norm)");
+    EXPECT_EQ(y->spec.curves[1].label, "flexible");
+    EXPECT_NE(y->spec.title.find(", minimum-norm in rigid"), std::string::npos) << y->spec.title;
+    EXPECT_NE(y->warning.find("Indeterminate in some runs: the component FY of joint " + std::string(joint)), std::string::npos)
+        << y->warning;
+    // The rigid run's own redundant set, as its run section names it.
+    EXPECT_NE(y->warning.find("in rigid (" + indeterminacy(rigid, rigid.joints[0]).sets), std::string::npos) << y->warning;
+    EXPECT_NE(y->warning.find("Determined in flexible"), std::string::npos) << y->warning;
+    for (const char* axis : {"x", "z"}) {
+      const auto in_plane = plot_of(axis);
+      ASSERT_NE(in_plane, plots.end());
+      EXPECT_EQ(in_plane->warning, "") << axis;
+      EXPECT_EQ(in_plane->spec.curves[0].label, "rigid") << axis;
+    }
+  }
+
+  // The page: the comparison's joints table, per run.
+  ReportOptions report;
+  report.directories = {rigid_dir, flexible_dir};
+  report.output = rigid_dir / "report";
+  report.mode_shapes = false;
+  const std::string html = testing::read_text(generate_report(report).index);
+  const std::size_t table = html.find("<h3>Joints compared</h3>");
+  ASSERT_NE(table, std::string::npos);
+  const std::size_t r2 = html.find("<tr><td>R2</td>", table);
+  ASSERT_NE(r2, std::string::npos);
+  EXPECT_EQ(html.substr(r2, html.find("</tr>", r2) - r2),
+            "<tr><td>R2</td><td class=\"indeterminate\">force Y and torque X, Z minimum-norm (indeterminate, "
+            "ground axes; other components determined)</td><td>determined</td>");
+  EXPECT_NE(html.find("Indeterminate in some runs: the component FY of joint R2", table), std::string::npos);
+}
+
 TEST(FrameReactions, FrameOptionDrawsTheNamedFrameAndRefusesAnUnknownName) {
   const std::filesystem::path dir = run_case(kCrankCase, "crank_option");
   const RunData run = read_run_data(dir);
