@@ -151,22 +151,23 @@ TEST(FrameReactions, IndeterminacyIsPerComponentOnTheRigidSliderCrank) {
 }
 
 // A comparison of the rigid slider-crank (3 redundant out-of-plane equations, so every joint's
-// force Y in ground axes is minimum-norm) with the flexible one (the rod's flexibility takes
-// the redundancy away: no redundant equation): the overlay of Y says which run is
-// minimum-norm, naming its redundant set, and which is determined; X and Z carry no note; the
-// joints table of the comparison says it per run.
+// force Y in ground axes is minimum-norm) with the same mechanism made non-redundant
+// (tests/run/data/slider_crank_universal.yaml: R2 universal, R3 spherical, same joint names):
+// the overlay of Y says which run is minimum-norm, naming its redundant set, and which is
+// determined; X and Z carry no note; the comparison's joints table says it per run.
 TEST(FrameReactions, ComparisonNotesIndeterminacyPerRun) {
   const std::filesystem::path rigid_dir = run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml",
                                                    "compare_rigid", "--t-end 0.05");
-  const std::filesystem::path flexible_dir = run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml",
-                                                      "compare_flexible", "--t-end 0.05");
+  const std::filesystem::path universal_dir =
+      run_case(std::string(LIMBER_RUN_TEST_DATA_DIR) + "/slider_crank_universal.yaml", "compare_universal",
+               "--t-end 0.05");
   const RunData rigid = read_run_data(rigid_dir);
-  const RunData flexible = read_run_data(flexible_dir);
+  const RunData universal = read_run_data(universal_dir);
   ASSERT_EQ(rigid.redundant_equations.size(), 3u);
-  ASSERT_TRUE(flexible.redundant_equations.empty());
-  for (const JointReactions& joint : flexible.joints) EXPECT_FALSE(joint.is_indeterminate()) << joint.name;
+  ASSERT_TRUE(universal.redundant_equations.empty());
+  for (const JointReactions& joint : universal.joints) EXPECT_FALSE(joint.is_indeterminate()) << joint.name;
 
-  const std::vector<NamedPlot> plots = comparison_plots({rigid, flexible}, {"rigid", "flexible"}, PlotOptions{});
+  const std::vector<NamedPlot> plots = comparison_plots({rigid, universal}, {"rigid", "non-redundant"}, PlotOptions{});
   for (const char* joint : {"R1", "R2", "R3"}) {
     SCOPED_TRACE(joint);
     auto plot_of = [&](const std::string& axis) {
@@ -179,13 +180,13 @@ TEST(FrameReactions, ComparisonNotesIndeterminacyPerRun) {
     ASSERT_NE(y, plots.end());
     ASSERT_EQ(y->spec.curves.size(), 2u);
     EXPECT_EQ(y->spec.curves[0].label, "rigid (minimum-norm)");
-    EXPECT_EQ(y->spec.curves[1].label, "flexible");
+    EXPECT_EQ(y->spec.curves[1].label, "non-redundant");
     EXPECT_NE(y->spec.title.find(", minimum-norm in rigid"), std::string::npos) << y->spec.title;
     EXPECT_NE(y->warning.find("Indeterminate in some runs: the component FY of joint " + std::string(joint)), std::string::npos)
         << y->warning;
     // The rigid run's own redundant set, as its run section names it.
     EXPECT_NE(y->warning.find("in rigid (" + indeterminacy(rigid, rigid.joints[0]).sets), std::string::npos) << y->warning;
-    EXPECT_NE(y->warning.find("Determined in flexible"), std::string::npos) << y->warning;
+    EXPECT_NE(y->warning.find("Determined in non-redundant"), std::string::npos) << y->warning;
     for (const char* axis : {"x", "z"}) {
       const auto in_plane = plot_of(axis);
       ASSERT_NE(in_plane, plots.end());
@@ -196,7 +197,7 @@ TEST(FrameReactions, ComparisonNotesIndeterminacyPerRun) {
 
   // The page: the comparison's joints table, per run.
   ReportOptions report;
-  report.directories = {rigid_dir, flexible_dir};
+  report.directories = {rigid_dir, universal_dir};
   report.output = rigid_dir / "report";
   report.mode_shapes = false;
   const std::string html = testing::read_text(generate_report(report).index);
