@@ -20,7 +20,7 @@
 namespace limber::report {
 
 struct ConfiguredPlot {
-  ReactionPlotRequest request;
+  PlotRequest request;
   SourceLocation where;  // the plot's entry in the file (for errors found against the runs)
 };
 
