@@ -119,7 +119,9 @@ constexpr const char* kInitScript = R"JS(
     var range = g.xAxisRange();
     if (g.limberWindow && g.limberWindow[0] === range[0] && g.limberWindow[1] === range[1]) return;
     g.limberWindow = range;
-    g.updateOptions({ file: report.rows(g.limberCurves, g.limberColumns, range[0], range[1]) });
+    // Decoded at the first zoom, so that a page of many long curves opens fast.
+    if (!g.limberCurves) g.limberCurves = report.curves(g.limberFull);
+    g.updateOptions({ file: report.rows(g.limberCurves, g.limberFull.columns, range[0], range[1]) });
   }
   // Shown before drawing: a chart measures its box when it is built.
   document.body.classList.add("interactive");
@@ -152,8 +154,7 @@ constexpr const char* kInitScript = R"JS(
     }
     var chart = new Dygraph(div, spec.data, options);
     if (spec.full) {
-      chart.limberCurves = report.curves(spec.full);
-      chart.limberColumns = spec.full.columns;
+      chart.limberFull = spec.full;
       chart.limberWindow = chart.xAxisRange();  // the page's rows are the whole run's M4
       chart.limberRefine = function () { refine(this); };
     }

@@ -8,6 +8,7 @@
 #include "interactive.h"
 #include "reaction_runs.h"
 #include "report_job.h"
+#include "chromium.h"
 #include "report_test_util.h"
 #include "run_data.h"
 #include "test_results.h"
@@ -27,34 +28,13 @@
 namespace limber::report {
 namespace {
 
+using testing::find_chromium;
+using testing::numbers_on_line;
+using testing::pre_text;
+using testing::run_chromium;
+
 constexpr int kWidth = 1280;
 constexpr int kHeight = 2000;
-
-// chromium's path, or "" when it is not installed.
-std::string find_chromium() {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path != nullptr ? path : "/usr/bin";
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-    const std::filesystem::path candidate = std::filesystem::path(dirs.substr(start, end - start)) / "chromium";
-    if (std::filesystem::is_regular_file(candidate)) return candidate.string();
-    start = end + 1;
-  }
-  return "";
-}
-
-// Runs chromium headless on `page` with `extra` flags; stdout and stderr into files.
-int run_chromium(const std::string& chromium, const std::filesystem::path& profile,
-                 const std::string& extra, const std::filesystem::path& page,
-                 const std::filesystem::path& out, const std::filesystem::path& err) {
-  const std::string command =
-      "'" + chromium + "' --headless --no-sandbox --disable-gpu --disable-extensions "
-      "--no-first-run --disable-background-networking --disable-sync --disable-default-apps "
-      "--user-data-dir='" + profile.string() + "' --enable-logging=stderr --v=0 " + extra +
-      " 'file://" + page.string() + "' > '" + out.string() + "' 2> '" + err.string() + "'";
-  return std::system(command.c_str());
-}
 
 // Lines of chromium's log that come from the page's console.
 std::vector<std::string> console_lines(const std::string& log) {
@@ -147,27 +127,6 @@ TEST(Browser, HeadlessChromiumRendersTheReportWithoutConsoleErrors) {
   EXPECT_EQ(images, img_tags) << "charts printed, or figures missing";
   const std::vector<std::string> console = console_lines(testing::read_text(root / "dom.err"));
   EXPECT_TRUE(console.empty()) << console.front();
-}
-
-// The text of <pre id="ID"> in a DOM chromium dumped ("" when absent).
-std::string pre_text(const std::string& dom, const std::string& id) {
-  const std::string open = "<pre id=\"" + id + "\">";
-  const std::size_t start = dom.find(open);
-  if (start == std::string::npos) return "";
-  const std::size_t end = dom.find("</pre>", start);
-  return dom.substr(start + open.size(), end - start - open.size());
-}
-
-// Line `k` of `text` split at blanks, as numbers (strtod reads JavaScript's shortest form of
-// a double back to the same double, and "NaN").
-std::vector<double> numbers_on_line(const std::string& text, int k) {
-  std::istringstream lines(text);
-  std::string line;
-  for (int i = 0; i <= k; ++i) std::getline(lines, line);
-  std::vector<double> out;
-  std::istringstream words(line);
-  for (std::string word; words >> word;) out.push_back(std::strtod(word.c_str(), nullptr));
-  return out;
 }
 
 // The samples of ascending x inside [lo, hi] and one beyond each edge: [first, last] as the
@@ -281,34 +240,7 @@ TEST(Browser, ZoomShowsEverySampleOfA100kSampleRun) {
 
   // The first chart is joint R3's force in ground axes (X, Y, Z, |F|).
   constexpr double kFrom = 0.5, kTo = 0.51, kFrom2 = 0.25, kTo2 = 0.2502;
-  const std::string probe = fmt::format(R"(<script>
-(function () {{
-  var loaded = performance.now(), r = window.limberReport, g = r.charts[0], lines = [];
-  // Rows of the chart inside [a, b]: their times and X values.
-  function shown(a, b) {{
-    var t = [], v = [];
-    for (var i = 0; i < g.numRows(); ++i) {{
-      var x = g.getValue(i, 0);
-      if (x >= a && x <= b) {{ t.push(String(x)); v.push(String(g.getValue(i, 1))); }}
-    }}
-    return [t.join(" "), v.join(" ")];
-  }}
-  var start = performance.now();
-  g.updateOptions({{ dateWindow: [{0}, {1}] }});
-  g.limberRefine();
-  var zoom = performance.now() - start;
-  lines.push(loaded.toFixed(1) + " " + zoom.toFixed(1) + " " + g.numRows());
-  lines = lines.concat(shown({0}, {1}));
-  // The reader's way: the window moves, the page re-decimates from its timer.
-  g.updateOptions({{ dateWindow: [{2}, {3}] }});
-  setTimeout(function () {{
-    lines = lines.concat(shown({2}, {3}));
-    var pre = document.createElement("pre"); pre.id = "result"; pre.textContent = lines.join("\n");
-    document.body.appendChild(pre);
-  }}, 100);
-}})();
-</script>
-</body>)", kFrom, kTo, kFrom2, kTo2);
+  const std::string probe = testing::zoom_probe_script(kFrom, kTo, kFrom2, kTo2) + "</body>";
   std::string zoom_page = html;
   zoom_page.replace(zoom_page.rfind("</body>"), 7, probe);
   std::ofstream(root / "report/zoom.html") << zoom_page;
