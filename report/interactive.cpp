@@ -138,6 +138,9 @@ constexpr const char* kInitScript = R"JS(
       logscale: spec.log, colors: spec.colors, strokeWidth: 1.5,
       legend: "always", labelsDiv: document.getElementById(div.getAttribute("data-legend")),
       showRangeSelector: true, rangeSelectorHeight: 30, connectSeparatedPoints: true,
+      // The range selector would make a drag pan; keep drag to zoom, shift-drag to pan and
+      // double-click to reset, as the page says.
+      interactionModel: Dygraph.defaultInteractionModel,
       axes: {
         x: { valueFormatter: function (x) { return xname + " = " + x.toPrecision(6); } },
         y: { valueFormatter: function (y) { return y.toPrecision(5); }, axisLabelWidth: 80 }

@@ -275,6 +275,31 @@ TEST(Browser, ZoomShowsEverySampleOfA100kSampleRun) {
     EXPECT_EQ(times, expected_times);    // every sample of the window, no other
     EXPECT_EQ(values, expected_values);  // the stored doubles
   }
+
+  // With the mouse, as a reader: drag to zoom, shift-drag to pan (the page re-decimates from
+  // its timer each time), double-click to reset. Zoomed and panned, the chart holds every
+  // sample of its window (20 pixels of ~1000: ~2 % of the run, ~2000 samples, under the 4000
+  // that 1000 columns keep whole); reset, the whole run's M4 rows again.
+  std::string mouse_page = html;
+  mouse_page.replace(mouse_page.rfind("</body>"), 7, testing::interaction_probe_script() + "</body>");
+  std::ofstream(root / "report/mouse.html") << mouse_page;
+  run_chromium(chromium, root / "profile", "--window-size=1280,2000 --dump-dom --virtual-time-budget=5000",
+               root / "report/mouse.html", root / "mouse.html", root / "mouse.err");
+  const std::string states = pre_text(testing::read_text(root / "mouse.html"), "result");
+  ASSERT_FALSE(states.empty()) << testing::read_text(root / "mouse.err");
+  const std::vector<double> start = numbers_on_line(states, 0);
+  ASSERT_EQ(start.size(), 4u);
+  for (int line : {1, 2}) {
+    const std::vector<double> state = numbers_on_line(states, line);
+    ASSERT_EQ(state.size(), 4u) << line;
+    const auto inside = ((t.array() >= state[0]) && (t.array() <= state[1])).count();
+    EXPECT_LT(state[1] - state[0], 0.1) << "not zoomed, line " << line;
+    EXPECT_GT(inside, 1000) << line;
+    EXPECT_EQ(state[2], static_cast<double>(inside)) << "line " << line;
+  }
+  EXPECT_GT(numbers_on_line(states, 2)[0], numbers_on_line(states, 1)[0]);  // panned towards later times
+  EXPECT_EQ(numbers_on_line(states, 3), start);                             // reset: as it opened
+  EXPECT_TRUE(console_lines(testing::read_text(root / "mouse.err")).empty()) << testing::read_text(root / "mouse.err");
 }
 
 }  // namespace

@@ -97,4 +97,56 @@ inline std::string zoom_probe_script(double from, double to, double from2, doubl
 )", from, to, from2, to2);
 }
 
+// A script for the end of a report's <body> that works the first chart as a reader does, with
+// mouse events: a 20-pixel drag (zoom), a shift-drag of 400 pixels in ten steps (pan), a
+// double-click (reset), each followed by a pause for the page's timer. It leaves <pre
+// id="result"> with one line per state (start, zoomed, panned, reset): "FROM TO SHOWN ROWS",
+// the chart's x range, its rows inside that range and all its rows.
+inline std::string interaction_probe_script() {
+  return R"(<script>
+(function () {
+  var g = window.limberReport.charts[0], lines = [];
+  var area = g.getArea(), rect = g.mouseEventElement_.getBoundingClientRect(), x0 = area.x + area.w / 2;
+  function send(type, x, shift, target) {
+    (target || g.mouseEventElement_).dispatchEvent(new MouseEvent(type, {
+      bubbles: true, cancelable: true, button: 0, shiftKey: shift,
+      clientX: rect.left + x, clientY: rect.top + area.y + area.h / 2 }));
+  }
+  function state() {
+    var range = g.xAxisRange(), shown = 0;
+    for (var i = 0; i < g.numRows(); ++i) {
+      var x = g.getValue(i, 0);
+      if (x >= range[0] && x <= range[1]) ++shown;
+    }
+    lines.push(String(range[0]) + " " + String(range[1]) + " " + shown + " " + g.numRows());
+  }
+  state();
+  send("mousedown", x0, false);
+  send("mousemove", x0 + 10, false, document);
+  send("mousemove", x0 + 20, false, document);
+  send("mouseup", x0 + 20, false, document);
+  setTimeout(function () {
+    state();
+    send("mousedown", x0, true);
+    var step = 0;
+    (function move() {
+      send("mousemove", x0 - 40 * ++step, true, document);
+      if (step < 10) { setTimeout(move, 20); return; }
+      send("mouseup", x0 - 40 * step, true, document);
+      setTimeout(function () {
+        state();
+        send("dblclick", x0, false);
+        setTimeout(function () {
+          state();
+          var pre = document.createElement("pre"); pre.id = "result"; pre.textContent = lines.join("\n");
+          document.body.appendChild(pre);
+        }, 100);
+      }, 100);
+    })();
+  }, 100);
+})();
+</script>
+)";
+}
+
 }  // namespace limber::report::testing
