@@ -546,5 +546,33 @@ TEST(ReportConfig, KindsAreCheckedAgainstTheRuns) {
   EXPECT_EQ(check("good", "plots:\n  - {kind: probe}\n  - {kind: modal, body: rod, modes: [5]}\n"), "");
 }
 
+// The example shipped beside the case reads, fits the slider-crank's run, and draws its seven
+// plots (the rod's in-plane probe component, its modes 1 to 3, R2 in the rod's marker axes).
+TEST(ReportConfig, ShippedExampleFitsTheSliderCrank) {
+  const RunData run = read_run_data(
+      run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml", "config_shipped", "--t-end 0.15"));
+  const std::vector<ConfiguredPlot> configured =
+      read_report_config(std::string(LIMBER_CASES_DIR) + "/slider_crank_report.yaml");
+  ASSERT_EQ(configured.size(), 7u);
+  check_report_config(configured, {run});
+  PlotOptions options;
+  for (const ConfiguredPlot& plot : configured) options.configured.push_back(plot.request);
+  std::vector<NamedPlot> plots = run_plots(run, "run1_", options);
+  std::erase_if(plots, [](const NamedPlot& plot) { return plot.file.rfind("run1_plot", 0) != 0; });
+  std::vector<std::string> files;
+  for (const NamedPlot& plot : plots) files.push_back(plot.file);
+  EXPECT_EQ(files, (std::vector<std::string>{"run1_plot1_reaction_R3_force_ground.png",
+                                             "run1_plot2_reaction_R2_force_in_R2~2Ej.png", "run1_plot3_probe_rod.png",
+                                             "run1_plot4_modal_rod.png", "run1_plot5_driver_efforts.png",
+                                             "run1_plot6_energy_balance_terms.png",
+                                             "run1_plot7_constraint_violation.png"}));
+  EXPECT_GE(plots[0].spec.curves[0].x.minCoeff(), 0.1);  // the window
+  ASSERT_EQ(plots[2].spec.curves.size(), 1u);
+  EXPECT_EQ(plots[2].spec.curves[0].label, "uz");
+  ASSERT_EQ(plots[3].spec.curves.size(), 3u);
+  EXPECT_EQ(plots[3].spec.curves[2].label, "eta3");
+  EXPECT_LE(plots[3].spec.curves[2].x.maxCoeff(), 0.1);
+}
+
 }  // namespace
 }  // namespace limber::report
