@@ -100,7 +100,8 @@ struct PlotOptions {
   double zero_fraction = 1e-4;
 };
 
-// The plots of one run; file names start with `prefix` (e.g. "run1_").
+// The plots of one run; file names start with `prefix` (e.g. "run1_"), a configured plot's
+// with "<prefix>plot<n>_" (n: its place in the config).
 std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                                  const PlotOptions& options = {});
 
@@ -120,7 +121,9 @@ std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& pr
 // marker or body frame — else the joint frame), overlaying
 // that component of every run holding the joint; then one per deflection-probe component of a
 // body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
-// `labels`.
+// `labels`, with " (minimum-norm)" for a run whose redundancy leaves that force component
+// undetermined (indeterminate_components.h); such a plot's title says in which runs, and its
+// warning names each such run's redundant set and the runs where the component is determined.
 std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                                         const std::vector<std::string>& labels,
                                         const PlotOptions& options = {});
