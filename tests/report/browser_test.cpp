@@ -302,5 +302,74 @@ TEST(Browser, ZoomShowsEverySampleOfA100kSampleRun) {
   EXPECT_TRUE(console_lines(testing::read_text(root / "mouse.err")).empty()) << testing::read_text(root / "mouse.err");
 }
 
+// Two runs sampled at different times (20001 and 30001 samples over 1 s) overlaid in one
+// comparison chart: each curve carries its own times, and a zoom to 0.3-0.31 s shows each
+// run's every sample in the window, at its own times, with its own values (the other run's
+// column empty there unless both have a sample at that time).
+TEST(Browser, ZoomOverlaysRunsSampledAtDifferentTimes) {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh)";
+  const auto root = testing::fresh_directory("browser_zoom_merge");
+  testing::ReactionRun run;
+  run.samples = 20001;
+  testing::write_reaction_run(root / "a", run);
+  run.samples = 30001;
+  run.amplitude = 60.0;
+  testing::write_reaction_run(root / "b", run);
+  ReportOptions options;
+  options.directories = {root / "a", root / "b"};
+  options.output = root / "report";
+  options.mode_shapes = false;
+  const std::string html = testing::read_text(generate_report(options).index);
+  // The comparison of ground X carries each run's times.
+  const std::size_t json = html.find("id=\"json-compare_R3_ground_x\"");
+  ASSERT_NE(json, std::string::npos);
+  EXPECT_NE(html.find("\"x\":null,\"curves\":[{\"x\":\"", json), std::string::npos);
+
+  constexpr double kFrom = 0.3, kTo = 0.31;
+  const std::string probe = fmt::format(R"(<script>
+(function () {{
+  var g = window.limberReport.charts.filter(function (c) {{ return c.maindiv_.id === "plot-compare_R3_ground_x"; }})[0];
+  g.updateOptions({{ dateWindow: [{0}, {1}] }});
+  setTimeout(function () {{
+    var lines = [];
+    for (var column = 1; column <= 2; ++column) {{
+      var t = [], v = [];
+      for (var i = 0; i < g.numRows(); ++i) {{
+        var x = g.getValue(i, 0), y = g.getValue(i, column);
+        if (x >= {0} && x <= {1} && y !== null) {{ t.push(String(x)); v.push(String(y)); }}
+      }}
+      lines.push(t.join(" "), v.join(" "));
+    }}
+    var pre = document.createElement("pre"); pre.id = "result"; pre.textContent = lines.join("\n");
+    document.body.appendChild(pre);
+  }}, 100);
+}})();
+</script>
+</body>)", kFrom, kTo);
+  std::string page = html;
+  page.replace(page.rfind("</body>"), 7, probe);
+  std::ofstream(root / "report/zoom.html") << page;
+  run_chromium(chromium, root / "profile", "--dump-dom --virtual-time-budget=2000", root / "report/zoom.html",
+               root / "dom.html", root / "dom.err");
+  const std::string result = pre_text(testing::read_text(root / "dom.html"), "result");
+  ASSERT_FALSE(result.empty()) << testing::read_text(root / "dom.err");
+  for (int r = 0; r < 2; ++r) {
+    SCOPED_TRACE(r == 0 ? "run a" : "run b");
+    const RunData data = read_run_data(root / (r == 0 ? "a" : "b"));
+    std::vector<double> times, values;
+    for (Eigen::Index k = 0; k < data.results.time.size(); ++k) {
+      const double t = data.results.time(k);
+      if (t < kFrom || t > kTo) continue;
+      times.push_back(t);
+      values.push_back(data.joints[0].force_ground(k, 0));
+    }
+    EXPECT_GT(times.size(), 200u);
+    EXPECT_EQ(numbers_on_line(result, 2 * r), times);
+    EXPECT_EQ(numbers_on_line(result, 2 * r + 1), values);
+  }
+  EXPECT_TRUE(console_lines(testing::read_text(root / "dom.err")).empty()) << testing::read_text(root / "dom.err");
+}
+
 }  // namespace
 }  // namespace limber::report
