@@ -142,7 +142,10 @@ constexpr const char* kInitScript = R"JS(
       // double-click to reset, as the page says.
       interactionModel: Dygraph.defaultInteractionModel,
       axes: {
-        x: { valueFormatter: function (x) { return xname + " = " + x.toPrecision(6); } },
+        // Tick labels to 9 significant digits, trailing zeros dropped: dygraphs' default of 2
+        // decimals repeats labels on a short run or a zoomed window ("0.50, 0.50, 0.50").
+        x: { valueFormatter: function (x) { return xname + " = " + x.toPrecision(6); },
+             axisLabelFormatter: function (x) { return String(+x.toPrecision(9)); } },
         y: { valueFormatter: function (y) { return y.toPrecision(5); }, axisLabelWidth: 80 }
       }
     };
