@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <cmath>
 #include <vector>
 
@@ -73,7 +75,7 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
-std::string curve_json(const PlotSpec& plot, const CurveTable& table) {
+std::string curve_json(const PlotSpec& plot, const CurveTable& table, const std::string& full) {
   // A logarithmic axis only when every value is positive, as the PNG (plot.h).
   bool log = plot.log_y;
   for (const std::vector<double>& column : table.columns) {
@@ -108,6 +110,47 @@ std::string curve_json(const PlotSpec& plot, const CurveTable& table) {
       out += json_number(column[r]);
     }
     out += ']';
+  }
+  out += ']';
+  if (!full.empty()) out += ",\"full\":" + full;
+  return out + "}";
+}
+
+std::string base64_doubles(const Eigen::Ref<const Eigen::VectorXd>& values) {
+  static_assert(std::endian::native == std::endian::little, "base64_doubles writes the native bytes");
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(values.size()) * sizeof(double));
+  for (Eigen::Index k = 0; k < values.size(); ++k) {
+    const double v = values(k);
+    std::memcpy(bytes.data() + static_cast<std::size_t>(k) * sizeof(double), &v, sizeof(double));
+  }
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  // Three bytes become four characters; the tail is padded with '='.
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t left = bytes.size() - i;
+    const unsigned word = (unsigned{bytes[i]} << 16) | (left > 1 ? unsigned{bytes[i + 1]} << 8 : 0u) |
+                          (left > 2 ? unsigned{bytes[i + 2]} : 0u);
+    out += kAlphabet[(word >> 18) & 63];
+    out += kAlphabet[(word >> 12) & 63];
+    out += left > 1 ? kAlphabet[(word >> 6) & 63] : '=';
+    out += left > 2 ? kAlphabet[word & 63] : '=';
+  }
+  return out;
+}
+
+std::string full_resolution_json(const std::vector<Curve>& curves, int columns) {
+  bool shared = !curves.empty();
+  for (const Curve& c : curves) shared = shared && c.x.size() == curves.front().x.size() && c.x == curves.front().x;
+  std::string out = fmt::format("{{\"columns\":{},\"x\":", columns);
+  out += shared ? "\"" + base64_doubles(curves.front().x) + "\"" : std::string("null");
+  out += ",\"curves\":[";
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const Curve& c = curves[i];
+    const Eigen::Index n = std::min(c.x.size(), c.y.size());
+    out += i > 0 ? ",{" : "{";
+    if (!shared) out += "\"x\":\"" + base64_doubles(c.x.head(n)) + "\",";
+    out += "\"y\":\"" + base64_doubles(c.y.head(n)) + "\"}";
   }
   return out + "]}";
 }

@@ -6,7 +6,10 @@
 #include "decimate.h"
 #include "plot.h"
 
+#include <Eigen/Core>
+
 #include <string>
+#include <vector>
 
 namespace limber::report {
 
@@ -24,7 +27,18 @@ std::string json_string(const std::string& text);
 // The plot as JSON: {"title", "xlabel", "ylabel", "labels" (x label first), "log",
 // "colors" ("#rrggbb" per curve, as the PNG), "samples" (before decimation), "data":
 // [[x, y1, y2, ...], ...] with null for a missing or non-finite value}; "log" only when the
-// plot asks for it and every value is positive (as the PNG).
-std::string curve_json(const PlotSpec& plot, const CurveTable& table);
+// plot asks for it and every value is positive (as the PNG). A non-empty `full`
+// (full_resolution_json) is added as "full".
+std::string curve_json(const PlotSpec& plot, const CurveTable& table, const std::string& full = "");
+
+// Base64 (RFC 4648, with padding) of the values as IEEE 754 binary64 in little-endian byte
+// order: the bytes of a JavaScript Float64Array on every platform a browser runs on.
+std::string base64_doubles(const Eigen::Ref<const Eigen::VectorXd>& values);
+
+// Every sample of a plot's curves, for the page to re-decimate the visible window when the
+// reader zooms or pans (interactive.h): {"columns": `columns`, "x": base64 doubles of the
+// shared abscissa or null, "curves": [{"x": its own abscissa (only when not shared), "y": its
+// ordinates}, ...]}. 8 bytes per value, 4/3 of that as text.
+std::string full_resolution_json(const std::vector<Curve>& curves, int columns);
 
 }  // namespace limber::report

@@ -2,6 +2,15 @@
 // JavaScript library for long time series) inlined into index.html at report time, so the page
 // stays one offline file. Each plot's PNG stays on the page for print and PDF, and on screen
 // whenever the library is not there or scripts are off.
+//
+// Long curves: a chart opens with the whole run's M4 rows (decimate.h) and, when that dropped
+// samples, its JSON also holds every sample ("full", curve_export.h: base64 doubles). After a
+// draw that moved the visible window (zoom, pan, range selector, time-window form) the page
+// re-decimates that window by the same M4 rule, in JavaScript (window.limberReport.m4, the
+// same operations as m4_indices, so the same indices), and draws the whole run's rows plus the
+// window's: a window of at most 4 samples per column shows every sample, the range selector
+// still shows the whole run. The samples are decoded at a chart's first zoom, so the page
+// opens as fast as without them.
 #pragma once
 
 #include <filesystem>
@@ -31,9 +40,11 @@ std::string interactive_style();
 // The time-window controls of a run's plots (one form per run section, applying to its plots).
 std::string time_window_form(const std::string& anchor);
 
-// The <script> elements closing the page: the library, then the code that turns each
-// <div class="dygraph-plot" data-source="ID"> into a chart of the JSON in <script id="ID">,
-// wires the time-window forms and marks <body> "interactive" (which hides the PNGs on screen).
+// The <script> elements closing the page: the library, then the re-decimation code
+// (window.limberReport: decode, m4, windowOf, curves, rows, charts) and the code that turns
+// each <div class="dygraph-plot" data-source="ID"> into a chart of the JSON in
+// <script id="ID">, wires the time-window forms and marks <body> "interactive" (which hides
+// the PNGs on screen). The re-decimation code runs without the library too (tests call it).
 std::string interactive_scripts(const InteractiveLibrary& library);
 
 }  // namespace limber::report

@@ -149,7 +149,7 @@ double mechanism_size(const RunData& run) {
 // others listed as "≈ 0 (peak …)".
 NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const FrameView& frame,
                         bool torque, const std::string& stem, const PlotOptions& options,
-                        const ReactionPlotRequest* request = nullptr) {
+                        const PlotRequest* request = nullptr) {
   const Eigen::VectorXd& t = run.results.time;
   const RowMatrix3d& values = torque ? frame.torque : frame.force;
   // The components a configured plot leaves out are neither drawn nor listed.
@@ -190,6 +190,103 @@ NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const F
                                       frame.title + (warning.empty() ? "" : ", minimum-norm");
   return NamedPlot(PlotSection::kReactions, stem + "_" + quantity + frame.tag + ".png", caption,
                    {title, kTimeLabel, quantity + " [" + unit + "]", curves, false}, warning);
+}
+
+// Marks the last plot with what it shows (a report config selects plots by kind and subject).
+void tag(std::vector<NamedPlot>& plots, PlotKind kind, const std::string& subject) {
+  plots.back().kind = kind;
+  plots.back().subject = subject;
+}
+
+// A configured plot's title, time window and y axis. False when no curve has a sample left.
+bool apply_request(NamedPlot& plot, const PlotRequest& request) {
+  if (!request.title.empty()) plot.spec.title = request.title;
+  if (request.window) {
+    const auto [from, to] = *request.window;
+    for (Curve& curve : plot.spec.curves) {
+      std::vector<double> x, y;
+      for (Eigen::Index k = 0; k < curve.x.size() && k < curve.y.size(); ++k) {
+        if (curve.x(k) < from || curve.x(k) > to) continue;
+        x.push_back(curve.x(k));
+        y.push_back(curve.y(k));
+      }
+      curve.x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+      curve.y = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
+    }
+    std::erase_if(plot.spec.curves, [](const Curve& curve) { return curve.x.size() == 0; });
+    plot.caption += fmt::format(" Time window {:g} to {:g} s.", from, to);
+  }
+  if (request.log_y) {
+    plot.spec.log_y = *request.log_y;
+    // A logarithm needs positive values: the figure falls back to linear (plot.h); say so.
+    bool positive = true;
+    for (const Curve& curve : plot.spec.curves) positive = positive && (curve.y.array() > 0.0).all();
+    if (*request.log_y && !positive) {
+      plot.caption += " Logarithmic axis asked for, drawn linear: the curves hold values at or below 0.";
+    }
+  }
+  return !plot.spec.curves.empty();
+}
+
+// The curves of `plot` the request keeps: a probe's components, a body's modes, the drivers named.
+void keep_requested_curves(NamedPlot& plot, const PlotRequest& request) {
+  std::erase_if(plot.spec.curves, [&](const Curve& curve) {
+    switch (request.kind) {
+      case PlotKind::kProbe:
+        for (std::size_t c = 0; c < 3; ++c) {
+          if (curve.label == std::string("u") + kAxes[c]) return !request.components[c];
+        }
+        return false;
+      case PlotKind::kModal:
+        return !request.modes.empty() &&
+               std::none_of(request.modes.begin(), request.modes.end(),
+                            [&](int mode) { return curve.label == "eta" + std::to_string(mode); });
+      case PlotKind::kDrivers:
+        return !request.names.empty() &&
+               std::find(request.names.begin(), request.names.end(), curve.label) == request.names.end();
+      default:
+        return false;
+    }
+  });
+}
+
+using JointHolders = std::vector<std::pair<std::size_t, const JointReactions*>>;  // (run, joint)
+
+// "run 1: a, run 3: c": the labels of the runs at places `which` of `held`.
+std::string runs_named(const std::vector<std::size_t>& which, const JointHolders& held,
+                       const std::vector<std::string>& labels) {
+  std::string text;
+  for (std::size_t k : which) text += (text.empty() ? "" : ", ") + labels[held[k].first];
+  return text;
+}
+
+// The note of a comparison plot of one force component: in which runs it is minimum-norm
+// (with each run's redundant set) and in which it is determined; "" when determined in all.
+std::string comparison_note(const std::vector<RunData>& runs, const std::vector<std::string>& labels,
+                            const JointHolders& held, const std::vector<std::size_t>& minimum_norm,
+                            const std::string& component) {
+  if (minimum_norm.empty()) return "";
+  const std::string& joint = held.front().second->name;
+  std::string note = "Indeterminate in " + std::string(minimum_norm.size() == held.size() ? "every run" : "some runs") +
+                     ": the component " + component + " of joint " + joint +
+                     "'s reaction force is the minimum-norm split of the load over a redundant set "
+                     "of constraints, one of infinitely many that satisfy the equations, so the "
+                     "model does not determine it, in ";
+  for (std::size_t i = 0; i < minimum_norm.size(); ++i) {
+    const auto& [r, reactions] = held[minimum_norm[i]];
+    const std::string sets = indeterminacy(runs[r], *reactions).sets;
+    note += (i == 0 ? "" : "; ") + labels[r] + (sets.empty() ? std::string() : " (" + sets + ")");
+  }
+  note += ".";
+  std::vector<std::size_t> determined;
+  for (std::size_t k = 0; k < held.size(); ++k) {
+    if (std::find(minimum_norm.begin(), minimum_norm.end(), k) == minimum_norm.end()) determined.push_back(k);
+  }
+  if (!determined.empty()) {
+    note += " Determined in " + runs_named(determined, held, labels) +
+            ": where the curves part, only those are the reaction the model predicts.";
+  }
+  return note;
 }
 
 std::vector<Curve> series_curves(const Eigen::VectorXd& time, const std::vector<Series>& series) {
@@ -262,30 +359,18 @@ std::string ground_axes_note(const RunData& run) {
          (run.axis_names_from_case ? ", names from the case" : "") + ")";
 }
 
-std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
-                                 const PlotOptions& options) {
+namespace {
+
+// Every plot of a run as drawn without a report config.
+std::vector<NamedPlot> default_run_plots(const RunData& run, const std::string& prefix,
+                                         const PlotOptions& options) {
   std::vector<NamedPlot> plots;
   const Eigen::VectorXd& t = run.results.time;
 
   // Reactions in the frames asked for (ground axes by default, seed paper Figs. 4, 5); forces
   // always, torques when the joint transmits any. Without ground-axes data (older files) the
   // joint frame stands in.
-  if (!options.configured.empty()) {
-    // A report config's plots, numbered in its order; joints or frames a run lacks are left out.
-    for (std::size_t k = 0; k < options.configured.size(); ++k) {
-      const ReactionPlotRequest& request = options.configured[k];
-      const auto joint = std::find_if(run.joints.begin(), run.joints.end(),
-                                      [&](const JointReactions& j) { return j.name == request.joint; });
-      if (joint == run.joints.end()) continue;
-      const std::optional<FrameView> view = frame_view(run, *joint, request.frame);
-      if (!view || (request.torque && !view->has_torque())) continue;
-      plots.push_back(reaction_plot(run, *joint, *view, request.torque,
-                                    fmt::format("{}plot{}_reaction_{}", prefix, k + 1, file_stem(joint->name)),
-                                    options, &request));
-    }
-  }
   for (const JointReactions& joint : run.joints) {
-    if (!options.configured.empty()) break;
     const std::string stem = prefix + "reaction_" + file_stem(joint.name);
     std::vector<FrameRequest> frames = options.frames;
     if (!frame_view(run, joint, ReactionFrame::kGround) &&
@@ -309,8 +394,10 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
             torque_peak, options.zero_fraction, force_peak, lever);
       }
       plots.push_back(std::move(force));
+      tag(plots, PlotKind::kReaction, joint.name);
       if (view->has_torque() && torque_peak > 0.0 && !torque_noise) {
         plots.push_back(reaction_plot(run, joint, *view, true, stem, options));
+        tag(plots, PlotKind::kReaction, joint.name);
       }
     }
   }
@@ -348,12 +435,14 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                      {"Driver efforts", kTimeLabel,
                       "effort [" + (unit.empty() ? std::string("N or N m") : unit) + "]", curves,
                       false}});
+    tag(plots, PlotKind::kDrivers, unit);
   }
   if (!run.energies.empty()) {
     plots.push_back({PlotSection::kEnergy, prefix + "energy.png",
                      "Energies and work: kinetic, potential (gravity, spring, strain), dissipated, "
                      "work of drivers and forces.",
                      {"Energy", kTimeLabel, "energy [J]", series_curves(t, run.energies), false}});
+    tag(plots, PlotKind::kEnergy, "");
   }
   if (const std::optional<EnergyBalance> balance = energy_balance(run)) {
     plots.push_back({PlotSection::kEnergy, prefix + "energy_balance_terms.png",
@@ -367,6 +456,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                        {"dissipated", t, balance->dissipated},
                        {"residual", t, balance->residual}},
                       false}});
+    tag(plots, PlotKind::kEnergyBalance, "");
   }
   if (const std::optional<Series> residual = energy_residual(run)) {
     plots.push_back({PlotSection::kEnergy, prefix + "energy_balance.png",
@@ -375,6 +465,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                      "(zero when the run conserves energy).",
                      {"Energy balance residual", kTimeLabel, "residual [J]",
                       {{residual->name, t, residual->values}}, false}});
+    tag(plots, PlotKind::kEnergyResidual, "");
   }
 
   // Hinge latches and stops: their joints' angles and their torques.
@@ -388,10 +479,12 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
     plots.push_back({PlotSection::kHinges, prefix + "hinge_angles.png",
                      "Angle of each joint carrying a latch or stop, from its start to its lock.",
                      {"Hinge angles", kTimeLabel, "angle [deg]", angles, false}});
+    tag(plots, PlotKind::kHingeAngles, "");
     plots.push_back({PlotSection::kHinges, prefix + "latch_torques.png",
                      "Torque of each latch or stop on its joint's body j, about the joint axis "
                      "(zero until it engages).",
                      {"Latch and stop torques", kTimeLabel, "torque [N m]", torques, false}});
+    tag(plots, PlotKind::kLatchTorques, "");
   }
   if (run.clearance && run.clearance->values.size() == t.size() && run.clearance->values.allFinite()) {
     plots.push_back({PlotSection::kClearance, prefix + "clearance.png",
@@ -399,6 +492,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                      "shapes); below zero one passes through the other.",
                      {"Clearance between bodies", kTimeLabel, "clearance [m]",
                       {{"minimum", t, run.clearance->values}}, false}});
+    tag(plots, PlotKind::kClearance, "");
   }
 
   // Deflections: the largest elastic displacement of each flexible body, then its modal
@@ -423,6 +517,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                      "mode shapes times modal coordinates, minus that rigid fit):" + fitted + ".",
                      {"Elastic deflection (largest over nodes)", kTimeLabel, "max |u rel.| [m]",
                       deflections, false}});
+    tag(plots, PlotKind::kDeflection, "");
   }
   for (const DeflectionProbe& probe : run.deflections) {
     if (probe.values.rows() != t.size() || t.size() == 0) continue;
@@ -444,6 +539,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                                         : fmt::format(" Not drawn, below {:g} of the largest: {}.",
                                                       options.zero_fraction, zeros)),
                      {"Deflection probe of " + probe.body, kTimeLabel, "deflection [m]", curves, false}});
+    tag(plots, PlotKind::kProbe, probe.body);
   }
   for (const render::BodyTrack& body : run.results.bodies) {
     if (!body.flexible || body.modal_coordinates.cols() == 0) continue;
@@ -456,6 +552,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                      "normalised modes, so eta is in kg^½ m).",
                      {"Modal coordinates of " + body.name, kTimeLabel, "modal coordinate eta [kg^½ m]",
                       eta, false}});
+    tag(plots, PlotKind::kModal, body.name);
   }
 
   // Recovered stresses: each body's peak over its mesh [MPa].
@@ -471,6 +568,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                      "von Mises on a shell's top or bottom surface, a beam's extreme-fibre axial stress "
                      "(modal stresses superposed at each sample).",
                      {"Peak stress", kTimeLabel, "stress [MPa]", stresses, false}});
+    tag(plots, PlotKind::kPeakStress, "");
   }
 
   // Constraint violations on a logarithmic scale (they span decades) when all are positive.
@@ -504,6 +602,71 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                                                   "logarithm).", zeros)
                                     : std::string()),
                      {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
+    tag(plots, PlotKind::kViolation, "");
+  }
+  return plots;
+}
+
+// The plots of configured request number `number` (1-based) in a run: a reaction drawn as
+// asked, other kinds taken from the run's default plots of that kind and subject.
+std::vector<NamedPlot> configured_plots(const RunData& run, const std::string& prefix, const PlotOptions& options,
+                                        const std::vector<NamedPlot>& defaults, const PlotRequest& request,
+                                        std::size_t number) {
+  std::vector<NamedPlot> plots;
+  const std::string numbered = fmt::format("{}plot{}_", prefix, number);
+  if (request.kind == PlotKind::kReaction) {
+    const auto joint = std::find_if(run.joints.begin(), run.joints.end(),
+                                    [&](const JointReactions& j) { return j.name == request.joint; });
+    if (joint == run.joints.end()) return plots;
+    const std::optional<FrameView> view = frame_view(run, *joint, request.frame);
+    if (!view || (request.torque && !view->has_torque())) return plots;
+    plots.push_back(reaction_plot(run, *joint, *view, request.torque,
+                                  numbered + "reaction_" + file_stem(joint->name), options, &request));
+    tag(plots, PlotKind::kReaction, joint->name);
+  } else {
+    for (const NamedPlot& plot : defaults) {
+      if (plot.kind != request.kind) continue;
+      if (!request.body.empty() && plot.subject != request.body) continue;
+      NamedPlot copy = plot;
+      copy.file = numbered + plot.file.substr(prefix.size());
+      keep_requested_curves(copy, request);
+      if (!copy.spec.curves.empty()) plots.push_back(std::move(copy));
+    }
+  }
+  std::erase_if(plots, [&](NamedPlot& plot) { return !apply_request(plot, request); });
+  return plots;
+}
+
+}  // namespace
+
+const std::vector<std::string>& plot_kind_names() {
+  static const std::vector<std::string> names{
+      "reaction", "probe", "modal", "deflection", "energy", "energy_balance", "energy_residual", "drivers",
+      "violation", "hinge_angles", "latch_torques", "clearance", "peak_stress"};
+  return names;
+}
+
+PlotKind plot_kind(const std::string& name) {
+  const std::vector<std::string>& names = plot_kind_names();
+  const auto found = std::find(names.begin(), names.end(), name);
+  return found == names.end() ? PlotKind::kOther : static_cast<PlotKind>(found - names.begin());
+}
+
+std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix, const PlotOptions& options) {
+  std::vector<NamedPlot> defaults = default_run_plots(run, prefix, options);
+  if (options.configured.empty()) return defaults;
+  // The configured plots in the config's order, then the default plots of the kinds it does
+  // not list.
+  std::vector<NamedPlot> plots;
+  for (std::size_t k = 0; k < options.configured.size(); ++k) {
+    for (NamedPlot& plot : configured_plots(run, prefix, options, defaults, options.configured[k], k + 1)) {
+      plots.push_back(std::move(plot));
+    }
+  }
+  for (NamedPlot& plot : defaults) {
+    const bool listed = std::any_of(options.configured.begin(), options.configured.end(),
+                                    [&](const PlotRequest& request) { return request.kind == plot.kind; });
+    if (!listed) plots.push_back(std::move(plot));
   }
   return plots;
 }
@@ -604,7 +767,7 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                                         const PlotOptions& options) {
   // Joint name -> runs holding its reactions, in first-seen order.
   std::vector<std::string> order;
-  std::map<std::string, std::vector<std::pair<std::size_t, const JointReactions*>>> holders;
+  std::map<std::string, JointHolders> holders;
   for (std::size_t r = 0; r < runs.size(); ++r) {
     for (const JointReactions& joint : runs[r].joints) {
       if (holders.count(joint.name) == 0) order.push_back(joint.name);
@@ -620,24 +783,33 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
     // orientations), else the joint frame.
     const FrameRequest& asked = options.frames.front();
     bool use_asked = asked.kind != ReactionFrame::kJoint;
-    std::vector<RowMatrix3d> forces;
+    std::vector<FrameView> views;
     for (const auto& [r, joint] : held) {
-      const std::optional<FrameView> view = use_asked ? frame_view(runs[r], *joint, asked) : std::nullopt;
+      std::optional<FrameView> view = use_asked ? frame_view(runs[r], *joint, asked) : std::nullopt;
       use_asked = use_asked && view.has_value();
-      if (view) forces.push_back(view->force);
+      if (view) views.push_back(std::move(*view));
     }
     if (!use_asked) {
-      forces.clear();
-      for (const auto& [r, joint] : held) forces.push_back(joint->force_joint);
+      views.clear();
+      for (const auto& [r, joint] : held) views.push_back(*frame_view(runs[r], *joint, ReactionFrame::kJoint));
+    }
+    // Per run, which force components its redundancy leaves undetermined in this frame: a
+    // component can be minimum-norm in one run (rigid, redundant) and determined in another.
+    std::vector<std::array<bool, 3>> undetermined;
+    for (std::size_t k = 0; k < held.size(); ++k) {
+      undetermined.push_back(indeterminate_in_frame(runs[held[k].first], *held[k].second, views[k], false));
     }
     const bool ground = use_asked && asked.kind == ReactionFrame::kGround;
     const bool named = use_asked && asked.kind == ReactionFrame::kNamed;
     const RunData& first = runs[held.front().first];
     for (int c = 0; c < 3; ++c) {
       std::vector<Curve> curves;
+      std::vector<std::size_t> minimum_norm;  // places in `held` of the runs where c is undetermined
       for (std::size_t k = 0; k < held.size(); ++k) {
         const std::size_t r = held[k].first;
-        curves.push_back({labels[r], runs[r].results.time, forces[k].col(c)});
+        const bool open = undetermined[k][static_cast<std::size_t>(c)];
+        if (open) minimum_norm.push_back(k);
+        curves.push_back({labels[r] + (open ? " (minimum-norm)" : ""), runs[r].results.time, views[k].force.col(c)});
       }
       const std::string component =
           ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
@@ -651,8 +823,10 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
       plots.push_back({PlotSection::kComparison, "compare_" + file_stem(name) + "_" + tag + ".png",
                        "Reaction " + component + " at joint " + name + " (" + note + ") in " +
                            std::to_string(held.size()) + " runs.",
-                       {"Joint " + name + ": " + component + " (" + frame + ")", kTimeLabel,
-                        "force [N]", curves, false}});
+                       {"Joint " + name + ": " + component + " (" + frame + ")" +
+                            (minimum_norm.empty() ? "" : ", minimum-norm in " + runs_named(minimum_norm, held, labels)),
+                        kTimeLabel, "force [N]", curves, false},
+                       comparison_note(runs, labels, held, minimum_norm, component)});
     }
   }
 

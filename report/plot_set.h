@@ -10,6 +10,7 @@
 #include "run_data.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,12 +21,30 @@ enum class PlotSection {
   kComparison, kStress, kSweep
 };
 
+// What a plot shows, as a report config names it (report_config.h): `reaction` (a joint's
+// force or torque in one frame), `probe` (a deflection probe), `modal` (a body's modal
+// coordinates), `deflection` (largest relative deflection of each flexible body), `energy`,
+// `energy_balance` (its terms), `energy_residual`, `drivers` (efforts, one plot per unit),
+// `violation` (constraint violation), `hinge_angles`, `latch_torques`, `clearance`,
+// `peak_stress`. Mode-selection, sweep and comparison plots are kOther (not configurable).
+enum class PlotKind {
+  kReaction, kProbe, kModal, kDeflection, kEnergy, kEnergyBalance, kEnergyResidual, kDrivers,
+  kViolation, kHingeAngles, kLatchTorques, kClearance, kPeakStress, kOther
+};
+
+// The config name of each configurable kind, in PlotKind order ("reaction", "probe", ...).
+const std::vector<std::string>& plot_kind_names();
+// The kind named `name`; kOther when none is.
+PlotKind plot_kind(const std::string& name);
+
 struct NamedPlot {
   PlotSection section = PlotSection::kReactions;
   std::string file;     // PNG file name inside the report's images/ folder
   std::string caption;  // plain text (escaped when written)
   PlotSpec spec;
   std::string warning;  // plain text shown as a visible note with the plot ("" for none)
+  PlotKind kind = PlotKind::kOther;
+  std::string subject;  // the joint (reaction), body (probe, modal) or unit (drivers); "" else
 
   NamedPlot() = default;
   NamedPlot(PlotSection section_, std::string file_, std::string caption_, PlotSpec spec_,
@@ -50,28 +69,39 @@ struct FrameRequest {
   bool operator==(const FrameRequest& other) const = default;
 };
 
-// One reaction plot asked for by a report config (report_config.h): a joint's force or torque
-// in one frame, the components chosen (x, y, z, magnitude).
-struct ReactionPlotRequest {
-  std::string joint;
+// One plot asked for by a report config (report_config.h). Per kind: a reaction is a joint's
+// force or torque in one frame with the components chosen (x, y, z, magnitude); a probe the
+// components chosen (x, y, z) of the probes of `body` (all bodies when empty); modal the modal
+// coordinates `modes` (1-based; empty: all) of `body`; drivers the efforts of the drivers
+// named (empty: all). For every kind: a title, a time window and a logarithmic or linear y axis.
+struct PlotRequest {
+  PlotKind kind = PlotKind::kReaction;
+  std::string joint;  // reaction
   FrameRequest frame;
   bool torque = false;
-  std::array<bool, 4> components{true, true, true, true};  // x, y, z, |F|
-  std::string title;  // "" for the default title
+  std::array<bool, 4> components{true, true, true, true};  // x, y, z, |F| (probe: x, y, z)
+  std::string body;                // probe, modal
+  std::vector<int> modes;          // modal
+  std::vector<std::string> names;  // drivers
+  std::string title;               // "" for the default title
+  std::optional<std::array<double, 2>> window;  // [from, to] in s, from < to; none: the run
+  std::optional<bool> log_y;       // none: the plot's own axis (log for violation, else linear)
 };
 
 struct PlotOptions {
   std::vector<FrameRequest> frames{FrameRequest()};  // in this order, per joint
-  // When not empty: the reaction plots of each run are these (those whose joint and frame the
-  // run has), instead of every joint in every frame of `frames`.
-  std::vector<ReactionPlotRequest> configured;
+  // When not empty: a report config's plots, numbered in its order, each drawn when the run
+  // has its data; they replace the default plots of every kind they list (the default
+  // reactions: every joint in every frame of `frames`), other kinds stay as they are.
+  std::vector<PlotRequest> configured;
   // A reaction component whose peak |value| is below this fraction of the largest component
   // of the same quantity (force or torque) at that joint and frame is listed as "≈ 0 (peak …)"
   // instead of drawn: numerical noise, not a signal.
   double zero_fraction = 1e-4;
 };
 
-// The plots of one run; file names start with `prefix` (e.g. "run1_").
+// The plots of one run; file names start with `prefix` (e.g. "run1_"), a configured plot's
+// with "<prefix>plot<n>_" (n: its place in the config).
 std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                                  const PlotOptions& options = {});
 
@@ -91,7 +121,9 @@ std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& pr
 // marker or body frame — else the joint frame), overlaying
 // that component of every run holding the joint; then one per deflection-probe component of a
 // body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
-// `labels`.
+// `labels`, with " (minimum-norm)" for a run whose redundancy leaves that force component
+// undetermined (indeterminate_components.h); such a plot's title says in which runs, and its
+// warning names each such run's redundant set and the runs where the component is determined.
 std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                                         const std::vector<std::string>& labels,
                                         const PlotOptions& options = {});

@@ -28,9 +28,13 @@ cli::Command add_report_command(CLI::App& app) {
                       "(e.g. R1.j: the case names a joint's markers <joint>.i and <joint>.j) or a "
                       "body (e.g. crank): components rotated into that frame at every sample");
   command->add_option("--config", options->config,
-                      "report config (YAML) listing the reaction plots: joint, frame, quantity "
-                      "(force|torque), components (x, y, z, magnitude), title; replaces the "
-                      "default reaction plots (docs/report.md)");
+                      "report config (YAML) listing plots, each with a kind: reaction (joint, "
+                      "frame, quantity force|torque, components x, y, z, magnitude), probe (body, "
+                      "components), modal (body, modes), drivers (drivers), deflection, energy, "
+                      "energy_balance, energy_residual, violation, hinge_angles, latch_torques, "
+                      "clearance, peak_stress; each with title, window [from, to] s and y_axis "
+                      "log|linear; they replace the default plots of the kinds listed "
+                      "(docs/report.md; example: cases/slider_crank_report.yaml)");
   command->add_option("--zero-fraction", options->zero_fraction,
                       "a reaction component whose peak is below this fraction of the joint's "
                       "largest is listed as '≈ 0 (peak …)' instead of drawn (default 1e-4)")

@@ -193,6 +193,43 @@ std::string joints_table(const RunData& run) {
   return out + "</table>\n";
 }
 
+// The joints of a comparison (held by two or more runs, as comparison_plots.h overlays them):
+// per run, what of each reaction is minimum-norm, since redundancy may differ between runs.
+std::string comparison_joints_table(const std::vector<RunSection>& sections) {
+  std::vector<std::string> names;
+  for (const RunSection& s : sections) {
+    for (const JointReactions& joint : s.run->joints) {
+      if (std::find(names.begin(), names.end(), joint.name) != names.end()) continue;
+      int holders = 0;
+      for (const RunSection& other : sections) {
+        holders += std::any_of(other.run->joints.begin(), other.run->joints.end(),
+                               [&](const JointReactions& j) { return j.name == joint.name; });
+      }
+      if (holders >= 2) names.push_back(joint.name);
+    }
+  }
+  if (names.empty()) return "";
+  std::string out = "<h3>Joints compared</h3>\n<table class=\"joints-compared\"><tr><th>joint</th>";
+  for (const RunSection& s : sections) out += "<th>" + html_escape(s.label) + "</th>";
+  out += "</tr>\n";
+  for (const std::string& name : names) {
+    out += "<tr><td>" + html_escape(name) + "</td>";
+    for (const RunSection& s : sections) {
+      const auto joint = std::find_if(s.run->joints.begin(), s.run->joints.end(),
+                                      [&](const JointReactions& j) { return j.name == name; });
+      if (joint == s.run->joints.end()) {
+        out += "<td class=\"note\">not in this run</td>";
+        continue;
+      }
+      const Indeterminacy which = indeterminacy(*s.run, *joint);
+      out += fmt::format("<td{}>{}</td>", which.force || which.torque ? " class=\"indeterminate\"" : "",
+                         html_escape(indeterminate_summary(*s.run, *joint)));
+    }
+    out += "</tr>\n";
+  }
+  return out + "</table>\n";
+}
+
 std::string redundancy_table(const RunData& run) {
   if (run.redundant_equations.empty()) return "";
   std::string out =
@@ -430,6 +467,7 @@ std::string report_html(const ReportContent& content) {
   // Several runs: one reaction component overlaid (seed paper Figs. 6 and 10).
   if (!content.comparisons.empty()) {
     out += "<section id=\"comparison\">\n<h2>Comparison of runs</h2>\n";
+    out += comparison_joints_table(content.runs);
     if (content.interactive) out += time_window_form("comparison");
     for (const WrittenPlot& plot : content.comparisons) out += figure(plot, "comparison");
     out += "</section>\n";

@@ -44,20 +44,24 @@ void remove_earlier_outputs(const std::filesystem::path& folder) {
 }
 
 // Draws `plot` into images/, writes its curves to data/<stem>.csv and, when the page is
-// interactive, keeps their decimated JSON.
+// interactive, keeps their decimated JSON (with every sample when decimated).
 WrittenPlot write_plot(ChartCanvas& canvas, NamedPlot plot, const std::filesystem::path& out,
                        bool interactive, int columns) {
   canvas.draw(plot.spec, out / kImageFolder / plot.file);
   WrittenPlot written;
   written.csv_file = plot.file.substr(0, plot.file.rfind('.')) + ".csv";
   const std::filesystem::path csv = out / kDataFolder / written.csv_file;
+  const CurveTable all = curve_table(plot.spec.curves);
   std::ofstream file(csv, std::ios::binary);
-  file << curve_csv(curve_table(plot.spec.curves), plot.spec.x_label, plot.spec.y_label);
+  file << curve_csv(all, plot.spec.x_label, plot.spec.y_label);
   file.close();
   if (!file) throw std::runtime_error("cannot write '" + csv.string() + "'");
   if (interactive && !plot.spec.curves.empty()) {
     const CurveTable table = curve_table(plot.spec.curves, columns);
-    written.interactive_json = curve_json(plot.spec, table);
+    // A decimated chart also carries every sample, re-decimated in the page on zoom and pan.
+    const bool decimated = table.x.size() < all.x.size();
+    written.interactive_json =
+        curve_json(plot.spec, table, decimated ? full_resolution_json(plot.spec.curves, columns) : "");
     written.interactive_rows = table.x.size();
   }
   written.plot = std::move(plot);

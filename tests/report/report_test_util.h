@@ -17,8 +17,15 @@
 
 namespace limber::report::testing {
 
+// An empty directory for one test, under the build tree (LIMBER_REPORT_TEST_TMP) so that
+// checkouts testing on one machine at once do not clear each other's files.
 inline std::filesystem::path fresh_directory(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("limber_report_" + name);
+#ifdef LIMBER_REPORT_TEST_TMP
+  const std::filesystem::path root = LIMBER_REPORT_TEST_TMP;
+#else
+  const std::filesystem::path root = std::filesystem::temp_directory_path();
+#endif
+  const auto dir = root / ("limber_report_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
