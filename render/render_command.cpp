@@ -60,8 +60,9 @@ cli::Command add_render_command(CLI::App& app) {
                     "draw each flexible body's undeformed outline (at the rigid fit through its "
                     "joints) under the deformed, scaled shape");
   command->add_flag("--forces", options->forces,
-                    "draw the reaction force on body j at every joint as an arrow, scaled to a "
-                    "round number of newtons per metre stated in a legend");
+                    "draw the reaction force and torque on body j at every joint as arrows over "
+                    "the bodies (the torque double-headed, right-hand rule), each scaled to a "
+                    "round number of N (N m) per metre stated in a legend");
   CLI::Option* aa_option = command->add_option(
       "--anti-aliasing", *anti_aliasing,
       "fxaa (on the finished frame, on the CPU), gl-fxaa (VTK's OpenGL pass: about half the "

@@ -120,9 +120,11 @@ Results read_results(const std::filesystem::path& directory) {
   for (const std::string& joint : joint_links) {
     const std::string g = layout::at(layout::kJoints, joint);
     ns = std::min(ns, r.rows(layout::at(g, layout::joint::kPosition), 3));
-    // Marker poses (files since issue 15): both markers, or none.
-    const std::string force = layout::at(g, layout::joint::kForceGround);
-    if (r.exists(force)) ns = std::min(ns, r.rows(force, 3));
+    // Reactions (optional), then marker poses (files since issue 15): both markers, or none.
+    for (const char* name : {layout::joint::kForceGround, layout::joint::kTorqueGround}) {
+      const std::string reaction = layout::at(g, name);
+      if (r.exists(reaction)) ns = std::min(ns, r.rows(reaction, 3));
+    }
     for (int side = 0; side < 2; ++side) {
       if (!r.exists(marker_path(g, side, layout::kMarkerOrientation))) continue;
       ns = std::min({ns, r.rows(marker_path(g, side, layout::kMarkerPosition), 3),
@@ -186,10 +188,12 @@ Results read_results(const std::filesystem::path& directory) {
     const std::vector<double> p =
         r.read<double>(layout::at(g, layout::joint::kPosition), H5T_NATIVE_DOUBLE, ns);
     track.position = Eigen::Map<const RowMatrix3d>(p.data(), n, 3);
-    const std::string force = layout::at(g, layout::joint::kForceGround);
-    if (r.exists(force)) {
-      const std::vector<double> f = r.read<double>(force, H5T_NATIVE_DOUBLE, ns);
-      track.force_ground = Eigen::Map<const RowMatrix3d>(f.data(), n, 3);
+    for (const auto& [name, values] : {std::pair{layout::joint::kForceGround, &track.force_ground},
+                                       std::pair{layout::joint::kTorqueGround, &track.torque_ground}}) {
+      const std::string reaction = layout::at(g, name);
+      if (!r.exists(reaction)) continue;
+      const std::vector<double> f = r.read<double>(reaction, H5T_NATIVE_DOUBLE, ns);
+      *values = Eigen::Map<const RowMatrix3d>(f.data(), n, 3);
     }
     for (int side = 0; side < 2; ++side) {
       if (!r.exists(marker_path(g, side, layout::kMarkerOrientation))) continue;

@@ -74,6 +74,7 @@ struct JointTrack {
   // Markers i and j; both empty (0 rows) in files written before marker poses were stored.
   MarkerTrack marker_i, marker_j;
   RowMatrix3d force_ground;  // ns x 3, reaction on body_j in ground axes [N] (0 rows: none)
+  RowMatrix3d torque_ground;  // ns x 3, its torque about the joint point, ground axes [N m] (0 rows: none)
 
   bool has_markers() const { return marker_i.orientation.rows() == position.rows(); }
 };
