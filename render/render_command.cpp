@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include "render_job.h"
+#include "results/file_names.h"
 
 #include <fmt/core.h>
 
@@ -92,7 +93,7 @@ cli::Command add_render_command(CLI::App& app) {
     if (summary.frames > 0) {
       fmt::print("  {:.1f} frames/s wall clock; {}\n",
                  summary.frames / std::max(summary.wall_seconds, 1e-9),
-                 (options->directory / "frames").string());
+                 (options->directory / results::kFramesFolder).string());
     }
     if (!summary.video.empty()) fmt::print("  video: {}\n", summary.video.string());
     if (!summary.gif.empty()) fmt::print("  gif: {}\n", summary.gif.string());

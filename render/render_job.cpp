@@ -5,6 +5,7 @@
 #include "progress_bar.h"
 #include "video_encoder.h"
 #include "vtk_export.h"
+#include "results/file_names.h"
 
 #include <chrono>
 #include <cmath>
@@ -71,7 +72,7 @@ RenderSummary render_results(const RenderOptions& options) {
   const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
 
   // Frames: render on this thread; FXAA and PNG encoding on the writer threads.
-  const std::filesystem::path frames = options.directory / "frames";
+  const std::filesystem::path frames = options.directory / results::kFramesFolder;
   if (options.write_png) {
     std::filesystem::create_directories(frames);
     remove_stale(frames, "frame_", ".png");
@@ -102,7 +103,7 @@ RenderSummary render_results(const RenderOptions& options) {
 
   // ParaView series.
   if (options.write_vtk) {
-    const std::filesystem::path vtk = options.directory / "vtk";
+    const std::filesystem::path vtk = options.directory / results::kVtkFolder;
     remove_stale(vtk, "", ".vtu");
     summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
   }
@@ -116,8 +117,8 @@ RenderSummary render_results(const RenderOptions& options) {
           "the PNG frames are in " + frames.string());
     } else {
       for (const auto& [wanted, name, target] :
-           {std::tuple{options.write_video, "animation.mp4", &summary.video},
-            std::tuple{options.write_gif, "animation.gif", &summary.gif}}) {
+           {std::tuple{options.write_video, results::kAnimationVideoFileName, &summary.video},
+            std::tuple{options.write_gif, results::kAnimationGifFileName, &summary.gif}}) {
         if (!wanted) continue;
         const std::filesystem::path output = options.directory / name;
         const std::string problem = encode_video(*ffmpeg, frames, options.playback_fps, output);

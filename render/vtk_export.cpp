@@ -3,6 +3,7 @@
 #include "body_pose.h"
 #include "file_stem.h"
 #include "stress_reader.h"
+#include "results/file_names.h"
 
 #include <vtkAppendFilter.h>
 #include <vtkCellType.h>
@@ -158,8 +159,8 @@ std::string xml_escape(const std::string& text) {
 int write_vtk_series(const Results& results, const std::filesystem::path& vtk_directory,
                      double t0, double t1) {
   std::filesystem::create_directories(vtk_directory);
-  std::ofstream pvd(vtk_directory / "scene.pvd");
-  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / "scene.pvd").string() + "'");
+  std::ofstream pvd(vtk_directory / results::kVtkSceneFileName);
+  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / results::kVtkSceneFileName).string() + "'");
   pvd << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "  <Collection>\n";
@@ -191,7 +192,7 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
     }
   }
   pvd << "  </Collection>\n</VTKFile>\n";
-  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / "scene.pvd").string() + "'");
+  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / results::kVtkSceneFileName).string() + "'");
   return written;
 }
 

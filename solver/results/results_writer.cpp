@@ -402,7 +402,7 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
   write_int_attribute(root, layout::kVersionAttribute, 1);
   write_string_attribute(root, layout::kTitleAttribute, title);
   write_string_attribute(root, layout::kCaseFileAttribute, case_file);
-  write_string_attribute(root, layout::kStatusAttribute, "running");
+  write_string_attribute(root, layout::kStatusAttribute, layout::status::kRunning);
   write_string_attribute(root, layout::kMessageAttribute, "");
   impl_->bodies_group = create_group(root, layout::kBodies);
   H5Handle constraints = create_group(root, layout::kConstraints);
@@ -727,10 +727,10 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();
   m.write_block();
-  write_string_attribute(root, layout::kStatusAttribute, status == RunStatus::kOk           ? "ok"
-                                         : status == RunStatus::kInaccurate ? "ok_inaccurate"
-                                         : status == RunStatus::kFailed     ? "failed"
-                                                                            : "interrupted");
+  write_string_attribute(root, layout::kStatusAttribute, status == RunStatus::kOk           ? layout::status::kOk
+                                         : status == RunStatus::kInaccurate ? layout::status::kInaccurate
+                                         : status == RunStatus::kFailed     ? layout::status::kFailed
+                                                                            : layout::status::kInterrupted);
   write_string_attribute(root, layout::kMessageAttribute, message);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 
