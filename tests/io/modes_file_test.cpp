@@ -15,6 +15,7 @@
 #include "modal/modal_stress.h"
 #include "modal/rigid_body_modes.h"
 #include "modal/static_modes.h"
+#include "results/h5_reader.h"
 #include "results/modes_reader.h"
 
 namespace limber::io {
@@ -188,18 +189,15 @@ TEST(ModesFile, LayoutHoldsTheDocumentedAttributes) {
   const modal::ModeSet set = synthetic_modes(model.dof_count(), 3);
   const std::string path = scratch_path("modes_layout.h5");
   write_modes_file(path, "layout", "small.yaml", {{"b", &model, &set}});
-  const H5Group file = H5Group::open_file(path);
-  EXPECT_EQ(file.read_string_attribute("format"), "limber-modes");
-  EXPECT_EQ(file.read_int_attribute("version"), 1);
-  const H5Group body = file.open_group("bodies").open_group("b");
-  EXPECT_EQ(body.read_int_attribute("dof_count"), model.dof_count());
-  EXPECT_EQ(body.read_int_attribute("mode_count"), 3);
-  H5Dims dims;
-  body.open_group("modes").read_doubles("translations", &dims);
-  EXPECT_EQ(dims, (H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
-  body.open_group("modes").read_doubles("shapes", &dims);
-  EXPECT_EQ(dims, (H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
-  EXPECT_EQ(body.open_group("dofs").read_strings("names"),
+  const results::H5Reader file(path, "modes file", "");
+  EXPECT_EQ(file.string_attribute("/", "format"), "limber-modes");
+  EXPECT_EQ(file.doubles_attribute("/", "version", 1).at(0), 1.0);
+  EXPECT_EQ(file.doubles_attribute("/bodies/b", "dof_count", 1).at(0), model.dof_count());
+  EXPECT_EQ(file.doubles_attribute("/bodies/b", "mode_count", 1).at(0), 3.0);
+  EXPECT_EQ(file.dims("/bodies/b/modes/translations"),
+            (H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
+  EXPECT_EQ(file.dims("/bodies/b/modes/shapes"), (H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
+  EXPECT_EQ(file.strings("/bodies/b/dofs/names"),
             (std::vector<std::string>{"ux", "uy", "uz", "rx", "ry", "rz"}));
   std::filesystem::remove(path);
 }
@@ -218,10 +216,10 @@ TEST(ModesFile, BodyNamesWithSlashesAndDotsRoundTrip) {
   EXPECT_EQ(file.bodies[1].name, "beam%2F1");
   EXPECT_EQ(file.bodies[2].name, ".");
   EXPECT_EQ(file.bodies[2].shapes, set.shapes);
-  const H5Group bodies = H5Group::open_file(path).open_group("bodies");
-  EXPECT_EQ(bodies.open_group("beam%2F1").read_string_attribute("name"), "beam/1");
-  EXPECT_EQ(bodies.open_group("beam%252F1").read_string_attribute("name"), "beam%2F1");
-  EXPECT_EQ(bodies.open_group("%2E").read_string_attribute("name"), ".");
+  const results::H5Reader file_links(path, "modes file", "");
+  EXPECT_EQ(file_links.string_attribute("/bodies/beam%2F1", "name"), "beam/1");
+  EXPECT_EQ(file_links.string_attribute("/bodies/beam%252F1", "name"), "beam%2F1");
+  EXPECT_EQ(file_links.string_attribute("/bodies/%2E", "name"), ".");
   std::filesystem::remove(path);
 }
 
