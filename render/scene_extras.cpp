@@ -37,6 +37,10 @@ constexpr double kForceArrowWidth = 0.15;
 constexpr double kForcePeakLength = 0.25;
 // Torque arrows: two heads, each this fraction of the arrow's length, the second behind the first.
 constexpr double kTorqueHeadLength = 0.25;
+// Torques below this fraction of (largest force x scene radius) are round-off of the reaction
+// solve (a planar mechanism's out-of-plane moments come out near 1e-10 N m for 30 N forces):
+// no arrows, the legend says so.
+constexpr double kTorqueNoise = 1e-6;
 
 Eigen::Quaterniond quaternion_row(const RowMatrix4d& q, Eigen::Index i) {
   return Eigen::Quaterniond(q(i, 0), q(i, 1), q(i, 2), q(i, 3)).normalized();
@@ -280,6 +284,7 @@ struct SceneExtras::Impl {
       peak_force = std::max(peak_force, peak_norm(results, joint.force_ground, t0, t1));
       peak_torque = std::max(peak_torque, peak_norm(results, joint.torque_ground, t0, t1));
     }
+    const bool torque_noise = peak_torque > 0.0 && peak_torque <= kTorqueNoise * peak_force * radius;
     for (const JointTrack& joint : results.joints) {
       vtkSmartPointer<vtkActor> force, torque;
       if (joint.force_ground.rows() == results.sample_count() && peak_force > 0.0) {
@@ -288,7 +293,7 @@ struct SceneExtras::Impl {
         source->SetShaftResolution(16);
         force = flat_actor(overlay, source->GetOutputPort(), kForceColor);
       }
-      if (joint.torque_ground.rows() == results.sample_count() && peak_torque > 0.0) {
+      if (joint.torque_ground.rows() == results.sample_count() && peak_torque > 0.0 && !torque_noise) {
         torque = flat_actor(overlay, double_headed_arrow()->GetOutputPort(), kTorqueColor);
       }
       arrows.push_back(force);
@@ -302,7 +307,12 @@ struct SceneExtras::Impl {
                              scale.length, scale.value, peak_force),
                  kForceColor, 0.08);
     }
-    if (peak_torque > 0.0) {
+    if (torque_noise) {
+      add_legend(fmt::format("torques ~ 0 (peak {:.3g} N m, below {:g} of the largest force x the scene "
+                             "radius): not drawn",
+                             peak_torque, kTorqueNoise),
+                 kTorqueColor, 0.125);
+    } else if (peak_torque > 0.0) {
       const ArrowScale scale = arrow_scale(peak_torque, radius);
       newton_metres_per_metre = scale.per_metre();
       add_legend(fmt::format("torque arrows (double head, right-hand rule): {:g} m = {:g} N m "

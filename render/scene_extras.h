@@ -17,7 +17,9 @@
 //    vector (right-hand rule, the moment symbol of Adams and RecurDyn), |T| / (newton metres
 //    per metre) long; each with its own scale, a round number chosen so the largest value in
 //    the time range is about a quarter of the scene, stated in a legend ("force arrows: 0.1 m =
-//    50 N (reaction on body j)", "torque arrows (double head): 0.1 m = 2 N m (...)"). The
+//    50 N (reaction on body j)", "torque arrows (double head): 0.1 m = 2 N m (...)"); torques
+//    whose peak is below 1e-6 of (largest force x scene radius) are round-off, not drawn, and
+//    the legend says "torques ~ 0 (peak ...)". The
 //    arrows are drawn in an overlay layer (overlay()) that shares the camera and is drawn after
 //    the bodies with its own depth buffer, so a body never hides an arrow that starts inside it.
 // Internal to limber_render (exposes VTK types).

@@ -160,6 +160,14 @@ TEST(SceneExtras, PinGlyphAtTheProjectedRevoluteAndForceArrowAlongTheCentripetal
                                  kForceColor);
   EXPECT_GT(minus_x, 3);
   EXPECT_EQ(plus_x, 0);
+  // The planar crank's reaction torques about x and z are round-off at most (the driver carries
+  // the one about the pin): no torque arrow, no torque scale.
+  EXPECT_EQ(renderer.scene().extras().newton_metres_per_metre(), 0.0);
+  int torque_pixels = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) torque_pixels += has_hue(image.pixel(x, y), kTorqueColor) ? 1 : 0;
+  }
+  EXPECT_EQ(torque_pixels, 0);
 }
 
 TEST(SceneExtras, SlideArrowBeyondTheSliderAndTheRailOverItsTravel) {
