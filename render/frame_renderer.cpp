@@ -35,6 +35,11 @@ struct FrameRenderer::Impl {
       : options(o), context(o.width, o.height), scene(results, o, t0, t1) {
     window->attach_to_current_context(o.width, o.height);
     window->AddRenderer(scene.renderer());
+    // The reaction arrows over the bodies (scene_extras.h).
+    if (vtkRenderer* overlay = scene.overlay_renderer()) {
+      window->SetNumberOfLayers(2);
+      window->AddRenderer(overlay);
+    }
   }
 };
 
@@ -110,5 +115,7 @@ std::string FrameRenderer::backend() const {
 const RenderTiming& FrameRenderer::timing() const { return impl_->timing; }
 
 double FrameRenderer::color_range_max() const { return impl_->scene.color_range_max(); }
+
+const Scene& FrameRenderer::scene() const { return impl_->scene; }
 
 }  // namespace limber::render

@@ -15,6 +15,8 @@
 
 namespace limber::render {
 
+class Scene;
+
 // Wall-clock seconds spent per phase, summed over the frames rendered.
 struct RenderTiming {
   double scene_update = 0.0;  // poses, deformed meshes, text
@@ -48,6 +50,8 @@ class FrameRenderer {
   const RenderTiming& timing() const;
   // Upper end of the colour bar (largest |u| in the range) [m].
   double color_range_max() const;
+  // The scene drawn (its glyphs and arrow scales: scene.h).
+  const Scene& scene() const;
 
  private:
   struct Impl;

@@ -7,6 +7,8 @@
 #include "png_frame_writer.h"
 #include "progress_bar.h"
 #include "video_encoder.h"
+#include "results/modes_reader.h"
+#include "results/results_layout.h"
 
 #include <fmt/core.h>
 
@@ -47,6 +49,15 @@ double mode_amplitude(const FlexibleMesh& mesh, Eigen::Index mode, double amplit
   return peak > 0.0 ? amplitude_fraction * body_size(mesh) / peak : 0.0;
 }
 
+BodyModeShapes body_mode_shapes(const results::ModesBody& body) {
+  BodyModeShapes shapes{body.name, flexible_mesh(body.mesh), {}, {}};
+  for (const results::ModeRecord& mode : body.modes) {
+    shapes.kinds.push_back(mode.kind);
+    shapes.labels.push_back(mode.label);
+  }
+  return shapes;
+}
+
 Results mode_results(const BodyModeShapes& body, Eigen::Index mode,
                      const ModeAnimationOptions& options) {
   const double f = body.mesh.frequencies_hz(mode);
@@ -65,7 +76,7 @@ Results mode_results(const BodyModeShapes& body, Eigen::Index mode,
 
   // Samples at the frame times of one period (and its end): at rest, eta = A sin(2 pi f t).
   Results results;
-  results.status = "ok";
+  results.status = results::layout::status::kOk;
   results.time.resize(n + 1);
   track.position.setZero(n + 1, 3);
   track.orientation.resize(n + 1, 4);
@@ -104,13 +115,17 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
   // The body sits at the origin unrotated: the triad shows its axes, which name the mode's plane.
   view.world_triad = options.plane_view;
   validate(view);
-  const ModeShapes shapes = read_mode_shapes(modes_file);
+  // The bodies' meshes and mode translations, kinds and labels (not the full shapes).
+  std::vector<BodyModeShapes> bodies;
+  for (const results::ModesBody& body : results::read_modes(modes_file, results::ModesContent::kDrawing).bodies) {
+    bodies.push_back(body_mode_shapes(body));
+  }
 
   // Fresh output: an earlier run may have had more modes.
   const std::filesystem::path root = output_directory / "modes";
   std::filesystem::remove_all(root);
   int total = 0;
-  for (const BodyModeShapes& body : shapes.bodies) {
+  for (const BodyModeShapes& body : bodies) {
     total += static_cast<int>(body.mesh.mode_translations.cols()) * options.frames_per_cycle;
   }
   ModeAnimationSummary summary;
@@ -122,7 +137,7 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
   }
 
   ProgressBar progress("mode shapes", total, options.progress);
-  for (const BodyModeShapes& body : shapes.bodies) {
+  for (const BodyModeShapes& body : bodies) {
     for (Eigen::Index mode = 0; mode < body.mesh.mode_translations.cols(); ++mode) {
       // One period, rendered here and encoded on the writer thread.
       const Results results = mode_results(body, mode, options);

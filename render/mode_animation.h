@@ -8,14 +8,29 @@
 // body's size (the diagonal of its mesh's bounding box); the frame's title states A.
 #pragma once
 
-#include "modes_reader.h"
 #include "render_options.h"
+#include "results_reader.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+namespace limber::results {
+struct ModesBody;
+}  // namespace limber::results
+
 namespace limber::render {
+
+// A body's modes as drawn: mesh and mode translations, and per mode its kind and label.
+struct BodyModeShapes {
+  std::string name;
+  FlexibleMesh mesh;                // mode_translations (3 nn) x nm, frequencies_hz nm
+  std::vector<std::string> kinds;   // nm: normal | constraint | attachment
+  std::vector<std::string> labels;  // nm: e.g. "normal 3"
+};
+
+// The drawing's copy of a body read from modes.h5 (results/modes_reader.h).
+BodyModeShapes body_mode_shapes(const results::ModesBody& body);
 
 struct ModeAnimationOptions {
   int frames_per_cycle = 24;         // frames k = 0..n-1 at t = k T / n

@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include "render_job.h"
+#include "results/file_names.h"
 
 #include <fmt/core.h>
 
@@ -69,8 +70,9 @@ cli::Command add_render_command(CLI::App& app) {
                     "draw each flexible body's undeformed outline (at the rigid fit through its "
                     "joints) under the deformed, scaled shape");
   command->add_flag("--forces", options->forces,
-                    "draw the reaction force on body j at every joint as an arrow, scaled to a "
-                    "round number of newtons per metre stated in a legend");
+                    "draw the reaction force and torque on body j at every joint as arrows over "
+                    "the bodies (the torque double-headed, right-hand rule), each scaled to a "
+                    "round number of N (N m) per metre stated in a legend");
   CLI::Option* aa_option = command->add_option(
       "--anti-aliasing", *anti_aliasing,
       "fxaa (on the finished frame, on the CPU), gl-fxaa (VTK's OpenGL pass: about half the "
@@ -113,7 +115,7 @@ cli::Command add_render_command(CLI::App& app) {
     if (summary.frames > 0) {
       fmt::print("  {:.1f} frames/s wall clock; {}\n",
                  summary.frames / std::max(summary.wall_seconds, 1e-9),
-                 (options->directory / "frames").string());
+                 (options->directory / results::kFramesFolder).string());
     }
     if (!summary.video.empty()) fmt::print("  video: {}\n", summary.video.string());
     if (!summary.gif.empty()) fmt::print("  gif: {}\n", summary.gif.string());

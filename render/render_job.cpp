@@ -8,6 +8,7 @@
 #include "vtk_export.h"
 #include "xdmf_export.h"
 #include "xdmf_layout.h"
+#include "results/file_names.h"
 
 #include <chrono>
 #include <cmath>
@@ -74,7 +75,7 @@ RenderSummary render_results(const RenderOptions& options) {
   const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
 
   // Frames: render on this thread; FXAA and PNG encoding on the writer threads.
-  const std::filesystem::path frames = options.directory / "frames";
+  const std::filesystem::path frames = options.directory / results::kFramesFolder;
   if (options.write_png) {
     std::filesystem::create_directories(frames);
     remove_stale(frames, "frame_", ".png");
@@ -107,7 +108,7 @@ RenderSummary render_results(const RenderOptions& options) {
   // other kind's files of an earlier render are removed, so DIR/vtk holds what was asked for.
   if (options.paraview != ParaViewOutput::kNone) {
     const auto start = std::chrono::steady_clock::now();
-    const std::filesystem::path vtk = options.directory / "vtk";
+    const std::filesystem::path vtk = options.directory / results::kVtkFolder;
     const bool xdmf = options.paraview != ParaViewOutput::kPvd;
     const bool pvd = options.paraview != ParaViewOutput::kXdmf;
     remove_stale(vtk, "", ".vtu");
@@ -145,8 +146,8 @@ RenderSummary render_results(const RenderOptions& options) {
           "the PNG frames are in " + frames.string());
     } else {
       for (const auto& [wanted, name, target] :
-           {std::tuple{options.write_video, "animation.mp4", &summary.video},
-            std::tuple{options.write_gif, "animation.gif", &summary.gif}}) {
+           {std::tuple{options.write_video, results::kAnimationVideoFileName, &summary.video},
+            std::tuple{options.write_gif, results::kAnimationGifFileName, &summary.gif}}) {
         if (!wanted) continue;
         const std::filesystem::path output = options.directory / name;
         const std::string problem = encode_video(*ffmpeg, frames, options.playback_fps, output);

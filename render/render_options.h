@@ -48,7 +48,7 @@ struct RenderOptions {
   bool time_stamp = true;     // "t = ... s" bottom left (off for mode shapes)
   bool world_triad = true;    // ground x, y, z arrows of a round length (world_triad.h)
   // Orientation aids (scene_extras.h): joint axis glyphs and slider rails, an undeformed ghost
-  // outline of flexible bodies, reaction-force arrows with a scale legend.
+  // outline of flexible bodies, reaction force and torque arrows with scale legends.
   bool joint_axes = true;
   bool ghost = false;
   bool forces = false;

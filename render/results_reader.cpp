@@ -1,7 +1,9 @@
 #include "results_reader.h"
 
+#include "results/file_names.h"
 #include "results/h5_reader.h"
 #include "results/link_name.h"
+#include "results/modes_reader.h"
 #include "results/results_layout.h"
 
 #include <algorithm>
@@ -44,55 +46,24 @@ Eigen::Matrix3d MarkerTrack::rotation(Eigen::Index k) const {
       .toRotationMatrix();
 }
 
-FlexibleMesh read_flexible_mesh(const results::H5Reader& r, const std::string& body) {
+FlexibleMesh flexible_mesh(const results::MeshData& data) {
   FlexibleMesh mesh;
-  // Nodes and elements.
-  const std::string m = layout::at(body, layout::body::kMesh);
-  const std::string nodes_path = layout::at(m, layout::mesh::kNodes);
-  const hsize_t nn = r.rows(nodes_path, 3);
-  const std::vector<double> nodes = r.read<double>(nodes_path, H5T_NATIVE_DOUBLE, nn);
-  mesh.nodes = Eigen::Map<const RowMatrix3d>(nodes.data(), static_cast<Eigen::Index>(nn), 3);
-  const std::string lines_path = layout::at(m, layout::mesh::kLines);
-  const hsize_t nl = r.exists(lines_path) ? r.rows(lines_path, 2) : 0;
-  const std::vector<int> lines = r.read<int>(lines_path, H5T_NATIVE_INT, nl);
-  mesh.lines.resize(static_cast<Eigen::Index>(nl), 2);
-  std::copy(lines.begin(), lines.end(), mesh.lines.data());
-  const std::string quads_path = layout::at(m, layout::mesh::kQuads);
-  const hsize_t nq = r.exists(quads_path) ? r.rows(quads_path, 4) : 0;
-  const std::vector<int> quads = r.read<int>(quads_path, H5T_NATIVE_INT, nq);
-  mesh.quads.resize(static_cast<Eigen::Index>(nq), 4);
-  std::copy(quads.begin(), quads.end(), mesh.quads.data());
-  const bool inside = (mesh.lines.size() == 0 || (mesh.lines.minCoeff() >= 0 &&
-                                                  mesh.lines.maxCoeff() < static_cast<int>(nn))) &&
-                      (mesh.quads.size() == 0 || (mesh.quads.minCoeff() >= 0 &&
-                                                  mesh.quads.maxCoeff() < static_cast<int>(nn)));
-  if (!inside) r.fail("element node indices in 0.." + std::to_string(nn - 1) + " in " + m, "others");
-  const std::string radius_path = layout::at(m, layout::mesh::kBeamRadius);
-  if (r.exists(radius_path)) {
-    mesh.beam_radius = r.read<double>(radius_path, H5T_NATIVE_DOUBLE, 1).at(0);
-  }
-
-  // Modes: [nm, nn, 3] row-major is the column-major (3 nn) x nm matrix.
-  const std::string modes_group = layout::at(body, layout::body::kModes);
-  const std::string translations = layout::at(modes_group, layout::modes::kTranslations);
-  const std::vector<hsize_t> d = r.dims(translations);
-  if (d.size() != 3 || d[1] != nn || d[2] != 3) {
-    r.fail(translations + " of shape [nm, " + std::to_string(nn) + ", 3]", "another shape");
-  }
-  const std::vector<double> modes = r.read<double>(translations, H5T_NATIVE_DOUBLE, d[0]);
-  mesh.mode_translations = Eigen::Map<const Eigen::MatrixXd>(
-      modes.data(), static_cast<Eigen::Index>(3 * nn), static_cast<Eigen::Index>(d[0]));
-  const std::string frequencies = layout::at(modes_group, layout::modes::kFrequenciesHz);
-  if (r.exists(frequencies)) {
-    const std::vector<double> f = r.read<double>(frequencies, H5T_NATIVE_DOUBLE, d[0]);
-    mesh.frequencies_hz = Eigen::Map<const Eigen::VectorXd>(f.data(), static_cast<Eigen::Index>(f.size()));
-  }
+  mesh.nodes = data.nodes;
+  mesh.lines = data.lines;
+  mesh.quads = data.quads;
+  mesh.beam_radius = data.beam_radius;
+  mesh.mode_translations = data.mode_translations;
+  mesh.frequencies_hz = data.frequencies_hz;
   return mesh;
+}
+
+FlexibleMesh read_flexible_mesh(const results::H5Reader& r, const std::string& body) {
+  return flexible_mesh(results::read_mesh(r, body));
 }
 
 Results read_results(const std::filesystem::path& directory) {
   Results results;
-  results.file = directory / "results.h5";
+  results.file = directory / results::kResultsFileName;
 
   const results::H5Reader r(results.file, "results file", " (run `limber run` first)");
 
@@ -120,9 +91,11 @@ Results read_results(const std::filesystem::path& directory) {
   for (const std::string& joint : joint_links) {
     const std::string g = layout::at(layout::kJoints, joint);
     ns = std::min(ns, r.rows(layout::at(g, layout::joint::kPosition), 3));
-    // Marker poses (files since issue 15): both markers, or none.
-    const std::string force = layout::at(g, layout::joint::kForceGround);
-    if (r.exists(force)) ns = std::min(ns, r.rows(force, 3));
+    // Reactions (optional), then marker poses (files since issue 15): both markers, or none.
+    for (const char* name : {layout::joint::kForceGround, layout::joint::kTorqueGround}) {
+      const std::string reaction = layout::at(g, name);
+      if (r.exists(reaction)) ns = std::min(ns, r.rows(reaction, 3));
+    }
     for (int side = 0; side < 2; ++side) {
       if (!r.exists(marker_path(g, side, layout::kMarkerOrientation))) continue;
       ns = std::min({ns, r.rows(marker_path(g, side, layout::kMarkerPosition), 3),
@@ -186,10 +159,12 @@ Results read_results(const std::filesystem::path& directory) {
     const std::vector<double> p =
         r.read<double>(layout::at(g, layout::joint::kPosition), H5T_NATIVE_DOUBLE, ns);
     track.position = Eigen::Map<const RowMatrix3d>(p.data(), n, 3);
-    const std::string force = layout::at(g, layout::joint::kForceGround);
-    if (r.exists(force)) {
-      const std::vector<double> f = r.read<double>(force, H5T_NATIVE_DOUBLE, ns);
-      track.force_ground = Eigen::Map<const RowMatrix3d>(f.data(), n, 3);
+    for (const auto& [name, values] : {std::pair{layout::joint::kForceGround, &track.force_ground},
+                                       std::pair{layout::joint::kTorqueGround, &track.torque_ground}}) {
+      const std::string reaction = layout::at(g, name);
+      if (!r.exists(reaction)) continue;
+      const std::vector<double> f = r.read<double>(reaction, H5T_NATIVE_DOUBLE, ns);
+      *values = Eigen::Map<const RowMatrix3d>(f.data(), n, 3);
     }
     for (int side = 0; side < 2; ++side) {
       if (!r.exists(marker_path(g, side, layout::kMarkerOrientation))) continue;

@@ -15,6 +15,7 @@
 
 namespace limber::results {
 class H5Reader;
+struct MeshData;
 }  // namespace limber::results
 
 namespace limber::render {
@@ -74,6 +75,7 @@ struct JointTrack {
   // Markers i and j; both empty (0 rows) in files written before marker poses were stored.
   MarkerTrack marker_i, marker_j;
   RowMatrix3d force_ground;  // ns x 3, reaction on body_j in ground axes [N] (0 rows: none)
+  RowMatrix3d torque_ground;  // ns x 3, its torque about the joint point, ground axes [N m] (0 rows: none)
 
   bool has_markers() const { return marker_i.orientation.rows() == position.rows(); }
 };
@@ -94,7 +96,10 @@ Results read_results(const std::filesystem::path& directory);
 
 // The mesh and mode translations of the group `body` (e.g. "/bodies/plate": mesh/nodes, lines,
 // quads, beam_radius; modes/translations [nm, nn, 3], frequencies_hz): the same layout in
-// results.h5 and modes.h5. Throws InputError when a dataset is missing or malformed.
+// results.h5 and modes.h5, read by results::read_mesh (results/modes_reader.h). Throws
+// InputError when a dataset is missing or malformed.
 FlexibleMesh read_flexible_mesh(const results::H5Reader& file, const std::string& body);
+// The drawing's copy of a mesh read by results/modes_reader.h.
+FlexibleMesh flexible_mesh(const results::MeshData& data);
 
 }  // namespace limber::render

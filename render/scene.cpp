@@ -566,6 +566,10 @@ Scene::~Scene() = default;
 
 vtkRenderer* Scene::renderer() const { return impl_->renderer; }
 
+vtkRenderer* Scene::overlay_renderer() const { return impl_->extras->overlay(); }
+
+const SceneExtras& Scene::extras() const { return *impl_->extras; }
+
 double Scene::color_range_max() const { return impl_->umax; }
 
 std::vector<PixelBox> Scene::overlay_boxes() const {
@@ -670,7 +674,18 @@ void Scene::update(double t) {
     for (const BodyTrack& body : s.results.bodies) centroid += body_state(body, at).position;
     s.place_camera(centroid / static_cast<double>(s.results.bodies.size()), s.follow_distance);
   }
-  s.renderer->ResetCameraClippingRange();
+  // The clipping range holds the bodies and the overlay's arrows (one camera for both).
+  double bounds[6];
+  s.renderer->ComputeVisiblePropBounds(bounds);
+  if (vtkRenderer* overlay = s.extras->overlay()) {
+    double arrows[6];
+    overlay->ComputeVisiblePropBounds(arrows);
+    for (int k = 0; k < 6; k += 2) {
+      bounds[k] = std::min(bounds[k], arrows[k]);
+      bounds[k + 1] = std::max(bounds[k + 1], arrows[k + 1]);
+    }
+  }
+  s.renderer->ResetCameraClippingRange(bounds);
 }
 
 }  // namespace limber::render

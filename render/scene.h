@@ -26,6 +26,8 @@ inline constexpr std::array<double, 3> kGroundColor{0.72, 0.72, 0.68};
 // Wide enough that the labels ("7.51e-03" at height/50 pixels) fit beside the bar with a gap.
 inline constexpr std::array<double, 4> kColorBarBox{0.85, 0.10, 0.12, 0.74};
 
+class SceneExtras;
+
 class Scene {
  public:
   // Builds every actor for `results`; the colour range is the largest displacement magnitude
@@ -38,6 +40,11 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   vtkRenderer* renderer() const;
+  // The reaction arrows' renderer, to draw in layer 1 over renderer() (scene_extras.h); null
+  // without options.forces.
+  vtkRenderer* overlay_renderer() const;
+  // Joint glyphs, ghosts and reaction arrows (their scales).
+  const SceneExtras& extras() const;
   // Moves bodies and joints to time t [s] (interpolated), deforms meshes, updates the time
   // stamp and, for a follow camera, the focal point.
   void update(double t);

@@ -4,8 +4,11 @@
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
+#include <vtkAppendPolyData.h>
 #include <vtkArrowSource.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkConeSource.h>
 #include <vtkCylinderSource.h>
 #include <vtkLineSource.h>
 #include <vtkMatrix4x4.h>
@@ -28,10 +31,16 @@ namespace {
 // Glyph sizes as fractions of the scene radius.
 constexpr double kPinLength = 0.12, kPinRadius = 0.014;
 constexpr double kSlideArrowLength = 0.22;  // scaled uniformly: tip radius 0.1 of the length
-// Force arrows: lateral scale of VTK's unit arrow (tip radius 0.1, shaft 0.03 of it).
+// Force and torque arrows: lateral scale of VTK's unit arrow (tip radius 0.1, shaft 0.03 of it).
 constexpr double kForceArrowWidth = 0.15;
-// The largest force's arrow is about this fraction of the scene radius.
+// The largest force's (torque's) arrow is about this fraction of the scene radius.
 constexpr double kForcePeakLength = 0.25;
+// Torque arrows: two heads, each this fraction of the arrow's length, the second behind the first.
+constexpr double kTorqueHeadLength = 0.25;
+// Torques below this fraction of (largest force x scene radius) are round-off of the reaction
+// solve (a planar mechanism's out-of-plane moments come out near 1e-10 N m for 30 N forces):
+// no arrows, the legend says so.
+constexpr double kTorqueNoise = 1e-6;
 
 Eigen::Quaterniond quaternion_row(const RowMatrix4d& q, Eigen::Index i) {
   return Eigen::Quaterniond(q(i, 0), q(i, 1), q(i, 2), q(i, 3)).normalized();
@@ -95,6 +104,40 @@ double reach_along(const Results& results, const JointTrack& joint, const Eigen:
   return reach;
 }
 
+// VTK's unit arrow along x (0..1) with a second head behind its tip: the moment symbol.
+vtkSmartPointer<vtkAppendPolyData> double_headed_arrow() {
+  auto arrow = vtkSmartPointer<vtkArrowSource>::New();
+  arrow->SetTipLength(kTorqueHeadLength);
+  arrow->SetTipResolution(16);
+  arrow->SetShaftResolution(16);
+  auto second = vtkSmartPointer<vtkConeSource>::New();
+  second->SetHeight(kTorqueHeadLength);
+  second->SetRadius(0.1);  // vtkArrowSource's tip radius
+  second->SetResolution(16);
+  second->SetDirection(1.0, 0.0, 0.0);
+  second->SetCenter(1.0 - 1.5 * kTorqueHeadLength, 0.0, 0.0);
+  auto both = vtkSmartPointer<vtkAppendPolyData>::New();
+  both->AddInputConnection(arrow->GetOutputPort());
+  both->AddInputConnection(second->GetOutputPort());
+  return both;
+}
+
+// The largest row norm of a joint's [ns, 3] reaction over the samples in [t0, t1] (0 rows: 0).
+double peak_norm(const Results& results, const RowMatrix3d& values, double t0, double t1) {
+  double peak = 0.0;
+  if (values.rows() != results.sample_count()) return peak;
+  for (Eigen::Index k = 0; k < values.rows(); ++k) {
+    if (results.time(k) >= t0 && results.time(k) <= t1) peak = std::max(peak, values.row(k).norm());
+  }
+  return peak;
+}
+
+// A row of a [ns, 3] track between samples, linearly.
+Eigen::Vector3d interpolate(const RowMatrix3d& values, const SampleBracket& at) {
+  const Eigen::Index next = std::min<Eigen::Index>(at.i + 1, values.rows() - 1);
+  return (1.0 - at.w) * values.row(at.i).transpose() + at.w * values.row(next).transpose();
+}
+
 bool is_pin(const std::string& type) { return type == "revolute" || type == "cylindrical"; }
 bool is_slide(const std::string& type) { return type == "translational"; }
 
@@ -107,9 +150,9 @@ void marker_pose(const MarkerTrack& marker, const SampleBracket& at, Eigen::Vect
   R_WM = quaternion_row(marker.orientation, at.i).slerp(at.w, quaternion_row(marker.orientation, j)).toRotationMatrix();
 }
 
-ForceScale force_scale(double peak_force, double scene_radius) {
-  // A round arrow length stands for a round force: L_ref m = F_ref N, F_ref = round(peak / 2).
-  return {round_length(0.5 * peak_force), round_length(0.5 * kForcePeakLength * scene_radius)};
+ArrowScale arrow_scale(double peak, double scene_radius) {
+  // A round arrow length stands for a round value: L_ref m = V_ref, V_ref = round(peak / 2).
+  return {round_length(0.5 * peak), round_length(0.5 * kForcePeakLength * scene_radius)};
 }
 
 std::array<double, 2> slide_travel(const JointTrack& joint) {
@@ -132,9 +175,10 @@ struct SceneExtras::Impl {
   std::vector<vtkSmartPointer<vtkActor>> glyphs, rails;
   std::vector<double> glyph_length;
   std::vector<std::array<double, 2>> travel;
-  // Per joint: its force arrow, or null.
-  std::vector<vtkSmartPointer<vtkActor>> arrows;
-  double newtons_per_metre = 0.0;
+  // The arrows' renderer (layer 1) and, per joint, its force and torque arrows, or null.
+  vtkSmartPointer<vtkRenderer> overlay;
+  std::vector<vtkSmartPointer<vtkActor>> arrows, torque_arrows;
+  double newtons_per_metre = 0.0, newton_metres_per_metre = 0.0;
   // Ghost outlines: per flexible body, its fit, points and the body index.
   struct Ghost {
     std::size_t body = 0;
@@ -216,39 +260,81 @@ struct SceneExtras::Impl {
     ghosts.push_back(ghost);
   }
 
-  void add_force_arrows(double t0, double t1) {
-    // The largest reaction force over the samples in [t0, t1].
-    double peak = 0.0;
+  // A legend line of an arrow scale at height y (normalised viewport).
+  void add_legend(const std::string& text, const std::array<double, 3>& color, double y) {
+    auto legend = vtkSmartPointer<vtkTextActor>::New();
+    legend->SetInput(text.c_str());
+    legend->GetTextProperty()->SetFontSize(std::max(10, options.height / 54));
+    legend->GetTextProperty()->SetColor(color[0] * 0.8, color[1] * 0.8, color[2] * 0.8);
+    legend->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    legend->GetPositionCoordinate()->SetValue(0.02, y);
+    renderer->AddViewProp(legend);
+    texts.push_back(legend);
+  }
+
+  void add_reaction_arrows(double t0, double t1) {
+    // The overlay: layer 1, the scene's camera, its own depth buffer, the colour kept.
+    overlay = vtkSmartPointer<vtkRenderer>::New();
+    overlay->SetLayer(1);
+    overlay->SetActiveCamera(renderer->GetActiveCamera());
+    overlay->InteractiveOff();
+    // The largest reaction force and torque over the samples in [t0, t1].
+    double peak_force = 0.0, peak_torque = 0.0;
     for (const JointTrack& joint : results.joints) {
-      if (joint.force_ground.rows() != results.sample_count()) continue;
-      for (Eigen::Index k = 0; k < joint.force_ground.rows(); ++k) {
-        if (results.time(k) >= t0 && results.time(k) <= t1) peak = std::max(peak, joint.force_ground.row(k).norm());
-      }
+      peak_force = std::max(peak_force, peak_norm(results, joint.force_ground, t0, t1));
+      peak_torque = std::max(peak_torque, peak_norm(results, joint.torque_ground, t0, t1));
     }
+    const bool torque_noise = peak_torque > 0.0 && peak_torque <= kTorqueNoise * peak_force * radius;
     for (const JointTrack& joint : results.joints) {
-      vtkSmartPointer<vtkActor> arrow;
-      if (joint.force_ground.rows() == results.sample_count() && peak > 0.0) {
+      vtkSmartPointer<vtkActor> force, torque;
+      if (joint.force_ground.rows() == results.sample_count() && peak_force > 0.0) {
         auto source = vtkSmartPointer<vtkArrowSource>::New();
         source->SetTipResolution(16);
         source->SetShaftResolution(16);
-        arrow = flat_actor(renderer, source->GetOutputPort(), kForceColor);
+        force = flat_actor(overlay, source->GetOutputPort(), kForceColor);
       }
-      arrows.push_back(arrow);
+      if (joint.torque_ground.rows() == results.sample_count() && peak_torque > 0.0 && !torque_noise) {
+        torque = flat_actor(overlay, double_headed_arrow()->GetOutputPort(), kTorqueColor);
+      }
+      arrows.push_back(force);
+      torque_arrows.push_back(torque);
     }
-    if (peak <= 0.0) return;
-    const ForceScale scale = force_scale(peak, radius);
-    const double reference_force = scale.force, reference_length = scale.length;
-    newtons_per_metre = scale.newtons_per_metre();
-    auto legend = vtkSmartPointer<vtkTextActor>::New();
-    legend->SetInput(fmt::format("force arrows: {:g} m = {:g} N (reaction on body j; peak {:.3g} N)",
-                                 reference_length, reference_force, peak)
-                         .c_str());
-    legend->GetTextProperty()->SetFontSize(std::max(10, options.height / 54));
-    legend->GetTextProperty()->SetColor(kForceColor[0] * 0.8, kForceColor[1] * 0.8, kForceColor[2] * 0.8);
-    legend->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    legend->GetPositionCoordinate()->SetValue(0.02, 0.08);
-    renderer->AddViewProp(legend);
-    texts.push_back(legend);
+    // Scales and their legends, bottom left above the time stamp.
+    if (peak_force > 0.0) {
+      const ArrowScale scale = arrow_scale(peak_force, radius);
+      newtons_per_metre = scale.per_metre();
+      add_legend(fmt::format("force arrows: {:g} m = {:g} N (reaction on body j; peak {:.3g} N)",
+                             scale.length, scale.value, peak_force),
+                 kForceColor, 0.08);
+    }
+    if (torque_noise) {
+      add_legend(fmt::format("torques ~ 0 (peak {:.3g} N m, below {:g} of the largest force x the scene "
+                             "radius): not drawn",
+                             peak_torque, kTorqueNoise),
+                 kTorqueColor, 0.125);
+    } else if (peak_torque > 0.0) {
+      const ArrowScale scale = arrow_scale(peak_torque, radius);
+      newton_metres_per_metre = scale.per_metre();
+      add_legend(fmt::format("torque arrows (double head, right-hand rule): {:g} m = {:g} N m "
+                             "(reaction on body j about the joint; peak {:.3g} N m)",
+                             scale.length, scale.value, peak_torque),
+                 kTorqueColor, peak_force > 0.0 ? 0.125 : 0.08);
+    }
+  }
+
+  // Places a unit arrow along `vector` from `origin`, |vector| / per_metre long; hidden when
+  // shorter than a speck.
+  void place_arrow(vtkActor* arrow, const Eigen::Vector3d& origin, const Eigen::Vector3d& vector,
+                   double per_metre) {
+    const double length = vector.norm() / per_metre;
+    arrow->SetVisibility(length > 1e-9 * radius);
+    if (length <= 1e-9 * radius) return;
+    Eigen::Matrix3d axes = basis_along(vector.normalized());
+    axes.col(0) *= length;
+    axes.col(1) *= kForceArrowWidth * radius;
+    axes.col(2) *= kForceArrowWidth * radius;
+    set_columns(arrow->GetUserMatrix(), axes, origin);
+    arrow->Modified();
   }
 };
 
@@ -266,7 +352,7 @@ SceneExtras::SceneExtras(const Results& results, const RenderOptions& options, v
       if (results.bodies[b].flexible) s.add_ghost(b);
     }
   }
-  if (options.forces) s.add_force_arrows(t0, t1);
+  if (options.forces) s.add_reaction_arrows(t0, t1);
 }
 
 SceneExtras::~SceneExtras() = default;
@@ -311,27 +397,23 @@ void SceneExtras::update(const SampleBracket& at) {
     ghost.points->Modified();
     ghost.outline->Modified();
   }
-  // Force arrows from the joint point along F, |F| / (N per m) long.
+  // Force and torque arrows from the joint point along F and T.
   for (std::size_t j = 0; j < s.arrows.size(); ++j) {
-    if (!s.arrows[j]) continue;
     const JointTrack& joint = s.results.joints[j];
-    const Eigen::Index next = std::min<Eigen::Index>(at.i + 1, joint.force_ground.rows() - 1);
-    const Eigen::Vector3d F = (1.0 - at.w) * joint.force_ground.row(at.i).transpose() +
-                              at.w * joint.force_ground.row(next).transpose();
-    const double length = F.norm() / s.newtons_per_metre;
-    s.arrows[j]->SetVisibility(length > 1e-9 * s.radius);
-    if (length <= 1e-9 * s.radius) continue;
-    Eigen::Matrix3d axes = basis_along(F.normalized());
-    axes.col(0) *= length;
-    axes.col(1) *= kForceArrowWidth * s.radius;
-    axes.col(2) *= kForceArrowWidth * s.radius;
-    set_columns(s.arrows[j]->GetUserMatrix(), axes, joint_position(joint, at));
-    s.arrows[j]->Modified();
+    const Eigen::Vector3d p_W = joint_position(joint, at);
+    if (s.arrows[j]) s.place_arrow(s.arrows[j], p_W, interpolate(joint.force_ground, at), s.newtons_per_metre);
+    if (s.torque_arrows[j]) {
+      s.place_arrow(s.torque_arrows[j], p_W, interpolate(joint.torque_ground, at), s.newton_metres_per_metre);
+    }
   }
 }
 
 std::vector<vtkSmartPointer<vtkTextActor>> SceneExtras::texts() const { return impl_->texts; }
 
 double SceneExtras::newtons_per_metre() const { return impl_->newtons_per_metre; }
+
+double SceneExtras::newton_metres_per_metre() const { return impl_->newton_metres_per_metre; }
+
+vtkRenderer* SceneExtras::overlay() const { return impl_->overlay; }
 
 }  // namespace limber::render

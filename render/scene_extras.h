@@ -11,10 +11,17 @@
 //    body i;
 //  - with options.ghost: each flexible body's undeformed outline (its mesh edges at the rigid
 //    fit through its joint nodes, relative_deflection.h, i.e. without the scaled deflection);
-//  - with options.forces: the reaction force on body j at every joint (force_ground), an arrow
-//    from the joint point, length |F| / (newtons per metre), the scale a round number chosen
-//    so the largest force in the time range is about a quarter of the scene, stated in a
-//    legend ("force arrows: 0.1 m = 50 N (reaction on body j)").
+//  - with options.forces: the reaction force and torque on body j at every joint
+//    (force_ground, torque_ground about the joint point): the force a single-headed arrow from
+//    the joint point, |F| / (newtons per metre) long; the torque a double-headed arrow along its
+//    vector (right-hand rule, the moment symbol of Adams and RecurDyn), |T| / (newton metres
+//    per metre) long; each with its own scale, a round number chosen so the largest value in
+//    the time range is about a quarter of the scene, stated in a legend ("force arrows: 0.1 m =
+//    50 N (reaction on body j)", "torque arrows (double head): 0.1 m = 2 N m (...)"); torques
+//    whose peak is below 1e-6 of (largest force x scene radius) are round-off, not drawn, and
+//    the legend says "torques ~ 0 (peak ...)". The
+//    arrows are drawn in an overlay layer (overlay()) that shares the camera and is drawn after
+//    the bodies with its own depth buffer, so a body never hides an arrow that starts inside it.
 // Internal to limber_render (exposes VTK types).
 #pragma once
 
@@ -40,6 +47,7 @@ inline constexpr std::array<double, 3> kSlideAxisColor{0.10, 0.55, 0.95};  // tr
 inline constexpr std::array<double, 3> kRailColor{0.20, 0.20, 0.22};
 inline constexpr std::array<double, 3> kGhostColor{0.45, 0.45, 0.50};
 inline constexpr std::array<double, 3> kForceColor{0.80, 0.10, 0.60};
+inline constexpr std::array<double, 3> kTorqueColor{0.05, 0.60, 0.45};
 
 class SceneExtras {
  public:
@@ -55,8 +63,13 @@ class SceneExtras {
   void update(const SampleBracket& at);
   // The legend texts added (for the overlay boxes FXAA leaves alone).
   std::vector<vtkSmartPointer<vtkTextActor>> texts() const;
-  // Newtons per metre of arrow (0 without force arrows).
+  // Newtons per metre of force arrow and newton metres per metre of torque arrow (0 without
+  // arrows).
   double newtons_per_metre() const;
+  double newton_metres_per_metre() const;
+  // The renderer of the arrows, to draw in layer 1 of the window after the scene's renderer
+  // (layer 0), with its camera; null without options.forces.
+  vtkRenderer* overlay() const;
 
  private:
   struct Impl;
@@ -68,15 +81,15 @@ class SceneExtras {
 void marker_pose(const MarkerTrack& marker, const SampleBracket& at, Eigen::Vector3d& p_W,
                  Eigen::Matrix3d& R_WM);
 
-// The force arrows' scale for the largest force `peak_force` [N] in a scene of radius
-// `scene_radius` [m]: a round force (1, 2 or 5 × 10^k N near peak / 2) drawn as a round length
-// (near 1/8 of the scene radius), so the peak's arrow is about a quarter of the radius.
-struct ForceScale {
-  double force = 0.0;   // [N]
+// The scale of force or torque arrows for the largest value `peak` [N or N m] in a scene of
+// radius `scene_radius` [m]: a round value (1, 2 or 5 × 10^k near peak / 2) drawn as a round
+// length (near 1/8 of the scene radius), so the peak's arrow is about a quarter of the radius.
+struct ArrowScale {
+  double value = 0.0;   // [N or N m]
   double length = 0.0;  // [m]
-  double newtons_per_metre() const { return force / length; }
+  double per_metre() const { return value / length; }
 };
-ForceScale force_scale(double peak_force, double scene_radius);
+ArrowScale arrow_scale(double peak, double scene_radius);
 
 // Travel of a translational joint along marker i's z over the whole run: min and max of
 // (p_j − p_i)·z_i [m].

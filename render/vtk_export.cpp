@@ -4,6 +4,7 @@
 #include "file_stem.h"
 #include "primitive_source.h"
 #include "stress_reader.h"
+#include "results/file_names.h"
 
 #include <vtkAppendFilter.h>
 #include <vtkCellType.h>
@@ -139,8 +140,8 @@ std::string xml_escape(const std::string& text) {
 int write_vtk_series(const Results& results, const std::filesystem::path& vtk_directory,
                      double t0, double t1) {
   std::filesystem::create_directories(vtk_directory);
-  std::ofstream pvd(vtk_directory / "scene.pvd");
-  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / "scene.pvd").string() + "'");
+  std::ofstream pvd(vtk_directory / results::kVtkSceneFileName);
+  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / results::kVtkSceneFileName).string() + "'");
   pvd << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "  <Collection>\n";
@@ -172,7 +173,7 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
     }
   }
   pvd << "  </Collection>\n</VTKFile>\n";
-  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / "scene.pvd").string() + "'");
+  if (!pvd) throw std::runtime_error("cannot write '" + (vtk_directory / results::kVtkSceneFileName).string() + "'");
   return written;
 }
 

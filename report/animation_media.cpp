@@ -1,5 +1,7 @@
 #include "animation_media.h"
 
+#include "results/file_names.h"
+
 namespace limber::report {
 
 std::vector<std::filesystem::path> pick_stills(const std::vector<std::filesystem::path>& frames,
@@ -27,7 +29,7 @@ std::vector<std::string> copy_stills(const std::vector<std::filesystem::path>& s
 
 std::string place_video(const std::filesystem::path& video, const std::filesystem::path& folder,
                         const std::string& prefix) {
-  const std::string name = prefix + "animation.mp4";
+  const std::string name = prefix + results::kAnimationVideoFileName;
   const std::filesystem::path target = folder / name;
   std::filesystem::remove(target);
   std::error_code error;

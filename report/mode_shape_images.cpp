@@ -3,6 +3,7 @@
 #include "frame_renderer.h"
 #include "html.h"
 #include "png_frame_writer.h"
+#include "results/results_layout.h"
 
 #include <cstdio>
 
@@ -18,7 +19,7 @@ render::Results single_mode(const render::Results& results, const render::BodyTr
   std::snprintf(title, sizeof title, "mode %d: %.4g Hz", static_cast<int>(mode) + 1,
                 mode < body.mesh.frequencies_hz.size() ? body.mesh.frequencies_hz(mode) : 0.0);
   one.title = body.name + " " + title;
-  one.status = "ok";
+  one.status = results::layout::status::kOk;
   one.time = Eigen::VectorXd::Zero(1);
   render::BodyTrack shape = body;
   shape.position = body.position.topRows(1);

@@ -4,6 +4,7 @@
 #include "html.h"
 #include "indeterminate_components.h"
 #include "reaction_frames.h"
+#include "results/results_layout.h"
 
 #include <fmt/format.h>
 
@@ -728,7 +729,7 @@ std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& pr
   std::vector<std::string> order;
   std::map<std::string, std::vector<const SweepPointRow*>> members;
   for (const SweepPointRow& row : sweep.points) {
-    if (row.status != "ok" && row.status != "ok_inaccurate") continue;
+    if (row.status != results::layout::status::kOk && row.status != results::layout::status::kInaccurate) continue;
     if (!row.wall_s || !(*row.wall_s > 0.0) || !row.error_rms || !row.error_peak) continue;
     if (members.count(row.curve) == 0) order.push_back(row.curve);
     members[row.curve].push_back(&row);

@@ -5,6 +5,7 @@
 #include "selection_html.h"
 #include "stress_summary.h"
 #include "sweep_html.h"
+#include "results/results_layout.h"
 
 #include <fmt/format.h>
 
@@ -103,13 +104,13 @@ std::string plots_of(const RunSection& section, PlotSection kind) {
 // that finished ok.
 std::string status_banner(const RunData& run) {
   const render::Results& r = run.results;
-  if (r.status == "ok") return "";
+  if (r.status == results::layout::status::kOk) return "";
   const std::string shown =
       r.sample_count() > 0
           ? fmt::format("The report shows the {} samples written, up to t = {} s.", r.sample_count(),
                         number(r.time(r.sample_count() - 1)))
           : std::string("No sample was written.");
-  if (r.status == "ok_inaccurate") {
+  if (r.status == results::layout::status::kInaccurate) {
     // The run's own accuracy warnings (results.h5 root attribute accuracy_warnings).
     std::string warnings;
     for (const auto& [name, value] : run.solver_attributes) {
@@ -120,7 +121,7 @@ std::string status_banner(const RunData& run) {
         "estimate says the answer is off: {}</div>\n",
         html_escape(warnings.empty() ? "(no warning recorded)" : warnings));
   }
-  if (r.status == "failed") {
+  if (r.status == results::layout::status::kFailed) {
     return fmt::format("<div class=\"banner failed\" role=\"alert\">This run failed: {} {}</div>\n",
                        html_escape(r.message.empty() ? "(no message)" : r.message), shown);
   }

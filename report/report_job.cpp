@@ -12,6 +12,7 @@
 #include "report_config.h"
 #include "report_html.h"
 #include "run_data.h"
+#include "results/file_names.h"
 
 #include <fstream>
 
@@ -121,7 +122,7 @@ ReportSummary generate_report(const ReportOptions& options) {
 
   // Output folders.
   const std::filesystem::path out =
-      options.output.empty() ? options.directories.front() / "report" : options.output;
+      options.output.empty() ? options.directories.front() / results::kReportFolder : options.output;
   const std::filesystem::path images = out / kImageFolder;
   std::error_code error;
   for (const char* folder : {kImageFolder, kDataFolder, kMediaFolder}) remove_earlier_outputs(out / folder);
@@ -190,7 +191,7 @@ ReportSummary generate_report(const ReportOptions& options) {
   }
 
   // The page.
-  summary.index = out / "index.html";
+  summary.index = out / results::kReportIndexFileName;
   std::ofstream file(summary.index, std::ios::binary);
   file << report_html(content);
   file.close();

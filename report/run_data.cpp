@@ -2,10 +2,11 @@
 
 #include "core/error.h"
 #include "body_pose.h"
-#include "modes_reader.h"
 #include "relative_deflection.h"
+#include "results/file_names.h"
 #include "results/h5_reader.h"
 #include "results/link_name.h"
+#include "results/modes_reader.h"
 #include "results/results_layout.h"
 
 #include <algorithm>
@@ -266,28 +267,25 @@ void read_axis_names(const H5Reader& file, RunData& run) {
 // Mode tables: modes.h5 beside the results when it holds the body (kinds and labels), else the
 // frequencies in results.h5. A damaged modes.h5 is noted, not fatal: the results still report.
 void read_mode_tables(RunData& run) {
-  const std::filesystem::path modes_file = run.directory / "modes.h5";
-  render::ModeShapes modes;
+  const std::filesystem::path modes_file = run.directory / results::kModesFileName;
+  results::ModesData modes;
   std::error_code error;
   if (std::filesystem::is_regular_file(modes_file, error)) {
     try {
-      modes = render::read_mode_shapes(modes_file);
+      modes = results::read_modes(modes_file, results::ModesContent::kDrawing);
     } catch (const InputError& e) {
       run.notes.push_back(std::string("modes.h5 not used: ") + e.what());
     }
   }
   for (const render::BodyTrack& body : run.results.bodies) {
     if (!body.flexible) continue;
-    ModeTable table{body.name, "results.h5", {}};
+    ModeTable table{body.name, results::kResultsFileName, {}};
     const auto in_modes = std::find_if(modes.bodies.begin(), modes.bodies.end(),
-                                       [&](const render::BodyModeShapes& b) { return b.name == body.name; });
+                                       [&](const results::ModesBody& b) { return b.name == body.name; });
     if (in_modes != modes.bodies.end()) {
-      table.source = "modes.h5";
-      const Eigen::VectorXd& f = in_modes->mesh.frequencies_hz;
-      for (Eigen::Index i = 0; i < f.size(); ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        table.modes.push_back({f(i), k < in_modes->kinds.size() ? in_modes->kinds[k] : "",
-                               k < in_modes->labels.size() ? in_modes->labels[k] : ""});
+      table.source = results::kModesFileName;
+      for (const results::ModeRecord& mode : in_modes->modes) {
+        table.modes.push_back({mode.frequency_hz, mode.kind, mode.label});
       }
     } else {
       for (Eigen::Index i = 0; i < body.mesh.frequencies_hz.size(); ++i) {
@@ -301,7 +299,7 @@ void read_mode_tables(RunData& run) {
 // Media left by `limber render`.
 void find_media(RunData& run) {
   std::error_code error;
-  const std::filesystem::path frames = run.directory / "frames";
+  const std::filesystem::path frames = run.directory / results::kFramesFolder;
   if (std::filesystem::is_directory(frames, error)) {
     for (const auto& entry : std::filesystem::directory_iterator(frames, error)) {
       if (entry.is_regular_file() && entry.path().extension() == ".png") {
@@ -310,7 +308,7 @@ void find_media(RunData& run) {
     }
     std::sort(run.frames.begin(), run.frames.end());
   }
-  const std::filesystem::path video = run.directory / "animation.mp4";
+  const std::filesystem::path video = run.directory / results::kAnimationVideoFileName;
   if (std::filesystem::is_regular_file(video, error)) run.video = video;
 }
 

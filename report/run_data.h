@@ -10,6 +10,7 @@
 #include "selection_data.h"
 #include "stress_reader.h"
 #include "sweep_data.h"
+#include "results/results_layout.h"
 
 #include <Eigen/Core>
 
@@ -115,7 +116,7 @@ struct RunData {
   std::vector<std::string> notes;       // what was found but could not be used, and why
 
   Eigen::Index sample_count() const { return results.sample_count(); }
-  bool finished_ok() const { return results.status == "ok"; }
+  bool finished_ok() const { return results.status == results::layout::status::kOk; }
 };
 
 // Reads `directory`. Throws InputError (expected/got, naming the file) when results.h5 is

@@ -1,6 +1,7 @@
 #include "selection_data.h"
 
 #include "csv_table.h"
+#include "results/file_names.h"
 
 #include <map>
 
@@ -72,7 +73,7 @@ template <typename Part, typename Parse>
 void read_part(const std::filesystem::path& folder, const char* name, Parse parse, Part& part,
                std::vector<std::string>& notes) {
   const std::filesystem::path file = folder / name;
-  const std::string shown = std::string(kSelectionFolder) + "/" + name;
+  const std::string shown = std::string(results::kSelectionFolder) + "/" + name;
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error)) {
     notes.push_back(shown + " not found: the mode-selection section leaves it out.");
@@ -89,14 +90,14 @@ void read_part(const std::filesystem::path& folder, const char* name, Parse pars
 
 std::optional<SelectionData> read_selection(const std::filesystem::path& run_directory,
                                             std::vector<std::string>& notes) {
-  const std::filesystem::path folder = run_directory / kSelectionFolder;
+  const std::filesystem::path folder = run_directory / results::kSelectionFolder;
   std::error_code error;
   if (!std::filesystem::is_directory(folder, error)) return std::nullopt;
   SelectionData selection;
   selection.directory = folder;
-  read_part(folder, kRankingFile, parse_ranking, selection.ranking, notes);
-  read_part(folder, kComparisonFile, parse_comparison, selection.comparison, notes);
-  read_part(folder, kKeySeriesFile, parse_key_series, selection.key_series, notes);
+  read_part(folder, results::kRankingFileName, parse_ranking, selection.ranking, notes);
+  read_part(folder, results::kComparisonFileName, parse_comparison, selection.comparison, notes);
+  read_part(folder, results::kKeySeriesFileName, parse_key_series, selection.key_series, notes);
   return selection;
 }
 

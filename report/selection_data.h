@@ -15,12 +15,6 @@
 
 namespace limber::report {
 
-// Folder and files written by `limber select`, relative to the run directory.
-inline constexpr const char* kSelectionFolder = "selection";
-inline constexpr const char* kRankingFile = "ranking.csv";
-inline constexpr const char* kComparisonFile = "comparison.csv";
-inline constexpr const char* kKeySeriesFile = "key_series.csv";
-
 // One reaction component on a flexible body (ranking.csv), in the body's own axes.
 struct RankingRow {
   std::string body;            // flexible body

@@ -1,6 +1,7 @@
 #include "selection_html.h"
 
 #include "html.h"
+#include "results/results_layout.h"
 
 #include <fmt/format.h>
 
@@ -63,7 +64,7 @@ std::string comparison_table(const SelectionData& selection) {
         "<td class=\"number\">{}</td><td{}>{}</td><td class=\"number\">{}</td>"
         "<td class=\"number\">{}</td><td>{}</td><td><code>{}</code></td><td>{}</td></tr>\n",
         row_class, html_escape(r.set), html_escape(r.description), r.modes, seconds(r.reduction_s),
-        seconds(r.run_s), r.status == "ok" ? "" : " class=\"failed\"", html_escape(r.status),
+        seconds(r.run_s), r.status == results::layout::status::kOk ? "" : " class=\"failed\"", html_escape(r.status),
         percent(r.error_peak), percent(r.error_rms), html_escape(r.worst_quantity),
         html_escape(r.directory), html_escape(r.role));
   }

@@ -1,22 +1,23 @@
 #include "sweep_data.h"
 
 #include "csv_table.h"
+#include "results/file_names.h"
 
 namespace limber::report {
 
 std::optional<SweepData> read_sweep(const std::filesystem::path& run_directory, std::vector<std::string>& notes) {
-  const std::filesystem::path folder = run_directory / kSweepFolder;
+  const std::filesystem::path folder = run_directory / results::kSweepFolder;
   std::error_code error;
   if (!std::filesystem::is_directory(folder, error)) return std::nullopt;
   SweepData sweep;
   sweep.directory = folder;
-  const std::string shown = std::string(kSweepFolder) + "/" + kWorkPrecisionFile;
-  if (!std::filesystem::is_regular_file(folder / kWorkPrecisionFile, error)) {
+  const std::string shown = std::string(results::kSweepFolder) + "/" + results::kWorkPrecisionFileName;
+  if (!std::filesystem::is_regular_file(folder / results::kWorkPrecisionFileName, error)) {
     notes.push_back(shown + " not found: the work-precision section leaves it out.");
     return sweep;
   }
   try {
-    const CsvTable t = read_csv(folder / kWorkPrecisionFile);
+    const CsvTable t = read_csv(folder / results::kWorkPrecisionFileName);
     const std::size_t point = t.column("point"), curve = t.column("curve"), status = t.column("status"),
                       message = t.column("message"), wall = t.column("wall_s"), rss = t.column("peak_rss_mib"),
                       steps = t.column("steps"), rejected = t.column("rejected_steps"),

@@ -10,9 +10,6 @@
 
 namespace limber::report {
 
-inline constexpr const char* kSweepFolder = "sweep";
-inline constexpr const char* kWorkPrecisionFile = "work_precision.csv";
-
 // One grid point of the sweep.
 struct SweepPointRow {
   std::string point;       // e.g. "galpha_step0.0005_m5"

@@ -21,6 +21,7 @@
 #include "modal/component_modes.h"
 #include "mode_animation.h"
 #include "render_options.h"
+#include "results/file_names.h"
 
 namespace limber::app {
 
@@ -170,7 +171,7 @@ int run_modes(const ModesOptions& options) {
   for (const BodyOutcome& outcome : outcomes) {
     written.push_back({outcome.body->name, &outcome.body->model, &outcome.result.mode_set});
   }
-  const std::string h5_path = (directory / "modes.h5").string();
+  const std::string h5_path = (directory / results::kModesFileName).string();
   io::write_modes_file(h5_path, input.title, input.file, written);
   fmt::print(table, "\nwrote {}\n", h5_path);
   const io::VtuEncoding encoding =

@@ -24,6 +24,7 @@
 #include "io/mechanism_builder.h"
 #include "results/results_writer.h"
 #include "run/run_driver.h"
+#include "results/results_layout.h"
 
 namespace limber::app {
 
@@ -218,7 +219,7 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
       "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"clearance\": {}, "
       "\"accuracy\": {}, \"results\": {}}}",
-      json_string(!summary.ok ? "failed" : summary.accurate() ? "ok" : "ok_inaccurate"),
+      json_string(!summary.ok ? results::layout::status::kFailed : summary.accurate() ? results::layout::status::kOk : results::layout::status::kInaccurate),
       json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
       summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,

@@ -26,6 +26,8 @@
 #include "select/reaction_ranking.h"
 #include "select/selection_files.h"
 #include "select/selection_study.h"
+#include "results/file_names.h"
+#include "results/results_layout.h"
 
 namespace limber::app {
 
@@ -91,7 +93,7 @@ void print_comparison(std::FILE* out, const std::vector<select::CandidateRun>& r
     const std::string role = run.candidate.reference ? "reference" : (chosen && *chosen == k ? "chosen" : "");
     fmt::print(out, "  {:<22} {:>5} {:>8.3f} s {:>7.3f} s {:>11} {:>11}  {}{}\n", run.candidate.name, run.modes,
                run.reduction_seconds, run.summary.wall_seconds, percent(run.error_peak),
-               percent(run.error_rms), role, run.status() == "ok" ? "" : " " + run.status());
+               percent(run.error_rms), role, run.status() == results::layout::status::kOk ? "" : " " + run.status());
   }
 }
 
@@ -174,7 +176,7 @@ int select_case(const SelectOptions& options) {
     std::fflush(text);
     std::optional<RunProgress> progress;
     select::CandidateRun run = select::run_candidate(
-        shared_input, candidate, adjust, root / "runs" / folder_name(candidate.name),
+        shared_input, candidate, adjust, root / results::kRunsFolder / folder_name(candidate.name),
         [&](const integrate::Sample& sample) {
           if (!progress) progress.emplace(adjust(input.mechanism->run).t_end, true);
           progress->update(sample.t, sample.statistics.steps);
@@ -183,7 +185,7 @@ int select_case(const SelectOptions& options) {
     progress.reset();
     for (const std::string& notice : run.notices) fmt::print(text, "      notice: {}\n", notice);
     fmt::print(text, "      {} modes, reduction {:.3f} s, run {:.3f} s{}\n", run.modes, run.reduction_seconds,
-               run.summary.wall_seconds, run.status() == "ok" ? "" : ", " + run.status());
+               run.summary.wall_seconds, run.status() == results::layout::status::kOk ? "" : ", " + run.status());
     return run;
   };
 
@@ -213,10 +215,10 @@ int select_case(const SelectOptions& options) {
     print_comparison(text, runs, chosen);
 
     // Step 5: files for the user and the report.
-    const std::filesystem::path folder = root / select::kSelectionFolder;
-    select::write_ranking_csv(folder / "ranking.csv", ranking);
-    select::write_comparison_csv(folder / "comparison.csv", runs, chosen, root);
-    select::write_key_series_csv(folder / "key_series.csv", runs, keys);
+    const std::filesystem::path folder = root / results::kSelectionFolder;
+    select::write_ranking_csv(folder / results::kRankingFileName, ranking);
+    select::write_comparison_csv(folder / results::kComparisonFileName, runs, chosen, root);
+    select::write_key_series_csv(folder / results::kKeySeriesFileName, runs, keys);
     std::string fragment;
     if (chosen) {
       const select::CandidateRun& run = runs[*chosen];
@@ -248,7 +250,7 @@ int select_case(const SelectOptions& options) {
     }
   } catch (const select::SelectionInterrupted&) {
     fmt::print(stderr, "limber: selection interrupted by signal {} (finished runs kept in {})\n",
-               StopSignals::received(), (root / "runs").string());
+               StopSignals::received(), (root / results::kRunsFolder).string());
     return kExitInterrupted;
   }
   return kExitOk;

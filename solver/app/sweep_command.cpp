@@ -31,6 +31,8 @@
 #include "sweep/run_series.h"
 #include "sweep/sweep_grid.h"
 #include "sweep/work_precision.h"
+#include "results/file_names.h"
+#include "results/results_layout.h"
 
 namespace limber::app {
 
@@ -83,7 +85,7 @@ std::vector<std::string> run_argv(const SweepOptions& options, const std::string
 
 sweep::ChildJob child_job(const SweepOptions& options, const std::string& executable, const sweep::SweepPoint& point,
                           const std::filesystem::path& directory, bool reference = false) {
-  return {run_argv(options, executable, point, directory, reference), directory / "run.json", directory / "run.log"};
+  return {run_argv(options, executable, point, directory, reference), directory / results::kRunJsonFileName, directory / results::kRunLogFileName};
 }
 
 // The options a user passes to `limber run` for the row's setting.
@@ -165,7 +167,7 @@ int sweep_case(const SweepOptions& options) {
     if (lead) {
       const std::string status = sweep::read_run_status(reference_file);
       // A finished reference is reused (an inaccurate one is refused below without a rerun).
-      if (!options.fresh && (status == "ok" || status == "ok_inaccurate")) {
+      if (!options.fresh && (status == results::layout::status::kOk || status == results::layout::status::kInaccurate)) {
         fmt::print(text, "reference: {}, reused from {}\n", reference_label, reference_file.string());
       } else {
         fmt::print(text, "reference: {} ...\n", reference_label);
@@ -178,10 +180,10 @@ int sweep_case(const SweepOptions& options) {
         sweep::write_process_record(directory, outcome);
         fmt::print(text, "reference: {:.3f} s\n", outcome.wall_seconds);
         const std::string after = sweep::read_run_status(reference_file);
-        ok = after == "ok" || after == "ok_inaccurate" ? 1 : StopSignals::received() != 0 ? 2 : 0;
+        ok = after == results::layout::status::kOk || after == results::layout::status::kInaccurate ? 1 : StopSignals::received() != 0 ? 2 : 0;
       }
       // A reference must pass its own accuracy check: errors against a wrong answer mean nothing.
-      if (ok == 1 && sweep::read_run_status(reference_file) != "ok") ok = 3;
+      if (ok == 1 && sweep::read_run_status(reference_file) != results::layout::status::kOk) ok = 3;
     }
     ok = ranks.broadcast(ok);
     if (ok == 2) {
@@ -193,23 +195,23 @@ int sweep_case(const SweepOptions& options) {
                                        "ok_inaccurate; its warnings are in {}), so errors against it mean nothing; "
                                        "give --reference RESULTS (a run you trust) or a grid whose richest setting "
                                        "runs accurately at a tighter step", point.name(),
-                                       (directory / "run.log").string()));
+                                       (directory / results::kRunLogFileName).string()));
     }
     if (ok == 0) {
       throw NumericalError(fmt::format("the reference run failed ({}); give --reference RESULTS or a grid "
-                                       "whose finest point runs", (directory / "run.log").string()));
+                                       "whose finest point runs", (directory / results::kRunLogFileName).string()));
     }
   } else {
     reference_file = options.reference;
     const std::string status = sweep::read_run_status(reference_file);
-    if (status != "ok" && status != "ok_inaccurate") {
+    if (status != results::layout::status::kOk && status != results::layout::status::kInaccurate) {
       throw InputError(fmt::format("--reference: expected 'tight' or a finished results.h5 (status ok), got '{}'{}",
                                    options.reference,
                                    status.empty() ? " (no readable results file)" : " with status " + status));
     }
     reference_label = "the given file " + reference_file.string();
     if (lead) fmt::print(text, "reference: {}\n", reference_label);
-    if (lead && status != "ok") {
+    if (lead && status != results::layout::status::kOk) {
       fmt::print(stderr, "limber: warning: the reference's own accuracy check failed (status {}): errors against it "
                          "may mean little\n", status);
     }
@@ -226,7 +228,7 @@ int sweep_case(const SweepOptions& options) {
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (static_cast<int>(k % static_cast<std::size_t>(ranks.size())) != ranks.rank()) continue;
     mine.push_back(k);
-    const std::filesystem::path directory = root / "runs" / points[k].name();
+    const std::filesystem::path directory = root / results::kRunsFolder / points[k].name();
     if (!options.fresh && sweep::point_finished(directory)) {
       resumed.push_back(k);
       fmt::print(stderr, "[sweep] {}: finished in an earlier sweep, not rerun (--fresh reruns it)\n", points[k].name());
@@ -245,7 +247,7 @@ int sweep_case(const SweepOptions& options) {
     --running;
     ++done;
     const std::size_t k = job_point[job];
-    const std::filesystem::path directory = root / "runs" / points[k].name();
+    const std::filesystem::path directory = root / results::kRunsFolder / points[k].name();
     sweep::write_process_record(directory, outcome);
     const bool ok = outcome.exit_code == kExitOk || outcome.exit_code == kExitInaccurate;
     failed += ok ? 0 : 1;
@@ -262,7 +264,7 @@ int sweep_case(const SweepOptions& options) {
   // Each rank measures its points; rank 0 gathers the rows (one JSON object a line).
   std::string my_rows;
   for (std::size_t k : mine) {
-    sweep::SweepRow row = sweep::read_row(points[k], root / "runs" / points[k].name(), reference, quantities);
+    sweep::SweepRow row = sweep::read_row(points[k], root / results::kRunsFolder / points[k].name(), reference, quantities);
     row.resumed = std::find(resumed.begin(), resumed.end(), k) != resumed.end();
     row.rank = ranks.rank();
     my_rows += sweep::row_json(row) + "\n";
@@ -275,7 +277,7 @@ int sweep_case(const SweepOptions& options) {
   std::vector<sweep::SweepRow> rows(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
     rows[k].point = points[k];
-    rows[k].status = "not_run";
+    rows[k].status = sweep::kNotRun;
   }
   for (const std::string& text : gathered) {
     std::size_t begin = 0;
@@ -296,9 +298,9 @@ int sweep_case(const SweepOptions& options) {
   print_table(text, rows, chosen);
 
   // Files for the user and the report; the reference's results make DIR a run directory.
-  const std::filesystem::path folder = root / "sweep";
-  sweep::write_table_csv(folder / "work_precision.csv", rows, chosen);
-  sweep::write_errors_csv(folder / "errors.csv", rows);
+  const std::filesystem::path folder = root / results::kSweepFolder;
+  sweep::write_table_csv(folder / results::kWorkPrecisionFileName, rows, chosen);
+  sweep::write_errors_csv(folder / results::kErrorsFileName, rows);
   const std::string json_rows = sweep::rows_json(rows, chosen);
   const std::string reference_json = fmt::format("{{\"label\": {}, \"results\": {}}}", json_string(reference_label),
                                                  json_string(reference_file.string()));
@@ -308,13 +310,13 @@ int sweep_case(const SweepOptions& options) {
   const std::string document =
       fmt::format("{{\"status\": {}, \"case\": {}, \"reference\": {}, \"quantities\": {}, \"norm\": {}, \"target\": {}, "
                   "\"target_met\": {}, \"chosen\": {}, \"run_options\": {}, \"points\": {}, \"directory\": {}}}",
-                  json_string(interrupted ? "interrupted" : "ok"), json_string(options.case_file), reference_json,
+                  json_string(interrupted ? results::layout::status::kInterrupted : results::layout::status::kOk), json_string(options.case_file), reference_json,
                   quantity_list, json_string(options.norm),
                   options.target ? json_number(*options.target) : std::string("null"), chosen ? "true" : "false",
                   chosen ? json_string(rows[*chosen].point.name()) : std::string("null"),
                   chosen ? json_string(run_command_line(options, rows[*chosen].point)) : std::string("null"),
                   json_rows, json_string(root.string()));
-  std::ofstream(folder / "work_precision.json", std::ios::binary) << document << '\n';
+  std::ofstream(folder / results::kWorkPrecisionJsonFileName, std::ios::binary) << document << '\n';
   if (std::filesystem::absolute(reference_file) != std::filesystem::absolute(root / results::kResultsFileName)) {
     std::filesystem::copy_file(reference_file, root / results::kResultsFileName,
                                std::filesystem::copy_options::overwrite_existing);
@@ -335,7 +337,7 @@ int sweep_case(const SweepOptions& options) {
   if (options.json) fmt::print(stdout, "{}\n", document);
   if (interrupted) {
     fmt::print(stderr, "limber: sweep interrupted; finished points are kept and a rerun resumes ({})\n",
-               (root / "runs").string());
+               (root / results::kRunsFolder).string());
     return kExitInterrupted;
   }
   return kExitOk;

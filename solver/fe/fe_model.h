@@ -20,6 +20,11 @@ inline constexpr int kDofsPerNode = 6;
 // Local DOF index within a node.
 enum class Dof : int { kUx = 0, kUy = 1, kUz = 2, kRx = 3, kRy = 4, kRz = 5 };
 
+// The DOFs' names in case files, messages, labels and modes.h5 (/bodies/<body>/dofs/names), in
+// Dof order: the one place they are spelt.
+inline constexpr std::array<const char*, kDofsPerNode> kDofNames = {"ux", "uy", "uz", "rx", "ry", "rz"};
+inline const char* dof_name(Dof dof) { return kDofNames[static_cast<int>(dof)]; }
+
 // Isotropic linear-elastic material.
 struct Material {
   std::string name;

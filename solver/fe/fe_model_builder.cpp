@@ -256,8 +256,6 @@ void FeModelBuilder::add_node_set(const std::string& name, const std::vector<int
 
 namespace {
 
-constexpr const char* kDofNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 // "uz at node 101".
 std::string dof_text(const FeModel& model, int dof) {
   return fmt::format("{} at node {}", kDofNames[dof % kDofsPerNode],

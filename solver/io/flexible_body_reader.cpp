@@ -17,9 +17,6 @@ namespace limber::io {
 
 namespace {
 
-constexpr std::array<std::string_view, fe::kDofsPerNode> kDofNames = {"ux", "uy", "uz",
-                                                                      "rx", "ry", "rz"};
-
 // A scalar that is a whole number refers to a node id; anything else to a node set.
 std::optional<int> as_node_id(const std::string& text) {
   int id = 0;
@@ -70,9 +67,10 @@ std::vector<fe::Dof> read_dofs(const YamlValue& value) {
     if (std::find(dofs.begin(), dofs.end(), dof) == dofs.end()) dofs.push_back(dof);
   };
   for (const YamlValue& item : one_or_many(value)) {
-    const std::string name = item.as_choice({"ux", "uy", "uz", "rx", "ry", "rz", "all"});
+    const std::string name = item.as_choice({fe::kDofNames[0], fe::kDofNames[1], fe::kDofNames[2],
+                                             fe::kDofNames[3], fe::kDofNames[4], fe::kDofNames[5], "all"});
     for (int k = 0; k < fe::kDofsPerNode; ++k) {
-      if (name == "all" || name == kDofNames[k]) add(static_cast<fe::Dof>(k));
+      if (name == "all" || name == fe::kDofNames[k]) add(static_cast<fe::Dof>(k));
     }
   }
   return dofs;
@@ -247,7 +245,7 @@ std::vector<modal::StaticModeSite> read_sites(const YamlValue& list, const char*
                         [&](const fe::FixedDof& f) { return f.node == node && f.dof == dof; });
         if (fixed) {
           entry.fail(std::string("expected free DOFs for ") + kind + " modes, got " +
-                     std::string(kDofNames[static_cast<int>(dof)]) + " at node " +
+                     std::string(fe::dof_name(dof)) + " at node " +
                      std::to_string(model.node_ids[node]) + ", which 'fixed' holds");
         }
       }

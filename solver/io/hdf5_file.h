@@ -1,6 +1,6 @@
-// A thin, checked layer over the HDF5 C API (1.10) for limber's output files:
+// A thin, checked layer over the HDF5 C API (1.10) for writing limber's modes.h5:
 // files and groups as RAII handles, whole datasets of doubles, ints and strings,
-// scalar attributes. Datasets are row-major (C order), as HDF5 stores them.
+// scalar attributes (reading: results/h5_reader.h and results/modes_reader.h). Datasets are row-major (C order), as HDF5 stores them.
 // Files are written in the 1.8-compatible format (no "open for writing" flag that
 // would lock readers out after a crash; see docs/results-format.md).
 //
@@ -22,15 +22,10 @@ using H5Dims = std::vector<hsize_t>;
 // A file or a group in it.
 class H5Group {
  public:
-  // Creates (truncates) / opens read-only an HDF5 file.
+  // Creates (truncates) an HDF5 file.
   static H5Group create_file(const std::string& path);
-  static H5Group open_file(const std::string& path);
 
   H5Group create_group(const std::string& name) const;
-  H5Group open_group(const std::string& name) const;
-  bool has(const std::string& name) const;
-  // Names of the links (groups, datasets) directly in this group, in name order.
-  std::vector<std::string> links() const;
 
   // Datasets: `data` holds product(dims) values, row-major. An empty `dims` writes a scalar.
   void write_doubles(const std::string& name, const H5Dims& dims, const double* data) const;
@@ -38,13 +33,6 @@ class H5Group {
   void write_strings(const std::string& name, const std::vector<std::string>& values) const;
   void write_attribute(const std::string& name, const std::string& value) const;
   void write_attribute(const std::string& name, int value) const;
-
-  // Readers; `dims` (when given) receives the dataset's shape.
-  std::vector<double> read_doubles(const std::string& name, H5Dims* dims = nullptr) const;
-  std::vector<int> read_ints(const std::string& name, H5Dims* dims = nullptr) const;
-  std::vector<std::string> read_strings(const std::string& name) const;
-  std::string read_string_attribute(const std::string& name) const;  // variable or fixed length
-  int read_int_attribute(const std::string& name) const;
 
   const std::string& path() const { return path_; }  // "file.h5:/bodies/rod"
 

@@ -23,15 +23,6 @@ void write_matrix(const H5Group& group, const std::string& name, const Eigen::Ma
                       rows.data());
 }
 
-Eigen::MatrixXd read_matrix(const H5Group& group, const std::string& name) {
-  H5Dims dims;
-  std::vector<double> values = group.read_doubles(name, &dims);
-  if (dims.size() != 2)
-    throw InputError("HDF5: expected a matrix at '" + group.path() + "/" + name + "'");
-  return Eigen::Map<RowMatrix>(values.data(), static_cast<Eigen::Index>(dims[0]),
-                               static_cast<Eigen::Index>(dims[1]));
-}
-
 // A list of equally sized matrices as one [count, rows, cols] dataset.
 template <typename Matrix>
 void write_matrices(const H5Group& group, const std::string& name,
@@ -48,21 +39,6 @@ void write_matrices(const H5Group& group, const std::string& name,
                       values.data());
 }
 
-template <typename Matrix>
-std::vector<Matrix> read_matrices(const H5Group& group, const std::string& name) {
-  H5Dims dims;
-  std::vector<double> values = group.read_doubles(name, &dims);
-  if (dims.size() != 3)
-    throw InputError("HDF5: expected [count, rows, cols] at '" + group.path() + "/" + name + "'");
-  const auto rows = static_cast<Eigen::Index>(dims[1]);
-  const auto cols = static_cast<Eigen::Index>(dims[2]);
-  std::vector<Matrix> matrices;
-  for (hsize_t k = 0; k < dims[0]; ++k) {
-    matrices.push_back(Eigen::Map<RowMatrix>(values.data() + k * rows * cols, rows, cols));
-  }
-  return matrices;
-}
-
 void write_mode_infos(const H5Group& group, const std::vector<modal::ModeInfo>& modes) {
   std::vector<double> frequencies;
   std::vector<std::string> kinds;
@@ -75,29 +51,6 @@ void write_mode_infos(const H5Group& group, const std::vector<modal::ModeInfo>& 
   group.write_doubles(layout::modes::kFrequenciesHz, {modes.size()}, frequencies.data());
   group.write_strings(modes_layout::modes::kKinds, kinds);
   group.write_strings(modes_layout::modes::kLabels, labels);
-}
-
-modal::ModeKind kind_from_string(const std::string& text, const std::string& where) {
-  for (modal::ModeKind kind : {modal::ModeKind::kRigid, modal::ModeKind::kNormal,
-                               modal::ModeKind::kConstraint, modal::ModeKind::kAttachment}) {
-    if (text == modal::to_string(kind)) return kind;
-  }
-  throw InputError("HDF5: expected a mode kind at '" + where + "', got '" + text + "'");
-}
-
-std::vector<modal::ModeInfo> read_mode_infos(const H5Group& group) {
-  const std::vector<double> frequencies = group.read_doubles(layout::modes::kFrequenciesHz);
-  const std::vector<std::string> kinds = group.read_strings(modes_layout::modes::kKinds);
-  const std::vector<std::string> labels = group.read_strings(modes_layout::modes::kLabels);
-  if (kinds.size() != frequencies.size() || labels.size() != frequencies.size()) {
-    throw InputError("HDF5: expected as many kinds and labels as frequencies in '" + group.path() +
-                     "'");
-  }
-  std::vector<modal::ModeInfo> modes(frequencies.size());
-  for (std::size_t i = 0; i < modes.size(); ++i) {
-    modes[i] = {kind_from_string(kinds[i], layout::at(group.path(), modes_layout::modes::kKinds)), frequencies[i], labels[i]};
-  }
-  return modes;
 }
 
 void write_mesh(const H5Group& group, const fe::FeModel& model) {
@@ -123,7 +76,7 @@ void write_mesh(const H5Group& group, const fe::FeModel& model) {
 void write_dofs(const H5Group& group, const fe::FeModel& model) {
   group.write_attribute(modes_layout::dofs::kPerNodeAttribute, fe::kDofsPerNode);
   group.write_attribute(modes_layout::dofs::kIndexAttribute, "6 * node_index + local_dof");
-  group.write_strings(modes_layout::dofs::kNames, {"ux", "uy", "uz", "rx", "ry", "rz"});
+  group.write_strings(modes_layout::dofs::kNames, {fe::kDofNames.begin(), fe::kDofNames.end()});
   std::vector<int> fixed;
   for (const fe::FixedDof& f : model.fixed_dofs)
     fixed.insert(fixed.end(), {f.node, static_cast<int>(f.dof)});
@@ -139,21 +92,6 @@ void write_invariants(const H5Group& group, const modal::ModalInvariants& inv, E
   write_matrices(group, invariants::kInertiaFirstOrder, inv.inertia_first_order, 3, 3);
   write_matrices(group, invariants::kInertiaSecondOrder, inv.inertia_second_order, 3, 3);
   write_matrices(group, invariants::kRotationCouplingFirstOrder, inv.rotation_coupling_first_order, 3, nm);
-}
-
-modal::ModalInvariants read_invariants(const H5Group& group) {
-  modal::ModalInvariants inv;
-  inv.mass = group.read_doubles(invariants::kMass).at(0);
-  const std::vector<double> first_moment = group.read_doubles(invariants::kFirstMoment);
-  inv.first_moment = Eigen::Vector3d(first_moment.at(0), first_moment.at(1), first_moment.at(2));
-  inv.inertia = read_matrix(group, invariants::kInertia);
-  inv.translation_coupling = read_matrix(group, invariants::kTranslationCoupling);
-  inv.rotation_coupling = read_matrix(group, invariants::kRotationCoupling);
-  inv.inertia_first_order = read_matrices<Eigen::Matrix3d>(group, invariants::kInertiaFirstOrder);
-  inv.inertia_second_order = read_matrices<Eigen::Matrix3d>(group, invariants::kInertiaSecondOrder);
-  inv.rotation_coupling_first_order =
-      read_matrices<Eigen::MatrixXd>(group, invariants::kRotationCouplingFirstOrder);
-  return inv;
 }
 
 void write_body(const H5Group& bodies, const BodyModesRef& body) {
@@ -200,51 +138,6 @@ void write_body(const H5Group& bodies, const BodyModesRef& body) {
   write_matrix(stresses, modes_layout::stress::kShellModal, stress.shell_modal);
 }
 
-BodyModes read_body(const H5Group& group, const std::string& name) {
-  BodyModes body;
-  body.name = name;
-  // Mesh.
-  const H5Group mesh = group.open_group(modes_layout::kMesh);
-  const Eigen::MatrixXd nodes = read_matrix(mesh, layout::mesh::kNodes);
-  for (Eigen::Index i = 0; i < nodes.rows(); ++i) body.nodes.emplace_back(nodes.row(i).transpose());
-  body.node_ids = mesh.read_ints(layout::mesh::kNodeIds);
-  const std::vector<int> lines = mesh.read_ints(layout::mesh::kLines);
-  for (std::size_t i = 0; i + 1 < lines.size(); i += 2)
-    body.lines.push_back({lines[i], lines[i + 1]});
-  const std::vector<int> quads = mesh.read_ints(layout::mesh::kQuads);
-  for (std::size_t i = 0; i + 3 < quads.size(); i += 4) {
-    body.quads.push_back({quads[i], quads[i + 1], quads[i + 2], quads[i + 3]});
-  }
-  // DOF layout.
-  const std::vector<int> fixed = group.open_group(modes_layout::kDofs).read_ints(modes_layout::dofs::kFixed);
-  for (std::size_t i = 0; i + 1 < fixed.size(); i += 2) {
-    body.fixed_dofs.push_back({fixed[i], static_cast<fe::Dof>(fixed[i + 1])});
-  }
-  // Modes, rigid modes found, invariants.
-  const H5Group modes = group.open_group(modes_layout::kModes);
-  body.mode_set.shapes = read_matrix(modes, modes_layout::modes::kShapes);
-  body.mode_set.modes = read_mode_infos(modes);
-  const std::vector<double> stiffness = modes.read_doubles(modes_layout::modes::kModalStiffness);
-  body.mode_set.modal_stiffness = Eigen::Map<const Eigen::VectorXd>(
-      stiffness.data(), static_cast<Eigen::Index>(stiffness.size()));
-  H5Dims dims;
-  const std::vector<double> translations = modes.read_doubles(layout::modes::kTranslations, &dims);
-  for (hsize_t i = 0; dims.size() == 3 && i < dims[0]; ++i) {
-    body.translations.push_back(
-        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
-            translations.data() + i * dims[1] * 3, static_cast<Eigen::Index>(dims[1]), 3));
-  }
-  body.mode_set.rigid_modes = read_mode_infos(group.open_group(modes_layout::kRigidModes));
-  body.mode_set.invariants = read_invariants(group.open_group(modes_layout::kInvariants));
-  // Modal stresses (files written before they were added lack them).
-  if (group.has(modes_layout::kStress)) {
-    const H5Group stresses = group.open_group(modes_layout::kStress);
-    body.beam_stress_modal = read_matrix(stresses, modes_layout::stress::kBeamModal);
-    body.shell_stress_modal = read_matrix(stresses, modes_layout::stress::kShellModal);
-  }
-  return body;
-}
-
 }  // namespace
 
 Eigen::MatrixX3d mode_translations(const Eigen::MatrixXd& shapes, int mode) {
@@ -269,26 +162,6 @@ void write_modes_file(const std::string& path, const std::string& title,
   file.write_strings(modes_layout::kBodyNames, names);
   const H5Group group = file.create_group(modes_layout::kBodies);
   for (const BodyModesRef& body : bodies) write_body(group, body);
-}
-
-ModesFile read_modes_file(const std::string& path) {
-  const H5Group file = H5Group::open_file(path);
-  if (!file.has(modes_layout::kBodies) ||
-      file.read_string_attribute(layout::kFormatAttribute) != modes_layout::kFormat) {
-    throw InputError("expected a limber modes file (format '" + std::string(modes_layout::kFormat) + "'), got '" +
-                     path + "'");
-  }
-  ModesFile result;
-  result.title = file.read_string_attribute(layout::kTitleAttribute);
-  result.case_file = file.read_string_attribute(layout::kCaseFileAttribute);
-  const H5Group bodies = file.open_group(modes_layout::kBodies);
-  for (const std::string& name : file.read_strings(modes_layout::kBodyNames)) {
-    if (name.empty()) {
-      throw InputError("expected non-empty body names in '" + path + "', got \"\"");
-    }
-    result.bodies.push_back(read_body(bodies.open_group(results::link_name(name)), name));
-  }
-  return result;
 }
 
 }  // namespace limber::io

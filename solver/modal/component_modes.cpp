@@ -21,11 +21,6 @@
 namespace limber::modal {
 namespace {
 
-const char* dof_name(fe::Dof dof) {
-  static constexpr const char* kNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-  return kNames[static_cast<int>(dof)];
-}
-
 struct SiteDofs {
   std::vector<int> dofs;             // global DOF indices, request order
   std::vector<std::string> labels;  // "constraint uz at node 101"
@@ -56,22 +51,22 @@ SiteDofs site_dofs(const fe::FeModel& model, const std::vector<StaticModeSite>& 
       if (!std::binary_search(free_dofs.begin(), free_dofs.end(), index)) {
         throw InputError(fmt::format(
             "{} mode site: expected a free DOF, got {} at node {}, which is fixed", kind,
-            dof_name(dof), id));
+            fe::dof_name(dof), id));
       }
       if (independent_only && std::binary_search(dependent.begin(), dependent.end(), index)) {
         throw InputError(fmt::format(
             "{} mode site: expected an independent DOF, got {} at node {}, which a rigid element "
             "makes dependent (ask for it at the element's independent grid, or ask for an "
             "attachment mode)",
-            kind, dof_name(dof), id));
+            kind, fe::dof_name(dof), id));
       }
       if (!seen.insert(index).second) {
         throw InputError(fmt::format(
-            "{} mode sites: expected each DOF once, got {} at node {} twice", kind, dof_name(dof),
+            "{} mode sites: expected each DOF once, got {} at node {} twice", kind, fe::dof_name(dof),
             id));
       }
       result.dofs.push_back(index);
-      result.labels.push_back(fmt::format("{} {} at node {}", kind, dof_name(dof), id));
+      result.labels.push_back(fmt::format("{} {} at node {}", kind, fe::dof_name(dof), id));
     }
   }
   return result;

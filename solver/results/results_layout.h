@@ -28,7 +28,7 @@ inline constexpr const char* kFormat = "limber-results";
 inline constexpr const char* kVersionAttribute = "version";      // int 1
 inline constexpr const char* kTitleAttribute = "title";          // string, case title
 inline constexpr const char* kCaseFileAttribute = "case_file";   // string, path of the case
-inline constexpr const char* kStatusAttribute = "status";        // running|ok|ok_inaccurate|failed|interrupted
+inline constexpr const char* kStatusAttribute = "status";        // a status:: value
 inline constexpr const char* kMessageAttribute = "message";      // string, why a run failed
 inline constexpr const char* kIntegratorAttribute = "integrator";  // string ida|galpha (optional)
 inline constexpr const char* kAxisNamesAttribute = "axis_names";   // string "X, Y, Z" (optional)
@@ -37,6 +37,15 @@ inline constexpr const char* kAccuracyEnergyAttribute = "accuracy_energy_relativ
 inline constexpr const char* kAccuracyLocalErrorAttribute = "accuracy_local_error";
 inline constexpr const char* kAccuracyDriftAttribute = "accuracy_drift_relative";
 inline constexpr const char* kAccuracyWarningsAttribute = "accuracy_warnings";
+
+// Values of kStatusAttribute: how the run ended, or that it has not (yet).
+namespace status {
+inline constexpr const char* kRunning = "running";          // being written, or killed mid-run
+inline constexpr const char* kOk = "ok";
+inline constexpr const char* kInaccurate = "ok_inaccurate";  // finished; its own accuracy check failed
+inline constexpr const char* kFailed = "failed";            // numerically or on an error (message says)
+inline constexpr const char* kInterrupted = "interrupted";  // stopped by a signal
+}  // namespace status
 
 // float64 [ns]: sample times [s].
 inline constexpr const char* kTime = "/time";

@@ -123,6 +123,7 @@ H5Handle create_named_group(hid_t parent, std::set<std::string>& links, const st
 struct Series {
   H5Handle dataset;
   hid_t memory_type = H5T_NATIVE_DOUBLE;
+  int rank = 1;       // 1: [ns]; 2: [ns, width], width >= 0
   hsize_t width = 0;
   std::size_t row_bytes = 0;
   std::vector<unsigned char> pending;
@@ -179,11 +180,21 @@ struct ResultsWriter::Impl {
   bool finished = false;
 
   // Creates an empty, chunked, unlimited per-sample dataset.
+  // A per-sample dataset: [ns] for width 0, else [ns, width].
   Series create_series(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
                        hsize_t width) {
-    const int rank = width == 0 ? 1 : 2;
+    return create_series_of_rank(parent, name, file_type, memory_type, width == 0 ? 1 : 2, width);
+  }
+  // [ns, width] for any width, 0 included (a flexible body without modes).
+  Series create_columns(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
+                        hsize_t width) {
+    return create_series_of_rank(parent, name, file_type, memory_type, 2, width);
+  }
+  Series create_series_of_rank(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
+                               int rank, hsize_t width) {
     const hsize_t dims[2] = {0, width};
-    const hsize_t max_dims[2] = {H5S_UNLIMITED, width};
+    // A chunk may not exceed a fixed dimension: zero columns stay extendible instead.
+    const hsize_t max_dims[2] = {H5S_UNLIMITED, width == 0 ? H5S_UNLIMITED : width};
     // Chunks of about 8k values: few chunks to touch per flush, little waste.
     const hsize_t chunk_rows = std::clamp<hsize_t>(8192 / std::max<hsize_t>(width, 1), 1, 256);
     const hsize_t chunk[2] = {chunk_rows, std::max<hsize_t>(width, 1)};
@@ -195,8 +206,9 @@ struct ResultsWriter::Impl {
                                         properties.get(), H5P_DEFAULT),
                              "create a per-sample dataset");
     series.memory_type = memory_type;
+    series.rank = rank;
     series.width = width;
-    series.row_bytes = H5Tget_size(memory_type) * std::max<std::size_t>(width, 1);
+    series.row_bytes = H5Tget_size(memory_type) * (rank == 1 ? 1 : width);
     series.pending.reserve(kBlockRows * series.row_bytes);
     return series;
   }
@@ -213,8 +225,9 @@ struct ResultsWriter::Impl {
     if (rows == 0) return;
     const hsize_t new_dims[2] = {static_cast<hsize_t>(first + rows), series.width};
     check(H5Dset_extent(series.dataset.get(), new_dims), "extend a dataset");
+    if (series.rank == 2 && series.width == 0) return;  // rows of nothing: the extent says it all
     H5Handle file_space = checked(H5Dget_space(series.dataset.get()), "get a dataspace");
-    const int rank = series.width == 0 ? 1 : 2;
+    const int rank = series.rank;
     const hsize_t start[2] = {static_cast<hsize_t>(first), 0};
     const hsize_t count[2] = {static_cast<hsize_t>(rows), series.width};
     check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
@@ -389,7 +402,7 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
   write_int_attribute(root, layout::kVersionAttribute, 1);
   write_string_attribute(root, layout::kTitleAttribute, title);
   write_string_attribute(root, layout::kCaseFileAttribute, case_file);
-  write_string_attribute(root, layout::kStatusAttribute, "running");
+  write_string_attribute(root, layout::kStatusAttribute, layout::status::kRunning);
   write_string_attribute(root, layout::kMessageAttribute, "");
   impl_->bodies_group = create_group(root, layout::kBodies);
   H5Handle constraints = create_group(root, layout::kConstraints);
@@ -459,7 +472,7 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
 
   // Modal coordinates and rates; a flexible body without modes keeps [ns, 0] datasets.
   for (const char* name : {layout::body::kModalCoordinates, layout::body::kModalVelocities}) {
-    impl_->body_series.back().push_back(impl_->create_series(
+    impl_->body_series.back().push_back(impl_->create_columns(
         group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(nm)));
   }
   impl_->body_nmodes.push_back(static_cast<int>(nm));
@@ -714,10 +727,10 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();
   m.write_block();
-  write_string_attribute(root, layout::kStatusAttribute, status == RunStatus::kOk           ? "ok"
-                                         : status == RunStatus::kInaccurate ? "ok_inaccurate"
-                                         : status == RunStatus::kFailed     ? "failed"
-                                                                            : "interrupted");
+  write_string_attribute(root, layout::kStatusAttribute, status == RunStatus::kOk           ? layout::status::kOk
+                                         : status == RunStatus::kInaccurate ? layout::status::kInaccurate
+                                         : status == RunStatus::kFailed     ? layout::status::kFailed
+                                                                            : layout::status::kInterrupted);
   write_string_attribute(root, layout::kMessageAttribute, message);
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
 

@@ -16,6 +16,8 @@
 // Nothing here depends on solver classes: callers hand plain Eigen values.
 #pragma once
 
+#include "results/file_names.h"  // kResultsFileName
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -254,8 +256,5 @@ class ResultsWriter {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// Name of the results file inside a run directory.
-inline constexpr const char* kResultsFileName = "results.h5";
 
 }  // namespace limber::results

@@ -11,8 +11,6 @@ namespace limber::select {
 
 namespace {
 
-constexpr const char* kDofNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
 const io::FlexibleBodyCase& component_of(const io::Case& input, const std::string& name) {
   for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
     if (body.name == name) return body;
@@ -182,7 +180,7 @@ std::string modes_yaml(const modal::ModeRequest& request, const std::vector<int>
     for (std::size_t s = 0; s < sites.size(); ++s) {
       std::string dofs;
       for (fe::Dof dof : sites[s].dofs) {
-        dofs += (dofs.empty() ? "" : ", ") + std::string(kDofNames[static_cast<int>(dof)]);
+        dofs += (dofs.empty() ? "" : ", ") + std::string(fe::dof_name(dof));
       }
       text += fmt::format("{}{{nodes: [{}], dofs: [{}]}}", s ? ", " : "", id(sites[s].node), dofs);
     }

@@ -17,8 +17,6 @@
 
 namespace limber::select {
 
-inline constexpr const char* kSelectionFolder = "selection";
-
 void write_ranking_csv(const std::filesystem::path& file, const std::vector<RankedComponent>& ranking);
 
 // `root` is DIR: directories are written relative to it. `chosen` indexes `runs`.

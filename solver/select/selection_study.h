@@ -23,6 +23,7 @@
 #include "run/run_driver.h"
 #include "select/mode_set_candidates.h"
 #include "select/reaction_ranking.h"
+#include "results/results_layout.h"
 
 namespace limber::select {
 
@@ -54,7 +55,9 @@ struct CandidateRun {
   bool ok() const { return summary.ok; }
   // "ok", "ok_inaccurate" (its own accuracy check failed) or "failed: <why>".
   std::string status() const {
-    return !summary.ok ? "failed: " + summary.message : summary.accurate() ? "ok" : "ok_inaccurate";
+    return !summary.ok ? std::string(results::layout::status::kFailed) + ": " + summary.message
+         : summary.accurate() ? results::layout::status::kOk
+                              : results::layout::status::kInaccurate;
   }
   double error(ErrorNorm norm) const { return norm == ErrorNorm::kPeak ? error_peak : error_rms; }
 };

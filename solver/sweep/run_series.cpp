@@ -114,7 +114,7 @@ std::string read_run_status(const std::filesystem::path& file) {
 }
 
 bool final_status(const std::string& status) {
-  return status == "ok" || status == "ok_inaccurate" || status == "failed";
+  return status == results::layout::status::kOk || status == results::layout::status::kInaccurate || status == results::layout::status::kFailed;
 }
 
 std::vector<std::string> default_quantities(const RunSeries& reference) {

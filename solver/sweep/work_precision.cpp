@@ -10,6 +10,8 @@
 #include "select/selection_files.h"
 #include "select/series_error.h"
 #include "sweep/flat_json.h"
+#include "results/file_names.h"
+#include "results/results_layout.h"
 
 namespace limber::sweep {
 
@@ -48,7 +50,7 @@ std::string error_line(const std::filesystem::path& log) {
 
 void write_process_record(const std::filesystem::path& point_directory, const ChildOutcome& outcome) {
   std::filesystem::create_directories(point_directory);
-  std::ofstream(point_directory / "process.json", std::ios::binary)
+  std::ofstream(point_directory / results::kProcessJsonFileName, std::ios::binary)
       << fmt::format("{{\"exit_code\": {}, \"signal\": {}, \"process_s\": {}, \"peak_rss_kib\": {}, "
                      "\"spawn_error\": {}}}\n",
                      outcome.exit_code, outcome.signal, json_value(outcome.wall_seconds), outcome.peak_rss_kib,
@@ -56,20 +58,20 @@ void write_process_record(const std::filesystem::path& point_directory, const Ch
 }
 
 bool point_finished(const std::filesystem::path& point_directory) {
-  const std::string process = read_text(point_directory / "process.json");
+  const std::string process = read_text(point_directory / results::kProcessJsonFileName);
   if (process.empty()) return false;
   // Refused as bad input (exit 1): the same setting is refused again.
   if (json_number_field(process, "exit_code") == 1.0) return true;
-  return final_status(read_run_status(point_directory / "results.h5"));
+  return final_status(read_run_status(point_directory / results::kResultsFileName));
 }
 
 SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_directory,
                   const RunSeries& reference, const std::vector<std::string>& quantities) {
   SweepRow row;
   row.point = point;
-  const std::string process = read_text(point_directory / "process.json");
+  const std::string process = read_text(point_directory / results::kProcessJsonFileName);
   if (process.empty()) {
-    row.status = "not_run";
+    row.status = kNotRun;
     return row;
   }
   row.exit_code = static_cast<int>(json_number_field(process, "exit_code").value_or(-1));
@@ -79,7 +81,7 @@ SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_di
   const std::string spawn_error = json_string_field(process, "spawn_error").value_or("");
 
   // The child's report; its status is that of results.h5.
-  const std::string report = read_text(point_directory / "run.json");
+  const std::string report = read_text(point_directory / results::kRunJsonFileName);
   row.status = json_string_field(report, "status").value_or("");
   row.message = json_string_field(report, "message").value_or("");
   row.wall_s = json_number_field(report, "wall_s").value_or(kNaN);
@@ -94,13 +96,13 @@ SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_di
 
   // No report: the child ended on bad input (exit 1), a signal, or never started.
   if (row.status.empty()) {
-    const std::string file_status = read_run_status(point_directory / "results.h5");
-    row.status = file_status == "interrupted" || row.exit_code == 4 ? "interrupted"
-                 : row.exit_code == 1 && row.signal == 0         ? "failed"
-                                                                  : "crashed";
+    const std::string file_status = read_run_status(point_directory / results::kResultsFileName);
+    row.status = file_status == results::layout::status::kInterrupted || row.exit_code == 4 ? results::layout::status::kInterrupted
+                 : row.exit_code == 1 && row.signal == 0 ? results::layout::status::kFailed
+                                                         : kCrashed;
     row.message = !spawn_error.empty() ? spawn_error
                   : row.signal != 0    ? fmt::format("killed by signal {} ({})", row.signal, strsignal(row.signal))
-                                       : error_line(point_directory / "run.log");
+                                       : error_line(point_directory / results::kRunLogFileName);
     if (row.message.empty()) row.message = fmt::format("exit status {} without a report", row.exit_code);
     return row;
   }
@@ -109,9 +111,9 @@ SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_di
   // Errors against the reference, per quantity, on the reference's samples.
   RunSeries run;
   try {
-    run = read_run_series(point_directory / "results.h5");
+    run = read_run_series(point_directory / results::kResultsFileName);
   } catch (const InputError& error) {
-    row.status = "crashed";
+    row.status = kCrashed;
     row.message = error.what();
     return row;
   }
@@ -150,7 +152,7 @@ std::optional<std::size_t> cheapest_meeting(const std::vector<SweepRow>& rows, d
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const SweepRow& row = rows[k];
     // Only a point whose own accuracy check passed (never ok_inaccurate).
-    if (row.status != "ok" || !(row.error(rms) <= target) || !std::isfinite(row.wall_s)) continue;
+    if (row.status != results::layout::status::kOk || !(row.error(rms) <= target) || !std::isfinite(row.wall_s)) continue;
     if (!chosen || row.wall_s < rows[*chosen].wall_s) chosen = k;
   }
   return chosen;
@@ -268,6 +270,10 @@ std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size
         chosen && *chosen == k ? "true" : "false");
   }
   return text + "]";
+}
+
+bool SweepRow::finished() const {
+  return status == results::layout::status::kOk || status == results::layout::status::kInaccurate;
 }
 
 }  // namespace limber::sweep

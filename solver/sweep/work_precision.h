@@ -32,6 +32,11 @@ struct QuantityError {
   double rms = kNaN;
 };
 
+// A point's status beyond a run's own (results/results_layout.h, layout::status): its process
+// ended without a report (a signal, a crash), or no rank reported it.
+inline constexpr const char* kCrashed = "crashed";
+inline constexpr const char* kNotRun = "not_run";
+
 struct SweepRow {
   SweepPoint point;
   std::string status;    // ok, ok_inaccurate, failed, crashed, interrupted, not_run
@@ -50,7 +55,7 @@ struct SweepRow {
   std::string worst_quantity;
 
   // Finished (ok or ok_inaccurate): its errors mean something.
-  bool finished() const { return status == "ok" || status == "ok_inaccurate"; }
+  bool finished() const;  // status ok or ok_inaccurate
   double error(bool rms) const { return rms ? error_rms : error_peak; }
 };
 

@@ -12,7 +12,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "io/modes_file.h"
+#include "results/modes_reader.h"
 #include "mini_json.h"
 #include "mini_xml.h"
 
@@ -109,24 +109,26 @@ TEST(Cli, SliderCrankRodMatchesTheFreeFreeBeamClosedForm) {
   // Bending in x-z (stiff axis, Iy) and in x-y (weak axis, Iz): the modes whose nodes move
   // most along z and along y. For this doubly symmetric section the two planes are
   // decoupled, so the other transverse motion is round-off.
-  const io::ModesFile file = io::read_modes_file(out_dir + "/modes.h5");
+  const results::ModesData file = results::read_modes(out_dir + "/modes.h5");
   ASSERT_EQ(file.bodies.size(), 1u);
-  const io::BodyModes& body = file.bodies[0];
-  ASSERT_EQ(body.translations.size(), 5u);
+  const results::ModesBody& body = file.bodies[0];
+  // Mode i's translations as nn x 3 (column i of (3 nn) x nm, node-major).
+  ASSERT_EQ(body.mesh.mode_translations.cols(), 5);
+  const auto translations = [&](int i) {
+    return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+        body.mesh.mode_translations.col(i).data(), body.mesh.nodes.rows(), 3);
+  };
   auto dominant_mode = [&](int axis) {
     int found = 0;
     for (int i = 1; i < 5; ++i) {
-      if (body.translations[i].col(axis).norm() > body.translations[found].col(axis).norm())
-        found = i;
+      if (translations(i).col(axis).norm() > translations(found).col(axis).norm()) found = i;
     }
     return found;
   };
   const int in_plane = dominant_mode(2);
   const int out_of_plane = dominant_mode(1);
-  EXPECT_LT(body.translations[in_plane].col(1).norm(),
-            1e-6 * body.translations[in_plane].col(2).norm());
-  EXPECT_LT(body.translations[out_of_plane].col(2).norm(),
-            1e-6 * body.translations[out_of_plane].col(1).norm());
+  EXPECT_LT(translations(in_plane).col(1).norm(), 1e-6 * translations(in_plane).col(2).norm());
+  EXPECT_LT(translations(out_of_plane).col(2).norm(), 1e-6 * translations(out_of_plane).col(1).norm());
 
   // Closed form: first free-free bending mode of an Euler-Bernoulli beam (Blevins, Formulas
   // for Natural Frequency and Mode Shape, table 8-1, lambda = 4.730041, lambda^2 = 22.373):
@@ -169,12 +171,12 @@ TEST(Cli, SliderCrankRodMatchesTheFreeFreeBeamClosedForm) {
   // The first mode is the weak-axis one; in-plane bending is twice as high (h/w = 2).
   EXPECT_EQ(out_of_plane, 0);
   // The JSON frequencies and the file's agree exactly (same doubles, shortest round-trip text).
-  EXPECT_EQ(body.mode_set.modes[static_cast<std::size_t>(in_plane)].frequency_hz, f_in_plane);
+  EXPECT_EQ(body.modes[static_cast<std::size_t>(in_plane)].frequency_hz, f_in_plane);
 
   // The invariants written are the rod's: m = rho A L, and about the frame origin (the rod's
   // end) Jxx = rho L (Iy + Iz), Jyy = m L^2 / 3 + rho Iy L. A consistent mass matrix
   // integrates these polynomials exactly, so only round-off (1e-10) separates them.
-  const modal::ModalInvariants& invariants = body.mode_set.invariants;
+  const results::InvariantsData& invariants = body.invariants;
   const double mass = kRho * kA * kL;
   EXPECT_NEAR(invariants.mass / mass, 1.0, 1e-10);
   EXPECT_NEAR(invariants.inertia(0, 0) / (kRho * kL * (kIy + kIz)), 1.0, 1e-10);

@@ -1,4 +1,5 @@
-// modes.h5: everything written reads back bit for bit.
+// modes.h5: everything io's writer writes reads back bit for bit through the one reader of
+// the file (results/modes_reader.h).
 #include "io/modes_file.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,8 @@
 #include "modal/modal_stress.h"
 #include "modal/rigid_body_modes.h"
 #include "modal/static_modes.h"
+#include "results/h5_reader.h"
+#include "results/modes_reader.h"
 
 namespace limber::io {
 namespace {
@@ -62,11 +65,13 @@ modal::ModeSet synthetic_modes(int n_dof, int nm) {
   return set;
 }
 
-void expect_same_infos(const std::vector<modal::ModeInfo>& got,
+using results::read_modes;
+
+void expect_same_infos(const std::vector<results::ModeRecord>& got,
                        const std::vector<modal::ModeInfo>& want) {
   ASSERT_EQ(got.size(), want.size());
   for (std::size_t i = 0; i < got.size(); ++i) {
-    EXPECT_EQ(got[i].kind, want[i].kind);
+    EXPECT_EQ(got[i].kind, modal::to_string(want[i].kind));
     EXPECT_EQ(got[i].frequency_hz, want[i].frequency_hz);
     EXPECT_EQ(got[i].label, want[i].label);
   }
@@ -79,7 +84,7 @@ TEST(ModesFile, RoundTripIsExact) {
   write_modes_file(path, "round trip", "small.yaml",
                    {{"first", &model, &set}, {"a_second", &model, &set}});
 
-  const ModesFile file = read_modes_file(path);
+  const results::ModesData file = read_modes(path);
   EXPECT_EQ(file.title, "round trip");
   EXPECT_EQ(file.case_file, "small.yaml");
   // Bodies keep their written order, not HDF5's alphabetical one.
@@ -88,22 +93,27 @@ TEST(ModesFile, RoundTripIsExact) {
   EXPECT_EQ(file.bodies[1].name, "a_second");
 
   // Doubles are stored as IEEE float64: every value must come back identical.
-  const BodyModes& body = file.bodies[0];
-  EXPECT_EQ(body.nodes, model.node_positions);
-  EXPECT_EQ(body.node_ids, model.node_ids);
-  ASSERT_EQ(body.lines.size(), model.beams.size());
-  EXPECT_EQ(body.lines[1], model.beams[1].nodes);
-  ASSERT_EQ(body.quads.size(), model.shells.size());
-  EXPECT_EQ(body.quads[1], model.shells[1].nodes);
-  ASSERT_EQ(body.fixed_dofs.size(), 2u);
-  EXPECT_EQ(body.fixed_dofs[1].dof, fe::Dof::kRz);
+  const results::ModesBody& body = file.bodies[0];
+  ASSERT_EQ(body.mesh.nodes.rows(), model.node_count());
+  for (int n = 0; n < model.node_count(); ++n) {
+    EXPECT_EQ(body.mesh.nodes.row(n).transpose(), model.node_positions[static_cast<std::size_t>(n)]);
+  }
+  EXPECT_EQ(body.mesh.node_ids, model.node_ids);
+  ASSERT_EQ(body.mesh.lines.rows(), static_cast<Eigen::Index>(model.beams.size()));
+  EXPECT_EQ(body.mesh.lines(1, 0), model.beams[1].nodes[0]);
+  EXPECT_EQ(body.mesh.lines(1, 1), model.beams[1].nodes[1]);
+  ASSERT_EQ(body.mesh.quads.rows(), static_cast<Eigen::Index>(model.shells.size()));
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(body.mesh.quads(1, c), model.shells[1].nodes[static_cast<std::size_t>(c)]);
+  ASSERT_EQ(body.fixed.rows(), 2);
+  EXPECT_EQ(body.fixed(1, 1), static_cast<int>(fe::Dof::kRz));
+  EXPECT_EQ(body.dof_count, model.dof_count());
 
-  EXPECT_EQ(body.mode_set.shapes, set.shapes);
-  EXPECT_EQ(body.mode_set.modal_stiffness, set.modal_stiffness);
-  expect_same_infos(body.mode_set.modes, set.modes);
-  expect_same_infos(body.mode_set.rigid_modes, set.rigid_modes);
+  EXPECT_EQ(body.shapes, set.shapes);
+  EXPECT_EQ(body.modal_stiffness, set.modal_stiffness);
+  expect_same_infos(body.modes, set.modes);
+  expect_same_infos(body.rigid_modes, set.rigid_modes);
 
-  const modal::ModalInvariants& got = body.mode_set.invariants;
+  const results::InvariantsData& got = body.invariants;
   const modal::ModalInvariants& want = set.invariants;
   EXPECT_EQ(got.mass, want.mass);
   EXPECT_EQ(got.first_moment, want.first_moment);
@@ -119,11 +129,11 @@ TEST(ModesFile, RoundTripIsExact) {
   }
   EXPECT_EQ(got.inertia_second_order[7], want.inertia_second_order[7]);
 
-  // Translations are the first three DOFs of every node of every shape.
-  ASSERT_EQ(body.translations.size(), 3u);
-  EXPECT_EQ(body.translations[2].rows(), model.node_count());
-  EXPECT_EQ(body.translations[2](4, 1), set.shapes(6 * 4 + 1, 2));
-  EXPECT_EQ(body.translations[0](0, 2), set.shapes(2, 0));
+  // Translations are the first three DOFs of every node of every shape: (3 nn) x nm.
+  ASSERT_EQ(body.mesh.mode_translations.cols(), 3);
+  EXPECT_EQ(body.mesh.mode_translations.rows(), 3 * model.node_count());
+  EXPECT_EQ(body.mesh.mode_translations(3 * 4 + 1, 2), set.shapes(6 * 4 + 1, 2));
+  EXPECT_EQ(body.mesh.mode_translations(2, 0), set.shapes(2, 0));
   // Modal stresses: 12 rows per beam, 6 per shell.
   const modal::ModalStress stress = modal::modal_stress(model, set.shapes);
   EXPECT_EQ(body.beam_stress_modal, stress.beam_modal);
@@ -157,7 +167,7 @@ flexible_bodies:
   set.shapes.col(0) = response.shapes.col(0);
   const std::string path = scratch_path("modes_stress.h5");
   write_modes_file(path, "stress", "cantilever.yaml", {{"b", &model, &set}});
-  const BodyModes body = read_modes_file(path).bodies.at(0);
+  const results::ModesBody body = read_modes(path).bodies.at(0);
   EXPECT_EQ(body.beam_stress_modal, modal::modal_stress(model, set.shapes).beam_modal);
   ASSERT_EQ(body.beam_stress_modal.rows(), 12 * 4);
   ASSERT_EQ(body.beam_stress_modal.cols(), 3);
@@ -179,18 +189,15 @@ TEST(ModesFile, LayoutHoldsTheDocumentedAttributes) {
   const modal::ModeSet set = synthetic_modes(model.dof_count(), 3);
   const std::string path = scratch_path("modes_layout.h5");
   write_modes_file(path, "layout", "small.yaml", {{"b", &model, &set}});
-  const H5Group file = H5Group::open_file(path);
-  EXPECT_EQ(file.read_string_attribute("format"), "limber-modes");
-  EXPECT_EQ(file.read_int_attribute("version"), 1);
-  const H5Group body = file.open_group("bodies").open_group("b");
-  EXPECT_EQ(body.read_int_attribute("dof_count"), model.dof_count());
-  EXPECT_EQ(body.read_int_attribute("mode_count"), 3);
-  H5Dims dims;
-  body.open_group("modes").read_doubles("translations", &dims);
-  EXPECT_EQ(dims, (H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
-  body.open_group("modes").read_doubles("shapes", &dims);
-  EXPECT_EQ(dims, (H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
-  EXPECT_EQ(body.open_group("dofs").read_strings("names"),
+  const results::H5Reader file(path, "modes file", "");
+  EXPECT_EQ(file.string_attribute("/", "format"), "limber-modes");
+  EXPECT_EQ(file.doubles_attribute("/", "version", 1).at(0), 1.0);
+  EXPECT_EQ(file.doubles_attribute("/bodies/b", "dof_count", 1).at(0), model.dof_count());
+  EXPECT_EQ(file.doubles_attribute("/bodies/b", "mode_count", 1).at(0), 3.0);
+  EXPECT_EQ(file.dims("/bodies/b/modes/translations"),
+            (H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
+  EXPECT_EQ(file.dims("/bodies/b/modes/shapes"), (H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
+  EXPECT_EQ(file.strings("/bodies/b/dofs/names"),
             (std::vector<std::string>{"ux", "uy", "uz", "rx", "ry", "rz"}));
   std::filesystem::remove(path);
 }
@@ -203,16 +210,16 @@ TEST(ModesFile, BodyNamesWithSlashesAndDotsRoundTrip) {
   const std::string path = scratch_path("modes_names.h5");
   write_modes_file(path, "names", "small.yaml",
                    {{"beam/1", &model, &set}, {"beam%2F1", &model, &set}, {".", &model, &set}});
-  const ModesFile file = read_modes_file(path);
+  const results::ModesData file = read_modes(path);
   ASSERT_EQ(file.bodies.size(), 3u);
   EXPECT_EQ(file.bodies[0].name, "beam/1");
   EXPECT_EQ(file.bodies[1].name, "beam%2F1");
   EXPECT_EQ(file.bodies[2].name, ".");
-  EXPECT_EQ(file.bodies[2].mode_set.shapes, set.shapes);
-  const H5Group bodies = H5Group::open_file(path).open_group("bodies");
-  EXPECT_EQ(bodies.open_group("beam%2F1").read_string_attribute("name"), "beam/1");
-  EXPECT_EQ(bodies.open_group("beam%252F1").read_string_attribute("name"), "beam%2F1");
-  EXPECT_EQ(bodies.open_group("%2E").read_string_attribute("name"), ".");
+  EXPECT_EQ(file.bodies[2].shapes, set.shapes);
+  const results::H5Reader file_links(path, "modes file", "");
+  EXPECT_EQ(file_links.string_attribute("/bodies/beam%2F1", "name"), "beam/1");
+  EXPECT_EQ(file_links.string_attribute("/bodies/beam%252F1", "name"), "beam%2F1");
+  EXPECT_EQ(file_links.string_attribute("/bodies/%2E", "name"), ".");
   std::filesystem::remove(path);
 }
 
@@ -236,10 +243,10 @@ TEST(ModesFile, ControlCharactersInNamesAreInputErrors) {
 }
 
 TEST(ModesFile, ReadingSomethingElseIsAnInputError) {
-  EXPECT_THROW(read_modes_file(scratch_path("does_not_exist.h5")), InputError);
+  EXPECT_THROW(read_modes(scratch_path("does_not_exist.h5")), InputError);
   const std::string path = scratch_path("not_modes.h5");
   H5Group::create_file(path).write_attribute("format", "something-else");
-  EXPECT_THROW(read_modes_file(path), InputError);
+  EXPECT_THROW(read_modes(path), InputError);
   std::filesystem::remove(path);
 }
 

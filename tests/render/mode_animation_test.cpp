@@ -1,11 +1,12 @@
-// Mode-shape animations: the amplitude rule, the one-period Results drawn for a mode, and
-// render's own modes.h5 reader cross-checked with the solver's (io::read_modes_file) on a file
-// written by `limber modes`.
+// Mode-shape animations: the amplitude rule, the one-period Results drawn for a mode, and the
+// one modes.h5 reader (results/modes_reader.h) against the modal solver's own output.
 #include "mode_animation.h"
-#include "modes_reader.h"
 
 #include "core/error.h"
+#include "io/case_reader.h"
+#include "io/case_reduction.h"
 #include "io/modes_file.h"
+#include "results/modes_reader.h"
 #include "test_dir.h"
 
 #include <gtest/gtest.h>
@@ -73,35 +74,67 @@ TEST(ModeAnimation, BadOptionsAndMissingFileAreInputErrors) {
   EXPECT_THROW(animate_modes(dir / "modes.h5", dir, options), InputError);
 }
 
-TEST(ModesReader, AgreesWithTheSolversReader) {
-  // modes.h5 of the cantilever plate case, written by `limber modes`.
+TEST(ModesReader, ReadsTheModalSolversOwnOutputBitForBit) {
+  // The cantilever plate case reduced here (the modal solver's own output: FE model and mode
+  // set), written by io's writer as `limber modes` does, read back by the one modes.h5 reader.
+  // Doubles are stored as IEEE float64: every value comes back identical (tolerance 0).
+  const io::Case input = io::read_case_file(std::string(LIMBER_CASES_DIR) + "/plate_modes.yaml");
+  io::CaseReduction reduction = io::reduce_case(input, io::ReductionScope::kAllBodies);
+  std::vector<io::BodyModesRef> written;
+  for (std::size_t b = 0; b < input.flexible_bodies.size(); ++b) {
+    ASSERT_EQ(reduction.bodies[b].result.status, modal::ModalStatus::kOk);
+    written.push_back({input.flexible_bodies[b].name, &input.flexible_bodies[b].model,
+                       &reduction.bodies[b].result.mode_set});
+  }
   const auto dir = testing::fresh_directory("modes_reader");
-  const std::string command = std::string(LIMBER_EXE) + " modes " + LIMBER_CASES_DIR +
-                              "/plate_modes.yaml --no-animation -o " + dir.string() +
-                              " >/dev/null";
-  ASSERT_EQ(std::system(command.c_str()), 0);
-  const ModeShapes shapes = read_mode_shapes(dir / "modes.h5");
-  const io::ModesFile expected = io::read_modes_file((dir / "modes.h5").string());
+  io::write_modes_file((dir / "modes.h5").string(), input.title, input.file, written);
+  const results::ModesData file = results::read_modes(dir / "modes.h5");
+  const results::ModesData drawing = results::read_modes(dir / "modes.h5", results::ModesContent::kDrawing);
 
-  EXPECT_EQ(shapes.title, expected.title);
-  ASSERT_EQ(shapes.bodies.size(), expected.bodies.size());
-  for (std::size_t b = 0; b < shapes.bodies.size(); ++b) {
-    const BodyModeShapes& body = shapes.bodies[b];
-    const io::BodyModes& other = expected.bodies[b];
-    EXPECT_EQ(body.name, other.name);
-    ASSERT_EQ(body.mesh.nodes.rows(), static_cast<Eigen::Index>(other.nodes.size()));
-    EXPECT_EQ(body.mesh.quads.rows(), static_cast<Eigen::Index>(other.quads.size()));
-    const auto nm = static_cast<Eigen::Index>(other.mode_set.modes.size());
-    ASSERT_EQ(body.mesh.mode_translations.cols(), nm);
+  EXPECT_EQ(file.title, input.title);
+  EXPECT_EQ(file.case_file, input.file);
+  ASSERT_EQ(file.bodies.size(), input.flexible_bodies.size());
+  ASSERT_EQ(drawing.bodies.size(), file.bodies.size());
+  for (std::size_t b = 0; b < file.bodies.size(); ++b) {
+    const results::ModesBody& body = file.bodies[b];
+    const fe::FeModel& model = input.flexible_bodies[b].model;
+    const modal::ModeSet& set = reduction.bodies[b].result.mode_set;
+    EXPECT_EQ(body.name, input.flexible_bodies[b].name);
+    // Mesh and DOF layout.
+    ASSERT_EQ(body.mesh.nodes.rows(), model.node_count());
+    for (int n = 0; n < model.node_count(); ++n) {
+      EXPECT_EQ(body.mesh.nodes.row(n).transpose(), model.node_positions[static_cast<std::size_t>(n)]);
+    }
+    EXPECT_EQ(body.mesh.node_ids, model.node_ids);
+    EXPECT_EQ(body.mesh.quads.rows(), static_cast<Eigen::Index>(model.shells.size() + model.triangles.size()));
+    EXPECT_EQ(body.dof_count, model.dof_count());
+    EXPECT_EQ(body.fixed.rows(), static_cast<Eigen::Index>(model.fixed_dofs.size()));
+    // Modes: shapes, kinds, frequencies and labels, stiffness, rigid modes, invariants.
+    EXPECT_EQ(body.shapes, set.shapes);
+    EXPECT_EQ(body.modal_stiffness, set.modal_stiffness);
+    ASSERT_EQ(body.modes.size(), set.modes.size());
+    for (std::size_t i = 0; i < set.modes.size(); ++i) {
+      EXPECT_EQ(body.modes[i].kind, modal::to_string(set.modes[i].kind));
+      EXPECT_EQ(body.modes[i].frequency_hz, set.modes[i].frequency_hz);
+      EXPECT_EQ(body.modes[i].label, set.modes[i].label);
+    }
+    ASSERT_EQ(body.rigid_modes.size(), set.rigid_modes.size());
+    EXPECT_EQ(body.invariants.mass, set.invariants.mass);
+    EXPECT_EQ(body.invariants.inertia, set.invariants.inertia);
+    EXPECT_EQ(body.invariants.rotation_coupling, set.invariants.rotation_coupling);
+    ASSERT_EQ(body.invariants.inertia_second_order.size(), set.invariants.inertia_second_order.size());
+    EXPECT_EQ(body.invariants.inertia_second_order.back(), set.invariants.inertia_second_order.back());
+    // The translations drawn are the shapes' first three DOFs of every node, in both readings.
+    const BodyModeShapes drawn = body_mode_shapes(drawing.bodies[b]);
+    const auto nm = static_cast<Eigen::Index>(set.modes.size());
+    ASSERT_EQ(drawn.mesh.mode_translations.cols(), nm);
+    EXPECT_EQ(drawn.mesh.mode_translations, body.mesh.mode_translations);
+    EXPECT_EQ(drawing.bodies[b].shapes.size(), 0);  // kDrawing leaves the full shapes out
     for (Eigen::Index i = 0; i < nm; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      EXPECT_EQ(body.labels[k], other.mode_set.modes[k].label);
-      EXPECT_EQ(body.mesh.frequencies_hz(i), other.mode_set.modes[k].frequency_hz);
-      // Same stored doubles: exact equality.
-      for (Eigen::Index n = 0; n < body.mesh.nodes.rows(); ++n) {
-        for (int c = 0; c < 3; ++c) {
-          EXPECT_EQ(body.mesh.mode_translations(3 * n + c, i), other.translations[k](n, c));
-        }
+      EXPECT_EQ(drawn.labels[static_cast<std::size_t>(i)], set.modes[static_cast<std::size_t>(i)].label);
+      EXPECT_EQ(drawn.mesh.frequencies_hz(i), set.modes[static_cast<std::size_t>(i)].frequency_hz);
+      for (Eigen::Index n = 0; n < model.node_count(); ++n) {
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(drawn.mesh.mode_translations(3 * n + c, i), set.shapes(6 * n + c, i));
       }
     }
   }

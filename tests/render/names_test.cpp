@@ -3,13 +3,13 @@
 // files and mode folders get distinct safe names, and files written before groups held their
 // name read with the link names.
 #include "file_stem.h"
-#include "modes_reader.h"
 #include "results_reader.h"
 #include "vtk_export.h"
 
 #include "io/case_reader.h"
 #include "io/modes_file.h"
 #include "results/link_name.h"
+#include "results/modes_reader.h"
 #include "results/results_writer.h"
 #include "test_dir.h"
 
@@ -132,11 +132,12 @@ flexible_bodies:
   set.invariants.rotation_coupling = Eigen::MatrixXd::Zero(3, 1);
   io::write_modes_file((dir / "modes.h5").string(), "names", "names.yaml",
                        {{"beam/1", &model, &set}, {".", &model, &set}});
-  const ModeShapes shapes = read_mode_shapes(dir / "modes.h5");
+  const results::ModesData shapes = results::read_modes(dir / "modes.h5", results::ModesContent::kDrawing);
   ASSERT_EQ(shapes.bodies.size(), 2u);
   EXPECT_EQ(shapes.bodies[0].name, "beam/1");
   EXPECT_EQ(shapes.bodies[1].name, ".");
-  EXPECT_EQ(shapes.bodies[1].labels, std::vector<std::string>{"normal 1"});
+  ASSERT_EQ(shapes.bodies[1].modes.size(), 1u);
+  EXPECT_EQ(shapes.bodies[1].modes[0].label, "normal 1");
   EXPECT_EQ(shapes.bodies[1].mesh.nodes.rows(), model.node_count());
 }
 

@@ -5,11 +5,15 @@
 //  - the slide arrow beyond the slider along the slide axis, the rail behind it over the travel;
 //  - the reaction-force arrow of a crank at constant speed along the closed-form direction (the
 //    pin pulls the crank towards the axis: from the pin away from the crank), none the other way;
+//  - the reaction-torque arrow of an arm held by a bracket under gravity: T = -m g L y, its
+//    double-headed arrow's direction and length in pixels from the projection, drawn over the
+//    arm it starts inside;
 //  - the ghost outline where the undeformed beam lies and the deformed one does not;
 //  - the force scale's bounds, and the mode plane of a beam's in- and out-of-plane modes.
 #include "frame_renderer.h"
 #include "mode_animation.h"
 #include "mode_view.h"
+#include "scene.h"
 #include "scene_extras.h"
 #include "world_triad.h"
 
@@ -78,6 +82,25 @@ drivers:
 run: {integrator: ida, t_end: 0.2, sample_interval: 0.01}
 )";
 
+// A 2 kg arm, centre of mass L = 0.1 m along x from a bracket (fixed joint) at the ground
+// origin, under gravity 9.81 m/s^2 along -z; its box spans the joint point (x from -0.02 to
+// 0.22 m, y and z within +-0.03 m).
+constexpr double kArmMass = 2.0, kArmLever = 0.1, kGravity = 9.81;
+const char* kArm = R"(title: arm
+gravity: [0, 0, -9.81]
+bodies:
+  arm:
+    mass: 2.0
+    inertia: [1.2e-3, 1.0e-2, 1.0e-2]
+    center_of_mass: [0.1, 0, 0]
+    position: [0, 0, 0]
+    shapes:
+      - {type: box, size: [0.24, 0.06, 0.06], position: [0.1, 0, 0], color: [0.25, 0.5, 0.3]}
+joints:
+  B: {type: bracket, body_i: ground, body_j: arm, position: [0, 0, 0]}
+run: {integrator: ida, t_end: 0.1, sample_interval: 0.05}
+)";
+
 RenderOptions front_view() {
   RenderOptions options;
   options.width = kWidth;
@@ -137,6 +160,14 @@ TEST(SceneExtras, PinGlyphAtTheProjectedRevoluteAndForceArrowAlongTheCentripetal
                                  kForceColor);
   EXPECT_GT(minus_x, 3);
   EXPECT_EQ(plus_x, 0);
+  // The planar crank's reaction torques about x and z are round-off at most (the driver carries
+  // the one about the pin): no torque arrow, no torque scale.
+  EXPECT_EQ(renderer.scene().extras().newton_metres_per_metre(), 0.0);
+  int torque_pixels = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) torque_pixels += has_hue(image.pixel(x, y), kTorqueColor) ? 1 : 0;
+  }
+  EXPECT_EQ(torque_pixels, 0);
 }
 
 TEST(SceneExtras, SlideArrowBeyondTheSliderAndTheRailOverItsTravel) {
@@ -193,22 +224,89 @@ TEST(SceneExtras, GhostOutlineWhereTheUndeformedBeamLies) {
   }
 }
 
-TEST(SceneExtras, ForceScaleIsRoundAndThePeakArrowAFewTenthsOfTheScene) {
-  // round_length returns 0.7 to 1.75 times its argument, so the peak's arrow, peak / (F/L),
+TEST(SceneExtras, TorqueArrowOfABracketedArmUnderGravityOverTheArm) {
+  unsetenv("DISPLAY");
+  const Results results = run_case("arm", kArm);
+  ASSERT_EQ(results.joints.size(), 1u);
+  const JointTrack& joint = results.joints[0];
+  ASSERT_EQ(joint.torque_ground.rows(), results.sample_count());
+  // Statics: the bracket carries the weight, F = m g z, and its moment about the joint,
+  // T = -(L x) x (-m g z) = -m g L y (1.962 N m). The arm does not move: IDA's residual at
+  // rtol 1e-6 leaves ~1e-6 relative.
+  const Eigen::Vector3d T_expected(0.0, -kArmMass * kGravity * kArmLever, 0.0);
+  EXPECT_LT((joint.torque_ground.row(0).transpose() - T_expected).norm(), 1e-5 * T_expected.norm());
+  EXPECT_NEAR(joint.force_ground(0, 2), kArmMass * kGravity, 1e-5 * kArmMass * kGravity);
+
+  RenderOptions options = front_view();
+  options.camera = CameraPreset::kTop;  // the torque, along -y, in the picture's plane
+  options.width = 2 * kWidth;            // the arrow some 60 px long: 2 px is 3 %
+  options.height = 2 * kHeight;
+  options.forces = true;
+  FrameRenderer renderer(results, options, 0.0, 0.1);
+  const Image image = renderer.render(0.0);
+  // The arrow is |T| / (N m per m) long along -y from the joint; the scale is round: the peak
+  // 1.962 N m is drawn with 1 N m per round length.
+  const double per_metre = renderer.scene().extras().newton_metres_per_metre();
+  ASSERT_GT(per_metre, 0.0);
+  const double length = T_expected.norm() / per_metre;
+  const Eigen::Vector2d joint_px = renderer.project(Eigen::Vector3d::Zero());
+  const Eigen::Vector2d tip_px = renderer.project(length * -Eigen::Vector3d::UnitY());
+  const double length_px = (tip_px - joint_px).norm();
+  ASSERT_GT(length_px, 40.0);
+  // Along -y: the shaft and both heads up to the tip; the last pixel of the arrow's colour on
+  // the line within 2 px of the projected tip (the cone's apex is rasterised to about a pixel);
+  // nothing along +y nor beyond the tip.
+  const Eigen::Vector2d along = (tip_px - joint_px) / length_px;
+  int last = -1;
+  for (int k = 0; k <= static_cast<int>(length_px) + 10; ++k) {
+    const Eigen::Vector2d p = joint_px + k * along;
+    if (has_hue(image.pixel(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))),
+                kTorqueColor)) {
+      last = k;
+    }
+  }
+  EXPECT_NEAR(last, length_px, 2.0);
+  EXPECT_EQ(count_along(image, renderer.project({0.0, 0.01, 0.0}), renderer.project({0.0, length, 0.0}),
+                        kTorqueColor),
+            0);
+  // Over the arm: where the shaft runs inside the box (y from -0.01 to -0.028 m, under its top
+  // face at z = 0.03 m) the arrow's colour shows.
+  const int inside = count_along(image, renderer.project({0.0, -0.01, 0.0}), renderer.project({0.0, -0.028, 0.0}),
+                                 kTorqueColor);
+  const double inside_px = (renderer.project({0.0, -0.01, 0.0}) - renderer.project({0.0, -0.028, 0.0})).norm();
+  EXPECT_GT(inside, 0.8 * inside_px);
+  // Two heads, each 0.25 of the length: just past each head's base (0.53 and 0.78 of the length,
+  // cone radius 0.88 of the tip radius 0.1) the arrow is wider than across its shaft (radius
+  // 0.03) by more than 3 px (about 5 px at this size; one head would leave 0.53 at the shaft's
+  // width).
+  const auto width_at = [&](double s) {
+    const Eigen::Vector3d c = s * length * -Eigen::Vector3d::UnitY();
+    const double half = 0.1 * length;
+    return count_along(image, renderer.project(c - half * Eigen::Vector3d::UnitX()),
+                       renderer.project(c + half * Eigen::Vector3d::UnitX()), kTorqueColor);
+  };
+  const int shaft = width_at(0.3);
+  EXPECT_GT(shaft, 0);
+  EXPECT_GT(width_at(0.53), shaft + 3);
+  EXPECT_GT(width_at(0.78), shaft + 3);
+}
+
+TEST(SceneExtras, ArrowScaleIsRoundAndThePeakArrowAFewTenthsOfTheScene) {
+  // round_length returns 0.7 to 1.75 times its argument, so the peak's arrow, peak / (V/L),
   // is 0.1 to 0.625 of the scene radius: never a speck, never across the picture.
   for (double peak : {7.4, 829.0, 2210.0, 0.013, 5e6}) {
     for (double radius : {0.05, 0.6, 3.0, 40.0}) {
-      const ForceScale scale = force_scale(peak, radius);
-      EXPECT_EQ(scale.force, round_length(scale.force));
+      const ArrowScale scale = arrow_scale(peak, radius);
+      EXPECT_EQ(scale.value, round_length(scale.value));
       EXPECT_EQ(scale.length, round_length(scale.length));
-      const double arrow = peak / scale.newtons_per_metre();
+      const double arrow = peak / scale.per_metre();
       EXPECT_GE(arrow, 0.1 * radius) << peak << " " << radius;
       EXPECT_LE(arrow, 0.625 * radius) << peak << " " << radius;
     }
   }
   // The slider-crank's figure: a peak of 2210 N in a 0.6 m scene is drawn at 0.1 m = 1000 N.
-  EXPECT_DOUBLE_EQ(force_scale(2210.0, 0.6).force, 1000.0);
-  EXPECT_DOUBLE_EQ(force_scale(2210.0, 0.6).length, 0.1);
+  EXPECT_DOUBLE_EQ(arrow_scale(2210.0, 0.6).value, 1000.0);
+  EXPECT_DOUBLE_EQ(arrow_scale(2210.0, 0.6).length, 0.1);
 }
 
 TEST(ModeView, BeamModesAreSeenSquareToTheirPlane) {

@@ -114,6 +114,46 @@ TEST(ResultsWriter, WritesTheDocumentedLayout) {
   H5Fclose(file);
 }
 
+// A flexible body without modes (the case reader refuses one, the writer must not rely on it):
+// its modal datasets are [ns, 0], its modes [0, nn, 3] and [0], over more than one block of
+// samples (kBlockRows), beside a body whose datasets keep their values.
+TEST(ResultsWriter, FlexibleBodyWithoutModesGetsEmptyColumns) {
+  const auto dir = fresh_directory("no_modes");
+  FlexibleBodySpec bare = two_node_beam();
+  bare.name = "bare";
+  bare.mode_translations.resize(6, 0);
+  bare.frequencies_hz.resize(0);
+  const int ns = static_cast<int>(kBlockRows) + 44;
+  {
+    ResultsWriter writer(dir, "no modes", "case.yaml");
+    EXPECT_EQ(writer.add_flexible_body(bare), 0);
+    EXPECT_EQ(writer.add_flexible_body(two_node_beam()), 1);
+    for (int k = 0; k < ns; ++k) {
+      Sample sample;
+      sample.time = 0.1 * k;
+      sample.bodies.resize(2);
+      sample.bodies[0].position = {1.0 * k, 0.0, 0.0};
+      sample.bodies[1].modal_coordinates = Eigen::Vector2d(0.01 * k, -0.02 * k);
+      sample.bodies[1].modal_velocities = Eigen::Vector2d(0.5 * k, 0.25 * k);
+      writer.append_sample(sample);
+    }
+    writer.finish(RunStatus::kOk);
+  }
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "ok");
+  const auto rows = static_cast<hsize_t>(ns);
+  EXPECT_EQ(dataset_dims(file, "/time"), (std::vector<hsize_t>{rows}));
+  EXPECT_EQ(dataset_dims(file, "/bodies/bare/modal_coordinates"), (std::vector<hsize_t>{rows, 0}));
+  EXPECT_EQ(dataset_dims(file, "/bodies/bare/modal_velocities"), (std::vector<hsize_t>{rows, 0}));
+  EXPECT_EQ(dataset_dims(file, "/bodies/bare/modes/translations"), (std::vector<hsize_t>{0, 2, 3}));
+  EXPECT_EQ(dataset_dims(file, "/bodies/bare/modes/frequencies_hz"), (std::vector<hsize_t>{0}));
+  EXPECT_EQ(read_doubles(file, "/bodies/bare/position")[3 * (ns - 1)], ns - 1.0);
+  EXPECT_EQ(dataset_dims(file, "/bodies/beam/modal_coordinates"), (std::vector<hsize_t>{rows, 2}));
+  EXPECT_EQ(read_doubles(file, "/bodies/beam/modal_coordinates")[2 * (ns - 1) + 1], -0.02 * (ns - 1));
+  H5Fclose(file);
+}
+
 // A real attribute's single value (NaN when absent).
 double read_double_attribute(hid_t file, const std::string& path, const char* name) {
   if (H5Aexists_by_name(file, path.c_str(), name, H5P_DEFAULT) <= 0) return std::nan("");
