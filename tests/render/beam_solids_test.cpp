@@ -10,6 +10,7 @@
 #include "test_dir.h"
 #include "vtk_export.h"
 
+#include "core/error.h"
 #include "fe/section_outline.h"
 #include "results/results_writer.h"
 
@@ -251,6 +252,42 @@ TEST(BeamSolidsPixels, FileWithoutSectionsStillDrawsTheTube) {
   // looks the same both ways and 16 mm thick over the 200 mm length, within 15 % as above.
   EXPECT_NEAR(along_height / along_width, 1.0, 0.15);
   EXPECT_NEAR(along_width, 2 * 0.00798 / 0.2, 0.15 * 0.0798);
+}
+
+TEST(BeamSolidsFile, InconsistentSectionsAreAnInputErrorNamingTheFile) {
+  // An outline index past the table, and a y axis along the beam.
+  for (const bool bad_index : {true, false}) {
+    const auto dir = testing::fresh_directory("beam_solids_bad");
+    {
+      results::ResultsWriter writer(dir, "bad", "beam_solids_test.cpp");
+      results::FlexibleBodySpec bar;
+      bar.name = "bar";
+      bar.nodes.resize(2, 3);
+      bar.nodes << 0, 0, 0, 0.1, 0, 0;
+      bar.lines.resize(1, 2);
+      bar.lines << 0, 1;
+      bar.mode_translations = Eigen::MatrixXd::Zero(6, 1);
+      bar.frequencies_hz = Eigen::VectorXd::Ones(1);
+      FlexibleMesh mesh;
+      mesh.lines = bar.lines;
+      set_sections(mesh, fe::rectangle_outline(0.04, 0.005),
+                   bad_index ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX());
+      if (bad_index) mesh.beam_sections.outline = {3};
+      bar.beam_sections = mesh.beam_sections;
+      writer.add_flexible_body(bar);
+      writer.finish(results::RunStatus::kOk);
+    }
+    try {
+      read_results(dir);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("results.h5"), std::string::npos) << message;
+      EXPECT_NE(message.find(bad_index ? "beam_outline values in 0..0" : "normal to beams"),
+                std::string::npos)
+          << message;
+    }
+  }
 }
 
 TEST(BeamSolidsExport, VtuCarriesTheSurfaceCellsWithTheirBeamIndex) {
