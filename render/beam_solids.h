@@ -11,9 +11,10 @@
 //
 // Deformation: every surface point follows the node at its end, x = x_node + R_WB (P_B −
 // X_node,B): it moves with the node's elastic translation (results.h5 stores translations
-// only), and the section is NOT turned by the node's small elastic rotation, so at a bent
-// joint two neighbouring beams' end faces may gape or overlap by about (rotation × section
-// size), invisible at the deformations shown.
+// only), and the section is NOT turned by the node's small elastic rotation: it keeps its
+// undeformed attitude in the body frame. Neighbouring beams' end faces at a shared node stay
+// together; a bent beam's sections lean off the normal of its deformed axis by the node's
+// rotation (slope), which the deformation scale magnifies as it magnifies the bending.
 #pragma once
 
 #include "results_reader.h"
