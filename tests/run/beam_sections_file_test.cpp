@@ -60,5 +60,50 @@ TEST(BeamSectionsFile, BeamYAxesFollowTheCasesOrientationVector) {
   std::filesystem::remove(path);
 }
 
+// The rod's sections read back from a results file declared from the case text `text`.
+results::BeamSections declared_sections(const std::string& name, const std::string& text) {
+  const std::string path = test::write_case(name, text);
+  const io::Case input = io::read_case_file(path);
+  const io::Mechanism built =
+      io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const auto dir = test::fresh_directory(name);
+  {
+    results::ResultsWriter writer(dir, input.title, input.file);
+    declare_model(built.model, writer);
+    writer.finish(results::RunStatus::kOk);
+  }
+  const results::H5Reader file(dir / "results.h5", "results file", "");
+  const results::BeamSections s = results::read_beam_sections(
+      file, results::layout::at(results::layout::at(results::layout::kBodies, "rod"), results::layout::body::kMesh),
+      100);
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(path);
+  return s;
+}
+
+TEST(BeamSectionsFile, GeneralSectionsGetAMarkedStandIn) {
+  // The rod's 10 x 20 mm rectangle given as a general section (A, I, J): with its extreme
+  // fibres the stand-in is the 2 fibre_y x 2 fibre_z rectangle, without them the square of
+  // area A (side √2e-4 m); both marked equivalent. Corners ±side/2: exact to round-off.
+  const std::string rectangle = "rod: {shape: rectangle, width: 0.01, height: 0.02}";
+  const std::string general = "rod: {shape: general, A: 2.0e-4, Iy: 6.667e-9, Iz: 1.667e-9, J: 4.58e-9";
+  const std::string case_path = std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml";
+  for (const bool fibres : {true, false}) {
+    std::string text =
+        test::edited_case(case_path, rectangle, general + (fibres ? ", fibre_y: 0.005, fibre_z: 0.01}" : "}"));
+    // Without fibres the rod's stress output is refused: drop it.
+    const std::string stress = "stress: {elements: all, every: 10}";
+    if (!fibres) text.replace(text.find(stress), stress.size(), "");
+    const results::BeamSections s = declared_sections(fibres ? "general_fibres" : "general_square", text);
+    ASSERT_EQ(s.outline_count(), 1);
+    EXPECT_EQ(s.equivalent[0], 1);
+    EXPECT_EQ(s.hollow[0], 0);
+    ASSERT_EQ(s.points.rows(), 4);
+    const double side_y = fibres ? 0.01 : std::sqrt(2.0e-4), side_z = fibres ? 0.02 : std::sqrt(2.0e-4);
+    EXPECT_NEAR(s.points.col(0).maxCoeff() - s.points.col(0).minCoeff(), side_y, 1e-15);
+    EXPECT_NEAR(s.points.col(1).maxCoeff() - s.points.col(1).minCoeff(), side_z, 1e-15);
+  }
+}
+
 }  // namespace
 }  // namespace limber::run
