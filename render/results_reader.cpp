@@ -75,7 +75,8 @@ FlexibleMesh read_flexible_mesh(const results::H5Reader& r, const std::string& b
   mesh.beam_sections = results::read_beam_sections(r, m, static_cast<long>(nl));
   // Each beam's y axis normal to the beam (render/beam_solids.h sweeps the outline along it).
   for (Eigen::Index e = 0; e < mesh.beam_sections.y_axes.rows(); ++e) {
-    const Eigen::Vector3d chord = (mesh.nodes.row(mesh.lines(e, 1)) - mesh.nodes.row(mesh.lines(e, 0))).transpose();
+    const Eigen::Vector3d chord =
+        (mesh.nodes.row(mesh.lines(e, 1)) - mesh.nodes.row(mesh.lines(e, 0))).transpose();
     const Eigen::Vector3d y = mesh.beam_sections.y_axes.row(e).transpose();
     if (!(chord.norm() > 0.0 && std::abs(chord.normalized().dot(y)) < 1e-6)) {
       r.fail(layout::at(m, layout::mesh::kBeamYAxes) + " normal to beams of non-zero length",

@@ -62,7 +62,9 @@ vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const 
   const RowMatrix3d u_node_W = elastic_displacements(body.mesh, state.modal_coordinates) * R.transpose();
   RowMatrix3d u_W(nn + ns, 3);
   u_W.topRows(nn) = u_node_W;
-  for (Eigen::Index k = 0; k < ns; ++k) u_W.row(nn + k) = u_node_W.row(solids.node[static_cast<std::size_t>(k)]);
+  for (Eigen::Index k = 0; k < ns; ++k) {
+    u_W.row(nn + k) = u_node_W.row(solids.node[static_cast<std::size_t>(k)]);
+  }
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -82,7 +84,9 @@ vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const 
   std::vector<vtkIdType> ids;
   for (int c = 0; c < solids.cell_count(); ++c) {
     ids.clear();
-    for (int i = solids.cell_offsets[c]; i < solids.cell_offsets[c + 1]; ++i) ids.push_back(nn + solids.connectivity[i]);
+    for (int i = solids.cell_offsets[c]; i < solids.cell_offsets[c + 1]; ++i) {
+      ids.push_back(nn + solids.connectivity[i]);
+    }
     const int type = ids.size() == 3 ? VTK_TRIANGLE : ids.size() == 4 ? VTK_QUAD : VTK_POLYGON;
     grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
   }

@@ -38,7 +38,9 @@ results::BeamSections beam_sections(const multibody::FlexibleMesh& mesh) {
   if (mesh.beam_outlines.empty()) return out;
   const auto nl = static_cast<Eigen::Index>(mesh.beam_y_axes.size());
   out.y_axes.resize(nl, 3);
-  for (Eigen::Index e = 0; e < nl; ++e) out.y_axes.row(e) = mesh.beam_y_axes[static_cast<std::size_t>(e)].transpose();
+  for (Eigen::Index e = 0; e < nl; ++e) {
+    out.y_axes.row(e) = mesh.beam_y_axes[static_cast<std::size_t>(e)].transpose();
+  }
   out.outline = mesh.beam_outlines;
   out.offsets.push_back(0);
   std::vector<Eigen::Vector2d> points;
@@ -49,7 +51,9 @@ results::BeamSections beam_sections(const multibody::FlexibleMesh& mesh) {
     out.equivalent.push_back(o.equivalent ? 1 : 0);
   }
   out.points.resize(static_cast<Eigen::Index>(points.size()), 2);
-  for (std::size_t k = 0; k < points.size(); ++k) out.points.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    out.points.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
+  }
   return out;
 }
 

@@ -43,7 +43,9 @@ void set_sections(FlexibleMesh& mesh, const fe::SectionOutline& outline, const E
   s.y_axes.rowwise() = y_axis.transpose();
   s.outline.assign(static_cast<std::size_t>(mesh.lines.rows()), 0);
   s.points.resize(static_cast<Eigen::Index>(outline.points.size()), 2);
-  for (std::size_t k = 0; k < outline.points.size(); ++k) s.points.row(static_cast<Eigen::Index>(k)) = outline.points[k].transpose();
+  for (std::size_t k = 0; k < outline.points.size(); ++k) {
+    s.points.row(static_cast<Eigen::Index>(k)) = outline.points[k].transpose();
+  }
   s.offsets = {0, static_cast<int>(outline.points.size())};
   s.hollow = {static_cast<std::int8_t>(outline.hollow)};
   s.equivalent = {0};
@@ -110,7 +112,8 @@ double closed_volume(const BeamSolids& solids) {
 
 TEST(BeamSolids, SweptIBeamIsClosedAndEnclosesAreaTimesLength) {
   FlexibleMesh mesh = straight_mesh(3, Eigen::Vector3d(0.6, 0.3, -0.2));
-  set_sections(mesh, i_outline(), Eigen::Vector3d(0.0, 0.0, 1.0).cross(Eigen::Vector3d(0.6, 0.3, -0.2)).normalized());
+  const Eigen::Vector3d y = Eigen::Vector3d::UnitZ().cross(Eigen::Vector3d(0.6, 0.3, -0.2));
+  set_sections(mesh, i_outline(), y.normalized());
   const BeamSolids solids = beam_solids(mesh);
   const int n = static_cast<int>(i_outline().points.size());
   EXPECT_EQ(solids.points_B.rows(), 3 * 2 * n);

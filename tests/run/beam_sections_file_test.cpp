@@ -26,7 +26,8 @@ TEST(BeamSectionsFile, BeamYAxesFollowTheCasesOrientationVector) {
   const std::string path = test::write_case(
       "beam_sections",
       test::edited_case(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml",
-                        "orientation: [0, 1, 0], first_node_id: 1", "orientation: [0.3, 1, 1], first_node_id: 1"));
+                        "orientation: [0, 1, 0], first_node_id: 1",
+                        "orientation: [0.3, 1, 1], first_node_id: 1"));
   const io::Case input = io::read_case_file(path);
   const io::Mechanism built =
       io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
@@ -74,7 +75,9 @@ results::BeamSections declared_sections(const std::string& name, const std::stri
   }
   const results::H5Reader file(dir / "results.h5", "results file", "");
   const results::BeamSections s = results::read_beam_sections(
-      file, results::layout::at(results::layout::at(results::layout::kBodies, "rod"), results::layout::body::kMesh),
+      file,
+      results::layout::at(results::layout::at(results::layout::kBodies, "rod"),
+                          results::layout::body::kMesh),
       100);
   std::filesystem::remove_all(dir);
   std::filesystem::remove(path);
@@ -89,8 +92,8 @@ TEST(BeamSectionsFile, GeneralSectionsGetAMarkedStandIn) {
   const std::string general = "rod: {shape: general, A: 2.0e-4, Iy: 6.667e-9, Iz: 1.667e-9, J: 4.58e-9";
   const std::string case_path = std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml";
   for (const bool fibres : {true, false}) {
-    std::string text =
-        test::edited_case(case_path, rectangle, general + (fibres ? ", fibre_y: 0.005, fibre_z: 0.01}" : "}"));
+    const std::string closing = fibres ? ", fibre_y: 0.005, fibre_z: 0.01}" : "}";
+    std::string text = test::edited_case(case_path, rectangle, general + closing);
     // Without fibres the rod's stress output is refused: drop it.
     const std::string stress = "stress: {elements: all, every: 10}";
     if (!fibres) text.replace(text.find(stress), stress.size(), "");
