@@ -2,6 +2,7 @@
 
 #include "render_job.h"
 #include "results/file_names.h"
+#include "xdmf_layout.h"
 
 #include <fmt/core.h>
 
@@ -95,15 +96,16 @@ cli::Command add_render_command(CLI::App& app) {
     const RenderSummary summary = render_results(*options);
     fmt::print("rendered {} frames of t = [{}, {}] s at {}x{} ({})\n", summary.frames,
                summary.t0, summary.t1, options->width, options->height, summary.backend);
-    const std::filesystem::path vtk = options->directory / "vtk";
+    const std::filesystem::path vtk = options->directory / results::kVtkFolder;
     if (summary.xdmf_samples > 0) {
-      fmt::print("  ParaView: {} ({} time steps over scene.h5); open with\n"
+      fmt::print("  ParaView: {} ({} time steps over {}); open with\n"
                  "    paraview --script={}\n",
-                 (vtk / "scene.xmf").string(), summary.xdmf_samples,
-                 (vtk / "open_in_paraview.py").string());
+                 (vtk / xdmf::kDescriptionName).string(), summary.xdmf_samples, xdmf::kFileName,
+                 (vtk / xdmf::kScriptName).string());
     }
     if (summary.vtu_files > 0) {
-      fmt::print("  ParaView: {} ({} VTU files)\n", (vtk / "scene.pvd").string(), summary.vtu_files);
+      fmt::print("  ParaView: {} ({} VTU files)\n", (vtk / results::kVtkSceneFileName).string(),
+                 summary.vtu_files);
     }
     if (options->paraview != ParaViewOutput::kNone) {
       fmt::print("  ParaView output written in {:.2f} s\n", summary.paraview_seconds);

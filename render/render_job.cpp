@@ -112,7 +112,7 @@ RenderSummary render_results(const RenderOptions& options) {
     const bool xdmf = options.paraview != ParaViewOutput::kPvd;
     const bool pvd = options.paraview != ParaViewOutput::kXdmf;
     remove_stale(vtk, "", ".vtu");
-    if (!pvd) remove_stale(vtk, "scene", ".pvd");
+    if (!pvd) remove_stale(vtk, results::kVtkSceneFileName, "");
     if (!xdmf) {
       for (const char* name : {xdmf::kFileName, xdmf::kDescriptionName, xdmf::kScriptName}) {
         remove_stale(vtk, name, "");

@@ -7,6 +7,7 @@
 #include "results/results_layout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace limber::render {
@@ -54,6 +55,7 @@ FlexibleMesh flexible_mesh(const results::MeshData& data) {
   mesh.beam_radius = data.beam_radius;
   mesh.mode_translations = data.mode_translations;
   mesh.frequencies_hz = data.frequencies_hz;
+  mesh.beam_sections = data.beam_sections;
   return mesh;
 }
 

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "results/beam_sections.h"
+
 namespace limber::results {
 class H5Reader;
 struct MeshData;
@@ -38,6 +40,8 @@ struct FlexibleMesh {
   Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> lines;  // 0-based node indices
   Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> quads;
   double beam_radius = 0.0;                                      // [m]
+  // Beams' local y axes and section outlines (empty in files before them: tubes of beam_radius).
+  results::BeamSections beam_sections;
   Eigen::MatrixXd mode_translations;  // (3 nn) x nm, column i = mode i, node-major xyz
   Eigen::VectorXd frequencies_hz;     // nm
 };
@@ -95,9 +99,10 @@ struct Results {
 Results read_results(const std::filesystem::path& directory);
 
 // The mesh and mode translations of the group `body` (e.g. "/bodies/plate": mesh/nodes, lines,
-// quads, beam_radius; modes/translations [nm, nn, 3], frequencies_hz): the same layout in
-// results.h5 and modes.h5, read by results::read_mesh (results/modes_reader.h). Throws
-// InputError when a dataset is missing or malformed.
+// quads, beam_radius, the beam sections (results/beam_sections.h); modes/translations
+// [nm, nn, 3], frequencies_hz): the same layout in results.h5 and modes.h5, read by
+// results::read_mesh (results/modes_reader.h). Throws InputError when a dataset is missing or
+// malformed.
 FlexibleMesh read_flexible_mesh(const results::H5Reader& file, const std::string& body);
 // The drawing's copy of a mesh read by results/modes_reader.h.
 FlexibleMesh flexible_mesh(const results::MeshData& data);

@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "beam_solids.h"
 #include "body_pose.h"
 #include "flat_shading.h"
 #include "stress_reader.h"
@@ -152,6 +153,13 @@ struct FlexibleView {
   const StressTrack* stress = nullptr;
   vtkSmartPointer<vtkDoubleArray> quad_stress;
   vtkSmartPointer<vtkDoubleArray> line_stress;
+  // Beams as swept sections (beam_solids.h; null for files without them): the surface, per
+  // point its node and offset from that node (body frame) and |u|, per cell the stress.
+  vtkSmartPointer<vtkPolyData> solids;
+  vtkSmartPointer<vtkDoubleArray> solid_magnitude;
+  vtkSmartPointer<vtkDoubleArray> solid_stress;
+  BeamSolids solid_mesh;
+  RowMatrix3d solid_offset_B;
 };
 
 struct RigidShapeView {
@@ -275,8 +283,12 @@ struct Scene::Impl {
       add_colored_actor(view.surface, nullptr);
     }
 
-    // Beams: lines swept into tubes of the mesh's beam radius (plain thick lines without one).
-    if (body.mesh.lines.rows() > 0) {
+    // Beams: swept sections where the file has them (beam_solids.h), else lines swept into
+    // tubes of the mesh's beam radius (plain thick lines without one).
+    view.solid_mesh = beam_solids(body.mesh);
+    if (view.solid_mesh.cell_count() > 0) {
+      add_solids(view);
+    } else if (body.mesh.lines.rows() > 0) {
       auto lines = vtkSmartPointer<vtkCellArray>::New();
       for (Eigen::Index e = 0; e < body.mesh.lines.rows(); ++e) {
         const vtkIdType ids[2] = {body.mesh.lines(e, 0), body.mesh.lines(e, 1)};
@@ -302,6 +314,38 @@ struct Scene::Impl {
       }
     }
     flexible.push_back(view);
+  }
+
+  // The beams' swept surface: its own points, moved in update() with the nodes they follow.
+  void add_solids(FlexibleView& view) {
+    const BeamSolids& solids = view.solid_mesh;
+    const auto np = static_cast<vtkIdType>(solids.points_B.rows());
+    view.solid_offset_B = solids.points_B;
+    for (Eigen::Index k = 0; k < solids.points_B.rows(); ++k) {
+      view.solid_offset_B.row(k) -= view.body->mesh.nodes.row(solids.node[static_cast<std::size_t>(k)]);
+    }
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(np);
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    std::vector<vtkIdType> ids;
+    for (int c = 0; c < solids.cell_count(); ++c) {
+      ids.assign(solids.connectivity.begin() + solids.cell_offsets[c],
+                 solids.connectivity.begin() + solids.cell_offsets[c + 1]);
+      cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    }
+    view.solids = vtkSmartPointer<vtkPolyData>::New();
+    view.solids->SetPoints(points);
+    view.solids->SetPolys(cells);
+    view.solid_magnitude = vtkSmartPointer<vtkDoubleArray>::New();
+    view.solid_magnitude->SetName("displacement_magnitude");
+    view.solid_magnitude->SetNumberOfTuples(np);
+    view.solids->GetPointData()->SetScalars(view.solid_magnitude);
+    if (by_stress()) {
+      view.solid_stress = cell_values(solids.cell_count());
+      view.solids->GetCellData()->SetScalars(view.solid_stress);
+    }
+    add_colored_actor(view.solids, nullptr);
   }
 
   // An actor coloured through the shared lookup table, from data or a pipeline output.
@@ -617,13 +661,28 @@ void Scene::update(double t) {
   RowMatrix3d x_W;
   Eigen::VectorXd u_norm;
   for (FlexibleView& view : s.flexible) {
-    s.deformed_nodes(view.index, body_state(*view.body, at), x_W, u_norm);
+    const BodyState state = body_state(*view.body, at);
+    s.deformed_nodes(view.index, state, x_W, u_norm);
     for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
       view.points->SetPoint(k, x_W(k, 0), x_W(k, 1), x_W(k, 2));
       view.magnitude->SetValue(k, u_norm(k));
     }
     view.points->Modified();
     view.magnitude->Modified();
+    // Beam solids: each point at its node, offset by the undeformed section turned with the body.
+    if (view.solids) {
+      const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
+      const RowMatrix3d offset_W = view.solid_offset_B * R.transpose();
+      vtkPoints* points = view.solids->GetPoints();
+      for (Eigen::Index k = 0; k < offset_W.rows(); ++k) {
+        const int node = view.solid_mesh.node[static_cast<std::size_t>(k)];
+        points->SetPoint(k, x_W(node, 0) + offset_W(k, 0), x_W(node, 1) + offset_W(k, 1),
+                         x_W(node, 2) + offset_W(k, 2));
+        view.solid_magnitude->SetValue(k, u_norm(node));
+      }
+      points->Modified();
+      view.solid_magnitude->Modified();
+    }
     // Element stresses of the history row at or before t [MPa] (lines first, then quads).
     if (view.stress) {
       const int lines = static_cast<int>(view.body->mesh.lines.rows());
@@ -633,6 +692,12 @@ void Scene::update(double t) {
         for (int e = 0; e < lines; ++e) view.line_stress->SetValue(e, values(e));
         view.line_stress->Modified();
       }
+      if (view.solid_stress) {
+        for (int c = 0; c < view.solid_mesh.cell_count(); ++c) {
+          view.solid_stress->SetValue(c, values(view.solid_mesh.beam[static_cast<std::size_t>(c)]));
+        }
+        view.solid_stress->Modified();
+      }
       if (view.quad_stress) {
         for (Eigen::Index q = 0; q < view.body->mesh.quads.rows(); ++q) view.quad_stress->SetValue(q, values(lines + q));
         view.quad_stress->Modified();
@@ -640,6 +705,7 @@ void Scene::update(double t) {
     }
     if (view.surface) view.surface->Modified();
     if (view.beams) view.beams->Modified();
+    if (view.solids) view.solids->Modified();
   }
 
   // Rigid primitives: body pose times shape offset times primitive axes.

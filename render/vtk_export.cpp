@@ -1,5 +1,6 @@
 #include "vtk_export.h"
 
+#include "beam_solids.h"
 #include "body_pose.h"
 #include "file_stem.h"
 #include "primitive_source.h"
@@ -9,6 +10,7 @@
 #include <vtkAppendFilter.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkCellData.h>
 #include <vtkPointData.h>
@@ -45,11 +47,23 @@ void add_vector_data(vtkUnstructuredGrid* grid, const RowMatrix3d& u_W) {
   grid->GetPointData()->SetActiveVectors("displacement");
 }
 
-// The mesh of a flexible body at one sample (see header).
-vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const BodyState& state) {
+// The mesh of a flexible body at one sample (see header), with its beams' swept surface
+// `solids` (beam_solids.h; empty for files without sections) after the nodes and elements.
+vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const BodyState& state,
+                                                   const BeamSolids& solids) {
   const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
-  const RowMatrix3d x_W = (body.mesh.nodes * R.transpose()).rowwise() + state.position.transpose();
-  const RowMatrix3d u_W = elastic_displacements(body.mesh, state.modal_coordinates) * R.transpose();
+  const Eigen::Index nn = body.mesh.nodes.rows(), ns = solids.points_B.rows();
+  // Surface points follow their nodes: the same reference placement and displacement.
+  RowMatrix3d X_B(nn + ns, 3);
+  X_B.topRows(nn) = body.mesh.nodes;
+  X_B.bottomRows(ns) = solids.points_B;
+  const RowMatrix3d x_W = (X_B * R.transpose()).rowwise() + state.position.transpose();
+  const RowMatrix3d u_node_W = elastic_displacements(body.mesh, state.modal_coordinates) * R.transpose();
+  RowMatrix3d u_W(nn + ns, 3);
+  u_W.topRows(nn) = u_node_W;
+  for (Eigen::Index k = 0; k < ns; ++k) {
+    u_W.row(nn + k) = u_node_W.row(solids.node[static_cast<std::size_t>(k)]);
+  }
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -66,21 +80,43 @@ vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const 
     const vtkIdType ids[2] = {body.mesh.lines(e, 0), body.mesh.lines(e, 1)};
     grid->InsertNextCell(VTK_LINE, 2, ids);
   }
+  std::vector<vtkIdType> ids;
+  for (int c = 0; c < solids.cell_count(); ++c) {
+    ids.clear();
+    for (int i = solids.cell_offsets[c]; i < solids.cell_offsets[c + 1]; ++i) {
+      ids.push_back(nn + solids.connectivity[i]);
+    }
+    const int type = ids.size() == 3 ? VTK_TRIANGLE : ids.size() == 4 ? VTK_QUAD : VTK_POLYGON;
+    grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  // beam_index: the line of each line cell and surface cell, -1 for shells.
+  vtkNew<vtkIntArray> beam_index;
+  beam_index->SetName("beam_index");
+  beam_index->SetNumberOfTuples(grid->GetNumberOfCells());
+  vtkIdType cell = 0;
+  for (Eigen::Index q = 0; q < body.mesh.quads.rows(); ++q) beam_index->SetValue(cell++, -1);
+  for (Eigen::Index e = 0; e < body.mesh.lines.rows(); ++e) beam_index->SetValue(cell++, static_cast<int>(e));
+  for (int b : solids.beam) beam_index->SetValue(cell++, b);
+  grid->GetCellData()->AddArray(beam_index);
   add_vector_data(grid, u_W);
   return grid;
 }
 
-// Cell data "stress" [Pa]; cells are the quads, then the lines (flexible_grid), elements of the
-// stress history the lines, then the quads.
-void add_stress_data(vtkUnstructuredGrid* grid, const BodyTrack& body, const StressTrack& stress, double t) {
+// Cell data "stress" [Pa]; cells are the quads, then the lines, then the beams' surface cells
+// (flexible_grid), elements of the stress history the lines, then the quads.
+void add_stress_data(vtkUnstructuredGrid* grid, const BodyTrack& body, const StressTrack& stress,
+                     double t, const BeamSolids& solids) {
   const auto lines = static_cast<int>(body.mesh.lines.rows());
   const auto quads = static_cast<int>(body.mesh.quads.rows());
   const Eigen::VectorXd values = stress.element_values(stress.row_at(t), lines + quads);
   vtkNew<vtkDoubleArray> cells;
   cells->SetName("stress");
-  cells->SetNumberOfTuples(lines + quads);
+  cells->SetNumberOfTuples(lines + quads + solids.cell_count());
   for (int q = 0; q < quads; ++q) cells->SetValue(q, values(lines + q));
   for (int e = 0; e < lines; ++e) cells->SetValue(quads + e, values(e));
+  for (int c = 0; c < solids.cell_count(); ++c) {
+    cells->SetValue(quads + lines + c, values(solids.beam[static_cast<std::size_t>(c)]));
+  }
   grid->GetCellData()->AddArray(cells);
 }
 
@@ -149,6 +185,8 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
 
   // One file per body and sample in [t0, t1]; stresses where the run recorded them.
   const std::vector<std::optional<StressTrack>> stresses = read_stress_tracks(results);
+  std::vector<BeamSolids> solids;
+  for (const BodyTrack& body : results.bodies) solids.push_back(beam_solids(body.mesh));
   int written = 0;
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetDataModeToAppended();
@@ -159,8 +197,8 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
     for (std::size_t b = 0; b < results.bodies.size(); ++b) {
       const BodyTrack& body = results.bodies[b];
       const BodyState state = body_state(body, {i, 0.0});
-      const auto grid = body.flexible ? flexible_grid(body, state) : rigid_grid(body, state);
-      if (body.flexible && stresses[b]) add_stress_data(grid, body, *stresses[b], t);
+      const auto grid = body.flexible ? flexible_grid(body, state, solids[b]) : rigid_grid(body, state);
+      if (body.flexible && stresses[b]) add_stress_data(grid, body, *stresses[b], t, solids[b]);
       const std::string name = file_name(body.name, i);
       writer->SetInputData(grid);
       writer->SetFileName((vtk_directory / name).c_str());

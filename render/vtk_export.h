@@ -8,6 +8,9 @@
 // Bodies with stress output (results.h5 "Stress") also carry cell data "stress" [Pa]: each
 // element's equivalent stress (a shell's larger surface von Mises stress, a beam's extreme-fibre
 // stress) of the stress history row at or before the sample, NaN for elements not recorded.
+// Beams with sections (results.h5 "Beam sections") also appear as their swept surface
+// (beam_solids.h: triangles, quads) after the lines, its points following their nodes; cell
+// data "beam_index" is each line's and surface cell's beam (mesh line index), -1 on shells.
 // Rigid bodies: their primitives' surfaces in ground with zero displacement.
 // Files: vtkXMLUnstructuredGridWriter, appended raw binary data.
 #pragma once

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "fe/beam_section.h"
+#include "fe/section_outline.h"
 
 namespace limber::bulkdata {
 
@@ -70,6 +71,7 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     section.area = pi * r * r;
     section.inertia_y = section.inertia_z = pi * r * r * r * r / 4.0;
     section.torsion_constant = 2.0 * section.inertia_y;
+    section.outline = fe::circle_outline(2.0 * r);
   } else if (type == "TUBE") {
     const double ro = dims[0];
     const double ri = dims[1];
@@ -81,6 +83,7 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     section.area = pi * (ro * ro - ri * ri);
     section.inertia_y = section.inertia_z = pi * (ro * ro * ro * ro - ri * ri * ri * ri) / 4.0;
     section.torsion_constant = 2.0 * section.inertia_y;
+    section.outline = fe::tube_outline(2.0 * ro, 2.0 * ri);
   } else if (type == "BAR") {
     // DIM2 along local y, DIM1 along local z.
     section = fe::rectangle_section(dims[1], dims[0]);
@@ -102,6 +105,8 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     section.inertia_y = (h * b * b * b - hi * bi * bi * bi) / 12.0;
     section.torsion_constant = 2.0 * t1 * t2 * (b - t2) * (b - t2) * (h - t1) * (h - t1) /
                                (b * t2 + h * t1 - t2 * t2 - t1 * t1);
+    // Height h along y with walls t1 across it; width b along z with walls t2.
+    section.outline = fe::box_outline(h, b, t1, t2);
   } else if (type == "I") {
     // Height h = DIM1 along y; bottom flange DIM2 x DIM5, top flange DIM3 x DIM6, web DIM4.
     const double h = dims[0], bottom = dims[1], top = dims[2], web = dims[3], tb = dims[4], tt = dims[5];
@@ -115,6 +120,11 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     section = composite_section({{bottom, tb, 0.0, 0.5 * tb},
                                  {web, web_height, 0.0, tb + 0.5 * web_height},
                                  {top, tt, 0.0, h - 0.5 * tt}});
+    // (y, z) corners of the same three rectangles, bottom flange first.
+    section.outline = fe::centred_polygon(
+        {{0.0, -0.5 * bottom}, {0.0, 0.5 * bottom}, {tb, 0.5 * bottom}, {tb, 0.5 * web},
+         {h - tt, 0.5 * web}, {h - tt, 0.5 * top}, {h, 0.5 * top}, {h, -0.5 * top},
+         {h - tt, -0.5 * top}, {h - tt, -0.5 * web}, {tb, -0.5 * web}, {tb, -0.5 * bottom}});
   } else if (type == "CHAN") {
     // Flange width DIM1 along z (web included), height DIM2 along y, web DIM3, flanges DIM4.
     const double b = dims[0], h = dims[1], web = dims[2], flange = dims[3];
@@ -128,6 +138,15 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     section = composite_section({{web, h, 0.5 * web, 0.0},
                                  {arm, flange, web + 0.5 * arm, 0.5 * (h - flange)},
                                  {arm, flange, web + 0.5 * arm, -0.5 * (h - flange)}});
+    // (y, z) corners: the web's back at z = 0, the flanges' tips at z = b.
+    section.outline = fe::centred_polygon({{-0.5 * h, 0.0},
+                                           {-0.5 * h, b},
+                                           {-0.5 * h + flange, b},
+                                           {-0.5 * h + flange, web},
+                                           {0.5 * h - flange, web},
+                                           {0.5 * h - flange, b},
+                                           {0.5 * h, b},
+                                           {0.5 * h, 0.0}});
   } else if (type == "T") {
     // Flange DIM1 (z) x DIM3 (y) on top of a web DIM4 wide; total height DIM2.
     const double b = dims[0], h = dims[1], flange = dims[2], web = dims[3];
@@ -139,6 +158,15 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
     }
     section = composite_section({{web, h - flange, 0.0, 0.5 * (h - flange)},
                                  {b, flange, 0.0, h - 0.5 * flange}});
+    // (y, z) corners: the web's foot at y = 0, the flange on top.
+    section.outline = fe::centred_polygon({{0.0, -0.5 * web},
+                                           {0.0, 0.5 * web},
+                                           {h - flange, 0.5 * web},
+                                           {h - flange, 0.5 * b},
+                                           {h, 0.5 * b},
+                                           {h, -0.5 * b},
+                                           {h - flange, -0.5 * b},
+                                           {h - flange, -0.5 * web}});
   } else if (type == "HAT") {
     // Height DIM1 (y), wall thickness DIM2 everywhere, crown width DIM3 (outer), brims DIM4.
     const double h = dims[0], t = dims[1], crown = dims[2], brim = dims[3];
@@ -155,6 +183,20 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
                                  {t, h - 2.0 * t, wall_z, 0.5 * h},
                                  {brim + t, t, -brim_z, 0.5 * t},
                                  {brim + t, t, brim_z, 0.5 * t}});
+    // (y, z) corners: right brim, outer wall, crown, left wall and brim, then the inside.
+    const double c = 0.5 * crown;
+    section.outline = fe::centred_polygon({{0.0, c + brim},
+                                           {t, c + brim},
+                                           {t, c},
+                                           {h, c},
+                                           {h, -c},
+                                           {t, -c},
+                                           {t, -c - brim},
+                                           {0.0, -c - brim},
+                                           {0.0, -c + t},
+                                           {h - t, -c + t},
+                                           {h - t, c - t},
+                                           {0.0, c - t}});
   } else {
     error = fmt::format("expected a PBARL type ROD, TUBE, BAR, BOX, I, CHAN, T or HAT, got '{}'", type);
     return {};

@@ -52,6 +52,7 @@ BeamSection rectangle_section(double width_y, double height_z) {
   section.shear_factor_z = 5.0 / 6.0;
   section.fibre_y = 0.5 * width_y;
   section.fibre_z = 0.5 * height_z;
+  section.outline = rectangle_outline(width_y, height_z);
   return section;
 }
 
@@ -75,6 +76,7 @@ BeamSection circle_section(double diameter, double poisson_ratio) {
   section.fibre_y = 0.5 * diameter;
   section.fibre_z = 0.5 * diameter;
   section.circular = true;
+  section.outline = circle_outline(diameter);
   return section;
 }
 

@@ -12,6 +12,7 @@ namespace limber::fe {
 //   J = St-Venant torsion constant (rectangle_torsion_constant),
 //   shear factors k = 5/6 in both directions (Timoshenko 1921 / Cowper 1966, rectangle),
 //   extreme fibres at w/2 (local y) and h/2 (local z).
+// Outline: the rectangle (section_outline.h).
 // Throws InputError when a size is not > 0 (or not finite).
 BeamSection rectangle_section(double width_y, double height_z);
 
@@ -19,6 +20,7 @@ BeamSection rectangle_section(double width_y, double height_z);
 // (exact for a circle). Shear factor from Cowper 1966 (J. Appl. Mech. 33:335):
 //   k = 6 (1 + nu) / (7 + 6 nu)   (= 6/7 at nu = 0, 0.886 at nu = 0.3);
 // extreme fibre at d/2, marked circular (bending stress from the resultant moment).
+// Outline: the inscribed 16-gon (section_outline.h).
 // Throws InputError when d is not > 0 or nu is outside (-1, 0.5).
 BeamSection circle_section(double diameter, double poisson_ratio = 0.3);
 

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "fe/section_outline.h"
+
 namespace limber::fe {
 
 inline constexpr int kDofsPerNode = 6;
@@ -52,6 +54,9 @@ struct BeamSection {
   double fibre_y = 0.0;
   double fibre_z = 0.0;
   bool circular = false;
+  // Drawing only (section_outline.h): the section's shape about the centroid; empty when the
+  // section is known only by A and I (drawn as fe::equivalent_outline).
+  SectionOutline outline;
 };
 
 struct BeamProperty {

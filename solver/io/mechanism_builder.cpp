@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "fe/assembly.h"
+#include "fe/beam_element.h"
 #include "modal/geometric_stiffness.h"
 #include "modal/modal_stress.h"
 #include "multibody/model_builder.h"
@@ -40,6 +41,26 @@ multibody::FlexibleMesh drawing_mesh(const fe::FeModel& model) {
   }
   for (const fe::BeamProperty& property : model.beam_properties) {
     mesh.beam_radius = std::max(mesh.beam_radius, std::sqrt(property.section.area / std::numbers::pi));
+  }
+  // Each beam's section outline (a stand-in when only A and I are known), shared between equal
+  // outlines, and its local y axis (beam_element.h).
+  std::vector<int> property_outline;
+  for (const fe::BeamProperty& property : model.beam_properties) {
+    const fe::BeamSection& s = property.section;
+    const fe::SectionOutline outline =
+        s.outline.empty() ? fe::equivalent_outline(s.area, s.fibre_y, s.fibre_z) : s.outline;
+    const auto same = std::find_if(mesh.outlines.begin(), mesh.outlines.end(), [&](const auto& o) {
+      return o.points == outline.points && o.hollow == outline.hollow &&
+             o.equivalent == outline.equivalent;
+    });
+    property_outline.push_back(static_cast<int>(same - mesh.outlines.begin()));
+    if (same == mesh.outlines.end()) mesh.outlines.push_back(outline);
+  }
+  for (const fe::BeamElement& beam : model.beams) {
+    const Eigen::Matrix3d R_LB = fe::beam_local_axes(model.node_positions[beam.nodes[0]],
+                                                     model.node_positions[beam.nodes[1]], beam.orientation);
+    mesh.beam_y_axes.push_back(R_LB.row(1).transpose());
+    mesh.beam_outlines.push_back(property_outline[beam.property]);
   }
   return mesh;
 }

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "fe/section_outline.h"
 #include "modal/geometric_stiffness.h"
 #include "modal/mode_set.h"
 #include "modal/modal_stress.h"
@@ -47,6 +48,11 @@ struct FlexibleMesh {
   std::vector<std::array<int, 2>> lines;  // beam elements, node indices
   std::vector<std::array<int, 4>> quads;  // shell elements, node indices
   double beam_radius = 0.0;               // radius of the tubes beams are drawn as [m]
+  // Beams drawn as swept sections: per line its local y axis (body frame, unit) and outline
+  // (an index into `outlines`, the distinct outlines of the beams). Empty: tubes only.
+  std::vector<Eigen::Vector3d> beam_y_axes;
+  std::vector<int> beam_outlines;
+  std::vector<fe::SectionOutline> outlines;
 };
 
 // Output only: the elastic displacement of `node` relative to the chord between nodes

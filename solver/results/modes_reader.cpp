@@ -144,6 +144,17 @@ MeshData read_mesh(const H5Reader& r, const std::string& body) {
   if (r.exists(radius_path)) {
     mesh.beam_radius = r.read<double>(radius_path, H5T_NATIVE_DOUBLE, 1).at(0);
   }
+  mesh.beam_sections = read_beam_sections(r, m, static_cast<long>(mesh.lines.rows()));
+  // Each beam's y axis normal to the beam (render/beam_solids.h sweeps the outline along it).
+  for (Eigen::Index e = 0; e < mesh.beam_sections.y_axes.rows(); ++e) {
+    const Eigen::Vector3d chord =
+        (mesh.nodes.row(mesh.lines(e, 1)) - mesh.nodes.row(mesh.lines(e, 0))).transpose();
+    const Eigen::Vector3d y = mesh.beam_sections.y_axes.row(e).transpose();
+    if (!(chord.norm() > 0.0 && std::abs(chord.normalized().dot(y)) < 1e-6)) {
+      r.fail(layout::at(m, layout::mesh::kBeamYAxes) + " normal to beams of non-zero length",
+             "another axis or a zero length at line " + std::to_string(e));
+    }
+  }
 
   // Modes: [nm, nn, 3] row-major is the column-major (3 nn) x nm matrix.
   const std::string modes_group = layout::at(body, layout::body::kModes);

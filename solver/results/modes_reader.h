@@ -8,6 +8,8 @@
 // a dataset missing or of the wrong shape.
 #pragma once
 
+#include "results/beam_sections.h"
+
 #include <Eigen/Core>
 
 #include <filesystem>
@@ -26,6 +28,7 @@ struct MeshData {
   Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> lines;  // beams, 0-based node indices
   Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> quads;  // shells (triangles: last node repeated)
   double beam_radius = 0.0;            // [m] (results.h5; 0 in modes.h5)
+  BeamSections beam_sections;          // y axes and outlines (empty in older files)
   Eigen::MatrixXd mode_translations;   // (3 nn) x nm, column i = mode i, node-major xyz [m]
   Eigen::VectorXd frequencies_hz;      // nm (empty when the file has none)
 };

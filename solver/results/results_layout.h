@@ -86,6 +86,13 @@ inline constexpr const char* kNodeIds = "node_ids";         // int32 [nn], user 
 inline constexpr const char* kLines = "lines";              // int32 [nl, 2], node indices
 inline constexpr const char* kQuads = "quads";              // int32 [nq, 4], node indices
 inline constexpr const char* kBeamRadius = "beam_radius";   // float64 scalar [m] (results.h5)
+// Beam sections (results/beam_sections.h; optional, results.h5): nl beams, no outlines, np points.
+inline constexpr const char* kBeamYAxes = "beam_y_axes";        // float64 [nl, 3], body frame
+inline constexpr const char* kBeamOutline = "beam_outline";     // int32 [nl], outline index
+inline constexpr const char* kOutlinePoints = "outline_points";    // float64 [np, 2], (y, z) [m]
+inline constexpr const char* kOutlineOffsets = "outline_offsets";  // int32 [no + 1]
+inline constexpr const char* kOutlineHollow = "outline_hollow";    // int8 [no]
+inline constexpr const char* kOutlineEquivalent = "outline_equivalent";  // int8 [no]
 }  // namespace mesh
 
 // <body>/modes, in results.h5 and modes.h5 alike (modes.h5 has more: results/modes_layout.h).

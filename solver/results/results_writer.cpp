@@ -460,6 +460,10 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
                 {static_cast<hsize_t>(body.quads.rows()), 4}, body.quads.data());
   write_dataset(mesh.get(), layout::mesh::kBeamRadius, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {},
                 &body.beam_radius);
+  if (!body.beam_sections.empty()) {
+    LIMBER_DEMAND(static_cast<Eigen::Index>(body.beam_sections.outline.size()) == body.lines.rows());
+    check(try_write_beam_sections(mesh.get(), body.beam_sections) ? 0 : -1, "write the beam sections");
+  }
 
   // Modes: column-major (3 nn) x nm is exactly the row-major [nm, nn, 3] layout.
   H5Handle modes = create_group(group.get(), layout::body::kModes);

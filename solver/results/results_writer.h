@@ -31,6 +31,8 @@
 #include <utility>
 #include <vector>
 
+#include "results/beam_sections.h"
+
 namespace limber::results {
 
 // A rendering primitive attached to a body, placed in the body frame.
@@ -63,6 +65,8 @@ struct FlexibleBodySpec {
   Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> quads;
   // Radius used to draw beams as tubes [m].
   double beam_radius = 0.0;
+  // The beams' cross-sections (results/beam_sections.h); empty: beams drawn as tubes only.
+  BeamSections beam_sections;
   // (3 nn) x nm: column i is mode i's nodal translations, node-major (x0 y0 z0 x1 ...).
   Eigen::MatrixXd mode_translations;
   // nm natural frequencies [Hz].

@@ -32,6 +32,31 @@ results::ShapeSpec to_shape_spec(const multibody::Shape& shape) {
   return spec;
 }
 
+// The beams' axes and outline table in the file's form (results/beam_sections.h).
+results::BeamSections beam_sections(const multibody::FlexibleMesh& mesh) {
+  results::BeamSections out;
+  if (mesh.beam_outlines.empty()) return out;
+  const auto nl = static_cast<Eigen::Index>(mesh.beam_y_axes.size());
+  out.y_axes.resize(nl, 3);
+  for (Eigen::Index e = 0; e < nl; ++e) {
+    out.y_axes.row(e) = mesh.beam_y_axes[static_cast<std::size_t>(e)].transpose();
+  }
+  out.outline = mesh.beam_outlines;
+  out.offsets.push_back(0);
+  std::vector<Eigen::Vector2d> points;
+  for (const fe::SectionOutline& o : mesh.outlines) {
+    points.insert(points.end(), o.points.begin(), o.points.end());
+    out.offsets.push_back(static_cast<int>(points.size()));
+    out.hollow.push_back(o.hollow ? 1 : 0);
+    out.equivalent.push_back(o.equivalent ? 1 : 0);
+  }
+  out.points.resize(static_cast<Eigen::Index>(points.size()), 2);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    out.points.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
+  }
+  return out;
+}
+
 // Mesh, translational mode shapes and frequencies of a flexible body (docs/results-format.md).
 results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
                                              std::vector<results::ShapeSpec> shapes) {
@@ -50,6 +75,7 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
     for (int k = 0; k < 4; ++k) spec.quads(static_cast<Eigen::Index>(e), k) = flexible.mesh.quads[e][k];
   }
   spec.beam_radius = flexible.mesh.beam_radius;
+  spec.beam_sections = beam_sections(flexible.mesh);
   spec.mode_translations.resize(3 * nn, nm);
   for (int n = 0; n < nn; ++n) spec.mode_translations.middleRows(3 * n, 3) = flexible.translation_shapes(n);
   spec.frequencies_hz = flexible.stiffness.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bulkdata/pbarl_section.h"
+#include "fe/section_outline.h"
 
 namespace limber::bulkdata {
 namespace {
@@ -96,6 +97,39 @@ TEST(PbarlSections, HatSection) {
   expect_relative(s.area, a, "A");
   expect_relative(s.inertia_z, syy - a * yc * yc, "I1");
   expect_relative(s.inertia_y, szz, "I2");  // symmetric about y: centroid at z = 0
+}
+
+TEST(PbarlSections, OutlinesHaveTheSectionsAreaAndSecondMoments) {
+  // The outline's shoelace integrals (fe/section_outline.h) against the section's parallel-axis
+  // sums: two methods, exact for these polygons, so round-off only (1e-12 as above). Each
+  // outline is about the centroid (first moments 0) on principal axes (product 0).
+  const std::vector<std::pair<std::string, std::vector<double>>> cases{
+      {"BAR", {0.02, 0.05}},
+      {"BOX", {0.05, 0.08, 0.004, 0.003}},
+      {"I", {0.3, 0.15, 0.08, 0.008, 0.012, 0.009}},
+      {"CHAN", {0.05, 0.12, 0.005, 0.007}},
+      {"T", {0.1, 0.08, 0.01, 0.006}},
+      {"HAT", {0.04, 0.003, 0.05, 0.02}}};
+  for (const auto& [type, dims] : cases) {
+    const fe::BeamSection s = section(type, dims);
+    const fe::PolygonProperties p = fe::polygon_properties(s.outline);
+    EXPECT_FALSE(s.outline.equivalent) << type;
+    expect_relative(p.area, s.area, (type + " A").c_str());
+    expect_relative(p.inertia_z, s.inertia_z, (type + " I1").c_str());
+    expect_relative(p.inertia_y, s.inertia_y, (type + " I2").c_str());
+    EXPECT_NEAR(p.first_moment.norm(), 0.0, 1e-12 * s.area * std::sqrt(s.area)) << type;
+    EXPECT_NEAR(p.product, 0.0, 1e-12 * (s.inertia_y + s.inertia_z)) << type;
+  }
+  // ROD and TUBE: inscribed 16-gons, 2.55 % short of the circle's area and 5.02 % of its I
+  // (fe/section_outline.h; exact values in tests/fe/test_section_outline.cpp).
+  for (const auto& [type, dims] :
+       std::vector<std::pair<std::string, std::vector<double>>>{{"ROD", {0.01}}, {"TUBE", {0.02, 0.015}}}) {
+    const fe::BeamSection s = section(type, dims);
+    const fe::PolygonProperties p = fe::polygon_properties(s.outline);
+    EXPECT_NEAR(p.area / s.area, 1.0, 0.03) << type;
+    EXPECT_NEAR(p.inertia_z / s.inertia_z, 1.0, 0.06) << type;
+    EXPECT_EQ(s.outline.hollow, type == "TUBE");
+  }
 }
 
 TEST(PbarlSections, InconsistentDimensionsAreRefused) {

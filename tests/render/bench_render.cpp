@@ -7,8 +7,10 @@
 // and the median pass. `--keep DIR` leaves the frames of the last pass in DIR.
 // `--wait-idle S` waits up to S seconds before each pass for a second in which the machine was
 // at least 90 % idle. `--png-table N` times the PNG encoder's settings on N frames.
+// `--beam-solids` gives the beam its section (a 40/30 mm tube), drawn as a swept solid
+// (render/beam_solids.h) instead of the tube of its radius.
 //   limber_bench_render [--frames 90] [--runs 3] [--keep DIR] [--wait-idle S] [--png-table N]
-//                       [fxaa|gl-fxaa|none ...]
+//                       [--beam-solids] [fxaa|gl-fxaa|none ...]
 #include "frame_renderer.h"
 #include "png_encoding.h"
 #include "png_frame_writer.h"
@@ -175,6 +177,7 @@ int main(int argc, char** argv) {
   std::filesystem::path keep;
   double patience = 0.0;
   int table_frames = 0;
+  bool beam_solids = false;
   std::vector<std::string> modes;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -183,11 +186,12 @@ int main(int argc, char** argv) {
     else if (arg == "--keep" && i + 1 < argc) keep = argv[++i];
     else if (arg == "--wait-idle" && i + 1 < argc) patience = std::atof(argv[++i]);
     else if (arg == "--png-table" && i + 1 < argc) table_frames = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--beam-solids") beam_solids = true;
     else if (arg == "fxaa" || arg == "gl-fxaa" || arg == "none") modes.push_back(arg);
     else {
       std::fprintf(stderr,
                    "usage: limber_bench_render [--frames 90] [--runs 3] [--keep DIR] "
-                   "[--wait-idle S] [--png-table N] [fxaa|gl-fxaa|none ...]\n");
+                   "[--wait-idle S] [--png-table N] [--beam-solids] [fxaa|gl-fxaa|none ...]\n");
       return 2;
     }
   }
@@ -198,6 +202,7 @@ int main(int argc, char** argv) {
   std::filesystem::remove_all(dir);
   testing::TestScene scene;
   scene.plates = 4;
+  scene.beam_tube_section = beam_solids;
   scene.nx = scene.ny = 35;
   scene.ly = 1.0;
   scene.samples = 301;

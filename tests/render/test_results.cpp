@@ -1,5 +1,6 @@
 #include "test_results.h"
 
+#include "fe/section_outline.h"
 #include "results/results_writer.h"
 
 #include <cmath>
@@ -68,7 +69,7 @@ FlexibleBodySpec plate_spec(const TestScene& scene, int k) {
   return plate;
 }
 
-FlexibleBodySpec beam_spec() {
+FlexibleBodySpec beam_spec(bool tube_section) {
   FlexibleBodySpec beam;
   beam.name = "beam";
   beam.nodes.resize(kBeamNodes, 3);
@@ -83,6 +84,18 @@ FlexibleBodySpec beam_spec() {
     if (n + 1 < kBeamNodes) beam.lines.row(n) << n, n + 1;
   }
   beam.beam_radius = 0.02;
+  if (tube_section) {
+    const fe::SectionOutline tube = fe::tube_outline(0.04, 0.03);
+    results::BeamSections& s = beam.beam_sections;
+    s.y_axes = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>(kBeamNodes - 1, 3);
+    s.y_axes.rowwise() = Eigen::RowVector3d(0.0, 1.0, 0.0);
+    s.outline.assign(kBeamNodes - 1, 0);
+    s.points.resize(static_cast<Eigen::Index>(tube.points.size()), 2);
+    for (std::size_t k = 0; k < tube.points.size(); ++k) s.points.row(static_cast<Eigen::Index>(k)) = tube.points[k].transpose();
+    s.offsets = {0, static_cast<int>(tube.points.size())};
+    s.hollow = {1};
+    s.equivalent = {0};
+  }
   beam.frequencies_hz = Eigen::Vector2d(5.0, 5.0);
   return beam;
 }
@@ -100,7 +113,7 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
     writer.add_rigid_body({"box", {cube}});
   }
   for (int k = 0; k < scene.plates; ++k) writer.add_flexible_body(plate_spec(scene, k));
-  if (scene.with_beam) writer.add_flexible_body(beam_spec());
+  if (scene.with_beam) writer.add_flexible_body(beam_spec(scene.beam_tube_section));
   if (scene.with_box) writer.add_joint({"pin", "spherical", "ground", "box"});
   if (scene.with_beam && scene.beam_mid_joint) writer.add_joint({"mid", "revolute", "ground", "beam"});
 

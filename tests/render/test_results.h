@@ -27,6 +27,9 @@ struct TestScene {
   double beam_amplitude = 0.05;  // B [m]
   double frequency = 1.0;      // f [Hz]
   bool with_beam = true;
+  // The beam's section in the file (results/beam_sections.h): a tube 40 mm outer, 30 mm inner
+  // diameter (16-gons), y axes along body y; false: none (drawn as the tube of its radius).
+  bool beam_tube_section = false;
   bool with_box = true;
   // Joint "mid" (revolute, ground - beam) at the beam's mid node (x = L/2), following it: the
   // beam's relative deflection is then u(x) - u(L/2) (one joint node: the rigid fit is a
