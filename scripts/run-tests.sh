@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds limber with its tests and runs the whole suite with ctest.
+# Installs the packages the tests need too (scripts/install-deps.sh --tests), builds every
+# target, tests and benchmarks included, and runs the whole suite with ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" --tests
 build_dir=${LIMBER_BUILD_DIR:-$root/build}
 ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)"
