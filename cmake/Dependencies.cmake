@@ -1,5 +1,6 @@
 # Every third-party dependency of limber, all from Debian 12 packages
-# (scripts/install-deps.sh installs them). Nothing is downloaded here.
+# (scripts/install-deps.sh installs them; GoogleTest and Google Benchmark with --tests).
+# Nothing is downloaded here.
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(yaml-cpp REQUIRED)

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The main job: the seed paper's two examples, end to end. Builds limber, then for each scene
-# runs limber modes (frequency table, modes.h5, mode-shape animations), limber run
-# (results.h5), limber render (PNG frames, animation.mp4, vtk/scene.xmf for ParaView) and
-# limber report (report/index.html):
+# The main job: the seed paper's two examples, end to end. Installs the packages limber needs
+# and builds the `limber` target only (scripts/build.sh; the tests are scripts/run-tests.sh's),
+# then for each scene runs limber modes (frequency table, modes.h5, mode-shape animations),
+# limber run (results.h5), limber render (PNG frames, animation.mp4, vtk/scene.xmf for ParaView)
+# and limber report (report/index.html):
 #   1. cases/slider_crank.yaml           the flexible slider-crank, 1 s at 20 rev/s; two crank
 #                                        turns (0.5-0.6 s) rendered in 50x slow motion
 #                                        (5 s of video at 30 frames/s), x20;
@@ -20,7 +21,7 @@
 # out/slider_crank_seed_setup/ (or $1/...); the last three lines printed are the reports' paths.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" --target limber
 build_dir=${LIMBER_BUILD_DIR:-$root/build}
 limber="$build_dir/solver/app/limber"
 out_root=${1:-$root/out}
