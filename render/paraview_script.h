@@ -26,7 +26,7 @@ struct ParaViewView {
   std::array<double, 3> focal_point{0.0, 0.0, 0.0};     // [m]
   double distance = 1.0;                    // eye to focal point [m]
   int width = 1280, height = 720;           // view size [pixels]
-  bool beams = false;                       // some body has line cells (tubes of beam_radius)
+  bool beams = false;                       // line cells without sections: tubes of beam_radius
 };
 
 // The camera of the render for points inside the box [lo, hi] [m]: looking along `direction`

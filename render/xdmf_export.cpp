@@ -93,13 +93,17 @@ struct BodyOutput {
   H5Handle samples;  // its samples group
 };
 
-// Cell data "stress" [Pa] in cell order (quads, then lines) from the history's element order
-// (lines, then quads), as vtk_export.cpp's.
-Eigen::VectorXd cell_stress(const BodyTrack& body, const StressTrack& stress, double t) {
+// Cell data "stress" [Pa] in cell order (quads, lines, then the swept surfaces with their
+// beam's) from the history's element order (lines, then quads), as vtk_export.cpp's.
+Eigen::VectorXd cell_stress(const BodyTrack& body, const BodyGrid& grid, const StressTrack& stress,
+                            double t) {
   const auto lines = body.mesh.lines.rows(), quads = body.mesh.quads.rows();
   const Eigen::VectorXd values = stress.element_values(stress.row_at(t), static_cast<int>(lines + quads));
-  Eigen::VectorXd cells(lines + quads);
-  cells << values.tail(quads), values.head(lines);
+  Eigen::VectorXd cells(grid.cells);
+  cells.head(quads + lines) << values.tail(quads), values.head(lines);
+  for (std::size_t c = 0; c < grid.solid_beam.size(); ++c) {
+    cells(quads + lines + static_cast<Eigen::Index>(c)) = values(grid.solid_beam[c]);
+  }
   return cells;
 }
 
@@ -125,8 +129,10 @@ void write_sample(const SceneFile& file, hid_t group, const BodyOutput& out, con
     extend(summary, x_W);
     return;
   }
-  const RowMatrix3d u_B = elastic_displacements(body.mesh, state.modal_coordinates);
-  const RowMatrix3d u_rel_B = relative_displacements(out.fit, body.mesh.nodes, u_B);
+  const RowMatrix3d u_node_B = elastic_displacements(body.mesh, state.modal_coordinates);
+  const RowMatrix3d u_B = at_grid_points(out.grid, u_node_B);
+  const RowMatrix3d u_rel_B =
+      at_grid_points(out.grid, relative_displacements(out.fit, body.mesh.nodes, u_node_B));
   const RowMatrix3d u_W = u_B * R.transpose();
   const RowMatrix3d u_rel_W = u_rel_B * R.transpose();
   const Eigen::VectorXd u_norm = u_B.rowwise().norm();
@@ -138,7 +144,7 @@ void write_sample(const SceneFile& file, hid_t group, const BodyOutput& out, con
   file.reals(group, xdmf::sample::kRelativeDeflection, {np, 3}, u_rel_W.data());
   file.reals(group, xdmf::sample::kRelativeDeflectionMagnitude, {np}, u_rel_norm.data());
   if (out.stress != nullptr) {
-    const Eigen::VectorXd stress = cell_stress(body, *out.stress, t);
+    const Eigen::VectorXd stress = cell_stress(body, out.grid, *out.stress, t);
     file.reals(group, xdmf::sample::kStress, {static_cast<hsize_t>(stress.size())}, stress.data());
     for (double value : stress) {
       if (std::isfinite(value)) summary.stress_max = std::max(summary.stress_max, value);
@@ -180,7 +186,8 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
     if (track.flexible) out.fit = rigid_fit_basis(track.mesh.nodes, joint_nodes(results, track));
     if (track.flexible && stresses[b]) out.stress = &*stresses[b];
     summary.stress = summary.stress || out.stress != nullptr;
-    summary.beams = summary.beams || (track.flexible && track.mesh.lines.rows() > 0);
+    // Tubes in ParaView only for beams without sections (files before them).
+    summary.beams = summary.beams || (track.flexible && track.mesh.lines.rows() > 0 && out.grid.solid_beam.empty());
     const std::string link = results::link_name(track.name);
     const H5Handle group = file.group(bodies.get(), link);
     file.string_attribute(group.get(), results::kNameAttribute, track.name);

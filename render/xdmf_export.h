@@ -14,7 +14,8 @@
 //   deformation scale s is x + displacement + (s - 1) relative_deflection;
 // - cell data: stress [Pa] where the run recorded it (as in the VTU), beam_radius [m] (the
 //   beams' section radius on line cells, 0 on surfaces).
-// Cells: XDMF Mixed, the VTU's cells in the VTU's order (flexible: quads, then lines).
+// Cells: XDMF Mixed, the VTU's cells in the VTU's order (flexible: quads, lines, then the beams'
+// swept surfaces, render/beam_solids.h, whose points follow their nodes).
 #pragma once
 
 #include "results_reader.h"
@@ -32,7 +33,7 @@ struct XdmfSceneSummary {
   double relative_deflection_max = 0.0;  // largest |u_rel| [m]
   double stress_max = 0.0;               // largest recorded stress [Pa] (0: none)
   bool stress = false;                   // some body carries stress
-  bool beams = false;                    // some body has line cells
+  bool beams = false;                    // some body has line cells without sections (tubes)
 };
 
 // Writes DIR/vtk/scene.h5 and scene.xmf for the samples with t0 <= t <= t1; a progress bar

@@ -1,5 +1,6 @@
 #include "xdmf_grids.h"
 
+#include "beam_solids.h"
 #include "core/error.h"
 #include "primitive_source.h"
 #include "xdmf_layout.h"
@@ -16,12 +17,25 @@
 namespace limber::render {
 namespace {
 
-// A flexible body's mesh: quads then lines, as in its VTU.
+// The XDMF Mixed cell of a polygon of n points.
+void push_polygon(std::vector<int>& topology, int n) {
+  if (n == 3) topology.push_back(xdmf::kTriangle);
+  else if (n == 4) topology.push_back(xdmf::kQuadrilateral);
+  else topology.insert(topology.end(), {xdmf::kPolygon, n});
+}
+
+// A flexible body's mesh: quads, lines, then the beams' swept surfaces, as in its VTU.
 BodyGrid flexible_body_grid(const BodyTrack& body) {
   const FlexibleMesh& mesh = body.mesh;
+  const BeamSolids solids = beam_solids(mesh);
   BodyGrid grid;
-  grid.points_B = mesh.nodes;
-  grid.cells = static_cast<int>(mesh.quads.rows() + mesh.lines.rows());
+  const Eigen::Index nn = mesh.nodes.rows();
+  grid.points_B.resize(nn + solids.points_B.rows(), 3);
+  grid.points_B.topRows(nn) = mesh.nodes;
+  grid.points_B.bottomRows(solids.points_B.rows()) = solids.points_B;
+  grid.solid_node = solids.node;
+  grid.solid_beam = solids.beam;
+  grid.cells = static_cast<int>(mesh.quads.rows() + mesh.lines.rows()) + solids.cell_count();
   grid.beam_radius = Eigen::VectorXd::Zero(grid.cells);
   grid.topology.reserve(5 * mesh.quads.rows() + 4 * mesh.lines.rows());
   for (Eigen::Index e = 0; e < mesh.quads.rows(); ++e) {
@@ -31,6 +45,12 @@ BodyGrid flexible_body_grid(const BodyTrack& body) {
   for (Eigen::Index e = 0; e < mesh.lines.rows(); ++e) {
     grid.topology.insert(grid.topology.end(), {xdmf::kPolyline, 2, mesh.lines(e, 0), mesh.lines(e, 1)});
     grid.beam_radius(mesh.quads.rows() + e) = mesh.beam_radius;
+  }
+  for (int c = 0; c < solids.cell_count(); ++c) {
+    push_polygon(grid.topology, solids.cell_offsets[c + 1] - solids.cell_offsets[c]);
+    for (int i = solids.cell_offsets[c]; i < solids.cell_offsets[c + 1]; ++i) {
+      grid.topology.push_back(static_cast<int>(nn) + solids.connectivity[i]);
+    }
   }
   return grid;
 }
@@ -69,9 +89,7 @@ BodyGrid rigid_body_grid(const BodyTrack& body) {
   for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c) {
     surface->GetCellPoints(c, ids);
     const auto n = static_cast<int>(ids->GetNumberOfIds());
-    if (n == 3) grid.topology.push_back(xdmf::kTriangle);
-    else if (n == 4) grid.topology.push_back(xdmf::kQuadrilateral);
-    else grid.topology.insert(grid.topology.end(), {xdmf::kPolygon, n});
+    push_polygon(grid.topology, n);
     for (int k = 0; k < n; ++k) grid.topology.push_back(static_cast<int>(ids->GetId(k)));
   }
   grid.cells = static_cast<int>(surface->GetNumberOfCells());
@@ -83,6 +101,16 @@ BodyGrid rigid_body_grid(const BodyTrack& body) {
 
 BodyGrid body_grid(const BodyTrack& body) {
   return body.flexible ? flexible_body_grid(body) : rigid_body_grid(body);
+}
+
+RowMatrix3d at_grid_points(const BodyGrid& grid, const RowMatrix3d& per_node) {
+  const Eigen::Index nn = per_node.rows();
+  RowMatrix3d out(nn + static_cast<Eigen::Index>(grid.solid_node.size()), 3);
+  out.topRows(nn) = per_node;
+  for (std::size_t k = 0; k < grid.solid_node.size(); ++k) {
+    out.row(nn + static_cast<Eigen::Index>(k)) = per_node.row(grid.solid_node[k]);
+  }
+  return out;
 }
 
 }  // namespace limber::render

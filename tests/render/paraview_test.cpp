@@ -98,21 +98,28 @@ TEST(ParaView, OpensTheSeriesWithEveryTimeAndPoint) {
             "");
 }
 
+// The test scene without and with its beam's section (a hollow tube: its swept surface's
+// points and cells follow the mesh's in both files).
 TEST(ParaView, BothXdmfReadersReadEveryStepAsTheVtuSeries) {
   REQUIRE_PROGRAM(pvpython, "pvpython");
-  const auto dir = testing::fresh_directory("paraview_xdmf");
-  testing::write_test_results(dir, testing::TestScene{});
-  const Results results = read_results(dir);
-  const double t0 = results.time(0), t1 = results.time(results.time.size() - 1);
-  write_xdmf_scene(results, dir / "vtk", t0, t1, false);
-  write_vtk_series(results, dir / "vtk", t0, t1);
+  for (const bool section : {false, true}) {
+    const auto dir = testing::fresh_directory(section ? "paraview_xdmf_section" : "paraview_xdmf");
+    testing::TestScene scene;
+    scene.beam_tube_section = section;
+    testing::write_test_results(dir, scene);
+    const Results results = read_results(dir);
+    const double t0 = results.time(0), t1 = results.time(results.time.size() - 1);
+    write_xdmf_scene(results, dir / "vtk", t0, t1, false);
+    write_vtk_series(results, dir / "vtk", t0, t1);
 
-  const std::string bodies = std::to_string(results.bodies.size());
-  for (const char* reader : {"xdmf", "xdmf3"}) {
-    EXPECT_EQ(run(pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " " + reader + " " +
-                      (dir / "vtk" / "scene.xmf").string() + " " + bodies + time_arguments(results),
-                  dir / (std::string(reader) + ".log")),
-              "");
+    const std::string bodies = std::to_string(results.bodies.size());
+    for (const char* reader : {"xdmf", "xdmf3"}) {
+      EXPECT_EQ(run(pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " " + reader + " " +
+                        (dir / "vtk" / "scene.xmf").string() + " " + bodies + time_arguments(results),
+                    dir / (std::string(reader) + ".log")),
+                "")
+          << (section ? "with the beam's section" : "without sections");
+    }
   }
 }
 
