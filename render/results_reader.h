@@ -6,14 +6,14 @@
 // of the per-sample datasets read, so every sample returned is complete.
 #pragma once
 
+#include "results/beam_sections.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include "results/beam_sections.h"
 
 namespace limber::results {
 class H5Reader;

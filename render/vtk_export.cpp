@@ -2,6 +2,7 @@
 
 #include "beam_solids.h"
 #include "body_pose.h"
+#include "core/markup_escape.h"
 #include "file_stem.h"
 #include "primitive_source.h"
 #include "stress_reader.h"
@@ -157,20 +158,6 @@ std::string file_name(const std::string& body, Eigen::Index sample) {
   return file_stem(body) + "_" + index + ".vtu";
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 int write_vtk_series(const Results& results, const std::filesystem::path& vtk_directory,
@@ -207,7 +194,7 @@ int write_vtk_series(const Results& results, const std::filesystem::path& vtk_di
       }
       ++written;
       pvd << "    <DataSet timestep=\"" << t << "\" group=\"\" part=\"" << b << "\" name=\""
-          << xml_escape(body.name) << "\" file=\"" << xml_escape(name) << "\"/>\n";
+          << markup_escape(body.name) << "\" file=\"" << markup_escape(name) << "\"/>\n";
     }
   }
   pvd << "  </Collection>\n</VTKFile>\n";

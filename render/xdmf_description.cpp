@@ -1,5 +1,6 @@
 #include "xdmf_description.h"
 
+#include "core/markup_escape.h"
 #include "xdmf_layout.h"
 
 #include <fmt/core.h>
@@ -7,25 +8,11 @@
 namespace limber::render {
 namespace {
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 // A DataItem naming the whole float64 dataset `path` of scene.h5 with `dimensions`.
 std::string real_item(const std::string& path, const std::string& dimensions) {
   return fmt::format(
       "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:{}</DataItem>",
-      dimensions, xdmf::kFileName, xml_escape(path));
+      dimensions, xdmf::kFileName, markup_escape(path));
 }
 
 std::string attribute(const char* name, bool vector, const char* center, const std::string& item) {
@@ -37,11 +24,11 @@ std::string attribute(const char* name, bool vector, const char* center, const s
 std::string grid(const XdmfBody& body, long k) {
   const std::string sample = xdmf::at(xdmf::at(body.group, xdmf::body::kSamples), xdmf::sample_name(k));
   const std::string np3 = fmt::format("{} 3", body.points), np = std::to_string(body.points);
-  std::string text = fmt::format("     <Grid Name=\"{}\" GridType=\"Uniform\">\n", xml_escape(body.name));
+  std::string text = fmt::format("     <Grid Name=\"{}\" GridType=\"Uniform\">\n", markup_escape(body.name));
   text += fmt::format(
       "      <Topology TopologyType=\"Mixed\" NumberOfElements=\"{}\"><DataItem Dimensions=\"{}\" "
       "NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">{}:{}</DataItem></Topology>\n",
-      body.cells, body.topology, xdmf::kFileName, xml_escape(xdmf::at(body.group, xdmf::body::kTopology)));
+      body.cells, body.topology, xdmf::kFileName, markup_escape(xdmf::at(body.group, xdmf::body::kTopology)));
   text += "      <Geometry GeometryType=\"XYZ\">" + real_item(xdmf::at(sample, xdmf::sample::kPoints), np3) +
           "</Geometry>\n";
   // Rigid bodies share one dataset of zeros for every sample.

@@ -1,16 +1,14 @@
-// Small pieces of HTML writing: escaping text from files, and relative links.
+// Small pieces of HTML writing: escaping text from files (core/markup_escape.h), and relative
+// links.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
+#include "core/markup_escape.h"
 #include "file_stem.h"
 
 namespace limber::report {
-
-// Escapes & < > " ' so any text (titles, names, messages from results files) is shown as text,
-// in element content and in quoted attribute values alike.
-std::string html_escape(const std::string& text);
 
 // A relative URL from directory `from` to file `to`: path components joined by '/',
 // every byte outside [A-Za-z0-9._~-] percent-encoded.

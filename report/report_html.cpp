@@ -56,7 +56,7 @@ std::string stem_of(const std::string& file) { return file.substr(0, file.rfind(
 // without scripts), the caption with the link to the CSV of every sample.
 std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
   const NamedPlot& plot = written.plot;
-  const std::string caption = html_escape(plot.caption);
+  const std::string caption = markup_escape(plot.caption);
   const std::string id = stem_of(plot.file);
   std::string out = "<figure class=\"plot\">\n";
   if (!written.interactive_json.empty()) {
@@ -67,7 +67,7 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
         id, run_anchor);
   }
   if (!plot.warning.empty()) {
-    out += "<p class=\"plot-warning\" role=\"note\">" + html_escape(plot.warning) + "</p>\n";
+    out += "<p class=\"plot-warning\" role=\"note\">" + markup_escape(plot.warning) + "</p>\n";
   }
   out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>{}", kImageFolder,
                      plot.file, caption, caption);
@@ -119,16 +119,16 @@ std::string status_banner(const RunData& run) {
     return fmt::format(
         "<div class=\"banner running\" role=\"alert\">This run finished, but its own accuracy "
         "estimate says the answer is off: {}</div>\n",
-        html_escape(warnings.empty() ? "(no warning recorded)" : warnings));
+        markup_escape(warnings.empty() ? "(no warning recorded)" : warnings));
   }
   if (r.status == results::layout::status::kFailed) {
     return fmt::format("<div class=\"banner failed\" role=\"alert\">This run failed: {} {}</div>\n",
-                       html_escape(r.message.empty() ? "(no message)" : r.message), shown);
+                       markup_escape(r.message.empty() ? "(no message)" : r.message), shown);
   }
   return fmt::format(
       "<div class=\"banner running\" role=\"alert\">This run did not finish (status \"{}\": "
       "killed, crashed or still running). {}</div>\n",
-      html_escape(r.status), shown);
+      markup_escape(r.status), shown);
 }
 
 std::string summary_table(const RunData& run) {
@@ -137,10 +137,10 @@ std::string summary_table(const RunData& run) {
   auto row = [&rows](const std::string& key, const std::string& value) {
     rows += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", key, value);
   };
-  row("directory", html_escape(run.directory.string()));
-  row("case title", html_escape(r.title));
-  row("case file", html_escape(r.case_file));
-  row("status", html_escape(r.status) + (r.message.empty() ? "" : ": " + html_escape(r.message)));
+  row("directory", markup_escape(run.directory.string()));
+  row("case title", markup_escape(r.title));
+  row("case file", markup_escape(r.case_file));
+  row("status", markup_escape(r.status) + (r.message.empty() ? "" : ": " + markup_escape(r.message)));
   row("samples", std::to_string(r.sample_count()));
   if (r.sample_count() > 0) {
     row("time span", fmt::format("{} … {} s", number(r.time(0)), number(r.time(r.sample_count() - 1))));
@@ -152,7 +152,7 @@ std::string summary_table(const RunData& run) {
   if (run.velocity_violation && run.sample_count() > 0) {
     row("largest velocity violation", number(run.velocity_violation->values.cwiseAbs().maxCoeff()));
   }
-  for (const auto& [key, value] : run.solver_attributes) row(html_escape(key), html_escape(value));
+  for (const auto& [key, value] : run.solver_attributes) row(markup_escape(key), markup_escape(value));
   return "<table class=\"summary\">\n" + rows + "</table>\n";
 }
 
@@ -165,11 +165,11 @@ std::string bodies_table(const RunData& run) {
       out += fmt::format(
           "<tr><td>{}</td><td>flexible</td><td class=\"number\">{}</td><td class=\"number\">{}</td>"
           "<td class=\"number\">{}</td><td class=\"number\">{}</td></tr>\n",
-          html_escape(b.name), b.mesh.nodes.rows(), b.mesh.lines.rows(), b.mesh.quads.rows(),
+          markup_escape(b.name), b.mesh.nodes.rows(), b.mesh.lines.rows(), b.mesh.quads.rows(),
           b.mesh.mode_translations.cols());
     } else {
       out += fmt::format("<tr><td>{}</td><td>rigid</td><td></td><td></td><td></td><td></td></tr>\n",
-                         html_escape(b.name));
+                         markup_escape(b.name));
     }
   }
   return out + "</table>\n";
@@ -187,9 +187,9 @@ std::string joints_table(const RunData& run) {
     const std::string what =
         reactions != run.joints.end() ? indeterminate_summary(run, *reactions) : "determined";
     out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td{}>{}</td></tr>\n",
-                       html_escape(j.name), html_escape(j.type), html_escape(j.body_i),
-                       html_escape(j.body_j),
-                       which.force || which.torque ? " class=\"indeterminate\"" : "", html_escape(what));
+                       markup_escape(j.name), markup_escape(j.type), markup_escape(j.body_i),
+                       markup_escape(j.body_j),
+                       which.force || which.torque ? " class=\"indeterminate\"" : "", markup_escape(what));
   }
   return out + "</table>\n";
 }
@@ -211,10 +211,10 @@ std::string comparison_joints_table(const std::vector<RunSection>& sections) {
   }
   if (names.empty()) return "";
   std::string out = "<h3>Joints compared</h3>\n<table class=\"joints-compared\"><tr><th>joint</th>";
-  for (const RunSection& s : sections) out += "<th>" + html_escape(s.label) + "</th>";
+  for (const RunSection& s : sections) out += "<th>" + markup_escape(s.label) + "</th>";
   out += "</tr>\n";
   for (const std::string& name : names) {
-    out += "<tr><td>" + html_escape(name) + "</td>";
+    out += "<tr><td>" + markup_escape(name) + "</td>";
     for (const RunSection& s : sections) {
       const auto joint = std::find_if(s.run->joints.begin(), s.run->joints.end(),
                                       [&](const JointReactions& j) { return j.name == name; });
@@ -224,7 +224,7 @@ std::string comparison_joints_table(const std::vector<RunSection>& sections) {
       }
       const Indeterminacy which = indeterminacy(*s.run, *joint);
       out += fmt::format("<td{}>{}</td>", which.force || which.torque ? " class=\"indeterminate\"" : "",
-                         html_escape(indeterminate_summary(*s.run, *joint)));
+                         markup_escape(indeterminate_summary(*s.run, *joint)));
     }
     out += "</tr>\n";
   }
@@ -236,14 +236,14 @@ std::string redundancy_table(const RunData& run) {
   std::string out =
       "<h4>Redundant constraints</h4>\n<table><tr><th>equation</th><th>combination of</th></tr>\n";
   for (const auto& [name, with] : run.redundant_equations) {
-    out += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", html_escape(name), html_escape(with));
+    out += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", markup_escape(name), markup_escape(with));
   }
   return out + "</table>\n";
 }
 
 std::string notes(const RunData& run) {
   std::string out;
-  for (const std::string& note : run.notes) out += "<p class=\"note\">" + html_escape(note) + "</p>\n";
+  for (const std::string& note : run.notes) out += "<p class=\"note\">" + markup_escape(note) + "</p>\n";
   return out;
 }
 
@@ -251,7 +251,7 @@ std::string mode_tables(const RunData& run) {
   std::string out;
   for (const ModeTable& table : run.mode_tables) {
     out += fmt::format("<h4>Modes of {} <span class=\"note\">(from {})</span></h4>\n",
-                       html_escape(table.body), html_escape(table.source));
+                       markup_escape(table.body), markup_escape(table.source));
     if (table.modes.empty()) {
       out += "<p class=\"note\">No modes.</p>\n";
       continue;
@@ -261,7 +261,7 @@ std::string mode_tables(const RunData& run) {
       const ModeRow& m = table.modes[i];
       out += fmt::format(
           "<tr><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td><td>{}</td></tr>\n",
-          i + 1, number(m.frequency_hz), html_escape(m.kind), html_escape(m.label));
+          i + 1, number(m.frequency_hz), markup_escape(m.kind), markup_escape(m.label));
     }
     out += "</table>\n";
   }
@@ -295,7 +295,7 @@ std::string mode_images(const RunSection& section) {
   std::string out = "<div class=\"modes\">\n";
   for (const ModeImage& m : section.mode_images) {
     const std::string caption =
-        html_escape(fmt::format("{} mode {}: {} Hz", m.body, m.mode + 1, number(m.frequency_hz)));
+        markup_escape(fmt::format("{} mode {}: {} Hz", m.body, m.mode + 1, number(m.frequency_hz)));
     out += fmt::format("<figure><img src=\"{}/{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
                        kImageFolder, m.file, caption, caption);
   }
@@ -314,7 +314,7 @@ std::string hinge_tables(const RunData& run) {
     const char* what = limit.kind == "latch" ? "locked" : (e.engaged ? "contact begins" : "contact ends");
     out += fmt::format("<tr><td class=\"number\">{:.6f}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
                        "<td class=\"number\">{:.3f}</td><td class=\"number\">{:.2f}</td></tr>\n",
-                       e.time, html_escape(limit.name), html_escape(limit.kind), html_escape(limit.joint),
+                       e.time, markup_escape(limit.name), markup_escape(limit.kind), markup_escape(limit.joint),
                        what, e.angle * kDegrees, e.rate * kDegrees);
   }
   out += "</table>\n";
@@ -338,11 +338,11 @@ std::string hinge_tables(const RunData& run) {
                        "<td class=\"number\">{}, {}, {}</td>"
                        "<td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td>"
                        "<td class=\"number\">{:.4f}</td></tr>\n",
-                       html_escape(limit.name), e.time, html_escape(limit.joint), number(p.latched_force),
+                       markup_escape(limit.name), e.time, markup_escape(limit.joint), number(p.latched_force),
                        p.latched_force_time, number(p.latched_force_joint.x()),
                        number(p.latched_force_joint.y()), number(p.latched_force_joint.z()),
                        number(p.latch_torque), number(p.largest_force),
-                       html_escape(p.largest_joint), p.largest_force_time);
+                       markup_escape(p.largest_joint), p.largest_force_time);
   }
   return out + "</table>\n";
 }
@@ -360,8 +360,8 @@ std::string stress_table(const RunData& run) {
   for (const StressPeak& p : peaks) {
     out += fmt::format("<tr><td>{}</td><td class=\"number\">{:.4g}</td><td class=\"number\">{:.4f}</td>"
                        "<td>{}</td><td class=\"number\">({:.3f}, {:.3f}, {:.3f})</td><td>{}</td></tr>\n",
-                       html_escape(p.body), p.value / 1e6, p.time, html_escape(p.element_name),
-                       p.centre_B.x(), p.centre_B.y(), p.centre_B.z(), html_escape(p.after));
+                       markup_escape(p.body), p.value / 1e6, p.time, markup_escape(p.element_name),
+                       p.centre_B.x(), p.centre_B.y(), p.centre_B.z(), markup_escape(p.after));
   }
   return out + "</table>\n";
 }
@@ -390,7 +390,7 @@ std::string clearance_note(const RunData& run) {
   const std::string pair_name =
       pair >= 0 && pair < static_cast<int>(run.clearance_pairs.size()) ? run.clearance_pairs[pair] : "?";
   const std::string text = fmt::format("Smallest clearance over the run: {} m, between {} at t = {:.4f} s.",
-                                       number(minimum), html_escape(pair_name), run.results.time(k));
+                                       number(minimum), markup_escape(pair_name), run.results.time(k));
   if (minimum < 0.0) return "<div class=\"banner failed\" role=\"alert\">Interference. " + text + "</div>\n";
   return "<p>" + text + "</p>\n";
 }
@@ -404,7 +404,7 @@ std::string subsection(const RunSection& s, const std::string& id, const std::st
 
 std::string run_section(const RunSection& s, bool interactive) {
   const RunData& run = *s.run;
-  std::string out = fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n", s.anchor, html_escape(s.label));
+  std::string out = fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n", s.anchor, markup_escape(s.label));
   out += status_banner(run);
   out += subsection(s, "summary", "Case summary",
                     summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) +
@@ -447,18 +447,18 @@ std::string report_html(const ReportContent& content) {
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>{0}</title>\n<style>{1}{2}{3}</style>\n</head>\n<body>\n<h1>{0}</h1>\n",
-      html_escape(content.title), kStyle, interactive_style(),
+      markup_escape(content.title), kStyle, interactive_style(),
       content.interactive ? content.interactive->style : std::string());
   if (!content.interactive) {
-    out += "<p class=\"banner running\" role=\"note\">" + html_escape(content.interactive_note) +
+    out += "<p class=\"banner running\" role=\"note\">" + markup_escape(content.interactive_note) +
            "</p>\n";
   }
 
   // Contents.
   out += "<nav><ul>\n";
   for (const RunSection& s : content.runs) {
-    out += fmt::format("<li><a href=\"#{}\">{}</a>{}</li>\n", s.anchor, html_escape(s.label),
-                       s.run->finished_ok() ? "" : " (" + html_escape(s.run->results.status) + ")");
+    out += fmt::format("<li><a href=\"#{}\">{}</a>{}</li>\n", s.anchor, markup_escape(s.label),
+                       s.run->finished_ok() ? "" : " (" + markup_escape(s.run->results.status) + ")");
   }
   if (!content.comparisons.empty()) out += "<li><a href=\"#comparison\">Comparison</a></li>\n";
   out += "</ul></nav>\n";

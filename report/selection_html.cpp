@@ -37,8 +37,8 @@ std::string ranking_table(const SelectionData& selection) {
         "<tr{}><td class=\"number\">{}</td><td>{}</td><td>{}</td><td class=\"number\">{}</td>"
         "<td>{} {}</td><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td>"
         "<td class=\"number\">{:.1f}</td><td>{}</td><td>{}</td></tr>\n",
-        r.kept ? " class=\"kept\"" : "", k + 1, html_escape(r.body), html_escape(r.joint), r.node,
-        html_escape(r.quantity), html_escape(r.axis), number(r.peak), number(r.rms), unit,
+        r.kept ? " class=\"kept\"" : "", k + 1, markup_escape(r.body), markup_escape(r.joint), r.node,
+        markup_escape(r.quantity), markup_escape(r.axis), number(r.peak), number(r.rms), unit,
         100.0 * r.relative, r.kept ? "kept" : "",
         r.indeterminate ? "<em class=\"indeterminate\">minimum-norm</em>" : "");
   }
@@ -63,10 +63,10 @@ std::string comparison_table(const SelectionData& selection) {
         "<tr{}><td>{}</td><td>{}</td><td class=\"number\">{}</td><td class=\"number\">{}</td>"
         "<td class=\"number\">{}</td><td{}>{}</td><td class=\"number\">{}</td>"
         "<td class=\"number\">{}</td><td>{}</td><td><code>{}</code></td><td>{}</td></tr>\n",
-        row_class, html_escape(r.set), html_escape(r.description), r.modes, seconds(r.reduction_s),
-        seconds(r.run_s), r.status == results::layout::status::kOk ? "" : " class=\"failed\"", html_escape(r.status),
-        percent(r.error_peak), percent(r.error_rms), html_escape(r.worst_quantity),
-        html_escape(r.directory), html_escape(r.role));
+        row_class, markup_escape(r.set), markup_escape(r.description), r.modes, seconds(r.reduction_s),
+        seconds(r.run_s), r.status == results::layout::status::kOk ? "" : " class=\"failed\"", markup_escape(r.status),
+        percent(r.error_peak), percent(r.error_rms), markup_escape(r.worst_quantity),
+        markup_escape(r.directory), markup_escape(r.role));
   }
   return out + "</table>\n";
 }

@@ -33,10 +33,10 @@ std::string sweep_table(const SweepData& sweep) {
         "<td class=\"number\">{}</td><td class=\"number\">{}</td><td class=\"number\">{}</td>"
         "<td class=\"number\">{}</td><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td>"
         "<td>{}</td></tr>\n",
-        r.role == "chosen" ? " class=\"chosen\"" : "", html_escape(r.point), html_escape(r.status),
+        r.role == "chosen" ? " class=\"chosen\"" : "", markup_escape(r.point), markup_escape(r.status),
         value(r.wall_s, "{:.3g}"), r.steps, r.rejected_steps, r.newton_iterations, r.jacobian_evaluations,
-        value(r.peak_rss_mib, "{:.1f}"), percent(r.error_rms), percent(r.error_peak), html_escape(r.worst_quantity),
-        html_escape(r.message));
+        value(r.peak_rss_mib, "{:.1f}"), percent(r.error_rms), percent(r.error_peak), markup_escape(r.worst_quantity),
+        markup_escape(r.message));
   }
   return out + "</table>\n";
 }

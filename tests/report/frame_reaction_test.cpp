@@ -420,11 +420,12 @@ TEST(ReportConfig, BadKindsKeysWindowsAndAxesNameTheirPlace) {
             ":2:30: expected a non-empty list of driver names, got a list");
 }
 
-// Runs the flexible slider-crank for 0.05 s (probe, modes, stress, drivers, energies) once.
-const std::filesystem::path& slider_crank_run() {
-  static const std::filesystem::path dir =
-      run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml", "config_slider_crank", "--t-end 0.05");
-  return dir;
+// Runs the flexible slider-crank for 0.05 s (probe, modes, stress, drivers, energies) into a
+// directory of the calling test's own: ctest runs the tests in parallel processes.
+std::filesystem::path slider_crank_run() {
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml", "config_slider_crank_" + test,
+                  "--t-end 0.05");
 }
 
 // Each kind draws the run's own series, cut to the window asked, with the title and axis

@@ -7,9 +7,9 @@ namespace limber::report {
 namespace {
 
 TEST(HtmlEscape, EscapesMarkupAndQuotes) {
-  EXPECT_EQ(html_escape("<script>alert(\"x\") & 'y'</script>"),
+  EXPECT_EQ(markup_escape("<script>alert(\"x\") & 'y'</script>"),
             "&lt;script&gt;alert(&quot;x&quot;) &amp; &#39;y&#39;&lt;/script&gt;");
-  EXPECT_EQ(html_escape("plain R3 joint"), "plain R3 joint");
+  EXPECT_EQ(markup_escape("plain R3 joint"), "plain R3 joint");
 }
 
 TEST(RelativeUrl, PercentEncodesAndWalksUp) {
