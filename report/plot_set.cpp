@@ -803,7 +803,24 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
     const bool ground = use_asked && asked.kind == ReactionFrame::kGround;
     const bool named = use_asked && asked.kind == ReactionFrame::kNamed;
     const RunData& first = runs[held.front().first];
+    const auto component_name = [&](int c) {
+      return ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
+    };
+    // Numerical noise is not a signal: a component whose peak over every run is below
+    // zero_fraction of the joint's largest component is listed in the captions, not overlaid.
+    Eigen::Vector3d peak = Eigen::Vector3d::Zero();
+    for (const FrameView& view : views) peak = peak.cwiseMax(view.force.cwiseAbs().colwise().maxCoeff().transpose());
+    std::string zeros;
     for (int c = 0; c < 3; ++c) {
+      if (peak.maxCoeff() > 0.0 && !(peak(c) > options.zero_fraction * peak.maxCoeff())) {
+        zeros += fmt::format("{}{} ≈ 0 (peak {:.3g} N)", zeros.empty() ? "" : ", ", component_name(c), peak(c));
+      }
+    }
+    const std::string not_drawn =
+        zeros.empty() ? "" : fmt::format(" Not drawn, below {:g} of the largest component in every run: {}.",
+                                         options.zero_fraction, zeros);
+    for (int c = 0; c < 3; ++c) {
+      if (peak.maxCoeff() > 0.0 && !(peak(c) > options.zero_fraction * peak.maxCoeff())) continue;
       std::vector<Curve> curves;
       std::vector<std::size_t> minimum_norm;  // places in `held` of the runs where c is undetermined
       for (std::size_t k = 0; k < held.size(); ++k) {
@@ -812,8 +829,7 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
         if (open) minimum_norm.push_back(k);
         curves.push_back({labels[r] + (open ? " (minimum-norm)" : ""), runs[r].results.time, views[k].force.col(c)});
       }
-      const std::string component =
-          ground ? "F" + first.axis_names[static_cast<std::size_t>(c)] : std::string("F") + kAxes[c];
+      const std::string component = component_name(c);
       const std::string frame = ground ? "ground axes" : named ? "frame " + asked.name : "joint frame";
       const std::string note = ground  ? ground_axes_note(first)
                                : named ? find_named_frame(first, asked.name)->description
@@ -823,7 +839,7 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                                       : component;
       plots.push_back({PlotSection::kComparison, "compare_" + file_stem(name) + "_" + tag + ".png",
                        "Reaction " + component + " at joint " + name + " (" + note + ") in " +
-                           std::to_string(held.size()) + " runs.",
+                           std::to_string(held.size()) + " runs." + not_drawn,
                        {"Joint " + name + ": " + component + " (" + frame + ")" +
                             (minimum_norm.empty() ? "" : ", minimum-norm in " + runs_named(minimum_norm, held, labels)),
                         kTimeLabel, "force [N]", curves, false},

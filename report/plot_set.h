@@ -118,9 +118,10 @@ std::vector<NamedPlot> sweep_plots(const SweepData& sweep, const std::string& pr
 
 // One plot per joint name present in two or more runs and per force component (in the first
 // of `options.frames` when every run holding the joint has that frame — ground axes, or a
-// marker or body frame — else the joint frame), overlaying
-// that component of every run holding the joint; then one per deflection-probe component of a
-// body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
+// marker or body frame — else the joint frame), overlaying that component of every run holding
+// the joint (a component below options.zero_fraction of the joint's largest in every run is
+// listed "≈ 0 (peak …)" in the others' captions instead); then one per deflection-probe
+// component of a body probed in two or more runs (components ≈ 0 in all of them left out). Legend entries are
 // `labels`, with " (minimum-norm)" for a run whose redundancy leaves that force component
 // undetermined (indeterminate_components.h); such a plot's title says in which runs, and its
 // warning names each such run's redundant set and the runs where the component is determined.

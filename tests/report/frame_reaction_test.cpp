@@ -167,7 +167,12 @@ TEST(FrameReactions, ComparisonNotesIndeterminacyPerRun) {
   ASSERT_TRUE(universal.redundant_equations.empty());
   for (const JointReactions& joint : universal.joints) EXPECT_FALSE(joint.is_indeterminate()) << joint.name;
 
-  const std::vector<NamedPlot> plots = comparison_plots({rigid, universal}, {"rigid", "non-redundant"}, PlotOptions{});
+  // FY is numerical noise in both runs (planar motion); the noise rule is off here so that its
+  // overlay, the one with a minimum-norm run, is drawn (the next test keeps the rule).
+  PlotOptions every_component;
+  every_component.zero_fraction = 0.0;
+  const std::vector<NamedPlot> plots =
+      comparison_plots({rigid, universal}, {"rigid", "non-redundant"}, every_component);
   for (const char* joint : {"R1", "R2", "R3"}) {
     SCOPED_TRACE(joint);
     auto plot_of = [&](const std::string& axis) {
@@ -208,9 +213,40 @@ TEST(FrameReactions, ComparisonNotesIndeterminacyPerRun) {
   EXPECT_EQ(html.substr(r2, html.find("</tr>", r2) - r2),
             "<tr><td>R2</td><td class=\"indeterminate\">force Y and torque X, Z minimum-norm (indeterminate, "
             "ground axes; other components determined)</td><td>determined</td>");
-  EXPECT_NE(html.find("Indeterminate in some runs: the component FY of joint R2", table), std::string::npos);
+  // On the page FY is noise in both runs: listed, not overlaid (the next test).
+  EXPECT_EQ(html.find("Indeterminate in some runs: the component FY of joint R2", table), std::string::npos);
+  EXPECT_NE(html.find("FY ≈ 0 (peak", table), std::string::npos);
 }
 
+// Numerical noise is not a signal in comparisons either: the slider-crank's out-of-plane FY,
+// round-off in both runs, is listed "≈ 0" in the captions of the in-plane overlays, not drawn.
+TEST(FrameReactions, ComparisonListsNoiseComponentsInsteadOfDrawingThem) {
+  const RunData rigid = read_run_data(run_case(std::string(LIMBER_CASES_DIR) + "/slider_crank_rigid.yaml",
+                                               "compare_noise_rigid", "--t-end 0.05"));
+  const RunData universal = read_run_data(run_case(std::string(LIMBER_RUN_TEST_DATA_DIR) + "/slider_crank_universal.yaml",
+                                                   "compare_noise_universal", "--t-end 0.05"));
+  const std::vector<NamedPlot> plots = comparison_plots({rigid, universal}, {"rigid", "non-redundant"});
+  for (const char* joint : {"R1", "R2", "R3"}) {
+    SCOPED_TRACE(joint);
+    const auto find = [&](const std::string& axis) {
+      const std::string file = "compare_" + std::string(joint) + "_ground_" + axis + ".png";
+      return std::find_if(plots.begin(), plots.end(), [&](const NamedPlot& p) { return p.file == file; });
+    };
+    EXPECT_EQ(find("y"), plots.end());
+    const auto x = find("x");
+    ASSERT_NE(x, plots.end());
+    const std::size_t at = x->caption.find("Not drawn, below 0.0001 of the largest component in every run: FY ≈ 0 (peak ");
+    ASSERT_NE(at, std::string::npos) << x->caption;
+    // The listed peak is below the floor: 1e-4 of the in-plane peak (hundreds of N here).
+    const double listed = std::stod(x->caption.substr(x->caption.find("(peak ", at) + 6));
+    double largest = 0.0;
+    for (const auto& p : {find("x"), find("z")}) {
+      for (const Curve& curve : p->spec.curves) largest = std::max(largest, curve.y.cwiseAbs().maxCoeff());
+    }
+    EXPECT_GT(largest, 1.0);
+    EXPECT_LT(listed, 1e-4 * largest);
+  }
+}
 TEST(FrameReactions, FrameOptionDrawsTheNamedFrameAndRefusesAnUnknownName) {
   const std::filesystem::path dir = run_case(kCrankCase, "crank_option");
   const RunData run = read_run_data(dir);
