@@ -50,7 +50,7 @@ double mode_amplitude(const FlexibleMesh& mesh, Eigen::Index mode, double amplit
 }
 
 BodyModeShapes body_mode_shapes(const results::ModesBody& body) {
-  BodyModeShapes shapes{body.name, flexible_mesh(body.mesh), {}, {}};
+  BodyModeShapes shapes{body.name, body.mesh, {}, {}};
   for (const results::ModeRecord& mode : body.modes) {
     shapes.kinds.push_back(mode.kind);
     shapes.labels.push_back(mode.label);

@@ -47,22 +47,6 @@ Eigen::Matrix3d MarkerTrack::rotation(Eigen::Index k) const {
       .toRotationMatrix();
 }
 
-FlexibleMesh flexible_mesh(const results::MeshData& data) {
-  FlexibleMesh mesh;
-  mesh.nodes = data.nodes;
-  mesh.lines = data.lines;
-  mesh.quads = data.quads;
-  mesh.beam_radius = data.beam_radius;
-  mesh.mode_translations = data.mode_translations;
-  mesh.frequencies_hz = data.frequencies_hz;
-  mesh.beam_sections = data.beam_sections;
-  return mesh;
-}
-
-FlexibleMesh read_flexible_mesh(const results::H5Reader& r, const std::string& body) {
-  return flexible_mesh(results::read_mesh(r, body));
-}
-
 Results read_results(const std::filesystem::path& directory) {
   Results results;
   results.file = directory / results::kResultsFileName;
@@ -133,7 +117,7 @@ Results read_results(const std::filesystem::path& directory) {
     track.orientation.resize(n, 4);
     std::copy(q.begin(), q.end(), track.orientation.data());
     if (track.flexible) {
-      track.mesh = read_flexible_mesh(r, g);
+      track.mesh = results::read_mesh(r, g);
       // Modal coordinates [ns, nm], row-major, into a column-major matrix.
       const Eigen::Index nm = track.mesh.mode_translations.cols();
       track.modal_coordinates.setZero(n, nm);

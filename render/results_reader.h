@@ -6,7 +6,7 @@
 // of the per-sample datasets read, so every sample returned is complete.
 #pragma once
 
-#include "results/beam_sections.h"
+#include "results/modes_reader.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -14,11 +14,6 @@
 #include <filesystem>
 #include <string>
 #include <vector>
-
-namespace limber::results {
-class H5Reader;
-struct MeshData;
-}  // namespace limber::results
 
 namespace limber::render {
 
@@ -34,17 +29,9 @@ struct Shape {
   Eigen::Vector3d color{0.7, 0.7, 0.7};
 };
 
-// The FE mesh and mode translations of a flexible body (body frame).
-struct FlexibleMesh {
-  RowMatrix3d nodes;                                             // nn x 3 [m]
-  Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> lines;  // 0-based node indices
-  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> quads;
-  double beam_radius = 0.0;                                      // [m]
-  // Beams' local y axes and section outlines (empty in files before them: tubes of beam_radius).
-  results::BeamSections beam_sections;
-  Eigen::MatrixXd mode_translations;  // (3 nn) x nm, column i = mode i, node-major xyz
-  Eigen::VectorXd frequencies_hz;     // nm
-};
+// The FE mesh and mode translations of a flexible body (body frame), as results/modes_reader.h
+// reads them from results.h5 and modes.h5 (one layout).
+using FlexibleMesh = results::MeshData;
 
 // Names are the case's text (the attribute `name`, else the link name of an older file); `group`
 // is the HDF5 path of the body's or joint's group, e.g. "/bodies/arm%2Fleft" for "arm/left"
@@ -97,14 +84,5 @@ struct Results {
 // Reads `directory`/results.h5. Throws InputError (expected/got, naming the file) when the file
 // is missing, not HDF5 (e.g. truncated), not a limber results file, or lacks a required dataset.
 Results read_results(const std::filesystem::path& directory);
-
-// The mesh and mode translations of the group `body` (e.g. "/bodies/plate": mesh/nodes, lines,
-// quads, beam_radius, the beam sections (results/beam_sections.h); modes/translations
-// [nm, nn, 3], frequencies_hz): the same layout in results.h5 and modes.h5, read by
-// results::read_mesh (results/modes_reader.h). Throws InputError when a dataset is missing or
-// malformed.
-FlexibleMesh read_flexible_mesh(const results::H5Reader& file, const std::string& body);
-// The drawing's copy of a mesh read by results/modes_reader.h.
-FlexibleMesh flexible_mesh(const results::MeshData& data);
 
 }  // namespace limber::render
