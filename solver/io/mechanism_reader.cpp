@@ -136,8 +136,12 @@ JointType read_joint_type(const YamlValue& value) {
 // <name>.i on body_i and <name>.j on body_j, frames `orientation` and `orientation_j`).
 JointEntry read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible) {
   entry.allow_only({"type", "marker_i", "marker_j", "body_i", "body_j", "position", "orientation",
-                    "orientation_j"});
-  JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where()};
+                    "orientation_j", "release"});
+  JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where(), {}, {}};
+  if (const auto release = entry.find("release")) {
+    joint.release = release->as_non_negative();
+    joint.release_where = release->where();
+  }
   if (entry.find("marker_i") || entry.find("marker_j")) {
     for (const char* key : {"body_i", "body_j", "position", "orientation", "orientation_j"}) {
       if (entry.find(key)) {

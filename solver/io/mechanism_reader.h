@@ -33,10 +33,16 @@
 namespace limber::io {
 
 // What `limber run` does with the model: integrator options, end time and output interval.
+// Where a run starts: the initial poses assembled onto the joints (with the velocities
+// given), or the static equilibrium from there (multibody/statics.h: flexible bodies deformed
+// under the loads at t = 0, every joint holding, hold-downs included).
+enum class StartKind { kAssembly, kStatics };
+
 struct RunSettings {
   integrate::IntegratorOptions integrator;  // method, tolerances or step, ρ∞, step budget
   double t_end = 1.0;                       // [s], run from t = 0
   double sample_interval = 1e-2;            // [s], output every this long (and at t_end)
+  StartKind start = StartKind::kAssembly;
 };
 
 // Values, one per mode, whose length only the modes tell (checked when the model is built).
@@ -88,6 +94,8 @@ struct JointEntry {
   std::string marker_i, marker_j;
   std::vector<MarkerEntry> markers;  // <name>.i and <name>.j for a joint given at a point
   SourceLocation where;
+  std::optional<double> release;     // [s]: a hold-down, removed then (Joint::release_time)
+  SourceLocation release_where;
 };
 
 struct DriverEntry {

@@ -205,6 +205,26 @@ int ModelBuilder::add_joint(const std::string& name, JointType type, const std::
   return static_cast<int>(model_.joints.size()) - 1;
 }
 
+void ModelBuilder::release_joint(const std::string& joint, double time, const SourceLocation& where) {
+  const int j = model_.find_joint(joint);
+  if (j < 0) throw InputError(fmt::format("release: expected an existing joint, got \"{}\"", joint), where);
+  Joint& released = model_.joints[static_cast<std::size_t>(j)];
+  if (!std::isfinite(time) || time < 0.0) {
+    throw InputError(fmt::format("joint \"{}\": expected a release time >= 0 s, got {}", joint, time), where);
+  }
+  if (std::isfinite(released.release_time)) {
+    throw InputError(fmt::format("joint \"{}\": expected one release, got a second (at {} s after {} s)",
+                                 joint, time, released.release_time), where);
+  }
+  for (const Driver& driver : model_.drivers) {
+    if (driver.joint == j) {
+      throw InputError(fmt::format("joint \"{}\": expected an undriven joint to release, got one driven "
+                                   "by \"{}\"", joint, driver.name), where);
+    }
+  }
+  released.release_time = time;
+}
+
 int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
                              DriverCoordinate coordinate, TimeFunction motion,
                              const SourceLocation& where) {
@@ -212,6 +232,10 @@ int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
   check_name_text("driver", name, where);
   const int j = model_.find_joint(joint);
   if (j < 0) throw InputError(fmt::format("driver \"{}\": expected an existing joint, got \"{}\"", name, joint), where);
+  if (std::isfinite(model_.joints[static_cast<std::size_t>(j)].release_time)) {
+    throw InputError(fmt::format("driver \"{}\": expected a joint that is not released, got \"{}\"", name, joint),
+                     where);
+  }
   // The joint must leave the driven coordinate free.
   const JointType type = model_.joints[j].type;
   const bool rotation_ok = type == JointType::kRevolute || type == JointType::kCylindrical;

@@ -128,8 +128,13 @@ class ModelBuilder {
   // The markers must lie on different bodies.
   int add_joint(const std::string& name, JointType type, const std::string& marker_i,
                 const std::string& marker_j, const SourceLocation& where = {});
+  // The joint holds up to `time` and is then removed (a hold-down: Joint::release_time).
+  // Throws InputError for an unknown joint, a time that is negative or not finite, a joint
+  // released already, or a driven joint (its driver would prescribe a coordinate of nothing).
+  void release_joint(const std::string& joint, double time, const SourceLocation& where = {});
   // Rotation drivers need a revolute or cylindrical joint, translation drivers a
-  // translational or cylindrical one; at most one driver per joint coordinate.
+  // translational or cylindrical one; at most one driver per joint coordinate; none on a
+  // released joint.
   int add_driver(const std::string& name, const std::string& joint, DriverCoordinate coordinate,
                  TimeFunction motion, const SourceLocation& where = {});
   void add_rsda(const RsdaSpec& spec, const SourceLocation& where = {});

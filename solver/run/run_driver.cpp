@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <chrono>
+#include <optional>
 #include <set>
 
 #include "core/error.h"
@@ -76,6 +77,17 @@ RunSummary run_mechanism(const multibody::Model& model,
         fmt::join(start.lost_at_singular_start, ", "));
     return finish(results::RunStatus::kFailed);
   }
+  // The static equilibrium at t = 0, every joint holding (hold-downs included), when asked.
+  multibody::State initial = start.state;
+  if (settings.start == io::StartKind::kStatics) {
+    summary.statics = multibody::solve_statics(model, start.partition, start.state);
+    if (summary.statics->status != multibody::StaticsStatus::kOk) {
+      summary.failure = "statics";
+      summary.message = summary.statics->message;
+      return finish(results::RunStatus::kFailed);
+    }
+    initial.q = summary.statics->state.q;
+  }
   summary.redundant = start.redundant;
   if (hooks.writer) {
     std::vector<std::string> names, depends_on;
@@ -90,7 +102,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   if (hooks.on_start) hooks.on_start(start);
 
   // Integration on the independent rows, energies accumulated by the integrator.
-  const multibody::MultibodySystem system(model, start.partition);
+  multibody::MultibodySystem system(model, start.partition);
   // A motion whose velocity jumps demands impulses: say where, once.
   for (const multibody::Driver& driver : model.drivers) {
     std::vector<double> jumps;
@@ -137,10 +149,12 @@ RunSummary run_mechanism(const multibody::Model& model,
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
   summary.clearance.checked = !clearance_pairs.empty();
   AccuracyMonitor accuracy;
-  SingularPassageMonitor singular(model, static_cast<int>(start.partition.independent.size()));
+  // Re-made at each release: the rank it watches is that of the joints that remain.
+  std::optional<SingularPassageMonitor> singular;
+  singular.emplace(model, static_cast<int>(start.partition.independent.size()));
   const auto report_singular = [&] {
-    summary.singular_passages.push_back(singular.last());
-    if (hooks.on_warning) hooks.on_warning(singular.last().message());
+    summary.singular_passages.push_back(singular->last());
+    if (hooks.on_warning) hooks.on_warning(singular->last().message());
   };
   const auto on_sample = [&](const integrate::Sample& sample) {
     report_events();
@@ -151,7 +165,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       summary.warnings.push_back(check.warning);
       if (hooks.on_warning) hooks.on_warning(check.warning);
     }
-    if (singular.add({sample.t, sample.q, sample.v})) report_singular();
+    if (singular->add({sample.t, sample.q, sample.v})) report_singular();
     if (hooks.writer) hooks.writer->append_sample(record);
     accuracy.add(record);
     summary.t_reached = sample.t;
@@ -175,13 +189,27 @@ RunSummary run_mechanism(const multibody::Model& model,
   const auto check = [&](const integrate::Sample& sample) {
     return redundant_rows.check(sample.t, recorder.constraint_residuals(), accuracy.size());
   };
+  // Hold-downs leave the equations at their release times; the integrator starts afresh there.
+  integrate::Restarts releases;
+  releases.times = model.release_times();
+  releases.apply = [&](double t, const integrate::Sample& at) {
+    if (singular->finish()) report_singular();
+    system.release_joints(t, at.q);
+    singular.emplace(model, system.nc(), system.partition().row_released);
+    JointRelease release{t, {}};
+    for (const multibody::Joint& joint : model.joints) {
+      if (joint.release_time == t) release.joints.push_back(joint.name);
+    }
+    summary.releases.push_back(release);
+  };
   const integrate::SimulationResult result = integrate::simulate(
-      system, options, {0.0, start.state.q, start.state.v},
-      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample, check);
+      system, options, {0.0, initial.q, start.state.v},
+      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample, check,
+      releases);
 
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();
-  if (singular.finish()) report_singular();
+  if (singular->finish()) report_singular();
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);

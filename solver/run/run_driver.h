@@ -3,13 +3,20 @@
 // (written in blocks; a failure or a signal writes the rest, a kill loses at most the last block:
 // results_writer.h).
 //
-// Failures are returned, never thrown (house style §11): an assembly that does not close, or an
-// integrator failure ("at t = … s: why"), ends the run with status "failed" and that message in
-// the summary and in results.h5. Bad settings throw InputError before anything is written.
+// The run starts from the assembled initial poses, or from the static equilibrium there
+// (settings.start); joints with a release time (hold-downs) leave the equations at that time,
+// where the integrator stops and starts afresh with the joints that remain
+// (integrate::Restarts).
+//
+// Failures are returned, never thrown (house style §11): an assembly that does not close, a
+// static equilibrium not found, or an integrator failure ("at t = … s: why"), ends the run with
+// status "failed" and that message in the summary and in results.h5. Bad settings throw
+// InputError before anything is written.
 #pragma once
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +24,7 @@
 #include "io/mechanism_reader.h"
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
+#include "multibody/statics.h"
 #include "results/results_writer.h"
 #include "run/accuracy_check.h"
 #include "run/singular_passage.h"
@@ -30,6 +38,12 @@ struct ClearanceMinimum {
   double distance = std::numeric_limits<double>::infinity();  // [m], negative: interference
   double time = 0.0;                                          // [s]
   std::string body_a, body_b;                                 // "" while none was found
+};
+
+// Joints released together (hold-downs: Joint::release_time), and when [s].
+struct JointRelease {
+  double t = 0.0;
+  std::vector<std::string> joints;
 };
 
 struct RunSummary {
@@ -52,6 +66,10 @@ struct RunSummary {
   std::vector<SingularPassage> singular_passages;
   // Mode switches of hinge latches and stops, in order (located events).
   std::vector<multibody::HingeEvent> events;
+  // The static equilibrium the run started from (run.start: statics); empty otherwise.
+  std::optional<multibody::StaticsResult> statics;
+  // Hold-downs released along the run, in order.
+  std::vector<JointRelease> releases;
   ClearanceMinimum clearance;
   // The run's own accuracy estimate (accuracy_check.h), from every sample written.
   AccuracyEstimate accuracy;

@@ -287,7 +287,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
 
   // Constraint violations over all rows (redundant ones included).
   const multibody::ConstraintViolation violation =
-      multibody::constraint_violation(model_, state, workspace_);
+      multibody::constraint_violation(model_, state, workspace_, partition_.row_released);
   out.position_violation = violation.position;
   out.velocity_violation = violation.velocity;
 
