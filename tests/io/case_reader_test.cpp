@@ -170,6 +170,23 @@ const std::string kGoodBeam =
     "{from: [0, 0, 0], to: [1, 0, 0], elements: 2, section: bar, material: steel, "
     "orientation: [0, 1, 0]}";
 
+// A spider: a new node at its position, and one constraint per (node within the radius, DOF):
+// the rod's nodes at x = 0, 0.5 and 1 m, radius 0.5 m around (1, 0, 0) → nodes 2 and 3, six
+// DOFs each. An empty bolt pattern is an error at the radius.
+TEST(CaseReader, SpidersTieTheNodesWithinTheirRadius) {
+  const Case input = read_case_text(
+      rod_case(kGoodBeam, "{normal: 2}", "    spiders: [{node: 1001, position: [1, 0, 0], radius: 0.5}]\n"),
+      "test.yaml");
+  const fe::FeModel& model = input.flexible_bodies[0].model;
+  ASSERT_EQ(model.node_count(), 4);
+  EXPECT_EQ(model.node_ids.back(), 1001);
+  EXPECT_EQ(model.node_positions.back(), Eigen::Vector3d(1, 0, 0));
+  EXPECT_EQ(model.multipoint_constraints.size(), 12u);
+  const std::string lonely =
+      rod_case(kGoodBeam, "{normal: 2}", "    spiders: [{node: 1001, position: [3, 0, 0], radius: 0.5}]\n");
+  EXPECT_TRUE(fails_at(lonely, location_of(lonely, "0.5}"), "expected at least one node within 'radius'"));
+}
+
 TEST(CaseReaderErrors, TheBaseCaseIsValid) {
   EXPECT_NO_THROW(read_case_text(rod_case(kGoodBeam), "test.yaml"));
 }
