@@ -13,6 +13,9 @@ void SettingsOverrides::add_options(CLI::App& command) {
   command.add_option("--max-wall", max_wall,
                      "Wall-clock budget of the integration [s] (> 0; default: none): a run that has "
                      "not finished by then stops as failed, keeping its samples");
+  command.add_option("--peak-window", peak_window,
+                     "Event peaks: the largest reactions this long [s] after the start and after each "
+                     "latch engagement (> 0; default: the case's run.peak_window, else 0.3)");
 }
 
 io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
@@ -24,6 +27,7 @@ io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
   if (step) options.step = *step;
   if (t_end) settings.t_end = *t_end;
   if (max_wall) options.max_wall_seconds = *max_wall;
+  if (peak_window) settings.peak_window = *peak_window;
   return settings;
 }
 

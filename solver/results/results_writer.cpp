@@ -726,6 +726,48 @@ void ResultsWriter::set_singular_passages(const std::vector<double>& time,
                 velocity_jump.data());
 }
 
+void ResultsWriter::set_event_peaks(const EventPeaks& peaks) {
+  LIMBER_DEMAND(!impl_->finished);
+  LIMBER_DEMAND(H5Lexists(impl_->file.get(), layout::kEventPeaks, H5P_DEFAULT) == 0);
+  H5Handle group = create_group(impl_->file.get(), layout::kEventPeaks);
+  write_doubles_attribute(group.get(), layout::event_peaks::kWindowAttribute, &peaks.window, 1);
+  write_string_dataset(group.get(), layout::event_peaks::kJoints, peaks.joints);
+  // The window table, then [nw, nj] and [nw, nj, 3] tables row-major.
+  const std::size_t nw = peaks.windows.size(), nj = peaks.joints.size();
+  std::vector<std::string> labels;
+  std::vector<double> start, end;
+  std::vector<std::int64_t> states;
+  std::vector<std::vector<double>> scalars(4), vectors(4);
+  for (const PeakWindow& window : peaks.windows) {
+    LIMBER_DEMAND(window.joints.size() == nj);
+    labels.push_back(window.start.label);
+    start.push_back(window.start.t);
+    end.push_back(window.end);
+    states.push_back(window.states);
+    for (const JointPeak& joint : window.joints) {
+      const double scalar[4] = {joint.force, joint.force_time, joint.torque, joint.torque_time};
+      const Eigen::Vector3d* vector[4] = {&joint.force_component, &joint.force_component_time,
+                                          &joint.torque_component, &joint.torque_component_time};
+      for (std::size_t k = 0; k < 4; ++k) {
+        scalars[k].push_back(scalar[k]);
+        vectors[k].insert(vectors[k].end(), vector[k]->data(), vector[k]->data() + 3);
+      }
+    }
+  }
+  namespace ep = layout::event_peaks;
+  write_string_dataset(group.get(), ep::kLabel, labels);
+  write_dataset(group.get(), ep::kStart, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw}, start.data());
+  write_dataset(group.get(), ep::kEnd, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw}, end.data());
+  write_dataset(group.get(), ep::kStates, H5T_STD_I64LE, H5T_NATIVE_INT64, {nw}, states.data());
+  const char* scalar_names[] = {ep::kForce, ep::kForceTime, ep::kTorque, ep::kTorqueTime};
+  const char* vector_names[] = {ep::kForceComponent, ep::kForceComponentTime, ep::kTorqueComponent,
+                                ep::kTorqueComponentTime};
+  for (std::size_t k = 0; k < 4; ++k) {
+    write_dataset(group.get(), scalar_names[k], H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw, nj}, scalars[k].data());
+    write_dataset(group.get(), vector_names[k], H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw, nj, 3}, vectors[k].data());
+  }
+}
+
 void ResultsWriter::finish(RunStatus status, const std::string& message) {
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
