@@ -16,8 +16,7 @@ double highest_frequency(const multibody::Model& model) {
   return f_max;
 }
 
-StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options, double sample_interval,
-                       const StepPolicy& policy) {
+StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options, const StepPolicy& policy) {
   StepChoice choice;
   choice.f_max = f_max;
   choice.needed = f_max > 0.0 ? 1.0 / (kStepsPerPeriod * f_max) : 0.0;
@@ -27,10 +26,12 @@ StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options
   if (policy.keep_case_step || choice.needed == 0.0) {
     choice.step = case_step;
   } else {
-    const double floor = (galpha || case_step > 0.0 ? case_step : sample_interval) / policy.max_refinement;
+    // At most max_refinement times shorter than the case's (IDA without a max_step: no floor).
+    const double floor = case_step / policy.max_refinement;
     const double bound = case_step > 0.0 ? std::min(case_step, choice.needed) : choice.needed;
     choice.step = std::max(bound, floor);
   }
+  choice.step *= policy.scale;
   choice.steps_per_period = choice.step > 0.0 && f_max > 0.0 ? 1.0 / (choice.step * f_max)
                                                               : std::numeric_limits<double>::infinity();
   // A relative slack of 1e-9 for the round trip through 1 / (N f_max).
