@@ -121,8 +121,9 @@ void print_peak_table(std::FILE* out, const std::vector<select::CandidateRun>& r
     if (!run.candidate.reference) fmt::print(out, " {:>17}", run.candidate.name.substr(0, 17));
   }
   fmt::print(out, "\n");
-  const std::vector<select::PeakDifference>& rows = compare_peaks(reference->summary.peaks, reference->summary.peaks).rows;
-  for (const select::PeakDifference& row : rows) {
+  // The reference against itself: its own peaks, one row per window and joint.
+  const select::PeakComparison own = select::compare_peaks(reference->summary.peaks, reference->summary.peaks);
+  for (const select::PeakDifference& row : own.rows) {
     fmt::print(out, "  {:<22} {:<8} {:>10.4g} {:>10.4g}", row.window.substr(0, 22), row.joint, row.reference_force,
                row.reference_torque);
     for (const select::CandidateRun& run : runs) {
