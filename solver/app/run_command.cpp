@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/command.h"
+#include "app/event_peaks_text.h"
 #include "app/json_text.h"
 #include "app/run_progress.h"
 #include "app/settings_overrides.h"
@@ -249,7 +250,7 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       "\"newton_iterations\": {}, \"jacobian_evaluations\": {}, \"residual_evaluations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
       "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"statics\": {}, "
-      "\"releases\": {}, \"clearance\": {}, \"accuracy\": {}, \"results\": {}}}",
+      "\"releases\": {}, \"clearance\": {}, \"accuracy\": {}, \"event_peaks\": {}, \"results\": {}}}",
       json_string(!summary.ok ? results::layout::status::kFailed : summary.accurate() ? results::layout::status::kOk : results::layout::status::kInaccurate),
       json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
@@ -258,7 +259,8 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
       json_string_list(details), json_events(model, summary.events), json_statics(summary),
-      json_releases(summary), json_clearance(summary.clearance), json_accuracy(summary.accuracy), json_string(results_path));
+      json_releases(summary), json_clearance(summary.clearance), json_accuracy(summary.accuracy),
+      json_event_peaks(summary.peaks), json_string(results_path));
 }
 
 // Thrown from the sample hook when a stop signal arrived: leaves the integration between samples.
@@ -363,6 +365,7 @@ int run_case(const RunOptions& options) {
                summary.max_position_violation, summary.max_velocity_violation);
     if (summary.ok) print_accuracy(text, summary.accuracy);
     print_clearance(text, summary.clearance);
+    print_event_peaks(text, summary.peaks);
   }
   fmt::print(text, "wrote {}\n", results_path);
   if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
@@ -428,7 +431,9 @@ Command add_run_command(CLI::App& app) {
                 "a static start or null, \"releases\": [{\"t\", \"joints\"}], \"clearance\": "
                 "{\"minimum\", \"time\", \"pair\": [body, body]} or null, \"accuracy\": "
                 "{\"energy_relative\", \"energy_residual\", \"energy_scale\", \"local_error\", "
-                "\"drift_relative\", \"warnings\"}, \"results\"}; status is \"ok\", "
+                "\"drift_relative\", \"warnings\"}, \"event_peaks\": {\"window\", \"windows\": [{\"label\", "
+                "\"start\", \"end\", \"states\", \"joints\": [{\"joint\", \"force\", \"force_time\", \"torque\", "
+                "\"torque_time\", \"force_component\", ...}]}]}, \"results\"}; status is \"ok\", "
                 "\"ok_inaccurate\" or \"failed\"; the text goes to stderr");
   return {cli, [options] { return run_case(*options); }};
 }

@@ -17,6 +17,9 @@ void SettingsOverrides::add_options(CLI::App& command) {
                      "assembly (the initial poses assembled, the case's velocities) or statics "
                      "(the static equilibrium from there, hold-downs holding; docs/statics.md)")
       ->check(CLI::IsMember({"assembly", "statics"}));
+  command.add_option("--peak-window", peak_window,
+                     "Event peaks: the largest reactions this long [s] after the start and after each "
+                     "latch engagement (> 0; default: the case's run.peak_window, else 0.3)");
 }
 
 io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
@@ -30,6 +33,7 @@ io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
   if (max_wall) options.max_wall_seconds = *max_wall;
   if (start == "assembly") settings.start = io::StartKind::kAssembly;
   if (start == "statics") settings.start = io::StartKind::kStatics;
+  if (peak_window) settings.peak_window = *peak_window;
   return settings;
 }
 

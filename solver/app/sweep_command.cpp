@@ -104,6 +104,10 @@ void print_table(std::FILE* out, const std::vector<sweep::SweepRow>& rows, std::
     std::string note = chosen && *chosen == k ? "chosen" : "";
     if (r.resumed) note += note.empty() ? "resumed" : ", resumed";
     if (!r.finished() && !r.message.empty()) note += (note.empty() ? "" : "; ") + r.message;
+    if (!r.resolved()) {
+      note += fmt::format("{}not resolved: {:.1f} steps per period at f_max {:.0f} Hz ({} needed)", note.empty() ? "" : "; ",
+                          r.steps_per_period, r.f_max_hz, select::kStepsPerPeriod);
+    }
     const std::string wall = std::isfinite(r.wall_s) ? fmt::format("{:.3f}", r.wall_s) : "-";
     const std::string memory = std::isfinite(r.peak_rss_mib) ? fmt::format("{:.1f}", r.peak_rss_mib) : "-";
     fmt::print(out, "  {:<28} {:<13} {:>8} {:>7} {:>5} {:>7} {:>6} {:>7} {:>10} {:>10}  {}\n", r.point.name(),

@@ -94,6 +94,7 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   }
   prev_ = curr_;
   xi_last_ = Eigen::VectorXd::Zero(nv_);
+  if (options_.on_step) options_.on_step(curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
   return Status::success(x0.t);
 }
 
@@ -121,6 +122,7 @@ Status GeneralizedAlpha::accept_step(double h) {
   curr_ = next_;
   ++stats_.steps;
   estimate_local_error();
+  if (options_.on_step) options_.on_step(curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
   return Status::success(curr_.t);
 }
 

@@ -355,6 +355,17 @@ struct IdaIntegrator::Impl {
     set_stop_time();
   }
 
+  // IntegratorOptions::on_step with the state IDA returned at t (the end of its step, or a
+  // located event): y and y' as IDASolve left them.
+  void report_step(double t) const {
+    const double* y_data = N_VGetArrayPointer(y);
+    const double* yp_data = N_VGetArrayPointer(yp);
+    options.on_step(t, Eigen::Map<const Eigen::VectorXd>(y_data, nq),
+                    Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv),
+                    Eigen::Map<const Eigen::VectorXd>(yp_data + iv, nv),
+                    Eigen::Map<const Eigen::VectorXd>(y_data + ilambda, nc));
+  }
+
   // Event functions of the system at IDA's (t, y), for its root finding.
   int events(double t, const double* y_data, double* e_data) {
     q = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
@@ -549,6 +560,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
     flag = flag < 0 ? flag : IDASetNoInactiveRootWarn(s.ida);
   }
   LIMBER_DEMAND(flag >= 0);
+  if (options.on_step) options.on_step(x0.t, q, v, vdot, lambda);
   return Status::success(x0.t);
 }
 
@@ -594,6 +606,7 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
                                  s.last_message)};
         return s.failure;
       }
+      if (s.options.on_step) s.report_step(t_current);
       if (s.budget.spent()) {
         s.failed = true;
         s.failure = {StatusCode::kWallClock, t_current,

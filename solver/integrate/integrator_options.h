@@ -87,6 +87,16 @@ struct IntegratorOptions {
 
   Quadrature quadrature;
 
+  // Both: an observer of the solution the integrator steps through, called in time order at
+  // the start (after init) and at the end of every accepted step (IDA: every step IDASolve
+  // takes, and every event it locates), with t, q, v, v̇ and λ there: the states between
+  // which the output samples are interpolated, so an extreme that falls between two samples
+  // is seen at the step nearest it (run/event_peaks.h). Called with the modes of the step
+  // just taken, before the events located at its end switch them. Unset: none.
+  std::function<void(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                     const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda)>
+      on_step;
+
   // Presets.
   static IntegratorOptions ida(double rtol, double atol);
   static IntegratorOptions generalized_alpha(double step, double rho_inf = 0.8);

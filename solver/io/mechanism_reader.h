@@ -43,6 +43,10 @@ struct RunSettings {
   double t_end = 1.0;                       // [s], run from t = 0
   double sample_interval = 1e-2;            // [s], output every this long (and at t_end)
   StartKind start = StartKind::kAssembly;
+  // [s] Event peaks (run/event_peaks.h) are the largest reactions in this long after the start
+  // and after each latch engagement: the first periods of a deployed panel's lowest modes
+  // (0.3 s is 3 periods at 10 Hz), where latch-up peaks occur.
+  double peak_window = 0.3;
 };
 
 // Values, one per mode, whose length only the modes tell (checked when the model is built).

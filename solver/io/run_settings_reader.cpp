@@ -8,7 +8,8 @@ namespace limber::io {
 
 RunSettings read_run_settings(const YamlValue& entry) {
   entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "rho_inf", "max_steps", "max_wall",
-                    "max_order", "newton_matrix", "event_tolerance", "t_end", "sample_interval", "start"});
+                    "max_order", "newton_matrix", "event_tolerance", "t_end", "sample_interval", "start",
+                    "peak_window"});
   RunSettings settings;
   integrate::IntegratorOptions& options = settings.integrator;
   // Integrator and its settings (those of the other integrator are allowed and kept).
@@ -54,6 +55,7 @@ RunSettings read_run_settings(const YamlValue& entry) {
   if (const auto t_end = entry.find("t_end")) settings.t_end = t_end->as_non_negative();
   const auto interval = entry.find("sample_interval");
   if (interval) settings.sample_interval = interval->as_positive();
+  if (const auto window = entry.find("peak_window")) settings.peak_window = window->as_positive();
   // The number of samples, bounded (integrate::kMaxSamples): at the interval, else the end time.
   try {
     integrate::check_sample_times(0.0, settings.t_end, settings.sample_interval);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <mutex>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -146,6 +147,11 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
 
   EigenSolution solution;
   solution.shift = sigma;
+  // ARPACK keeps its iteration state in Fortran SAVE variables, and the BLAS guard below sets a
+  // process-wide thread count: one solve per process at a time (`limber select` reduces two
+  // mode sets at once, on two threads).
+  static std::mutex arpack_mutex;
+  const std::lock_guard arpack_lock(arpack_mutex);
   // CHOLMOD's dense kernels and ARPACK's orthogonalisation on one BLAS thread: on a loaded
   // machine extra threads spin more than they compute (docs/benchmarks.md).
   const SingleThreadedBlas one_blas_thread;

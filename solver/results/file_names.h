@@ -23,11 +23,12 @@ inline constexpr const char* kVtkSceneFileName = "scene.pvd";
 inline constexpr const char* kReportFolder = "report";
 inline constexpr const char* kReportIndexFileName = "index.html";
 
-// `limber select`: DIR/selection/{ranking,comparison,key_series}.csv.
+// `limber select`: DIR/selection/{ranking,comparison,key_series,event_peaks}.csv.
 inline constexpr const char* kSelectionFolder = "selection";
 inline constexpr const char* kRankingFileName = "ranking.csv";
 inline constexpr const char* kComparisonFileName = "comparison.csv";
 inline constexpr const char* kKeySeriesFileName = "key_series.csv";
+inline constexpr const char* kEventPeaksFileName = "event_peaks.csv";
 
 // `limber sweep`: DIR/sweep/{work_precision.csv,work_precision.json,errors.csv}; each point's
 // run in DIR/runs/<point>/ with the run's JSON summary, its log and the process record.

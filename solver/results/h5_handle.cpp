@@ -2,8 +2,14 @@
 
 namespace limber::results {
 
+std::recursive_mutex& hdf5_lock() {
+  static std::recursive_mutex lock;
+  return lock;
+}
+
 void H5Handle::reset() {
   if (id_ < 0) return;
+  const std::lock_guard lock(hdf5_lock());
   // Close with the call that matches the identifier's kind.
   switch (H5Iget_type(id_)) {
     case H5I_FILE: H5Fclose(id_); break;

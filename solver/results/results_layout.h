@@ -194,6 +194,28 @@ inline constexpr const char* kAngle = "angle";      // float64 [ne] [rad]
 inline constexpr const char* kRate = "rate";        // float64 [ne] [rad/s]
 }  // namespace events
 
+// /event_peaks (results/event_peaks.h; written at the end of a run that integrated): per
+// joint, the largest reaction in a window after each event, tracked at every integrator step.
+// nw windows, nj joints (model order). Attribute window [s]: the windows' length.
+inline constexpr const char* kEventPeaks = "/event_peaks";
+namespace event_peaks {
+inline constexpr const char* kWindowAttribute = "window";  // float64 [s]
+inline constexpr const char* kJoints = "joints";           // string [nj], joint names
+inline constexpr const char* kLabel = "window_label";      // string [nw] "start", "latch <name>"
+inline constexpr const char* kStart = "window_start";      // float64 [nw] [s]
+inline constexpr const char* kEnd = "window_end";          // float64 [nw] [s]
+inline constexpr const char* kStates = "window_states";    // int64 [nw], integrator states seen
+inline constexpr const char* kForce = "force";             // float64 [nw, nj] max |F| on body_j [N]
+inline constexpr const char* kForceTime = "force_time";    // float64 [nw, nj] [s], NaN: none seen
+inline constexpr const char* kTorque = "torque";           // float64 [nw, nj] max |T| [N m]
+inline constexpr const char* kTorqueTime = "torque_time";  // float64 [nw, nj] [s]
+// float64 [nw, nj, 3]: max |component| in the joint frame (as force_joint, torque_joint), times.
+inline constexpr const char* kForceComponent = "force_component";
+inline constexpr const char* kForceComponentTime = "force_component_time";
+inline constexpr const char* kTorqueComponent = "torque_component";
+inline constexpr const char* kTorqueComponentTime = "torque_component_time";
+}  // namespace event_peaks
+
 // /clearance (optional).
 inline constexpr const char* kClearance = "/clearance";
 namespace clearance {

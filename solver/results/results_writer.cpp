@@ -372,6 +372,7 @@ struct ResultsWriter::Impl {
 ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::string& title,
                              const std::string& case_file)
     : impl_(std::make_unique<Impl>()) {
+  const std::lock_guard lock(hdf5_lock());
   // Create the run directory.
   std::error_code error;
   std::filesystem::create_directories(directory, error);
@@ -417,6 +418,7 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
 }
 
 ResultsWriter::~ResultsWriter() {
+  const std::lock_guard lock(hdf5_lock());
   // Not finished (an exception passed by): keep the buffered samples; status stays "running".
   if (impl_ && !impl_->finished && impl_->file.valid()) {
     try {
@@ -428,12 +430,14 @@ ResultsWriter::~ResultsWriter() {
 }
 
 int ResultsWriter::add_rigid_body(const RigidBodySpec& body) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->begin_body(body.name, layout::body::kRigid, body.shapes);
   impl_->body_nmodes.push_back(-1);
   return static_cast<int>(impl_->body_series.size()) - 1;
 }
 
 int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
+  const std::lock_guard lock(hdf5_lock());
   // Consistent sizes: modes over all nodes, element indices inside the mesh.
   const Eigen::Index nn = body.nodes.rows();
   const Eigen::Index nm = body.mode_translations.cols();
@@ -489,6 +493,7 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
 }
 
 int ResultsWriter::add_joint(const JointSpec& joint) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   H5Handle group = create_named_group(impl_->group(impl_->joints_group, layout::kJoints),
                                       impl_->joint_links, joint.name);
@@ -519,6 +524,7 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
 }
 
 int ResultsWriter::add_driver(const std::string& name, const std::string& unit) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   H5Handle group =
       create_named_group(impl_->group(impl_->drivers_group, layout::kDrivers), impl_->driver_links, name);
@@ -529,6 +535,7 @@ int ResultsWriter::add_driver(const std::string& name, const std::string& unit) 
 }
 
 int ResultsWriter::add_energy(const std::string& name) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   // A dataset per energy, its name in its `name` attribute as for groups.
   const std::string link = new_link(impl_->energy_links, name);
@@ -540,6 +547,7 @@ int ResultsWriter::add_energy(const std::string& name) {
 }
 
 int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
+  const std::lock_guard lock(hdf5_lock());
   Impl& m = *impl_;
   m.demand_declaring();
   H5Handle group =
@@ -566,6 +574,7 @@ int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
 }
 
 void ResultsWriter::append_event(const HingeEventRecord& event) {
+  const std::lock_guard lock(hdf5_lock());
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished && m.events_group.valid());
   LIMBER_DEMAND(event.limit >= 0 && event.limit < static_cast<int>(m.limit_series.size()));
@@ -583,6 +592,7 @@ void ResultsWriter::append_event(const HingeEventRecord& event) {
 
 void ResultsWriter::set_redundant_equations(const std::vector<std::string>& names,
                                             const std::vector<std::string>& depends_on) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   LIMBER_DEMAND(names.size() == depends_on.size());
   H5Handle constraints =
@@ -593,6 +603,7 @@ void ResultsWriter::set_redundant_equations(const std::vector<std::string>& name
 }
 
 void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   LIMBER_DEMAND(!impl_->has_clearance);
   H5Handle group = create_group(impl_->file.get(), layout::kClearance);
@@ -605,16 +616,19 @@ void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
 }
 
 void ResultsWriter::set_integrator(const std::string& name) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   write_string_attribute(impl_->file.get(), layout::kIntegratorAttribute, name);
 }
 
 void ResultsWriter::set_axis_names(const std::array<std::string, 3>& names) {
+  const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
   write_string_attribute(impl_->file.get(), layout::kAxisNamesAttribute, names[0] + ", " + names[1] + ", " + names[2]);
 }
 
 void ResultsWriter::append_sample(const Sample& sample) {
+  const std::lock_guard lock(hdf5_lock());
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
   LIMBER_DEMAND(sample.bodies.size() == m.body_series.size());
@@ -693,12 +707,14 @@ void ResultsWriter::append_sample(const Sample& sample) {
 }
 
 void ResultsWriter::flush() {
+  const std::lock_guard lock(hdf5_lock());
   LIMBER_DEMAND(!impl_->finished);
   impl_->write_block();
 }
 
 void ResultsWriter::set_accuracy(double energy_relative, double local_error, double drift_relative,
                                  const std::string& warnings) {
+  const std::lock_guard lock(hdf5_lock());
   LIMBER_DEMAND(!impl_->finished);
   const hid_t root = impl_->file.get();
   write_doubles_attribute(root, layout::kAccuracyEnergyAttribute, &energy_relative, 1);
@@ -711,6 +727,7 @@ void ResultsWriter::set_singular_passages(const std::vector<double>& time,
                                           const std::vector<double>& ratio,
                                           const std::vector<std::string>& joints,
                                           const std::vector<double>& velocity_jump) {
+  const std::lock_guard lock(hdf5_lock());
   LIMBER_DEMAND(!impl_->finished);
   LIMBER_DEMAND(time.size() == ratio.size() && time.size() == joints.size() &&
                 time.size() == velocity_jump.size());
@@ -726,7 +743,51 @@ void ResultsWriter::set_singular_passages(const std::vector<double>& time,
                 velocity_jump.data());
 }
 
+void ResultsWriter::set_event_peaks(const EventPeaks& peaks) {
+  const std::lock_guard lock(hdf5_lock());
+  LIMBER_DEMAND(!impl_->finished);
+  LIMBER_DEMAND(H5Lexists(impl_->file.get(), layout::kEventPeaks, H5P_DEFAULT) == 0);
+  H5Handle group = create_group(impl_->file.get(), layout::kEventPeaks);
+  write_doubles_attribute(group.get(), layout::event_peaks::kWindowAttribute, &peaks.window, 1);
+  write_string_dataset(group.get(), layout::event_peaks::kJoints, peaks.joints);
+  // The window table, then [nw, nj] and [nw, nj, 3] tables row-major.
+  const std::size_t nw = peaks.windows.size(), nj = peaks.joints.size();
+  std::vector<std::string> labels;
+  std::vector<double> start, end;
+  std::vector<std::int64_t> states;
+  std::vector<std::vector<double>> scalars(4), vectors(4);
+  for (const PeakWindow& window : peaks.windows) {
+    LIMBER_DEMAND(window.joints.size() == nj);
+    labels.push_back(window.start.label);
+    start.push_back(window.start.t);
+    end.push_back(window.end);
+    states.push_back(window.states);
+    for (const JointPeak& joint : window.joints) {
+      const double scalar[4] = {joint.force, joint.force_time, joint.torque, joint.torque_time};
+      const Eigen::Vector3d* vector[4] = {&joint.force_component, &joint.force_component_time,
+                                          &joint.torque_component, &joint.torque_component_time};
+      for (std::size_t k = 0; k < 4; ++k) {
+        scalars[k].push_back(scalar[k]);
+        vectors[k].insert(vectors[k].end(), vector[k]->data(), vector[k]->data() + 3);
+      }
+    }
+  }
+  namespace ep = layout::event_peaks;
+  write_string_dataset(group.get(), ep::kLabel, labels);
+  write_dataset(group.get(), ep::kStart, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw}, start.data());
+  write_dataset(group.get(), ep::kEnd, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw}, end.data());
+  write_dataset(group.get(), ep::kStates, H5T_STD_I64LE, H5T_NATIVE_INT64, {nw}, states.data());
+  const char* scalar_names[] = {ep::kForce, ep::kForceTime, ep::kTorque, ep::kTorqueTime};
+  const char* vector_names[] = {ep::kForceComponent, ep::kForceComponentTime, ep::kTorqueComponent,
+                                ep::kTorqueComponentTime};
+  for (std::size_t k = 0; k < 4; ++k) {
+    write_dataset(group.get(), scalar_names[k], H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw, nj}, scalars[k].data());
+    write_dataset(group.get(), vector_names[k], H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw, nj, 3}, vectors[k].data());
+  }
+}
+
 void ResultsWriter::finish(RunStatus status, const std::string& message) {
+  const std::lock_guard lock(hdf5_lock());
   Impl& m = *impl_;
   LIMBER_DEMAND(!m.finished);
   const hid_t root = m.file.get();

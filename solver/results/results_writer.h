@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "results/beam_sections.h"
+#include "results/event_peaks.h"
 
 namespace limber::results {
 
@@ -247,6 +248,10 @@ class ResultsWriter {
   void set_singular_passages(const std::vector<double>& time, const std::vector<double>& ratio,
                              const std::vector<std::string>& joints,
                              const std::vector<double>& velocity_jump);
+
+  // The run's event peaks (results/event_peaks.h), at most once before finish(): /event_peaks
+  // (results_layout.h, event_peaks::). Every window holds peaks.joints.size() joints.
+  void set_event_peaks(const EventPeaks& peaks);
 
   // Writes the buffered samples, sets the root attributes status ("ok" / "ok_inaccurate" /
   // "failed" / "interrupted") and message, flushes and closes the file.

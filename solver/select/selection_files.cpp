@@ -54,7 +54,8 @@ void write_ranking_csv(const std::filesystem::path& file, const std::vector<Rank
 void write_comparison_csv(const std::filesystem::path& file, const std::vector<CandidateRun>& runs,
                           std::optional<std::size_t> chosen, const std::filesystem::path& root) {
   std::ofstream out = open_for_writing(file);
-  out << "set,description,modes,reduction_s,run_s,status,error_peak,error_rms,worst_quantity,directory,role\n";
+  out << "set,description,modes,reduction_s,run_s,status,error_peak,error_rms,worst_quantity,directory,role,"
+         "f_max_hz,step,steps_per_period,resolved,error_event,worst_event\n";
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const CandidateRun& run = runs[k];
     const std::string role = run.candidate.reference ? "reference" : (chosen && *chosen == k ? "chosen" : "");
@@ -64,7 +65,9 @@ void write_comparison_csv(const std::filesystem::path& file, const std::vector<C
         << csv_field(run.status()) << ','
         << number(run.error_peak) << ',' << number(run.error_rms) << ','
         << csv_field(run.worst_quantity) << ','
-        << csv_field(run.directory.lexically_relative(root).generic_string()) << ',' << role << '\n';
+        << csv_field(run.directory.lexically_relative(root).generic_string()) << ',' << role << ','
+        << number(run.step.f_max) << ',' << number(run.step.step) << ',' << number(run.step.steps_per_period) << ','
+        << (run.step.resolved ? 1 : 0) << ',' << number(run.peaks.error) << ',' << csv_field(run.peaks.worst) << '\n';
   }
   close(out, file);
 }
@@ -96,6 +99,27 @@ void write_key_series_csv(const std::filesystem::path& file, const std::vector<C
       for (const Eigen::VectorXd& values : series) out << ',' << number(values(i));
     }
     out << '\n';
+  }
+  close(out, file);
+}
+
+void write_peaks_csv(const std::filesystem::path& file, const std::vector<CandidateRun>& runs) {
+  std::ofstream out = open_for_writing(file);
+  out << "set,window,joint,start,reference_start,force,reference_force,force_error,force_time,reference_force_time,"
+         "torque,reference_torque,torque_error\n";
+  const auto reference = std::find_if(runs.begin(), runs.end(), [](const CandidateRun& r) { return r.candidate.reference; });
+  for (const CandidateRun& run : runs) {
+    if (!run.ok() || reference == runs.end()) continue;
+    // The reference against itself lists its own peaks (differences 0).
+    const PeakComparison peaks =
+        run.candidate.reference ? compare_peaks(run.summary.peaks, run.summary.peaks) : run.peaks;
+    for (const PeakDifference& r : peaks.rows) {
+      out << csv_field(run.candidate.name) << ',' << csv_field(r.window) << ',' << csv_field(r.joint) << ','
+          << number(r.start) << ',' << number(r.reference_start) << ',' << number(r.force) << ','
+          << number(r.reference_force) << ',' << number(r.force_error) << ',' << number(r.force_time) << ','
+          << number(r.reference_force_time) << ',' << number(r.torque) << ',' << number(r.reference_torque) << ','
+          << number(r.torque_error) << '\n';
+    }
   }
   close(out, file);
 }

@@ -1,8 +1,12 @@
 #include "select/selection_study.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -36,7 +40,8 @@ Eigen::MatrixXd stack(const std::vector<Eigen::VectorXd>& rows, Eigen::Index col
 }  // namespace
 
 CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
-                           const SettingsAdjustment& adjust, const std::filesystem::path& directory,
+                           const SettingsAdjustment& adjust, const StepPolicy& policy,
+                           const std::filesystem::path& directory,
                            const std::function<void(const integrate::Sample&)>& on_sample) {
   CandidateRun result;
   result.candidate = candidate;
@@ -56,7 +61,10 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   for (const multibody::Body& body : model.bodies) {
     if (body.flexible) result.modes += static_cast<int>(body.flexible->shapes.cols());
   }
-  const io::RunSettings settings = adjust ? adjust(result.mechanism.run) : result.mechanism.run;
+  io::RunSettings settings = adjust ? adjust(result.mechanism.run) : result.mechanism.run;
+  // The step that resolves the set's highest frequency (step_choice.h).
+  result.step = choose_step(highest_frequency(model), settings.integrator, policy);
+  settings.integrator = apply_step(settings.integrator, result.step);
   run::check_settings(settings);
 
   // Every sample's reactions on the flexible bodies and deflections, kept in memory.
@@ -102,6 +110,36 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   return result;
 }
 
+void run_parallel(std::size_t count, int workers, const std::function<void(std::size_t)>& job) {
+  if (workers <= 1 || count <= 1) {
+    for (std::size_t k = 0; k < count; ++k) job(k);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::mutex failure_mutex;
+  std::exception_ptr failure;
+  const auto worker = [&] {
+    for (;;) {
+      {
+        const std::lock_guard lock(failure_mutex);
+        if (failure) return;
+      }
+      const std::size_t k = next++;
+      if (k >= count) return;
+      try {
+        job(k);
+      } catch (...) {
+        const std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int w = 0; w < std::min<int>(workers, static_cast<int>(count)); ++w) threads.emplace_back(worker);
+  for (std::thread& thread : threads) thread.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& ranking,
                                         const CandidateRun& reference) {
   std::vector<KeyQuantity> keys;
@@ -137,6 +175,7 @@ void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity
   for (CandidateRun& run : runs) {
     if (run.candidate.reference || !run.ok()) continue;
     if (run.time.size() == 0) continue;
+    run.peaks = compare_peaks(run.summary.peaks, reference->summary.peaks);
     run.error_peak = run.error_rms = 0.0;
     double worst = -1.0;
     for (const KeyQuantity& key : keys) {
@@ -166,7 +205,9 @@ std::optional<std::size_t> choose_run(const std::vector<CandidateRun>& runs,
       continue;
     }
     // A set whose own accuracy check failed is never the answer.
-    if (run.candidate.reference || !run.summary.accurate() || !(run.error(norm) <= *target)) continue;
+    if (run.candidate.reference || !run.summary.accurate() || !run.step.resolved || !(run.error(norm) <= *target)) {
+      continue;
+    }
     if (!chosen || run.modes < runs[*chosen].modes ||
         (run.modes == runs[*chosen].modes && run.summary.wall_seconds < runs[*chosen].summary.wall_seconds)) {
       chosen = k;

@@ -22,15 +22,18 @@
 #include "io/mechanism_builder.h"
 #include "run/run_driver.h"
 #include "select/mode_set_candidates.h"
+#include "select/peak_comparison.h"
+#include "select/step_choice.h"
 #include "select/reaction_ranking.h"
 #include "results/results_layout.h"
 
 namespace limber::select {
 
-// How a set's difference to the reference is measured, per quantity x over the samples:
-// peak: max |x − x_ref| / max |x_ref|; rms: rms(x − x_ref) / rms(x_ref) (series_error.h, the
-// measure `limber sweep` uses too).
-enum class ErrorNorm { kPeak, kRms };
+// How a set's difference to the reference is measured: event: the largest relative difference
+// of its event peaks (peak_comparison.h); per quantity x over the samples, peak: max |x − x_ref|
+// / max |x_ref|; rms: rms(x − x_ref) / rms(x_ref) (series_error.h, the measure `limber sweep`
+// uses too).
+enum class ErrorNorm { kEvent, kPeak, kRms };
 
 // One mode set's run: what it cost and the series the comparison measures.
 struct CandidateRun {
@@ -41,6 +44,7 @@ struct CandidateRun {
   int modes = 0;                   // modes of all flexible bodies together
   double reduction_seconds = 0.0;  // wall time of their modal reductions [s]
   std::vector<std::string> notices;  // the reduction's, e.g. a static mode dropped as dependent
+  StepChoice step;                   // the step it ran at and whether it resolves its modes
   run::RunSummary summary;
   std::filesystem::path directory;   // holds its results.h5
   Eigen::VectorXd time;              // samples [s]
@@ -51,6 +55,7 @@ struct CandidateRun {
   double error_peak = std::numeric_limits<double>::quiet_NaN();
   double error_rms = std::numeric_limits<double>::quiet_NaN();
   std::string worst_quantity;      // the quantity of the larger of the two errors
+  PeakComparison peaks;            // its event peaks against the reference's
 
   bool ok() const { return summary.ok; }
   // "ok", "ok_inaccurate" (its own accuracy check failed) or "failed: <why>".
@@ -59,7 +64,9 @@ struct CandidateRun {
          : summary.accurate() ? results::layout::status::kOk
                               : results::layout::status::kInaccurate;
   }
-  double error(ErrorNorm norm) const { return norm == ErrorNorm::kPeak ? error_peak : error_rms; }
+  double error(ErrorNorm norm) const {
+    return norm == ErrorNorm::kEvent ? peaks.error : norm == ErrorNorm::kPeak ? error_peak : error_rms;
+  }
 };
 
 // Settings of every run: the case's, adjusted (e.g. by command-line options).
@@ -70,12 +77,19 @@ using SettingsAdjustment = std::function<io::RunSettings(const io::RunSettings&)
 struct SelectionInterrupted {};
 
 // Runs one set of `input` (which must hold a mechanism) into `directory` (created; locked while
-// written). `on_sample` sees every sample (progress; it may throw SelectionInterrupted). Throws InputError on bad
-// input; a numerical failure is in the returned summary. Any exception closes the results file
-// first ("interrupted" or "failed").
+// written), at the step `policy` chooses for its highest frequency (step_choice.h).
+// `on_sample` sees every sample
+// (progress; it may throw SelectionInterrupted). Throws InputError on bad input; a numerical
+// failure is in the returned summary. Any exception closes the results file first
+// ("interrupted" or "failed"). Runs of different sets may run on different threads at once.
 CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
-                           const SettingsAdjustment& adjust, const std::filesystem::path& directory,
+                           const SettingsAdjustment& adjust, const StepPolicy& policy,
+                           const std::filesystem::path& directory,
                            const std::function<void(const integrate::Sample&)>& on_sample = {});
+
+// Calls job(k) for k in [0, count) on `workers` threads (1: in order on this one). After the
+// first exception a job throws, no further job starts; it is rethrown once the running ones end.
+void run_parallel(std::size_t count, int workers, const std::function<void(std::size_t)>& job);
 
 // A series the comparison measures: a kept reaction component or a deflection probe's axis.
 struct KeyQuantity {
@@ -93,13 +107,14 @@ std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& rank
 Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity);
 
 // Fills error_peak, error_rms and worst_quantity of every finished run against the run marked
-// reference (largest error over `keys`), on their common samples.
+// reference (largest error over `keys`), on their common samples, and peaks (their event peaks
+// against the reference's).
 void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity>& keys);
 
-// The set to use: with a target, the finished, accurate (its own accuracy check passed)
-// non-reference set with the fewest modes (then the shortest run) whose error is at most
-// `target`, or none; without one, the procedure's answer
-// ("kept"). Returns an index into `runs`, or nullopt.
+// The set to use: with a target, the finished, accurate (its own accuracy check passed),
+// resolved (its step resolves its highest frequency) non-reference set with the fewest modes
+// (then the shortest run) whose error is at most `target`, or none; without one, the
+// procedure's answer ("kept"). Returns an index into `runs`, or nullopt.
 std::optional<std::size_t> choose_run(const std::vector<CandidateRun>& runs,
                                       std::optional<double> target, ErrorNorm norm);
 

@@ -57,6 +57,10 @@ RunSeries read_run_series(const std::filesystem::path& file) {
   }
   for (const std::string& link : root.members(layout::kBodies)) {
     const std::string body = layout::at(layout::kBodies, link);
+    const std::string frequencies = layout::at(layout::at(body, layout::body::kModes), layout::modes::kFrequenciesHz);
+    if (root.exists(frequencies)) {
+      for (const double f : all_rows(root, frequencies)) series.f_max_hz = std::max(series.f_max_hz, f);
+    }
     const std::string deflection = layout::at(body, layout::body::kDeflection);
     if (!root.exists(deflection)) continue;
     const std::string name = root.string_attribute(body, results::kNameAttribute, false, link);

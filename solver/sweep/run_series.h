@@ -23,6 +23,9 @@ struct RunSeries {
   // redundant_with, "R2.z" -> "R2 force z [N]", "R2.rot_x" -> "R2 torque x [N m]"): minimum-norm
   // values the dynamics leaves undetermined.
   std::vector<std::string> indeterminate;
+  // The highest natural frequency of the flexible bodies' modes (/bodies/<b>/modes/
+  // frequencies_hz) [Hz]; 0 without flexible bodies.
+  double f_max_hz = 0.0;
 };
 
 // Reads `file`. Throws InputError (naming the file) when it cannot be read as a results file.

@@ -117,6 +117,8 @@ SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_di
     row.message = error.what();
     return row;
   }
+  row.f_max_hz = run.f_max_hz;
+  if (point.step && run.f_max_hz > 0.0) row.steps_per_period = 1.0 / (*point.step * run.f_max_hz);
   row.error_peak = row.error_rms = 0.0;
   double worst = -1.0;
   for (const std::string& quantity : quantities) {
@@ -163,7 +165,7 @@ void write_table_csv(const std::filesystem::path& file, const std::vector<SweepR
   std::ofstream out = open_for_writing(file);
   out << "point,curve,integrator,rtol,step,modes,status,message,exit_code,wall_s,process_s,steps,rejected_steps,"
          "newton_iterations,jacobian_evaluations,residual_evaluations,peak_rss_mib,energy_relative,local_error,"
-         "drift_relative,error_peak,error_rms,worst_quantity,resumed,rank,role\n";
+         "drift_relative,error_peak,error_rms,worst_quantity,resumed,rank,role,f_max_hz,steps_per_period\n";
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const SweepRow& r = rows[k];
     out << csv_field(r.point.name()) << ',' << csv_field(r.point.curve()) << ',' << r.point.integrator << ','
@@ -174,7 +176,8 @@ void write_table_csv(const std::filesystem::path& file, const std::vector<SweepR
         << r.residual_evaluations << ',' << number(r.peak_rss_mib) << ',' << number(r.energy_relative) << ','
         << number(r.local_error) << ',' << number(r.drift_relative) << ',' << number(r.error_peak) << ','
         << number(r.error_rms) << ',' << csv_field(r.worst_quantity) << ',' << (r.resumed ? 1 : 0) << ','
-        << r.rank << ',' << (chosen && *chosen == k ? "chosen" : "") << '\n';
+        << r.rank << ',' << (chosen && *chosen == k ? "chosen" : "") << ',' << number(r.f_max_hz) << ','
+        << number(r.steps_per_period) << '\n';
   }
   out.close();
   if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
@@ -224,6 +227,8 @@ SweepRow row_from_json(const std::string& object) {
   row.error_peak = number("error_peak").value_or(kNaN);
   row.error_rms = number("error_rms").value_or(kNaN);
   row.worst_quantity = text("worst_quantity");
+  row.f_max_hz = number("f_max_hz").value_or(kNaN);
+  row.steps_per_period = number("steps_per_period").value_or(kNaN);
   row.resumed = object.find("\"resumed\": true") != std::string::npos;
   row.rank = static_cast<int>(number("rank").value_or(0));
   // "errors": [{"quantity": ..., "peak": ..., "rms": ...}, ...] up to the key after it.
@@ -259,7 +264,7 @@ std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size
         "\"rejected_steps\": {}, \"newton_iterations\": {}, \"jacobian_evaluations\": {}, "
         "\"residual_evaluations\": {}, \"peak_rss_mib\": {}, \"energy_relative\": {}, \"local_error\": {}, "
         "\"drift_relative\": {}, \"error_peak\": {}, \"error_rms\": {}, \"worst_quantity\": {}, \"errors\": {}, "
-        "\"resumed\": {}, \"rank\": {}, \"chosen\": {}}}",
+        "\"resumed\": {}, \"rank\": {}, \"chosen\": {}, \"f_max_hz\": {}, \"steps_per_period\": {}}}",
         k ? ", " : "", json_quote(r.point.name()), json_quote(r.point.curve()), json_quote(r.point.integrator),
         optional_value(r.point.rtol), optional_value(r.point.step),
         r.point.modes ? std::to_string(*r.point.modes) : "null", json_quote(r.status), json_quote(r.message),
@@ -267,7 +272,7 @@ std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size
         r.jacobian_evaluations, r.residual_evaluations, json_value(r.peak_rss_mib), json_value(r.energy_relative),
         json_value(r.local_error), json_value(r.drift_relative), json_value(r.error_peak), json_value(r.error_rms),
         json_quote(r.worst_quantity), errors, r.resumed ? "true" : "false", r.rank,
-        chosen && *chosen == k ? "true" : "false");
+        chosen && *chosen == k ? "true" : "false", json_value(r.f_max_hz), json_value(r.steps_per_period));
   }
   return text + "]";
 }

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "select/step_choice.h"
 #include "sweep/process_pool.h"
 #include "sweep/run_series.h"
 #include "sweep/sweep_grid.h"
@@ -53,6 +54,11 @@ struct SweepRow {
   std::vector<QuantityError> errors;  // finished runs only
   double error_peak = kNaN, error_rms = kNaN;  // largest over the quantities
   std::string worst_quantity;
+  // Generalized-α points: steps per period of the highest retained frequency, 1 / (h f_max);
+  // below select::kStepsPerPeriod the step does not resolve the modes (select/step_choice.h).
+  double f_max_hz = kNaN;
+  double steps_per_period = kNaN;
+  bool resolved() const { return !(steps_per_period < select::kStepsPerPeriod); }
 
   // Finished (ok or ok_inaccurate): its errors mean something.
   bool finished() const;  // status ok or ok_inaccurate

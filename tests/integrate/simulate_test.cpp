@@ -2,6 +2,7 @@
 // statuses (when and why, samples before kept) and input errors.
 #include "integrate/simulate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -83,6 +84,43 @@ TEST(Simulate, SamplesDoNotChangeTheSteps) {
     }
     EXPECT_LT(a.statistics.steps, 1001);
     EXPECT_NEAR(few.back().q(0), many.back().q(0), 1e-12);
+  }
+}
+
+TEST(Simulate, OnStepSeesTheStartAndEveryStepEndInOrder) {
+  // Both integrators: one call at the start, then one per accepted step (no events here), in
+  // ascending time, the last at the end time with the state the last sample delivers; every
+  // state satisfies the dynamics M v̇ + Gᵀλ = Q (the pendulum's, evaluated here) to the
+  // integrators' Newton tolerance.
+  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  for (IntegratorOptions options :
+       {IntegratorOptions::generalized_alpha(0.01, 0.8), IntegratorOptions::ida(1e-6, 1e-6)}) {
+    std::vector<double> times;
+    double worst_residual = 0.0;
+    Eigen::VectorXd last_q;
+    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                          const Eigen::VectorXd& lambda) {
+      times.push_back(t);
+      last_q = q;
+      Eigen::MatrixXd M, G;
+      Eigen::VectorXd Q;
+      pendulum.mass_matrix(t, q, M);
+      pendulum.generalized_forces(t, q, v, Q);
+      pendulum.constraint_jacobian_v(t, q, G);
+      worst_residual = std::max(worst_residual, (M * vdot + G.transpose() * lambda - Q).lpNorm<Eigen::Infinity>());
+    };
+    Sample last;
+    const auto result = simulate(pendulum, options, pendulum_start(pendulum), uniform_sample_times(0.0, 1.0, 0.1),
+                                 [&](const Sample& s) { last = s; });
+    ASSERT_TRUE(result.status.ok());
+    ASSERT_EQ(static_cast<long>(times.size()), result.statistics.steps + 1) << to_string(options.method);
+    EXPECT_EQ(times.front(), 0.0);
+    EXPECT_TRUE(std::is_sorted(times.begin(), times.end()));
+    EXPECT_NEAR(times.back(), 1.0, 1e-12);
+    EXPECT_LT((last_q - last.q).lpNorm<Eigen::Infinity>(), 1e-12) << to_string(options.method);
+    // |Q| ~ m g = 9.81 N: IDA's residual is held to its Newton tolerance (rtol 1e-6), gen-α's
+    // to 1e-8 relative; 1e-5 N bounds both.
+    EXPECT_LT(worst_residual, 1e-5) << to_string(options.method);
   }
 }
 

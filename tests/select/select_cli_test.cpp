@@ -3,6 +3,8 @@
 // bad options are input errors (exit 1) that name the option.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -18,7 +20,7 @@ TEST(SelectCli, JsonFilesAndTheChosenRun) {
   const auto dir = test::fresh_directory("select_cli");
   const test::CommandRun run =
       run_limber("select " + test::coarse_slider_crank_file() + " -o " + dir.string() +
-                 " --t-end 0.15 --max-single 2 --target 0.05 --json");
+                 " --t-end 0.15 --max-single 2 --target 0.05 --norm peak --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const test::JsonValue json = test::parse_json(run.out);
   EXPECT_EQ(json["status"].string(), "ok");
@@ -50,18 +52,48 @@ TEST(SelectCli, JsonFilesAndTheChosenRun) {
     }
   }
   EXPECT_NE(json["fragment"].string().find("flexible_bodies:\n  rod:\n    modes:\n"), std::string::npos);
+  // Every set at a step that resolves its highest frequency (20 steps per period, at most 8
+  // times shorter than the case's 1 ms), and its event peaks against the reference's: one
+  // window ("start"), every joint.
+  EXPECT_EQ(json["steps_per_period_needed"].number(), 20.0);
+  for (const test::JsonValue& row : comparison) {
+    const double step = row["step"].number(), f_max = row["f_max_hz"].number();
+    EXPECT_LE(step, 1e-3 * (1 + 1e-12)) << row["set"].string();
+    EXPECT_NEAR(row["steps_per_period"].number(), 1.0 / (step * f_max), 1e-9 * row["steps_per_period"].number());
+    EXPECT_EQ(std::get<bool>(row["resolved"].value), step * f_max * 20.0 <= 1.0 + 1e-9) << row["set"].string();
+    if (row["set"].string() == "reference") continue;
+    EXPECT_FALSE(row["event_peaks"].array().empty()) << row["set"].string();
+    double worst = 0.0;
+    for (const test::JsonValue& peak : row["event_peaks"].array()) {
+      EXPECT_EQ(peak["window"].string(), "start");
+      // Not compared (null) below 1 % of the window's largest.
+      if (std::holds_alternative<std::nullptr_t>(peak["force_error"].value)) continue;
+      const double error = std::abs(peak["force"].number() - peak["reference_force"].number()) /
+                           peak["reference_force"].number();
+      EXPECT_NEAR(peak["force_error"].number(), error, 1e-12);
+      worst = std::max(worst, error);
+    }
+    EXPECT_GE(row["error_event"].number(), worst);
+  }
+  // The reference at half its step: its peaks move by the reported change, measured.
+  const test::JsonValue& check = json["reference_check"];
+  EXPECT_EQ(check["half_step_status"].string(), "ok");
+  EXPECT_NEAR(check["half_step"].number(), 0.5 * check["step"].number(), 1e-15);
+  EXPECT_EQ(std::get<bool>(check["converged"].value), check["peak_change"].number() < 0.03);
 
   // Files: every set's results, the CSVs, the fragment, and the chosen run's results in DIR.
   for (const char* file : {"results.h5", "selected_modes.yaml", "selection/ranking.csv",
-                           "selection/comparison.csv", "selection/key_series.csv",
-                           "runs/normal/results.h5", "runs/reference/results.h5"}) {
+                           "selection/comparison.csv", "selection/key_series.csv", "selection/event_peaks.csv",
+                           "runs/normal/results.h5", "runs/reference/results.h5",
+                           "runs/reference_half_step/results.h5"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   }
   const std::string comparison_csv = test::read_text((dir / "selection/comparison.csv").string());
   EXPECT_EQ(comparison_csv.rfind("set,description,modes,reduction_s,run_s,status,error_peak,error_rms,"
-                                 "worst_quantity,directory,role\n", 0), 0u);
-  EXPECT_NE(comparison_csv.find(",reference\n"), std::string::npos);
-  EXPECT_NE(comparison_csv.find(",chosen\n"), std::string::npos);
+                                 "worst_quantity,directory,role,f_max_hz,step,steps_per_period,resolved,"
+                                 "error_event,worst_event\n", 0), 0u);
+  EXPECT_NE(comparison_csv.find(",reference,"), std::string::npos);
+  EXPECT_NE(comparison_csv.find(",chosen,"), std::string::npos);
   const std::string series = test::read_text((dir / "selection/key_series.csv").string());
   EXPECT_NE(series.find("normal|R3 force z on rod [N]"), std::string::npos);
   // A header and one row per sample (every 1 ms from 0 to 0.15 s).

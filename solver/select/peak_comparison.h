@@ -1,0 +1,49 @@
+// Event peaks of a run against a reference run's (docs/select.md, "Event peaks"): per joint and
+// window, the relative difference of the peak force and torque magnitudes (results/event_peaks.h,
+// tracked at every integrator step). Unlike the sample-by-sample measure (series_error.h), a
+// ringing that shifts in phase, or a latch-up a few milliseconds later, changes it only as much
+// as it changes the loads a structure is sized for.
+//
+// Windows are matched by label ("start", "latch latch_R3"): a window that one run has and the
+// other has not (an event that happened in one only) makes the comparison's error infinite and
+// is named. A joint whose reference peak is below kPeakFloor of the window's largest peak of
+// that kind (force or torque) is not compared: a relative difference of a load that is noise
+// beside the window's main loads means nothing.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "results/event_peaks.h"
+
+namespace limber::select {
+
+inline constexpr double kPeakFloor = 0.01;
+
+// One joint in one window.
+struct PeakDifference {
+  std::string window;  // label
+  std::string joint;
+  double start = 0.0, reference_start = 0.0;  // window start in the run and in the reference [s]
+  double force = 0.0, reference_force = 0.0;     // max |F| [N]
+  double torque = 0.0, reference_torque = 0.0;   // max |T| [N m]
+  double force_time = 0.0, reference_force_time = 0.0;  // when [s]
+  // |peak − reference| / reference; NaN when not compared (reference below kPeakFloor).
+  double force_error = std::numeric_limits<double>::quiet_NaN();
+  double torque_error = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct PeakComparison {
+  std::vector<PeakDifference> rows;   // windows of the reference in order, joints in model order
+  std::vector<std::string> unmatched; // window labels found in one run only
+  // Largest force or torque error over the rows (infinite when a window is unmatched; NaN
+  // when nothing was compared), and where: "R1 force, latch latch_R1".
+  double error = std::numeric_limits<double>::quiet_NaN();
+  std::string worst;
+};
+
+// `run` against `reference`. Joints are matched by name (both runs of one case have the same).
+PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference);
+
+}  // namespace limber::select

@@ -1,0 +1,113 @@
+// The step each mode set runs at (select/step_choice.h) and the event-peak comparison
+// (select/peak_comparison.h), against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "select/peak_comparison.h"
+#include "select/step_choice.h"
+
+namespace limber::select {
+namespace {
+
+TEST(StepChoice, ResolvesTheHighestFrequencyWithTwentyStepsPerPeriod) {
+  const integrate::IntegratorOptions galpha = integrate::IntegratorOptions::generalized_alpha(1e-3);
+  // 100 Hz needs h ≤ 1 / (20 · 100) = 0.5 ms: half the case's step.
+  StepChoice c = choose_step(100.0, galpha, {});
+  EXPECT_DOUBLE_EQ(c.needed, 5e-4);
+  EXPECT_DOUBLE_EQ(c.step, 5e-4);
+  EXPECT_DOUBLE_EQ(c.steps_per_period, 20.0);
+  EXPECT_TRUE(c.resolved);
+  EXPECT_DOUBLE_EQ(apply_step(galpha, c).step, 5e-4);
+  // 10 Hz: the case's step already resolves it and is never made longer.
+  c = choose_step(10.0, galpha, {});
+  EXPECT_DOUBLE_EQ(c.step, 1e-3);
+  EXPECT_DOUBLE_EQ(c.steps_per_period, 100.0);
+  EXPECT_TRUE(c.resolved);
+  // 10 kHz would need 5 µs: the floor, 1 ms / 8, leaves 0.8 steps per period, not resolved.
+  c = choose_step(1e4, galpha, {});
+  EXPECT_DOUBLE_EQ(c.step, 1.25e-4);
+  EXPECT_DOUBLE_EQ(c.steps_per_period, 0.8);
+  EXPECT_FALSE(c.resolved);
+  // Kept: the case's step, and 10 steps per period at 100 Hz is said to be short.
+  c = choose_step(100.0, galpha, {true, 8});
+  EXPECT_DOUBLE_EQ(c.step, 1e-3);
+  EXPECT_FALSE(c.resolved);
+  // Halved (the reference's check): half the chosen step, still resolved.
+  c = choose_step(100.0, galpha, {false, 8, 0.5});
+  EXPECT_DOUBLE_EQ(c.step, 2.5e-4);
+  EXPECT_DOUBLE_EQ(c.steps_per_period, 40.0);
+  EXPECT_TRUE(c.resolved);
+  // No flexible modes: nothing to resolve.
+  c = choose_step(0.0, galpha, {});
+  EXPECT_DOUBLE_EQ(c.step, 1e-3);
+  EXPECT_TRUE(c.resolved);
+  EXPECT_TRUE(std::isinf(c.steps_per_period));
+}
+
+TEST(StepChoice, BoundsIdasLargestStep) {
+  // IDA without a max_step in the case: 1 / (20 f_max), with no floor.
+  const integrate::IntegratorOptions ida = integrate::IntegratorOptions::ida(1e-6, 1e-8);
+  StepChoice c = choose_step(100.0, ida, {});
+  EXPECT_DOUBLE_EQ(c.step, 5e-4);
+  EXPECT_TRUE(c.resolved);
+  EXPECT_DOUBLE_EQ(apply_step(ida, c).max_step, 5e-4);
+  EXPECT_DOUBLE_EQ(apply_step(ida, c).step, ida.step);
+  c = choose_step(1e4, ida, {});
+  EXPECT_DOUBLE_EQ(c.step, 5e-6);
+  EXPECT_TRUE(c.resolved);
+  // With a max_step of 1 ms in the case, floored at 1 ms / 8 like generalized-α's step.
+  integrate::IntegratorOptions bounded = ida;
+  bounded.max_step = 1e-3;
+  c = choose_step(1e4, bounded, {});
+  EXPECT_DOUBLE_EQ(c.step, 1.25e-4);
+  EXPECT_FALSE(c.resolved);
+  // Kept: no max_step, so nothing says the modes are followed.
+  c = choose_step(100.0, ida, {true, 8});
+  EXPECT_EQ(c.step, 0.0);
+  EXPECT_FALSE(c.resolved);
+}
+
+// Peaks of one window "w" with two joints A, B.
+results::EventPeaks peaks(const std::string& label, double start, double fa, double ta, double fb, double tb) {
+  results::EventPeaks p;
+  p.window = 0.3;
+  p.joints = {"A", "B"};
+  results::PeakWindow w{{start, label}, start + 0.3, 100, std::vector<results::JointPeak>(2)};
+  w.joints[0].force = fa;
+  w.joints[0].torque = ta;
+  w.joints[1].force = fb;
+  w.joints[1].torque = tb;
+  p.windows.push_back(w);
+  return p;
+}
+
+TEST(PeakComparison, RelativeDifferencesPerJointAndWindowAndTheWorst) {
+  // A's force 110 against 100: 10 %; its torque 1.5 against 2: 25 %, the worst; B's force 0.5
+  // against 0.8 is below 1 % of the window's largest force (100): not compared.
+  const PeakComparison c =
+      compare_peaks(peaks("latch L", 2.01, 110.0, 1.5, 0.5, 4.0), peaks("latch L", 2.0, 100.0, 2.0, 0.8, 4.0));
+  ASSERT_EQ(c.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.rows[0].force_error, 0.1);
+  EXPECT_DOUBLE_EQ(c.rows[0].torque_error, 0.25);
+  EXPECT_TRUE(std::isnan(c.rows[1].force_error));
+  EXPECT_DOUBLE_EQ(c.rows[1].torque_error, 0.0);
+  EXPECT_DOUBLE_EQ(c.rows[0].start, 2.01);
+  EXPECT_DOUBLE_EQ(c.rows[0].reference_start, 2.0);
+  EXPECT_DOUBLE_EQ(c.error, 0.25);
+  EXPECT_EQ(c.worst, "A torque, latch L");
+  EXPECT_TRUE(c.unmatched.empty());
+}
+
+TEST(PeakComparison, AnEventInOneRunOnlyIsAnInfiniteError) {
+  const PeakComparison c =
+      compare_peaks(peaks("latch M", 2.0, 100.0, 2.0, 1.0, 1.0), peaks("latch L", 2.0, 100.0, 2.0, 1.0, 1.0));
+  EXPECT_TRUE(c.rows.empty());
+  EXPECT_EQ(c.unmatched, (std::vector<std::string>{"latch M", "latch L"}));
+  EXPECT_TRUE(std::isinf(c.error));
+  EXPECT_NE(c.worst.find("latch M"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace limber::select
