@@ -20,8 +20,10 @@ namespace {
 constexpr double kDifferenceStep = 1e-6;  // ε of the central differences [m, rad, kg^½ m]
 constexpr int kEquilibrationPasses = 8;   // Ruiz passes: row and column norms within ~1 %
 constexpr int kLineSearchHalvings = 12;
-// A load along a free motion is real, not rounding, above this fraction of the forces.
+// A load along a free motion is real, not rounding, above this fraction of the forces, and
+// when it holds this share of the residual (the rest converges, a real one stays).
 constexpr double kFreeLoadFraction = 1e-6;
+constexpr double kFreeLoadShare = 0.5;
 
 // The residual of the equilibrium at (q, λ): force part Q − G_iᵀλ (nv), then g_i (nc).
 class EquilibriumResidual {
@@ -239,7 +241,9 @@ StaticsResult solve_statics(const Model& model, const ConstraintPartition& parti
       const Eigen::VectorXd motion = m.head(nv);
       if (motion.cwiseAbs().maxCoeff() == 0.0) continue;  // a dependent multiplier, not a motion
       result.free_motions.push_back({describe_motion(model, residual.state(), motion), load});
-      if (load > allowed) {
+      // A real load along the motion is what is left of the residual once Newton has balanced
+      // the rest; a computed null vector's error δ only shows δ ‖F‖ of it.
+      if (load > allowed && load >= kFreeLoadShare * result.force_residual) {
         result.status = StaticsStatus::kFreeMotionUnderLoad;
         result.state = residual.state();
         result.lambda = lambda;
