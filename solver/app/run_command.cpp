@@ -25,6 +25,7 @@
 #include "results/results_writer.h"
 #include "run/run_driver.h"
 #include "results/results_layout.h"
+#include "results/shock_spectra_file.h"
 
 namespace limber::app {
 
@@ -194,6 +195,31 @@ void print_clearance(std::FILE* out, const run::ClearanceMinimum& clearance) {
   }
 }
 
+// Per acceleration probe: its largest whole-run SRS value over the axes, where, and its CSV file.
+void print_shock_spectra(std::FILE* out, const results::ShockSpectra& spectra, const std::string& directory) {
+  if (spectra.windows.empty()) return;
+  fmt::print(out, "shock response spectra: Q {:g}, {:g} to {:g} Hz in 1/6 octaves, {} windows (whole run, start, "
+                  "latches; {:g} s each)\n",
+             spectra.settings.q, spectra.frequency_hz.front(), spectra.frequency_hz.back(), spectra.windows.size(),
+             spectra.settings.window_seconds);
+  for (const results::ProbeSpectra& probe : spectra.probes) {
+    double peak = 0.0, frequency = 0.0;
+    int axis = 0;
+    for (int a = 0; a < 3; ++a) {
+      Eigen::Index j = 0;
+      const double value = probe.windows.front()[static_cast<std::size_t>(a)].maximax.maxCoeff(&j);
+      if (value > peak) {
+        peak = value;
+        frequency = spectra.frequency_hz[static_cast<std::size_t>(j)];
+        axis = a;
+      }
+    }
+    fmt::print(out, "  {}: peak {:.4g} g ({:.4g} m/s^2) at {:.4g} Hz, ground {}; {}\n", probe.probe,
+               peak / results::kStandardGravity, peak, frequency, "xyz"[axis],
+               (std::filesystem::path(directory) / results::shock_spectrum_csv_name(probe.probe)).string());
+  }
+}
+
 // {"energy_relative", "energy_residual", "energy_scale", "local_error", "drift_relative",
 // "warnings": [...]}.
 std::string json_accuracy(const run::AccuracyEstimate& a) {
@@ -331,6 +357,7 @@ int run_case(const RunOptions& options) {
                summary.max_position_violation, summary.max_velocity_violation);
     if (summary.ok) print_accuracy(text, summary.accuracy);
     print_clearance(text, summary.clearance);
+    if (summary.shock_spectra) print_shock_spectra(text, *summary.shock_spectra, directory.string());
   }
   fmt::print(text, "wrote {}\n", results_path);
   if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
@@ -362,7 +389,9 @@ Command add_run_command(CLI::App& app) {
       "their located events (each also printed as 'event: ...'), and the minimum clearance between\n"
       "bodies' surfaces (shell quads, shapes) when two or more have one: printed at the end,\n"
       "with a warning when it is negative (one body passes through another); flexible bodies\n"
-      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md).\n"
+      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md);\n"
+      "acceleration probes get their accelerations and shock response spectra, also in\n"
+      "DIR/srs_<probe>.csv (docs/shock-response-spectrum.md).\n"
       "Settings come from the case's 'run' section (docs/case-format.md); the options below\n"
       "override them.\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"

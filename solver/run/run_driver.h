@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "results/results_writer.h"
+#include "results/shock_spectra.h"
 #include "run/accuracy_check.h"
 #include "run/singular_passage.h"
 #include "run/prepared_start.h"
@@ -55,6 +57,9 @@ struct RunSummary {
   ClearanceMinimum clearance;
   // The run's own accuracy estimate (accuracy_check.h), from every sample written.
   AccuracyEstimate accuracy;
+  // The acceleration probes' shock response spectra over the samples written (none without
+  // probes or with fewer than 2 samples); also in results.h5 and DIR/srs_<probe>.csv.
+  std::optional<results::ShockSpectra> shock_spectra;
 
   // Reached t_end and its accuracy estimate holds.
   bool accurate() const { return ok && accuracy.accurate(); }
@@ -82,8 +87,16 @@ inline constexpr double kMinimumAtol = 1e-14;
 // interval not positive, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
-// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings or held
-// coordinates (before writing any sample).
+// The spectra of the probes' accelerations `histories` (one row per sample at `time`) over the
+// whole run and the windows from t = 0 and from each latch that locked (results/shock_spectra.h).
+results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
+                                          const Eigen::VectorXd& time,
+                                          const std::vector<results::ProbeHistory>& histories,
+                                          const std::vector<multibody::HingeEvent>& events);
+
+// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings (a shock-spectrum
+// band the sample interval does not support included) or held coordinates (before writing any
+// sample).
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
                          const io::RunSettings& settings, const RunHooks& hooks = {});
