@@ -11,8 +11,8 @@
 #include "multibody/clearance.h"
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
-#include "run/redundant_row_watch.h"
 #include "results/shock_spectra_file.h"
+#include "run/redundant_row_watch.h"
 #include "run/sample_record.h"
 #include "run/singular_passage.h"
 
