@@ -434,6 +434,7 @@ std::string run_section(const RunSection& s, bool interactive) {
   out += subsection(s, "clearance", "Clearance", clearance_note(run) + plots_of(s, PlotSection::kClearance));
   out += subsection(s, "deflection", "Deflection", plots_of(s, PlotSection::kDeflection));
   out += subsection(s, "stress", "Stress", stress_table(run) + plots_of(s, PlotSection::kStress));
+  out += subsection(s, "shock", "Acceleration probes and shock response spectra", plots_of(s, PlotSection::kShock));
   out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
   out += subsection(s, "animation", "Animation", media(s));
   if (!s.mode_images.empty()) out += subsection(s, "mode-shapes", "Mode shapes", mode_images(s));

@@ -26,6 +26,7 @@
 #include "results/results_writer.h"
 #include "run/run_driver.h"
 #include "results/results_layout.h"
+#include "results/shock_spectra_file.h"
 
 namespace limber::app {
 
@@ -192,6 +193,31 @@ void print_clearance(std::FILE* out, const run::ClearanceMinimum& clearance) {
   if (clearance.distance < 0.0) {
     fmt::print(stderr, "limber: warning: {} passes through {} at t = {:g} s (clearance {:.3g} m)\n",
                clearance.body_a, clearance.body_b, clearance.time, clearance.distance);
+  }
+}
+
+// Per acceleration probe: its largest whole-run SRS value over the axes, where, and its CSV file.
+void print_shock_spectra(std::FILE* out, const results::ShockSpectra& spectra, const std::string& directory) {
+  if (spectra.windows.empty()) return;
+  fmt::print(out, "shock response spectra: Q {:g}, {:g} to {:g} Hz in 1/6 octaves, {} windows (whole run, start, "
+                  "latches; {:g} s each)\n",
+             spectra.settings.q, spectra.frequency_hz.front(), spectra.frequency_hz.back(), spectra.windows.size(),
+             spectra.settings.window_seconds);
+  for (const results::ProbeSpectra& probe : spectra.probes) {
+    double peak = 0.0, frequency = 0.0;
+    int axis = 0;
+    for (int a = 0; a < 3; ++a) {
+      Eigen::Index j = 0;
+      const double value = probe.windows.front()[static_cast<std::size_t>(a)].maximax.maxCoeff(&j);
+      if (value > peak) {
+        peak = value;
+        frequency = spectra.frequency_hz[static_cast<std::size_t>(j)];
+        axis = a;
+      }
+    }
+    fmt::print(out, "  {}: peak {:.4g} g ({:.4g} m/s^2) at {:.4g} Hz, ground {}; {}\n", probe.probe,
+               peak / results::kStandardGravity, peak, frequency, "xyz"[axis],
+               (std::filesystem::path(directory) / results::shock_spectrum_csv_name(probe.probe)).string());
   }
 }
 
@@ -366,6 +392,7 @@ int run_case(const RunOptions& options) {
     if (summary.ok) print_accuracy(text, summary.accuracy);
     print_clearance(text, summary.clearance);
     print_event_peaks(text, summary.peaks);
+    if (summary.shock_spectra) print_shock_spectra(text, *summary.shock_spectra, directory.string());
   }
   fmt::print(text, "wrote {}\n", results_path);
   if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
@@ -397,7 +424,9 @@ Command add_run_command(CLI::App& app) {
       "their located events (each also printed as 'event: ...'), and the minimum clearance between\n"
       "bodies' surfaces (shell quads, shapes) when two or more have one: printed at the end,\n"
       "with a warning when it is negative (one body passes through another); flexible bodies\n"
-      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md).\n"
+      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md);\n"
+      "acceleration probes get their accelerations and shock response spectra, also in\n"
+      "DIR/srs_<probe>.csv (docs/shock-response-spectrum.md).\n"
       "With --start statics (or 'start: statics' in 'run') the run starts from the static\n"
       "equilibrium (docs/statics.md); joints with a 'release' time (hold-downs) leave the mechanism\n"
       "then, each release printed as 'released: ...'.\n"

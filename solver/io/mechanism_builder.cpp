@@ -200,6 +200,9 @@ void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBod
     builder.add_driver(driver.name, driver.joint, driver.coordinate, driver.motion, driver.where);
   }
   for (const ForceEntry& force : mechanism.forces) add_force(force, builder);
+  for (const AccelerationProbeEntry& probe : mechanism.acceleration_probes) {
+    builder.add_acceleration_probe(probe.spec, probe.where);
+  }
 }
 
 }  // namespace

@@ -15,7 +15,8 @@
 namespace limber::io {
 
 const std::initializer_list<std::string_view> kMechanismSections = {
-    "gravity", "bodies", "markers", "joints", "drivers", "forces", "assembly", "run"};
+    "gravity", "bodies", "markers", "joints", "drivers", "forces", "acceleration_probes", "shock_spectrum",
+    "assembly", "run"};
 
 namespace {
 
@@ -366,6 +367,19 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
     result.assembly = read_assembly(*assembly, result.bodies);
   }
   if (const auto run = root.find("run")) result.run = read_run_settings(*run);
+
+  // Outputs: acceleration probes and their spectra over the band the sampling supports.
+  const auto probes = root.find("acceleration_probes");
+  const auto spectrum = root.find("shock_spectrum");
+  if (spectrum && !probes) {
+    spectrum->fail("expected 'acceleration_probes' for 'shock_spectrum' (the spectra are the probes'), got none");
+  }
+  if (probes) {
+    for (const auto& [name, entry] : probes->entries()) check_name_text("acceleration probe", name, entry.key_where());
+    result.acceleration_probes = read_acceleration_probes(*probes, flexible);
+    result.run.shock_spectrum =
+        read_shock_spectrum(spectrum ? &*spectrum : nullptr, *probes, result.run.sample_interval);
+  }
   return result;
 }
 

@@ -11,6 +11,8 @@
 //   forces     rsda | tsda | point_load | latch | stop
 //   assembly   coordinates held during assembly, tolerance
 //   run        integrator and its settings, end time, sample interval
+//   acceleration_probes, shock_spectrum   points whose acceleration and its shock response
+//              spectra are recorded (acceleration_probe_reader.h)
 // No mode is computed here: the model is built from this data and the modes by
 // mechanism_builder.h. Every error is an InputError at file:line:col of the offending value
 // (expected/got).
@@ -25,10 +27,12 @@
 #include <vector>
 
 #include "integrate/integrator_options.h"
+#include "io/acceleration_probe_reader.h"
 #include "io/yaml_reader.h"
 #include "multibody/assembly.h"
 #include "multibody/model.h"
 #include "multibody/model_builder.h"
+#include "results/shock_spectra.h"
 
 namespace limber::io {
 
@@ -47,6 +51,8 @@ struct RunSettings {
   // and after each latch engagement: the first periods of a deployed panel's lowest modes
   // (0.3 s is 3 periods at 10 Hz), where latch-up peaks occur.
   double peak_window = 0.3;
+  // The acceleration probes' shock response spectra (case key shock_spectrum).
+  results::ShockSpectrumSettings shock_spectrum;
 };
 
 // Values, one per mode, whose length only the modes tell (checked when the model is built).
@@ -124,6 +130,7 @@ struct MechanismCase {
   std::vector<JointEntry> joints;
   std::vector<DriverEntry> drivers;
   std::vector<ForceEntry> forces;
+  std::vector<AccelerationProbeEntry> acceleration_probes;
   // Each flexible body -> the `flexible_bodies` entry it uses (several bodies may share one
   // entry, and with it one mode set).
   std::map<std::string, std::string> flexible_components;

@@ -167,6 +167,16 @@ struct HingeLimit {
 
 using ForceElement = std::variant<Rsda, Tsda, PointLoad, HingeLimit>;
 
+// Output only: a point whose absolute acceleration is recorded (acceleration_probe.h): p_B in
+// the frame of a rigid body, or FE node `node` of a flexible body (then p_B is the node's
+// undeformed position and the point follows the node's elastic motion).
+struct AccelerationProbe {
+  std::string name;
+  int body = 1;
+  Eigen::Vector3d p_B = Eigen::Vector3d::Zero();  // [m]
+  int node = -1;                                  // flexible bodies: node index; else −1
+};
+
 struct Model {
   std::vector<Body> bodies;  // bodies[0] is ground
   std::vector<Marker> markers;
@@ -174,6 +184,7 @@ struct Model {
   std::vector<Driver> drivers;
   std::vector<ForceElement> forces;
   std::vector<ConstraintEquation> equations;  // full set, joints then drivers
+  std::vector<AccelerationProbe> acceleration_probes;  // output only
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // [m/s²]
   int nq = 0, nv = 0;
 

@@ -312,6 +312,47 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
                                      spec.damping, theta0 + 0.5 * travel});
 }
 
+void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, const SourceLocation& where) {
+  check_name_text("acceleration probe", spec.name, where);
+  for (const AccelerationProbe& probe : model_.acceleration_probes) {
+    if (probe.name == spec.name) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected a unique name, got a duplicate", spec.name),
+                       where);
+    }
+  }
+  AccelerationProbe probe{spec.name, 0, spec.p_B, spec.node};
+  if (!spec.marker.empty()) {
+    // At a marker: its body, point and node.
+    const Marker& marker = model_.markers[static_cast<std::size_t>(marker_index(spec.marker, where))];
+    probe.body = marker.body;
+    probe.p_B = marker.p_BM;
+    probe.node = marker.node;
+  } else {
+    probe.body = model_.find_body(spec.body);
+    if (probe.body < 0) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected an existing body, got \"{}\"", spec.name,
+                                   spec.body), where);
+    }
+  }
+  const Body& body = model_.bodies[static_cast<std::size_t>(probe.body)];
+  if (body.kind == BodyKind::kGround) {
+    throw InputError(fmt::format("acceleration probe \"{}\": expected a moving body, got ground (it does not "
+                                 "accelerate)", spec.name), where);
+  }
+  if (body.kind == BodyKind::kFlexible) {
+    const int nodes = body.flexible->node_count();
+    if (probe.node < 0 || probe.node >= nodes) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected a node index in [0, {}) of flexible body "
+                                   "\"{}\", got {}", spec.name, nodes, body.name, probe.node), where);
+    }
+    probe.p_B = body.flexible->node_positions.col(probe.node);
+  } else if (probe.node >= 0) {
+    throw InputError(fmt::format("acceleration probe \"{}\": expected a point of rigid body \"{}\", got a node",
+                                 spec.name, body.name), where);
+  }
+  model_.acceleration_probes.push_back(probe);
+}
+
 void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
   const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
   if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0) || !(spec.free_length >= 0.0)) {

@@ -13,6 +13,7 @@
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/event_peaks.h"
+#include "results/shock_spectra_file.h"
 #include "run/redundant_row_watch.h"
 #include "run/sample_record.h"
 #include "run/singular_passage.h"
@@ -42,11 +43,26 @@ void check_settings(const io::RunSettings& settings) {
   }
 }
 
+results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
+                                          const Eigen::VectorXd& time,
+                                          const std::vector<results::ProbeHistory>& histories,
+                                          const std::vector<multibody::HingeEvent>& events) {
+  std::vector<results::LatchTime> latches;
+  for (const multibody::HingeEvent& event : events) {
+    const auto& limit = std::get<multibody::HingeLimit>(model.forces[static_cast<std::size_t>(event.force)]);
+    if (limit.kind == multibody::HingeLimitKind::kLatch && event.engaged) latches.push_back({limit.name, event.t});
+  }
+  return results::shock_spectra(time, settings.sample_interval, histories, latches, settings.shock_spectrum);
+}
+
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
                          const io::RunSettings& settings, const RunHooks& hooks) {
   const auto wall_start = std::chrono::steady_clock::now();
   check_settings(settings);
+  // The spectra's band, before anything is written.
+  const bool probes = !model.acceleration_probes.empty();
+  if (probes) results::shock_frequency_grid(settings.shock_spectrum, settings.sample_interval);
   RunSummary summary;
   summary.integrator = integrate::to_string(settings.integrator.method);
   summary.t_end = settings.t_end;
@@ -167,6 +183,9 @@ RunSummary run_mechanism(const multibody::Model& model,
   // Re-made at each release: the rank it watches is that of the joints that remain.
   std::optional<SingularPassageMonitor> singular;
   singular.emplace(model, static_cast<int>(start.partition.independent.size()));
+  // The probes' accelerations, kept for their spectra.
+  std::vector<double> probe_times;
+  std::vector<std::vector<Eigen::Vector3d>> probe_rows;
   const auto report_singular = [&] {
     summary.singular_passages.push_back(singular->last());
     if (hooks.on_warning) hooks.on_warning(singular->last().message());
@@ -183,6 +202,10 @@ RunSummary run_mechanism(const multibody::Model& model,
     if (singular->add({sample.t, sample.q, sample.v})) report_singular();
     if (hooks.writer) hooks.writer->append_sample(record);
     accuracy.add(record);
+    if (probes) {
+      probe_times.push_back(sample.t);
+      probe_rows.push_back(record.probe_accelerations);
+    }
     summary.t_reached = sample.t;
     summary.max_position_violation =
         std::max(summary.max_position_violation, record.position_violation);
@@ -238,6 +261,23 @@ RunSummary run_mechanism(const multibody::Model& model,
   // A change of branch at a singular passage is an impulse no force gave: not accurate.
   for (const SingularPassage& passage : summary.singular_passages) {
     if (passage.changed_branch()) summary.accuracy.warnings.push_back(passage.message());
+  }
+  // The probes' shock response spectra over the samples written.
+  if (probes && probe_times.size() >= 2) {
+    const auto ns = static_cast<Eigen::Index>(probe_times.size());
+    std::vector<results::ProbeHistory> histories;
+    for (std::size_t p = 0; p < model.acceleration_probes.size(); ++p) {
+      results::ProbeHistory history{model.acceleration_probes[p].name, {}};
+      history.acceleration.resize(ns, 3);
+      for (Eigen::Index k = 0; k < ns; ++k) history.acceleration.row(k) = probe_rows[static_cast<std::size_t>(k)][p].transpose();
+      histories.push_back(std::move(history));
+    }
+    summary.shock_spectra = probe_shock_spectra(
+        model, settings, Eigen::Map<const Eigen::VectorXd>(probe_times.data(), ns), histories, summary.events);
+    if (hooks.writer) {
+      hooks.writer->set_shock_spectra(*summary.shock_spectra);
+      results::write_shock_spectra_csv(hooks.writer->path().parent_path(), *summary.shock_spectra);
+    }
   }
   if (hooks.writer) {
     std::string warnings;

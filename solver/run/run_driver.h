@@ -26,6 +26,7 @@
 #include "multibody/model.h"
 #include "multibody/statics.h"
 #include "results/results_writer.h"
+#include "results/shock_spectra.h"
 #include "run/accuracy_check.h"
 #include "run/singular_passage.h"
 #include "run/prepared_start.h"
@@ -76,6 +77,9 @@ struct RunSummary {
   // Per joint, the largest reactions after the start and each latch engagement, tracked at
   // every integrator step (event_peaks.h); empty when the run did not integrate.
   results::EventPeaks peaks;
+  // The acceleration probes' shock response spectra over the samples written (none without
+  // probes or with fewer than 2 samples); also in results.h5 and DIR/srs_<probe>.csv.
+  std::optional<results::ShockSpectra> shock_spectra;
 
   // Reached t_end and its accuracy estimate holds.
   bool accurate() const { return ok && accuracy.accurate(); }
@@ -103,8 +107,16 @@ inline constexpr double kMinimumAtol = 1e-14;
 // interval or peak window not positive, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
-// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings or held
-// coordinates (before writing any sample).
+// The spectra of the probes' accelerations `histories` (one row per sample at `time`) over the
+// whole run and the windows from t = 0 and from each latch that locked (results/shock_spectra.h).
+results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
+                                          const Eigen::VectorXd& time,
+                                          const std::vector<results::ProbeHistory>& histories,
+                                          const std::vector<multibody::HingeEvent>& events);
+
+// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings (a shock-spectrum
+// band the sample interval does not support included) or held coordinates (before writing any
+// sample).
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
                          const io::RunSettings& settings, const RunHooks& hooks = {});
