@@ -175,8 +175,7 @@ std::vector<std::string> read_bulk_data(const YamlValue& value, fe::FeModelBuild
       options.unsupported_is_error = unsupported->as_choice({"error", "warn"}) == "error";
     }
   }
-  const std::filesystem::path path =
-      std::filesystem::path(file.where().file).parent_path() / file.as_string();
+  const std::filesystem::path path = file.as_existing_file("a bulk-data file");
   const bulkdata::Deck deck = bulkdata::read_deck(path.string(), file.where());
   return bulkdata::add_deck(deck, options, builder);
 }

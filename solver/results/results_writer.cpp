@@ -3,6 +3,7 @@
 #include <array>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "results/directory_lock.h"
 #include "results/h5_handle.h"
 #include "results/h5_write.h"
@@ -29,10 +30,16 @@ H5Handle checked(hid_t id, const char* what) {
   return H5Handle(id);
 }
 
+// The longest text of a string attribute, in bytes: an attribute holds at most 64 KiB in the
+// 1.8 file format. The case's names and title are shorter (core/names.h, io/case_reader.cpp);
+// longer text (a run's message, which may quote many names) is cut, ending "… (N bytes)".
+constexpr std::size_t kMaxAttributeText = 16384;
+
 // A fixed-length, null-padded string attribute (replacing one of the same name: status is
 // rewritten at finish).
 void write_string_attribute(hid_t object, const char* name, const std::string& value) {
-  check(try_write_string_attribute(object, name, value) ? 0 : -1, "write a string attribute");
+  check(try_write_string_attribute(object, name, abbreviated(value, kMaxAttributeText)) ? 0 : -1,
+        "write a string attribute");
 }
 
 void write_int_attribute(hid_t object, const char* name, int value) {
@@ -133,7 +140,9 @@ struct StressSeries {
 }  // namespace
 
 struct ResultsWriter::Impl {
-  DirectoryLock lock;  // first member: released after the file is closed
+  // HDF5 prints no error stack while the writer lives: its failures are exceptions (check).
+  SilentHdf5Errors silent;
+  DirectoryLock lock;  // released after the file is closed
   std::filesystem::path path;
   H5Handle file;
   H5Handle bodies_group;
@@ -381,7 +390,6 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
 
   // Create the file in the 1.8-compatible format: no "open for writing" flag survives a crash.
   {
-    SilentHdf5Errors silent;
     H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
     H5Pset_libver_bounds(access.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18);
     impl_->file = H5Handle(

@@ -340,6 +340,24 @@ TEST(CaseReaderErrors, ImpossibleModeRequests) {
                        "expected one of ux, uy, uz, rx, ry, rz, all for 'dofs[0]', got 'uw'"));
 }
 
+// Text that results.h5 and modes.h5 keep in HDF5 attributes (64 KiB at most each) is bounded
+// on input: a 70 000-byte title once ended `limber run` as "internal error: results.h5: HDF5
+// failed to write a string attribute" (issue 31).
+TEST(CaseReaderErrors, TitlesAndNamesHaveALimit) {
+  const std::string longest = "title: '" + std::string(1024, 't') + "'\n" + rod_case(kGoodBeam);
+  EXPECT_EQ(read_case_text(longest, "test.yaml").title.size(), 1024u);
+  const std::string title = "title: '" + std::string(70000, 't') + "'\n" + rod_case(kGoodBeam);
+  EXPECT_TRUE(fails_at(title, location_of(title, "'ttt"),
+                       "expected a title of at most 1024 bytes, got '" + std::string(60, 't') +
+                           "… (70000 bytes)'"));
+  // A name: at most 256 bytes (core/names.h).
+  std::string name = rod_case(kGoodBeam);
+  name.replace(name.find("  rod:"), 6, "  " + std::string(257, 'r') + ":");
+  EXPECT_TRUE(fails_at(name, location_of(name, "rrr"),
+                       "flexible body name: expected at most 256 bytes, got \"" + std::string(60, 'r') +
+                           "… (257 bytes)\""));
+}
+
 TEST(CaseReaderErrors, EmptyAndMalformedFiles) {
   EXPECT_TRUE(fails_at("", "test.yaml", "expected a case"));
   const std::string syntax = "title: x\nmaterials: {steel: {E: 1\n";
@@ -406,6 +424,15 @@ TEST_F(CaseBase, ErrorsPointIntoTheFileThatHasThem) {
   }
   // A missing base, and a base that has a base itself.
   EXPECT_THROW(read_case_file(write("missing.yaml", "base: nowhere.yaml\n")), InputError);
+  // A name too long for the file system: at the value, not a filesystem exception (issue 31).
+  const std::string long_name = write("long.yaml", "title: long\nbase: " + std::string(3000, 'b') + "\n");
+  try {
+    read_case_file(long_name);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), long_name + ":2:7: expected a case file for 'base', got '" +
+                                             std::string(60, 'b') + "… (3000 bytes)' (file name too long)");
+  }
   write("chained.yaml", "base: base.yaml\n");
   EXPECT_THROW(read_case_file(write("twice.yaml", "base: chained.yaml\n")), InputError);
 }
