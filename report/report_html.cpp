@@ -3,6 +3,7 @@
 #include "hinge_summary.h"
 #include "html.h"
 #include "selection_html.h"
+#include "sizing_loads.h"
 #include "stress_summary.h"
 #include "sweep_html.h"
 #include "results/results_layout.h"
@@ -464,6 +465,8 @@ std::string report_html(const ReportContent& content) {
   if (!content.comparisons.empty()) out += "<li><a href=\"#comparison\">Comparison</a></li>\n";
   out += "</ul></nav>\n";
 
+  // What a structures engineer sizes from, before the runs' details.
+  out += sizing_loads_section(content.runs);
   for (const RunSection& s : content.runs) out += run_section(s, content.interactive.has_value());
 
   // Several runs: one reaction component overlaid (seed paper Figs. 6 and 10).

@@ -339,6 +339,12 @@ RunData read_run_data(const std::filesystem::path& directory) {
       run.solver_attributes.push_back(std::move(attribute));
     }
   }
+  // Event peaks (optional; a malformed group is a note).
+  try {
+    run.event_peaks = results::read_event_peaks(run.results.file);
+  } catch (const InputError& error) {
+    run.notes.push_back(std::string("event peaks not shown: ") + error.what());
+  }
   // Recovered stresses (optional; a malformed group is a note).
   try {
     run.stresses = render::read_stress_tracks(run.results);

@@ -12,6 +12,7 @@
 #include "shock_data.h"
 #include "stress_reader.h"
 #include "sweep_data.h"
+#include "results/event_peaks.h"
 #include "results/results_layout.h"
 
 #include <Eigen/Core>
@@ -96,6 +97,7 @@ struct RunData {
   std::vector<DeflectionProbe> deflections;
   std::vector<AccelerationProbeTrack> acceleration_probes;  // absolute, ground axes [m/s²]
   std::optional<ShockSpectraData> shock_spectra;            // the probes' SRS per window
+  results::EventPeaks event_peaks;      // per joint, the peaks after each event (may be empty)
   std::vector<Series> energies;         // [J]
   std::vector<HingeLimitTrack> hinge_limits;  // in the model's order
   std::vector<HingeEventRow> events;

@@ -24,6 +24,9 @@ constexpr int kLineSearchHalvings = 12;
 // when it holds this share of the residual (the rest converges, a real one stays).
 constexpr double kFreeLoadFraction = 1e-6;
 constexpr double kFreeLoadShare = 0.5;
+// Below this fraction of σ_max a singular value is zero to rounding (the differences' noise,
+// ~1e-10 of an entry, equilibrated), however the loads push: a motion with no stiffness.
+constexpr double kZeroStiffness = 1e-13;
 
 // The residual of the equilibrium at (q, λ): force part Q − G_iᵀλ (nv), then g_i (nc).
 class EquilibriumResidual {
@@ -229,10 +232,13 @@ StaticsResult solve_statics(const Model& model, const ConstraintPartition& parti
     const Eigen::VectorXd F = stacked(force);
     const Eigen::VectorXd b = -(D_r.asDiagonal() * F);
 
-    // Free motions: what load acts along each (the left vector's generalized force).
+    // Free motions: what load acts along each (the left vector's generalized force). A loaded
+    // one whose singular value is not zero to rounding is a soft direction: solved along.
     result.free_motions.clear();
     const double allowed = kFreeLoadFraction * result.force_scale;
+    std::vector<bool> solve_along(static_cast<std::size_t>(sigma.size()), false);
     for (Eigen::Index i = 0; i < sigma.size(); ++i) {
+      solve_along[static_cast<std::size_t>(i)] = sigma(i) > cut;
       if (sigma(i) > cut) continue;
       const Eigen::VectorXd w = D_r.asDiagonal() * svd.matrixU().col(i);
       const Eigen::VectorXd m = D_c.asDiagonal() * svd.matrixV().col(i);
@@ -240,10 +246,15 @@ StaticsResult solve_statics(const Model& model, const ConstraintPartition& parti
       const double load = w_scale > 0.0 ? std::abs(w.dot(F)) / w_scale : 0.0;
       const Eigen::VectorXd motion = m.head(nv);
       if (motion.cwiseAbs().maxCoeff() == 0.0) continue;  // a dependent multiplier, not a motion
-      result.free_motions.push_back({describe_motion(model, residual.state(), motion), load});
       // A real load along the motion is what is left of the residual once Newton has balanced
       // the rest; a computed null vector's error δ only shows δ ‖F‖ of it.
-      if (load > allowed && load >= kFreeLoadShare * result.force_residual) {
+      const bool loaded = load > allowed && load >= kFreeLoadShare * result.force_residual;
+      if (loaded && sigma(i) > kZeroStiffness * sigma(0)) {
+        solve_along[static_cast<std::size_t>(i)] = true;
+        continue;
+      }
+      result.free_motions.push_back({describe_motion(model, residual.state(), motion), load});
+      if (loaded) {
         result.status = StaticsStatus::kFreeMotionUnderLoad;
         result.state = residual.state();
         result.lambda = lambda;
@@ -273,7 +284,7 @@ StaticsResult solve_statics(const Model& model, const ConstraintPartition& parti
     // The minimum-norm Newton step: free motions stay where they are.
     Eigen::VectorXd y = Eigen::VectorXd::Zero(nv + nc);
     for (Eigen::Index i = 0; i < sigma.size(); ++i) {
-      if (sigma(i) > cut) y += svd.matrixV().col(i) * (svd.matrixU().col(i).dot(b) / sigma(i));
+      if (solve_along[static_cast<std::size_t>(i)]) y += svd.matrixV().col(i) * (svd.matrixU().col(i).dot(b) / sigma(i));
     }
     const Eigen::VectorXd step = D_c.asDiagonal() * y;
 

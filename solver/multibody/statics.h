@@ -16,8 +16,9 @@
 // (Ruiz 2001, "A scaling algorithm to equilibrate both rows and columns norms in matrices") and
 // solved by a truncated SVD: motions with singular value ≤ kFreeMotionThreshold σ_max are
 // left where they are (the minimum-norm step), which is right when no load acts along them.
-// A load that does act along one (a slider pushed with nothing to push against) has no
-// equilibrium: the solve fails with the motion named, body by body.
+// One that the loads do push along is solved along when its singular value is above rounding
+// (a soft direction: ≥ 1e-13 σ_max); at rounding (a slider pushed with nothing to push
+// against) there is no equilibrium: the solve fails with the motion named, body by body.
 #pragma once
 
 #include <string>
