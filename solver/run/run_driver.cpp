@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <chrono>
+#include <optional>
 #include <set>
 
 #include "core/error.h"
@@ -36,8 +37,8 @@ void check_settings(const io::RunSettings& settings) {
     }
   }
   integrate::check_sample_times(0.0, settings.t_end, settings.sample_interval);
-  if (!(settings.peak_window > 0.0)) {
-    throw InputError(fmt::format("expected a peak window > 0 s, got {:g}", settings.peak_window));
+  if (!(settings.peak_window >= 0.0)) {
+    throw InputError(fmt::format("expected a peak window >= 0 s (0: none), got {:g}", settings.peak_window));
   }
 }
 
@@ -138,18 +139,21 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (hooks.on_event) hooks.on_event(event);
     }
   };
-  // Event peaks at every integrator step (event_peaks.h), in windows from each of
-  // window_starts (t = 0: the release of the start; hold-downs released at a set time add
+  // Event peaks at every integrator step when asked for (event_peaks.h), in windows from each
+  // of window_starts (t = 0: the release of the start; hold-downs released at a set time add
   // theirs here) and from each latch engagement as the integrator locates it.
   const std::vector<results::WindowStart> window_starts = {{0.0, "start"}};
-  EventPeakTracker peaks(model, system.partition(), system.engaged(), settings.peak_window);
-  for (const results::WindowStart& window_start : window_starts) peaks.open(window_start);
+  std::optional<EventPeakTracker> peaks;
   std::size_t events_seen = 0;
-  options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
-                        const Eigen::VectorXd&) {
-    for (; events_seen < system.events().size(); ++events_seen) peaks.on_event(system.events()[events_seen]);
-    peaks.observe(t, q, v, vdot);
-  };
+  if (settings.peak_window > 0.0) {
+    peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
+    for (const results::WindowStart& window_start : window_starts) peaks->open(window_start);
+    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                          const Eigen::VectorXd&) {
+      for (; events_seen < system.events().size(); ++events_seen) peaks->on_event(system.events()[events_seen]);
+      peaks->observe(t, q, v, vdot);
+    };
+  }
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
   summary.clearance.checked = !clearance_pairs.empty();
   AccuracyMonitor accuracy;
@@ -201,7 +205,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);
-  summary.peaks = peaks.peaks();
+  if (peaks) summary.peaks = peaks->peaks();
   // A body outside the linear range makes the linear floating-frame answer unphysical however
   // accurately it was integrated: the run is not "ok" either.
   for (const std::string& warning : summary.warnings) {
@@ -225,7 +229,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       passage_jump.push_back(passage.velocity_jump);
     }
     hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints, passage_jump);
-    hooks.writer->set_event_peaks(summary.peaks);
+    if (peaks) hooks.writer->set_event_peaks(summary.peaks);
   }
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);

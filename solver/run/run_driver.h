@@ -56,7 +56,8 @@ struct RunSummary {
   // The run's own accuracy estimate (accuracy_check.h), from every sample written.
   AccuracyEstimate accuracy;
   // Per joint, the largest reactions after the start and each latch engagement, tracked at
-  // every integrator step (event_peaks.h); empty when the run did not integrate.
+  // every integrator step (event_peaks.h); empty when not asked for (RunSettings::peak_window
+  // 0) or the run did not integrate.
   results::EventPeaks peaks;
 
   // Reached t_end and its accuracy estimate holds.
@@ -82,7 +83,7 @@ inline constexpr double kMinimumRtol = 1e-11;
 inline constexpr double kMinimumAtol = 1e-14;
 
 // Throws InputError when the settings cannot run (integrator options out of range, sample
-// interval or peak window not positive, IDA tolerances below kMinimumRtol / kMinimumAtol).
+// interval not positive, peak window negative, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
 // Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings or held
