@@ -356,7 +356,8 @@ std::string write_choice(std::FILE* text, const SelectOptions& options, const st
   return fragment;
 }
 
-int select_case(const SelectOptions& options) {
+// Throws InputError for an option out of range.
+void check_options(const SelectOptions& options) {
   if (!(options.keep > 0.0 && options.keep <= 1.0)) {
     throw InputError(fmt::format("expected --keep in (0, 1], got {:g}", options.keep));
   }
@@ -371,6 +372,10 @@ int select_case(const SelectOptions& options) {
     throw InputError(fmt::format("expected --max-refinement >= 1, got {}", options.max_refinement));
   }
   if (options.jobs < 1) throw InputError(fmt::format("expected --jobs >= 1, got {}", options.jobs));
+}
+
+int select_case(const SelectOptions& options) {
+  check_options(options);
   const auto shared_input = std::make_shared<const io::Case>(io::read_case_file(options.case_file));
   const io::Case& input = *shared_input;
   if (!input.mechanism || input.mechanism->flexible_components.empty()) {
