@@ -284,7 +284,7 @@ std::string refusal(const select::CandidateRun& reference, int max_refinement, c
                                                  fmt::join(reference.summary.accuracy.warnings, "; "))
                                    : "failed: " + reference.summary.message;
   return fmt::format(
-      "the reference set ({} modes, f_max {:.0f} Hz, step {:.3g} s: {} steps per period) {}, so differences to it "
+      "the reference set ({} modes, f_max {:.0f} Hz, step {:.3g} s, steps per period: {}) {}, so differences to it "
       "mean nothing; run select with a shorter step (--max-refinement {} allows one {} times shorter than the "
       "case's, or --step) or fewer reference modes (--reference-normal); its run is in {}",
       reference.modes, reference.step.f_max, reference.step.step, resolution(reference.step), why, 2 * max_refinement,
