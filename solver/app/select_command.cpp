@@ -232,7 +232,7 @@ struct SetRunner {
   void print_outcome(const select::CandidateRun& run, const std::string& name = "") {
     std::string lines;
     for (const std::string& notice : run.notices) lines += fmt::format("      notice: {}\n", notice);
-    lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, step {:.3g} s ({} steps per period), reduction {:.3f} s, "
+    lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, step {:.3g} s, steps per period {}, reduction {:.3f} s, "
                          "run {:.3f} s{}\n",
                          name.empty() ? "" : name + ": ", run.modes, run.step.f_max, run.step.step,
                          resolution(run.step), run.reduction_seconds, run.summary.wall_seconds,
