@@ -88,7 +88,8 @@ TEST(Simulate, SamplesDoNotChangeTheSteps) {
 }
 
 TEST(Simulate, OnStepSeesTheStartAndEveryStepEndInOrder) {
-  // Both integrators: one call at the start, then one per accepted step (no events here), in
+  // Both integrators: one call at the start, then one per accepted step (no events, so no step
+  // shorter than generalized-α's 1 % that on_step leaves out), in
   // ascending time, the last at the end time with the state the last sample delivers; every
   // state satisfies the dynamics M v̇ + Gᵀλ = Q (the pendulum's, evaluated here) to the
   // integrators' Newton tolerance.
