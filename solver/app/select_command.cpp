@@ -232,7 +232,7 @@ struct SetRunner {
   void print_outcome(const select::CandidateRun& run, const std::string& name = "") {
     std::string lines;
     for (const std::string& notice : run.notices) lines += fmt::format("      notice: {}\n", notice);
-    lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, step {:.3g} s ({} steps per period), reduction {:.3f} s, "
+    lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, step {:.3g} s, steps per period {}, reduction {:.3f} s, "
                          "run {:.3f} s{}\n",
                          name.empty() ? "" : name + ": ", run.modes, run.step.f_max, run.step.step,
                          resolution(run.step), run.reduction_seconds, run.summary.wall_seconds,
@@ -284,7 +284,7 @@ std::string refusal(const select::CandidateRun& reference, int max_refinement, c
                                                  fmt::join(reference.summary.accuracy.warnings, "; "))
                                    : "failed: " + reference.summary.message;
   return fmt::format(
-      "the reference set ({} modes, f_max {:.0f} Hz, step {:.3g} s: {} steps per period) {}, so differences to it "
+      "the reference set ({} modes, f_max {:.0f} Hz, step {:.3g} s, steps per period: {}) {}, so differences to it "
       "mean nothing; run select with a shorter step (--max-refinement {} allows one {} times shorter than the "
       "case's, or --step) or fewer reference modes (--reference-normal); its run is in {}",
       reference.modes, reference.step.f_max, reference.step.step, resolution(reference.step), why, 2 * max_refinement,
@@ -356,7 +356,8 @@ std::string write_choice(std::FILE* text, const SelectOptions& options, const st
   return fragment;
 }
 
-int select_case(const SelectOptions& options) {
+// Throws InputError for an option out of range.
+void check_options(const SelectOptions& options) {
   if (!(options.keep > 0.0 && options.keep <= 1.0)) {
     throw InputError(fmt::format("expected --keep in (0, 1], got {:g}", options.keep));
   }
@@ -371,6 +372,10 @@ int select_case(const SelectOptions& options) {
     throw InputError(fmt::format("expected --max-refinement >= 1, got {}", options.max_refinement));
   }
   if (options.jobs < 1) throw InputError(fmt::format("expected --jobs >= 1, got {}", options.jobs));
+}
+
+int select_case(const SelectOptions& options) {
+  check_options(options);
   const auto shared_input = std::make_shared<const io::Case>(io::read_case_file(options.case_file));
   const io::Case& input = *shared_input;
   if (!input.mechanism || input.mechanism->flexible_components.empty()) {

@@ -18,8 +18,9 @@ void SettingsOverrides::add_options(CLI::App& command) {
                      "(the static equilibrium from there, hold-downs holding; docs/statics.md)")
       ->check(CLI::IsMember({"assembly", "statics"}));
   command.add_option("--peak-window", peak_window,
-                     "Event peaks: the largest reactions this long [s] after the start and after each "
-                     "latch engagement (> 0; default: the case's run.peak_window, else 0.3)");
+                     "Event peaks: the largest reactions, tracked at every step, this long [s] after the "
+                     "start and after each latch engagement (>= 0; default: the case's run.peak_window; "
+                     "limber run: 0, none; limber select: 0.3)");
 }
 
 io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {

@@ -92,7 +92,9 @@ struct IntegratorOptions {
   // takes, and every event it locates), with t, q, v, v̇ and λ there: the states between
   // which the output samples are interpolated, so an extreme that falls between two samples
   // is seen at the step nearest it (run/event_peaks.h). Called with the modes of the step
-  // just taken, before the events located at its end switch them. Unset: none.
+  // just taken, before the events located at its end switch them. Generalized-α leaves out
+  // steps shorter than 1 % of its step (cut back to an event): their v̇ and λ carry round-off
+  // amplified by 1/(βh²) (generalized_alpha.cpp, kObservedStepFraction). Unset: none.
   std::function<void(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                      const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda)>
       on_step;

@@ -38,8 +38,8 @@ void check_settings(const io::RunSettings& settings) {
     }
   }
   integrate::check_sample_times(0.0, settings.t_end, settings.sample_interval);
-  if (!(settings.peak_window > 0.0)) {
-    throw InputError(fmt::format("expected a peak window > 0 s, got {:g}", settings.peak_window));
+  if (!(settings.peak_window >= 0.0)) {
+    throw InputError(fmt::format("expected a peak window >= 0 s (0: none), got {:g}", settings.peak_window));
   }
 }
 
@@ -166,17 +166,20 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (hooks.on_event) hooks.on_event(event);
     }
   };
-  // Event peaks at every integrator step (event_peaks.h), in windows from the start (t = 0,
-  // where hold-downs released at 0 let go), from each later release (releases.apply below)
-  // and from each latch engagement as the integrator locates it.
-  EventPeakTracker peaks(model, system.partition(), system.engaged(), settings.peak_window);
-  peaks.open({0.0, "start"});
+  // Event peaks at every integrator step when asked for (event_peaks.h), in windows from the
+  // start (t = 0, where hold-downs released at 0 let go), from each later release
+  // (releases.apply below) and from each latch engagement as the integrator locates it.
+  std::optional<EventPeakTracker> peaks;
   std::size_t events_seen = 0;
-  options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
-                        const Eigen::VectorXd&) {
-    for (; events_seen < system.events().size(); ++events_seen) peaks.on_event(system.events()[events_seen]);
-    peaks.observe(t, q, v, vdot);
-  };
+  if (settings.peak_window > 0.0) {
+    peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
+    peaks->open({0.0, "start"});
+    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                          const Eigen::VectorXd&) {
+      for (; events_seen < system.events().size(); ++events_seen) peaks->on_event(system.events()[events_seen]);
+      peaks->observe(t, q, v, vdot);
+    };
+  }
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
   summary.clearance.checked = !clearance_pairs.empty();
   AccuracyMonitor accuracy;
@@ -239,7 +242,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (joint.release_time == t) release.joints.push_back(joint.name);
     }
     summary.releases.push_back(release);
-    if (t > 0.0) peaks.open({t, "release"});
+    if (peaks && t > 0.0) peaks->open({t, "release"});
   };
   const integrate::SimulationResult result = integrate::simulate(
       system, options, {0.0, initial.q, start.state.v},
@@ -252,7 +255,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);
-  summary.peaks = peaks.peaks();
+  if (peaks) summary.peaks = peaks->peaks();
   // A body outside the linear range makes the linear floating-frame answer unphysical however
   // accurately it was integrated: the run is not "ok" either.
   for (const std::string& warning : summary.warnings) {
@@ -293,7 +296,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       passage_jump.push_back(passage.velocity_jump);
     }
     hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints, passage_jump);
-    hooks.writer->set_event_peaks(summary.peaks);
+    if (peaks) hooks.writer->set_event_peaks(summary.peaks);
   }
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);

@@ -75,7 +75,8 @@ struct RunSummary {
   // The run's own accuracy estimate (accuracy_check.h), from every sample written.
   AccuracyEstimate accuracy;
   // Per joint, the largest reactions after the start and each latch engagement, tracked at
-  // every integrator step (event_peaks.h); empty when the run did not integrate.
+  // every integrator step (event_peaks.h); empty when not asked for (RunSettings::peak_window
+  // 0) or the run did not integrate.
   results::EventPeaks peaks;
   // The acceleration probes' shock response spectra over the samples written (none without
   // probes or with fewer than 2 samples); also in results.h5 and DIR/srs_<probe>.csv.
@@ -104,7 +105,7 @@ inline constexpr double kMinimumRtol = 1e-11;
 inline constexpr double kMinimumAtol = 1e-14;
 
 // Throws InputError when the settings cannot run (integrator options out of range, sample
-// interval or peak window not positive, IDA tolerances below kMinimumRtol / kMinimumAtol).
+// interval not positive, peak window negative, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
 // The spectra of the probes' accelerations `histories` (one row per sample at `time`) over the

@@ -21,6 +21,11 @@ namespace limber::select {
 
 inline constexpr double kPeakFloor = 0.01;
 
+// The window [s] over which `limber select` tracks event peaks unless the case or the command
+// line sets one (RunSettings::peak_window): the first periods of a deployed panel's lowest
+// modes (three at 10 Hz), where latch-up peaks occur.
+inline constexpr double kSelectPeakWindow = 0.3;
+
 // One joint in one window.
 struct PeakDifference {
   std::string window;  // label

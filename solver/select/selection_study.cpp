@@ -62,6 +62,8 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
     if (body.flexible) result.modes += static_cast<int>(body.flexible->shapes.cols());
   }
   io::RunSettings settings = adjust ? adjust(result.mechanism.run) : result.mechanism.run;
+  // Event peaks always (peak_comparison.h).
+  if (settings.peak_window == 0.0) settings.peak_window = kSelectPeakWindow;
   // The step that resolves the set's highest frequency (step_choice.h).
   result.step = choose_step(highest_frequency(model), settings.integrator, policy);
   settings.integrator = apply_step(settings.integrator, result.step);

@@ -77,7 +77,8 @@ using SettingsAdjustment = std::function<io::RunSettings(const io::RunSettings&)
 struct SelectionInterrupted {};
 
 // Runs one set of `input` (which must hold a mechanism) into `directory` (created; locked while
-// written), at the step `policy` chooses for its highest frequency (step_choice.h).
+// written), at the step `policy` chooses for its highest frequency (step_choice.h), tracking
+// event peaks (over kSelectPeakWindow unless the settings give a window).
 // `on_sample` sees every sample
 // (progress; it may throw SelectionInterrupted). Throws InputError on bad input; a numerical
 // failure is in the returned summary. Any exception closes the results file first

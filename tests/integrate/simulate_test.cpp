@@ -88,7 +88,8 @@ TEST(Simulate, SamplesDoNotChangeTheSteps) {
 }
 
 TEST(Simulate, OnStepSeesTheStartAndEveryStepEndInOrder) {
-  // Both integrators: one call at the start, then one per accepted step (no events here), in
+  // Both integrators: one call at the start, then one per accepted step (no events, so no step
+  // shorter than generalized-α's 1 % that on_step leaves out), in
   // ascending time, the last at the end time with the state the last sample delivers; every
   // state satisfies the dynamics M v̇ + Gᵀλ = Q (the pendulum's, evaluated here) to the
   // integrators' Newton tolerance.
@@ -118,9 +119,12 @@ TEST(Simulate, OnStepSeesTheStartAndEveryStepEndInOrder) {
     EXPECT_TRUE(std::is_sorted(times.begin(), times.end()));
     EXPECT_NEAR(times.back(), 1.0, 1e-12);
     EXPECT_LT((last_q - last.q).lpNorm<Eigen::Infinity>(), 1e-12) << to_string(options.method);
-    // |Q| ~ m g = 9.81 N: IDA's residual is held to its Newton tolerance (rtol 1e-6), gen-α's
-    // to 1e-8 relative; 1e-5 N bounds both.
-    EXPECT_LT(worst_residual, 1e-5) << to_string(options.method);
+    // |Q| ~ m g = 9.81 N. Gen-α solves the step's dynamics by Newton to 1e-8 relative: 1e-6 N.
+    // IDA stops Newton at a third of its weighted tolerance on the increments, so the residual
+    // left is about c_j M Δv, c_j ~ 1/h ~ 1e2..1e3 1/s and Δv ~ rtol |v| ~ 3e-6 m/s: up to
+    // 3e-3 N (measured 7.7e-4 N).
+    const bool ida = options.method == Method::kIda;
+    EXPECT_LT(worst_residual, ida ? 3e-3 : 1e-6) << to_string(options.method) << ": " << worst_residual;
   }
 }
 

@@ -30,15 +30,16 @@ struct SampledRun {
   std::vector<results::Sample> samples;
 };
 
-// The wing at h = 1 ms to 3.1 s (past the root latch-up at 2.92 s), samples every `interval`,
-// written to `directory` when given.
-SampledRun run_wing(double interval, const std::filesystem::path& directory = {}) {
+// The wing at h = 1 ms to 3.25 s (the root latch-up at 2.92 s and its 0.3 s window), samples
+// every `interval`, event peaks over `window` (0: none), written to `directory` when given.
+SampledRun run_wing(double interval, const std::filesystem::path& directory = {}, double window = 0.3) {
   const io::Case input = io::read_case_text(test::read_text(kWing), kWing);
   const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   io::RunSettings settings = built.run;
   settings.integrator = integrate::IntegratorOptions::generalized_alpha(1e-3, 0.8);
-  settings.t_end = 3.1;
+  settings.t_end = 3.25;
   settings.sample_interval = interval;
+  settings.peak_window = window;
   SampledRun run;
   std::optional<results::ResultsWriter> writer;
   RunHooks hooks;
@@ -124,6 +125,18 @@ TEST(EventPeaks, ResultsFileHoldsThePeaksOfTheSummary) {
       EXPECT_EQ(a.torque_component_time, b.torque_component_time);
     }
   }
+  std::filesystem::remove_all(directory);
+}
+
+TEST(EventPeaks, NotTrackedUnlessAskedFor) {
+  // peak_window 0 (`limber run`'s default): no windows, and no /event_peaks in the file.
+  const std::filesystem::path directory = test::fresh_directory("no_event_peaks");
+  const SampledRun run = run_wing(20e-3, directory, 0.0);
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  EXPECT_TRUE(run.summary.peaks.windows.empty());
+  const results::EventPeaks read = results::read_event_peaks(directory / results::kResultsFileName);
+  EXPECT_TRUE(read.windows.empty());
+  EXPECT_TRUE(read.joints.empty());
   std::filesystem::remove_all(directory);
 }
 

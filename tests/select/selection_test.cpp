@@ -127,7 +127,10 @@ TEST(Selection, TheChosenSetBeatsNormalModesAndAsManyNormalModes) {
 }
 
 TEST(Selection, TargetPicksTheFewestModesThatMeetIt) {
-  const std::vector<CandidateRun>& runs = selection().runs;
+  // The fixture's sets ran at the case's step; taken as resolving their modes here, the rule
+  // on errors and mode counts alone is tested; an unresolved set is never chosen (below).
+  std::vector<CandidateRun> runs = selection().runs;
+  for (CandidateRun& run : runs) run.step.resolved = true;
   const double kept_error = run_named("kept").error_peak;
   // A target the procedure's set meets and no smaller set does: that set.
   const std::optional<std::size_t> chosen = choose_run(runs, 1.5 * kept_error, ErrorNorm::kPeak);
@@ -140,6 +143,10 @@ TEST(Selection, TargetPicksTheFewestModesThatMeetIt) {
   // Unreachable: none. Without a target: the procedure's answer.
   EXPECT_FALSE(choose_run(runs, 1e-12, ErrorNorm::kPeak).has_value());
   EXPECT_EQ(runs[*choose_run(runs, std::nullopt, ErrorNorm::kPeak)].candidate.name, "kept");
+  // The chosen set's step not resolving its modes: the next in line, never it.
+  runs[*chosen].step.resolved = false;
+  const std::optional<std::size_t> next = choose_run(runs, 1.5 * kept_error, ErrorNorm::kPeak);
+  EXPECT_NE(next, chosen);
 }
 
 TEST(Selection, TheChosenModesPasteBackIntoTheCase) {

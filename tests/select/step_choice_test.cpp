@@ -1,11 +1,15 @@
 // The step each mode set runs at (select/step_choice.h) and the event-peak comparison
-// (select/peak_comparison.h), against closed forms.
+// (select/peak_comparison.h), against closed forms; the parallel runner of the sets.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "select/peak_comparison.h"
+#include "select/selection_study.h"
 #include "select/step_choice.h"
 
 namespace limber::select {
@@ -107,6 +111,25 @@ TEST(PeakComparison, AnEventInOneRunOnlyIsAnInfiniteError) {
   EXPECT_EQ(c.unmatched, (std::vector<std::string>{"latch M", "latch L"}));
   EXPECT_TRUE(std::isinf(c.error));
   EXPECT_NE(c.worst.find("latch M"), std::string::npos);
+}
+
+TEST(RunParallel, EveryJobOnceThenTheFirstFailureRethrown) {
+  // Two workers: each of 50 jobs runs exactly once.
+  std::vector<std::atomic<int>> runs(50);
+  run_parallel(runs.size(), 2, [&](std::size_t k) { ++runs[k]; });
+  for (const std::atomic<int>& r : runs) EXPECT_EQ(r.load(), 1);
+  // A job that throws: the exception reaches the caller after the running jobs end, and no job
+  // starts after it (job 0 throws before any other can finish on one worker).
+  std::atomic<int> started{0};
+  EXPECT_THROW(run_parallel(50, 1,
+                            [&](std::size_t k) {
+                              ++started;
+                              if (k == 0) throw std::runtime_error("job 0");
+                            }),
+               std::runtime_error);
+  EXPECT_EQ(started.load(), 1);
+  EXPECT_THROW(run_parallel(50, 2, [&](std::size_t k) { if (k == 7) throw std::logic_error("job 7"); }),
+               std::logic_error);
 }
 
 }  // namespace
