@@ -33,7 +33,7 @@ struct ShockSpectraData {
   double q = 0.0;
   double window_length = 0.0;  // [s]
   Eigen::VectorXd frequency_hz;
-  std::vector<std::string> window_names;  // "whole run", "start", "latch <name>"
+  std::vector<std::string> window_names;  // "whole run", "start", "latch <name>[, <name>...]"
   std::vector<double> window_start, window_end;  // [s]
   std::vector<ProbeSpectrumData> probes;
 };

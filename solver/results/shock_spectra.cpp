@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 #include "core/error.h"
@@ -11,16 +12,24 @@
 namespace limber::results {
 
 std::vector<ShockWindow> shock_windows(double t_first, double t_last, const std::vector<LatchTime>& latches,
-                                       double window_seconds) {
+                                       double window_seconds, double merge_seconds) {
   LIMBER_DEMAND(window_seconds > 0.0 && t_last >= t_first);
   std::vector<ShockWindow> windows{{"whole run", t_first, t_last}};
-  // Window starts in time order: t = 0, then the latches inside the run.
+  // Window starts in time order: t = 0, then the latches inside the run, those within
+  // merge_seconds of the previous start joining its window.
+  std::vector<LatchTime> inside;
+  std::copy_if(latches.begin(), latches.end(), std::back_inserter(inside),
+               [&](const LatchTime& latch) { return latch.time >= t_first && latch.time <= t_last; });
+  std::stable_sort(inside.begin(), inside.end(), [](const LatchTime& a, const LatchTime& b) { return a.time < b.time; });
   std::vector<ShockWindow> starts{{"start", t_first, t_last}};
-  for (const LatchTime& latch : latches) {
-    if (latch.time >= t_first && latch.time <= t_last) starts.push_back({"latch " + latch.name, latch.time, t_last});
+  for (const LatchTime& latch : inside) {
+    ShockWindow& previous = starts.back();
+    if (latch.time - previous.start < merge_seconds) {
+      previous.name += (starts.size() == 1 ? ", latch " : ", ") + latch.name;
+    } else {
+      starts.push_back({"latch " + latch.name, latch.time, t_last});
+    }
   }
-  std::stable_sort(starts.begin() + 1, starts.end(),
-                   [](const ShockWindow& a, const ShockWindow& b) { return a.start < b.start; });
   // Each lasts window_seconds, or up to the next start or the last sample.
   for (std::size_t k = 0; k < starts.size(); ++k) {
     ShockWindow window = starts[k];
@@ -59,7 +68,7 @@ ShockSpectra shock_spectra(const Eigen::VectorXd& time, double dt, const std::ve
   // Each window's samples [first, first + count).
   const double slack = 1e-9 * dt;
   std::vector<std::pair<Eigen::Index, Eigen::Index>> ranges;
-  for (const ShockWindow& window : shock_windows(time(0), time(ns - 1), latches, settings.window_seconds)) {
+  for (const ShockWindow& window : shock_windows(time(0), time(ns - 1), latches, settings.window_seconds, dt)) {
     const auto first = static_cast<Eigen::Index>(std::ceil((window.start - time(0) - slack) / dt));
     const auto last = std::min(ns - 1, static_cast<Eigen::Index>(std::floor((window.end - time(0) + slack) / dt)));
     if (last - first + 1 < 2) continue;

@@ -4,9 +4,10 @@
 //
 // Windows: "whole run" [t_0, t_last]; then one from t = 0 ("start") and one from each latch
 // event ("latch <name>" at its time), each lasting `window_length` or up to the next of those
-// starts or the last sample, whichever comes first. A window holds the samples with
-// start ≤ t ≤ end (1e-9 dt of slack); one with fewer than 2 samples is left out (two latches
-// locking within one sample interval share the first one's window).
+// starts or the last sample, whichever comes first. Latches that lock within one sample
+// interval of the previous start share its window ("latch L3, L4": a symmetric deployment's
+// wings). A window holds the samples with start ≤ t ≤ end (1e-9 dt of slack); one with fewer
+// than 2 samples is left out.
 #pragma once
 
 #include <Eigen/Core>
@@ -42,9 +43,10 @@ struct LatchTime {
   double time = 0.0;  // [s]
 };
 
-// The windows of a run whose samples span [t_first, t_last] (see the top of this file).
+// The windows of a run whose samples span [t_first, t_last] (see the top of this file);
+// latches less than `merge_seconds` (the sample interval) after the previous start join it.
 std::vector<ShockWindow> shock_windows(double t_first, double t_last, const std::vector<LatchTime>& latches,
-                                       double window_seconds);
+                                       double window_seconds, double merge_seconds);
 
 // One probe's accelerations, ground axes [m/s²], one row per sample.
 struct ProbeHistory {

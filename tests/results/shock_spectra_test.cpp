@@ -24,9 +24,10 @@ using testing::read_doubles;
 using testing::read_string_attribute;
 
 TEST(ShockWindows, StartAtZeroAndAtEachLatchUpToTheNextOrTheWindowLength) {
-  // Latches given out of order; L3 lies past the last sample.
+  // Latches given out of order; L3 lies past the last sample; L4 locks with L2 (within the
+  // 1 ms sample interval).
   const std::vector<ShockWindow> windows =
-      shock_windows(0.0, 2.0, {{"L2", 0.6}, {"L1", 0.5}, {"L3", 2.5}}, 0.3);
+      shock_windows(0.0, 2.0, {{"L2", 0.6}, {"L1", 0.5}, {"L3", 2.5}, {"L4", 0.6005}}, 0.3, 1e-3);
   ASSERT_EQ(windows.size(), 4u);
   EXPECT_EQ(windows[0].name, "whole run");
   EXPECT_DOUBLE_EQ(windows[0].end, 2.0);
@@ -35,10 +36,11 @@ TEST(ShockWindows, StartAtZeroAndAtEachLatchUpToTheNextOrTheWindowLength) {
   EXPECT_EQ(windows[2].name, "latch L1");
   EXPECT_DOUBLE_EQ(windows[2].start, 0.5);
   EXPECT_DOUBLE_EQ(windows[2].end, 0.6);  // the next latch
-  EXPECT_EQ(windows[3].name, "latch L2");
+  EXPECT_EQ(windows[3].name, "latch L2, L4");
   EXPECT_DOUBLE_EQ(windows[3].end, 0.9);
-  // A window that would pass the last sample ends there.
-  EXPECT_DOUBLE_EQ(shock_windows(0.0, 1.0, {{"L", 0.9}}, 0.3)[2].end, 1.0);
+  // A window that would pass the last sample ends there; a latch at the start joins it.
+  EXPECT_DOUBLE_EQ(shock_windows(0.0, 1.0, {{"L", 0.9}}, 0.3, 1e-3)[2].end, 1.0);
+  EXPECT_EQ(shock_windows(0.0, 1.0, {{"L", 0.0}}, 0.3, 1e-3)[1].name, "start, latch L");
 }
 
 // A probe at constant 2 g in x, a 5 ms half-sine of 50 g in z from t = 0.5 s (a latch there):
