@@ -300,7 +300,7 @@ TEST(CaseReaderErrors, DegenerateElements) {
   const std::string beam = rod_case(
       "{from: [1, 0, 0], to: [1, 0, 0], elements: 2, "
       "section: bar, material: steel, orientation: [0, 1, 0]}");
-  EXPECT_TRUE(fails_at(beam, location_of(beam, "{from"), "expected a positive length"));
+  EXPECT_TRUE(fails_at(beam, location_of(beam, "{from"), "expected a positive finite length"));
   // Orientation along the beam axis.
   const std::string parallel = rod_case(
       "{from: [0, 0, 0], to: [1, 0, 0], elements: 2, "
