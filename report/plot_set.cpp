@@ -4,6 +4,7 @@
 #include "html.h"
 #include "indeterminate_components.h"
 #include "reaction_frames.h"
+#include "shock_plots.h"
 #include "results/results_layout.h"
 
 #include <fmt/format.h>
@@ -605,6 +606,9 @@ std::vector<NamedPlot> default_run_plots(const RunData& run, const std::string& 
                      {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
     tag(plots, PlotKind::kViolation, "");
   }
+
+  // Acceleration probes and their shock response spectra.
+  for (NamedPlot& plot : shock_plots(run, prefix)) plots.push_back(std::move(plot));
   return plots;
 }
 

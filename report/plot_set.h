@@ -18,7 +18,7 @@ namespace limber::report {
 
 enum class PlotSection {
   kReactions, kSelection, kDrivers, kEnergy, kHinges, kClearance, kDeflection, kViolation,
-  kComparison, kStress, kSweep
+  kComparison, kStress, kSweep, kShock
 };
 
 // What a plot shows, as a report config names it (report_config.h): `reaction` (a joint's

@@ -3,6 +3,7 @@
 #include "hinge_summary.h"
 #include "html.h"
 #include "selection_html.h"
+#include "sizing_loads.h"
 #include "stress_summary.h"
 #include "sweep_html.h"
 #include "results/results_layout.h"
@@ -434,6 +435,7 @@ std::string run_section(const RunSection& s, bool interactive) {
   out += subsection(s, "clearance", "Clearance", clearance_note(run) + plots_of(s, PlotSection::kClearance));
   out += subsection(s, "deflection", "Deflection", plots_of(s, PlotSection::kDeflection));
   out += subsection(s, "stress", "Stress", stress_table(run) + plots_of(s, PlotSection::kStress));
+  out += subsection(s, "shock", "Acceleration probes and shock response spectra", plots_of(s, PlotSection::kShock));
   out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
   out += subsection(s, "animation", "Animation", media(s));
   if (!s.mode_images.empty()) out += subsection(s, "mode-shapes", "Mode shapes", mode_images(s));
@@ -463,6 +465,8 @@ std::string report_html(const ReportContent& content) {
   if (!content.comparisons.empty()) out += "<li><a href=\"#comparison\">Comparison</a></li>\n";
   out += "</ul></nav>\n";
 
+  // What a structures engineer sizes from, before the runs' details.
+  out += sizing_loads_section(content.runs);
   for (const RunSection& s : content.runs) out += run_section(s, content.interactive.has_value());
 
   // Several runs: one reaction component overlaid (seed paper Figs. 6 and 10).

@@ -94,6 +94,7 @@ void truncate(RunData& run, Eigen::Index n) {
     if (joint.indeterminate.size() > n) joint.indeterminate.conservativeResize(n);
   }
   for (DeflectionProbe& probe : run.deflections) probe.values.conservativeResize(n, 3);
+  for (AccelerationProbeTrack& probe : run.acceleration_probes) probe.acceleration.conservativeResize(n, 3);
   for (HingeLimitTrack& limit : run.hinge_limits) {
     limit.angle.conservativeResize(n);
     limit.torque.conservativeResize(n);
@@ -152,6 +153,13 @@ hsize_t read_series(const H5Reader& file, RunData& run) {
     run.deflections.push_back({body.name, as_rows3(probe, rows)});
     ns = std::min(ns, rows);
   }
+
+  // Acceleration probes and their spectra.
+  run.acceleration_probes = read_acceleration_probes(file);
+  for (const AccelerationProbeTrack& probe : run.acceleration_probes) {
+    ns = std::min(ns, static_cast<hsize_t>(probe.acceleration.rows()));
+  }
+  run.shock_spectra = read_shock_spectra(file);
 
   // Driver efforts and energies, listed by link name, shown by name.
   for (const std::string& driver : file.members(layout::kDrivers)) {
@@ -330,6 +338,12 @@ RunData read_run_data(const std::filesystem::path& directory) {
     for (auto& attribute : attributes(file, layout::kSolver, {})) {
       run.solver_attributes.push_back(std::move(attribute));
     }
+  }
+  // Event peaks (optional; a malformed group is a note).
+  try {
+    run.event_peaks = results::read_event_peaks(run.results.file);
+  } catch (const InputError& error) {
+    run.notes.push_back(std::string("event peaks not shown: ") + error.what());
   }
   // Recovered stresses (optional; a malformed group is a note).
   try {

@@ -1,6 +1,7 @@
 // Everything the report shows about one run directory, read from its files only:
 // DIR/results.h5 (docs/results-format.md) through render's reader plus, through the same HDF5
-// reader (results/h5_reader.h) at the layout's paths, the per-sample series render does not need (reactions, drivers, energies, violations, steps), DIR/modes.h5
+// reader (results/h5_reader.h) at the layout's paths, the per-sample series render does not need (reactions, drivers, energies, violations, steps,
+// acceleration probes) and the shock spectra (shock_data.h), DIR/modes.h5
 // (docs/modes-format.md) for mode kinds and labels, the media `limber render` left in DIR, and
 // the CSV files `limber select` left in DIR/selection (selection_data.h) and `limber sweep`'s
 // work-precision table in DIR/sweep (sweep_data.h).
@@ -8,8 +9,10 @@
 
 #include "results_reader.h"
 #include "selection_data.h"
+#include "shock_data.h"
 #include "stress_reader.h"
 #include "sweep_data.h"
+#include "results/event_peaks.h"
 #include "results/results_layout.h"
 
 #include <Eigen/Core>
@@ -92,6 +95,9 @@ struct RunData {
   std::array<std::string, 3> axis_names{"X", "Y", "Z"};
   bool axis_names_from_case = false;
   std::vector<DeflectionProbe> deflections;
+  std::vector<AccelerationProbeTrack> acceleration_probes;  // absolute, ground axes [m/s²]
+  std::optional<ShockSpectraData> shock_spectra;            // the probes' SRS per window
+  results::EventPeaks event_peaks;      // per joint, the peaks after each event (may be empty)
   std::vector<Series> energies;         // [J]
   std::vector<HingeLimitTrack> hinge_limits;  // in the model's order
   std::vector<HingeEventRow> events;

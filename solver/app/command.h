@@ -27,7 +27,10 @@ Command add_select_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 
 // `limber run CASE [-o DIR] [--integrator ida|galpha] [--rtol R] [--atol A] [--step H]
-// [--t-end T] [--json]`.
+// [--t-end T] [--start assembly|statics] [--json]`.
 Command add_run_command(CLI::App& app);
+
+// `limber statics CASE [-o DIR] [--json]` (statics_command.cpp).
+Command add_statics_command(CLI::App& app);
 
 }  // namespace limber::app

@@ -26,6 +26,7 @@
 #include "results/results_writer.h"
 #include "run/run_driver.h"
 #include "results/results_layout.h"
+#include "results/shock_spectra_file.h"
 
 namespace limber::app {
 
@@ -195,6 +196,31 @@ void print_clearance(std::FILE* out, const run::ClearanceMinimum& clearance) {
   }
 }
 
+// Per acceleration probe: its largest whole-run SRS value over the axes, where, and its CSV file.
+void print_shock_spectra(std::FILE* out, const results::ShockSpectra& spectra, const std::string& directory) {
+  if (spectra.windows.empty()) return;
+  fmt::print(out, "shock response spectra: Q {:g}, {:g} to {:g} Hz in 1/6 octaves, {} windows (whole run, start, "
+                  "latches; {:g} s each)\n",
+             spectra.settings.q, spectra.frequency_hz.front(), spectra.frequency_hz.back(), spectra.windows.size(),
+             spectra.settings.window_seconds);
+  for (const results::ProbeSpectra& probe : spectra.probes) {
+    double peak = 0.0, frequency = 0.0;
+    int axis = 0;
+    for (int a = 0; a < 3; ++a) {
+      Eigen::Index j = 0;
+      const double value = probe.windows.front()[static_cast<std::size_t>(a)].maximax.maxCoeff(&j);
+      if (value > peak) {
+        peak = value;
+        frequency = spectra.frequency_hz[static_cast<std::size_t>(j)];
+        axis = a;
+      }
+    }
+    fmt::print(out, "  {}: peak {:.4g} g ({:.4g} m/s^2) at {:.4g} Hz, ground {}; {}\n", probe.probe,
+               peak / results::kStandardGravity, peak, frequency, "xyz"[axis],
+               (std::filesystem::path(directory) / results::shock_spectrum_csv_name(probe.probe)).string());
+  }
+}
+
 // {"energy_relative", "energy_residual", "energy_scale", "local_error", "drift_relative",
 // "warnings": [...]}.
 std::string json_accuracy(const run::AccuracyEstimate& a) {
@@ -203,6 +229,37 @@ std::string json_accuracy(const run::AccuracyEstimate& a) {
                      json_number(a.energy_relative), json_number(a.energy_residual),
                      json_number(a.energy_scale), json_number(a.local_error),
                      json_number(a.drift_relative), json_string_list(a.warnings));
+}
+
+// {"iterations", "force_residual", "force_scale", "unstable_directions"} of the static start, or null.
+std::string json_statics(const run::RunSummary& summary) {
+  if (!summary.statics) return "null";
+  const multibody::StaticsResult& s = *summary.statics;
+  return fmt::format("{{\"iterations\": {}, \"force_residual\": {}, \"force_scale\": {}, "
+                     "\"unstable_directions\": {}}}",
+                     s.iterations, json_number(s.force_residual), json_number(s.force_scale),
+                     s.unstable_directions);
+}
+
+// [{"t", "joints": [...]}] of the hold-downs released.
+std::string json_releases(const run::RunSummary& summary) {
+  std::string text = "[";
+  for (std::size_t k = 0; k < summary.releases.size(); ++k) {
+    text += fmt::format("{}{{\"t\": {}, \"joints\": {}}}", k ? ", " : "",
+                        json_number(summary.releases[k].t), json_string_list(summary.releases[k].joints));
+  }
+  return text + "]";
+}
+
+// The static start and the releases, on `out`.
+void print_start_and_releases(std::FILE* out, const run::RunSummary& summary) {
+  if (summary.statics && summary.statics->status == multibody::StaticsStatus::kOk) {
+    fmt::print(out, "start: static equilibrium in {} Newton iterations (force residual {:.3g} of {:.3g})\n",
+               summary.statics->iterations, summary.statics->force_residual, summary.statics->force_scale);
+  }
+  for (const run::JointRelease& release : summary.releases) {
+    fmt::print(out, "released: {} at t = {:g} s\n", fmt::join(release.joints, ", "), release.t);
+  }
 }
 
 std::string json_report(const multibody::Model& model, const run::RunSummary& summary,
@@ -218,8 +275,8 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_failures\": {}, "
       "\"newton_iterations\": {}, \"jacobian_evaluations\": {}, \"residual_evaluations\": {}, "
       "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
-      "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"clearance\": {}, "
-      "\"accuracy\": {}, \"event_peaks\": {}, \"results\": {}}}",
+      "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"statics\": {}, "
+      "\"releases\": {}, \"clearance\": {}, \"accuracy\": {}, \"event_peaks\": {}, \"results\": {}}}",
       json_string(!summary.ok ? results::layout::status::kFailed : summary.accurate() ? results::layout::status::kOk : results::layout::status::kInaccurate),
       json_string(summary.message),
       json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
@@ -227,9 +284,9 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       s.jacobian_evaluations, s.residual_evaluations, json_number(summary.wall_seconds),
       json_number(summary.max_position_violation),
       json_number(summary.max_velocity_violation), json_string_list(names),
-      json_string_list(details), json_events(model, summary.events),
-      json_clearance(summary.clearance), json_accuracy(summary.accuracy), json_event_peaks(summary.peaks),
-      json_string(results_path));
+      json_string_list(details), json_events(model, summary.events), json_statics(summary),
+      json_releases(summary), json_clearance(summary.clearance), json_accuracy(summary.accuracy),
+      json_event_peaks(summary.peaks), json_string(results_path));
 }
 
 // Thrown from the sample hook when a stop signal arrived: leaves the integration between samples.
@@ -323,7 +380,8 @@ int run_case(const RunOptions& options) {
 
   // Summary, JSON, and the failure (exit code 2) if any.
   const integrate::Statistics& s = summary.statistics;
-  if (summary.failure != "assembly") {
+  print_start_and_releases(text, summary);
+  if (summary.failure != "assembly" && summary.failure != "statics") {
     fmt::print(text,
                "{}: t = {:g} s, {} samples, {} steps ({} rejected, {} Newton iterations), "
                "{:.3f} s wall\n",
@@ -334,6 +392,7 @@ int run_case(const RunOptions& options) {
     if (summary.ok) print_accuracy(text, summary.accuracy);
     print_clearance(text, summary.clearance);
     print_event_peaks(text, summary.peaks);
+    if (summary.shock_spectra) print_shock_spectra(text, *summary.shock_spectra, directory.string());
   }
   fmt::print(text, "wrote {}\n", results_path);
   if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
@@ -365,11 +424,17 @@ Command add_run_command(CLI::App& app) {
       "their located events (each also printed as 'event: ...'), and the minimum clearance between\n"
       "bodies' surfaces (shell quads, shapes) when two or more have one: printed at the end,\n"
       "with a warning when it is negative (one body passes through another); flexible bodies\n"
-      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md).\n"
+      "with a 'stress' entry get their recovered element stresses (docs/stress-recovery.md);\n"
+      "acceleration probes get their accelerations and shock response spectra, also in\n"
+      "DIR/srs_<probe>.csv (docs/shock-response-spectrum.md).\n"
+      "With --start statics (or 'start: statics' in 'run') the run starts from the static\n"
+      "equilibrium (docs/statics.md); joints with a 'release' time (hold-downs) leave the mechanism\n"
+      "then, each release printed as 'released: ...'.\n"
       "Settings come from the case's 'run' section (docs/case-format.md); the options below\n"
       "override them.\n"
       "Exit codes: 0 success, 1 bad input (message 'limber: error: case.yaml:LINE:COL: ...'),\n"
-      "2 the run failed (assembly did not close, or the integrator stopped; the samples before\n"
+      "2 the run failed (assembly did not close, no static equilibrium for a static start, or the\n"
+      "integrator stopped; the samples before\n"
       "are kept and the file's status is \"failed\"), 3 internal error, 4 interrupted by SIGINT or\n"
       "SIGTERM (the run stops at its next sample and closes the file as \"interrupted\"; a second\n"
       "signal ends it at once), 5 finished but not accurate: the run's own accuracy estimate\n"
@@ -390,7 +455,9 @@ Command add_run_command(CLI::App& app) {
                 "\"max_constraint_violation\", "
                 "\"max_velocity_violation\", \"redundant\": [equation names], "
                 "\"redundant_details\", \"events\": [{\"t\", \"name\", \"kind\", \"joint\", "
-                "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"clearance\": "
+                "\"engaged\", \"angle\", \"rate\"} per latch/stop switch], \"statics\": "
+                "{\"iterations\", \"force_residual\", \"force_scale\", \"unstable_directions\"} of "
+                "a static start or null, \"releases\": [{\"t\", \"joints\"}], \"clearance\": "
                 "{\"minimum\", \"time\", \"pair\": [body, body]} or null, \"accuracy\": "
                 "{\"energy_relative\", \"energy_residual\", \"energy_scale\", \"local_error\", "
                 "\"drift_relative\", \"warnings\"}, \"event_peaks\": {\"window\", \"windows\": [{\"label\", "

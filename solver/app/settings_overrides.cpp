@@ -13,6 +13,10 @@ void SettingsOverrides::add_options(CLI::App& command) {
   command.add_option("--max-wall", max_wall,
                      "Wall-clock budget of the integration [s] (> 0; default: none): a run that has "
                      "not finished by then stops as failed, keeping its samples");
+  command.add_option("--start", start,
+                     "assembly (the initial poses assembled, the case's velocities) or statics "
+                     "(the static equilibrium from there, hold-downs holding; docs/statics.md)")
+      ->check(CLI::IsMember({"assembly", "statics"}));
   command.add_option("--peak-window", peak_window,
                      "Event peaks: the largest reactions, tracked at every step, this long [s] after the "
                      "start and after each latch engagement (>= 0; default: the case's run.peak_window; "
@@ -28,6 +32,8 @@ io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
   if (step) options.step = *step;
   if (t_end) settings.t_end = *t_end;
   if (max_wall) options.max_wall_seconds = *max_wall;
+  if (start == "assembly") settings.start = io::StartKind::kAssembly;
+  if (start == "statics") settings.start = io::StartKind::kStatics;
   if (peak_window) settings.peak_window = *peak_window;
   return settings;
 }

@@ -1,5 +1,6 @@
 // Command-line options that override a case's run settings, shared by `limber run` and
-// `limber select`: --integrator, --rtol, --atol, --step, --t-end, --max-wall, --peak-window.
+// `limber select`: --integrator, --rtol, --atol, --step, --t-end, --max-wall, --start,
+// --peak-window.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@ namespace limber::app {
 
 struct SettingsOverrides {
   std::string integrator;  // "" = the case's
+  std::string start;       // "" = the case's
   std::optional<double> rtol, atol, step, t_end, max_wall, peak_window;
 
   // Adds the options to `command`; `this` must outlive it.

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/input_file.h"
+
 namespace limber::bulkdata {
 
 namespace {
@@ -84,16 +86,16 @@ bool is_card_name(std::string_view name) {
 }
 
 std::string read_whole_file(const std::string& path, const SourceLocation& where) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw InputError(fmt::format("expected a bulk-data file, got '{}' (no such file)", path),
+  const std::string problem = regular_file_problem(path);
+  if (!problem.empty()) {
+    throw InputError(fmt::format("expected a bulk-data file, got '{}' ({})", abbreviated(path), problem),
                      where);
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   if (!in) {
-    throw InputError(fmt::format("expected a readable bulk-data file, got '{}'", path), where);
+    throw InputError(fmt::format("expected a readable bulk-data file, got '{}'", abbreviated(path)), where);
   }
   return text.str();
 }

@@ -66,6 +66,17 @@ fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>
   constexpr double pi = std::numbers::pi;
   fe::BeamSection section;
   error.clear();
+  // Inertias go with a dimension's fourth power: it must be a normal double (dimensions from
+  // about 1e-77 to 1e77 m). At 1e-170 m an I section's outline had no area and aborted on
+  // fe::centred_polygon's DEMAND (issue 31).
+  for (const double d : dims) {
+    if (!std::isnormal(d * d * d * d)) {
+      error = fmt::format("expected dimensions whose fourth powers (the inertias) are normal numbers, "
+                          "about 1e-77 to 1e77, got {}",
+                          d);
+      return {};
+    }
+  }
   if (type == "ROD") {
     const double r = dims[0];
     section.area = pi * r * r;

@@ -42,7 +42,8 @@ int pbarl_dimension_count(const std::string& type);
 
 // The section of `type` with dimensions `dims` (pbarl_dimension_count of them, each > 0).
 // Returns a message in `error` (and an empty section) when the dimensions are inconsistent
-// (e.g. a tube's inner radius not below the outer one).
+// (e.g. a tube's inner radius not below the outer one) or beyond about 1e-77 to 1e77 m (their
+// fourth powers not normal doubles).
 fe::BeamSection pbarl_section(const std::string& type, const std::vector<double>& dims,
                               std::string& error);
 

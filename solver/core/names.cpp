@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "core/input_file.h"
+
 namespace limber {
 namespace {
 
@@ -27,6 +29,11 @@ std::string printable_name(std::string_view name) {
 void check_name_text(std::string_view what, std::string_view name, const SourceLocation& where) {
   const std::string kind(what);
   if (name.empty()) throw InputError(kind + " name: expected a non-empty name, got \"\"", where);
+  if (name.size() > kMaxNameBytes) {
+    throw InputError(kind + " name: expected at most " + std::to_string(kMaxNameBytes) +
+                         " bytes, got \"" + printable_name(abbreviated(name)) + "\"",
+                     where);
+  }
   // The first control character, with its 0-based byte position.
   for (std::size_t k = 0; k < name.size(); ++k) {
     if (!is_control(name[k])) continue;

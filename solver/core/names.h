@@ -5,6 +5,7 @@
 // HDF5 link names and file names: results/link_name.h.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -12,9 +13,14 @@
 
 namespace limber {
 
+// The longest name, in bytes. Names are kept in HDF5 attributes (at most 64 KiB each in the
+// 1.8 file format results.h5 and modes.h5 use) and shown in messages and plots.
+inline constexpr std::size_t kMaxNameBytes = 256;
+
 // Checks a name read from an input file. `what` names its kind ("body", "marker", ...).
 // Throws InputError at `where`, e.g.
 //   `body name: expected a non-empty name, got ""`,
+//   `body name: expected at most 256 bytes, got "arm_arm_arm_…… (4000 bytes)"` (core/input_file.h),
 //   `body name: expected text without control characters, got "a\x00b" (byte 0x00 at 2)`.
 void check_name_text(std::string_view what, std::string_view name, const SourceLocation& where);
 

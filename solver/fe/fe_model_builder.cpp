@@ -107,15 +107,15 @@ void FeModelBuilder::add_beam(const BeamElement& element, const SourceLocation& 
                      where);
   }
 
-  // Non-zero length.
+  // Non-zero, finite length (nodes 1e200 m apart overflow it).
   const int id0 = model_.node_ids[element.nodes[0]];
   const int id1 = model_.node_ids[element.nodes[1]];
   const Eigen::Vector3d axis =
       model_.node_positions[element.nodes[1]] - model_.node_positions[element.nodes[0]];
   const double length = axis.norm();
-  if (!(length > 0.0)) {
+  if (!(length > 0.0 && std::isfinite(length))) {
     throw InputError(
-        fmt::format("beam {}-{}: expected a positive length, got {}", id0, id1, length), where);
+        fmt::format("beam {}-{}: expected a positive finite length, got {}", id0, id1, length), where);
   }
 
   // Orientation not parallel to the axis (same test as beam_local_axes).

@@ -354,11 +354,17 @@ Status GeneralizedAlpha::locate_events(double h) {
       side = -1;
     }
   }
-  // The step that ends just past the crossing; its crossing events switch before the next.
+  // The step that ends just past the crossing; its crossing events switch before the next,
+  // with those that cross within the event tolerance after it (at their rate over the step):
+  // a symmetric mechanism's twin latches switch together, not one a step of ~1e-9 s later,
+  // whose index-3 multipliers would carry the position round-off over β h² (kN spikes in the
+  // satellite's event peaks).
   next_ = std::move(at_hi);
   xi_last_ = xi_hi;
+  const double h_crossing = next_.t - curr_.t;
   for (const int k : rising) {
-    if (next_.events(k) >= 0.0) pending_events_.push_back(k);
+    const double rate = (next_.events(k) - curr_.events(k)) / h_crossing;
+    if (next_.events(k) + rate * options_.event_tolerance >= 0.0) pending_events_.push_back(k);
   }
   return Status::success(next_.t);
 }

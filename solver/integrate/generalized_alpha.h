@@ -43,7 +43,9 @@
 // through 0 is redone from its start with a shorter h, bracketing the crossing by the Illinois
 // variant of regula falsi (Dahlquist & Björck, Numerical Methods, §6.2.3) on the largest of the
 // crossing functions, until it ends at most event_tolerance past the crossing. That step is
-// accepted, the system switches modes at its end before the next step, and the scheme restarts
+// accepted, the system switches modes at its end before the next step (with every other event
+// that crosses within event_tolerance after it, so that simultaneous events do not leave a
+// step of the tolerance's length between them), and the scheme restarts
 // there like at t0 (v̇, λ from the saddle-point system, a = v̇), then returns to its step grid.
 //
 // Accuracy estimate (Zienkiewicz & Xie 1991, Earthquake Eng Struct Dyn 20:871–887, for the

@@ -1,6 +1,8 @@
 #include "integrate/simulate.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -15,35 +17,83 @@ SimulationResult simulate(const MechanicalSystem& system, const IntegratorOption
                   [](const Sample& sample) { return Status::success(sample.t); });
 }
 
+namespace {
+
+// Work of two stretches of one run, one after the other.
+Statistics combined(const Statistics& before, const Statistics& after) {
+  Statistics out = after;
+  out.steps += before.steps;
+  out.rejected_steps += before.rejected_steps;
+  out.newton_iterations += before.newton_iterations;
+  out.newton_failures += before.newton_failures;
+  out.jacobian_evaluations += before.jacobian_evaluations;
+  out.residual_evaluations += before.residual_evaluations;
+  out.max_local_error = std::max(before.max_local_error, after.max_local_error);
+  return out;
+}
+
+double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
+
+}  // namespace
+
 SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample,
-                          const std::function<Status(const Sample&)>& check) {
+                          const std::function<Status(const Sample&)>& check,
+                          const Restarts& restarts) {
   const auto wall_start = std::chrono::steady_clock::now();
   // Sample times: from the start on (a SampleTimes is non-empty and increasing).
   if (sample_times.front() < start.t) {
     throw InputError(fmt::format("first sample time: expected ≥ {} (the start), got {}", start.t,
                                  sample_times.front()));
   }
-
-  // Integrate no further than the last sample.
-  IntegratorOptions run_options = options;
-  run_options.t_stop = sample_times.back();
-  auto integrator = make_integrator(run_options.method);
-  SimulationResult result;
-  result.status = integrator->init(system, start, run_options);
-
-  // Deliver every sample until the end or the first failure.
-  Sample sample;
-  for (std::size_t i = 0; i < sample_times.size(); ++i) {
-    if (!result.status.ok()) break;
-    result.status = integrator->advance_to(sample_times[i], sample);
-    if (!result.status.ok()) break;
-    on_sample(sample);
-    ++result.samples;
-    result.status = check(sample);
+  // Stretches end at the restarts within the run, the last at the last sample.
+  std::vector<double> ends;
+  for (const double t : restarts.times) {
+    if (t >= start.t && t < sample_times.back() - time_tolerance(t)) ends.push_back(t);
   }
-  result.statistics = integrator->statistics();
+  ends.push_back(sample_times.back());
+
+  SimulationResult result;
+  InitialState from = start;
+  Statistics before;
+  Eigen::VectorXd integrals_before = Eigen::VectorXd::Zero(options.quadrature.size);
+  Sample sample;
+  std::size_t i = 0;  // next sample
+  for (std::size_t stretch = 0; stretch < ends.size(); ++stretch) {
+    // Integrate no further than the stretch's end.
+    IntegratorOptions run_options = options;
+    run_options.t_stop = ends[stretch];
+    auto integrator = make_integrator(run_options.method);
+    result.status = integrator->init(system, from, run_options);
+    // The state at time t, with the integrals and work of the stretches before.
+    const auto advance = [&](double t) {
+      result.status = integrator->advance_to(t, sample);
+      if (!result.status.ok()) return false;
+      sample.integrals += integrals_before;
+      sample.statistics = combined(before, sample.statistics);
+      return true;
+    };
+    // Deliver every sample of the stretch until its end or the first failure.
+    bool at_end = false;
+    for (; result.status.ok() && i < sample_times.size() &&
+           sample_times[i] <= ends[stretch] + time_tolerance(ends[stretch]);
+         ++i) {
+      if (!advance(sample_times[i])) break;
+      on_sample(sample);
+      ++result.samples;
+      at_end = sample_times[i] >= ends[stretch] - time_tolerance(ends[stretch]);
+      result.status = check(sample);
+    }
+    result.statistics = combined(before, integrator->statistics());
+    if (!result.status.ok() || stretch + 1 == ends.size()) break;
+    // The restart: the state there (served already when it is a sample time), changed.
+    if (!at_end && !advance(ends[stretch])) break;
+    restarts.apply(ends[stretch], sample);
+    from = {ends[stretch], sample.q, sample.v};
+    integrals_before = sample.integrals;
+    before = result.statistics;
+  }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return result;

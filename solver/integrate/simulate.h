@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "integrate/integrator.h"
 #include "integrate/sample_times.h"
@@ -23,11 +24,22 @@ SimulationResult simulate(const MechanicalSystem& system, const IntegratorOption
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample);
 
+// Times where the system changes its constraint set (a hold-down released: nc changes) and
+// the change. At each time (ascending; those before the start or at or after the last sample
+// are ignored) the integrator stops exactly there, `apply` gets the time and the state reached
+// (a sample time or not), and a new integrator starts from it. Integrals
+// (IntegratorOptions::quadrature) and statistics run on across restarts.
+struct Restarts {
+  std::vector<double> times;
+  std::function<void(double t, const Sample& state)> apply;
+};
+
 // As above; after each delivered sample `check` judges it, and a status it returns that is not
 // ok ends the run with that status (the sample judged has been delivered).
 SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample,
-                          const std::function<Status(const Sample&)>& check);
+                          const std::function<Status(const Sample&)>& check,
+                          const Restarts& restarts = {});
 
 }  // namespace limber::integrate

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "core/input_file.h"
 #include "io/case_library.h"
 #include "io/flexible_body_reader.h"
 #include "io/mechanism_builder.h"
@@ -18,27 +19,37 @@ namespace {
 // The mechanism sections are those of kMechanismSections (mechanism_reader.h).
 const std::initializer_list<std::string_view> kCaseSections = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
-    "markers", "joints",   "drivers",  "forces",          "assembly", "run", "axis_names"};
+    "markers", "joints",   "drivers",  "forces",          "acceleration_probes", "shock_spectrum",
+    "assembly", "run", "axis_names"};
 // A case may also name a `base` case whose sections it takes where it has none: a variant
 // (another mode set, other settings) without copying the mechanism.
 const std::initializer_list<std::string_view> kCaseSectionsAndBase = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
-    "markers", "joints",   "drivers",  "forces",          "assembly", "run", "base", "axis_names"};
+    "markers", "joints",   "drivers",  "forces",          "acceleration_probes", "shock_spectrum",
+    "assembly", "run", "base", "axis_names"};
 
 // A case's `base`: the file (relative to the case's folder) whose sections this case takes
 // where it has none of its own. One level only: a base has no base.
-YamlValue with_base_case(const YamlValue& root, const std::string& file) {
+YamlValue with_base_case(const YamlValue& root) {
   const auto base = root.find("base");
   if (!base) return root;
-  const std::filesystem::path path = std::filesystem::path(file).parent_path() / base->as_string();
-  if (!std::filesystem::is_regular_file(path)) {
-    base->fail("expected a case file for 'base', got '" + base->as_string() + "' (no file " +
-               path.string() + ")");
-  }
+  const std::filesystem::path path = base->as_existing_file("a case file for 'base'");
   const YamlValue base_root = YamlDocument::load_file(path.string()).root();
   if (!base_root.is_map()) base_root.fail("expected a case (a map of sections) as a base");
   base_root.allow_only(kCaseSections);
   return root.with_base(base_root);
+}
+
+// `title`: text of at most 1024 bytes (results.h5 and modes.h5 keep it in an HDF5 attribute,
+// which holds at most 64 KiB in their 1.8 file format; reports show it as a heading).
+std::string read_title(const YamlValue& value) {
+  constexpr std::size_t kMaxTitleBytes = 1024;
+  std::string title = value.as_string();
+  if (title.size() > kMaxTitleBytes) {
+    value.fail("expected a title of at most " + std::to_string(kMaxTitleBytes) + " bytes, got '" +
+               abbreviated(title) + "'");
+  }
+  return title;
 }
 
 // `axis_names`: three distinct short names of the ground axes x, y, z (reports name the
@@ -67,12 +78,12 @@ Case read_case(const YamlDocument& document) {
     document.root().fail("expected a case (a map of sections), got an empty file");
   }
   document.root().allow_only(kCaseSectionsAndBase);
-  const YamlValue root = with_base_case(document.root(), document.file());
+  const YamlValue root = with_base_case(document.root());
 
   Case result;
   result.file = document.file();
   result.title = std::filesystem::path(document.file()).stem().string();
-  if (auto title = root.find("title")) result.title = title->as_string();
+  if (auto title = root.find("title")) result.title = read_title(*title);
   if (auto axes = root.find("axis_names")) result.axis_names = read_axis_names(*axes);
 
   // Shared definitions first, whatever their place in the file, then what refers to them.

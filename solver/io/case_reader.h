@@ -8,8 +8,8 @@
 //   materials        case_library.h
 //   sections         case_library.h
 //   flexible_bodies  flexible_body_reader.h -> one FeModel + ModeRequest per body
-//   gravity, bodies, markers, joints, drivers, forces, assembly, run
-//                    mechanism_reader.h -> the mechanism's entries and its run settings
+//   gravity, bodies, markers, joints, drivers, forces, acceleration_probes, shock_spectrum,
+//   assembly, run    mechanism_reader.h -> the mechanism's entries and its run settings
 // Any other top-level key is an error that lists these.
 //
 // Every error is an InputError at file:line:col of the offending value (expected/got),

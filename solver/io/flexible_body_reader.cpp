@@ -12,6 +12,7 @@
 #include "core/names.h"
 #include "fe/fe_model_builder.h"
 #include "fe/mesh_generators.h"
+#include "fe/rigid_elements.h"
 
 namespace limber::io {
 
@@ -174,8 +175,7 @@ std::vector<std::string> read_bulk_data(const YamlValue& value, fe::FeModelBuild
       options.unsupported_is_error = unsupported->as_choice({"error", "warn"}) == "error";
     }
   }
-  const std::filesystem::path path =
-      std::filesystem::path(file.where().file).parent_path() / file.as_string();
+  const std::filesystem::path path = file.as_existing_file("a bulk-data file");
   const bulkdata::Deck deck = bulkdata::read_deck(path.string(), file.where());
   return bulkdata::add_deck(deck, options, builder);
 }
@@ -202,6 +202,35 @@ void read_point_masses(const YamlValue& list, fe::FeModelBuilder& builder) {
       for (int k = 0; k < 3; ++k) point_mass.inertia(k, k) = moments[k].as_non_negative();
     }
     builder.add_point_mass(point_mass, entry.where());
+  }
+}
+
+// Hinge fittings and other bolted parts as RBE2 spiders (fe/rigid_elements.h): a new node at
+// `position` (body FE frame) that every node within `radius` follows rigidly in all six DOFs,
+// so that a joint on it spreads its load over the bolt pattern, whatever the mesh.
+void read_spiders(const YamlValue& list, fe::FeModelBuilder& builder) {
+  const std::vector<fe::Dof> all_dofs = {fe::Dof::kUx, fe::Dof::kUy, fe::Dof::kUz,
+                                         fe::Dof::kRx, fe::Dof::kRy, fe::Dof::kRz};
+  for (const YamlValue& entry : list.items()) {
+    entry.allow_only({"node", "position", "radius"});
+    const Eigen::Vector3d position = entry.at("position").as_vector3();
+    const double radius = entry.at("radius").as_positive();
+    // The bolt pattern: the nodes there before the spider's own.
+    std::vector<int> dependent;
+    const std::vector<Eigen::Vector3d>& nodes = builder.peek().node_positions;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if ((nodes[k] - position).norm() <= radius * (1.0 + 1e-9)) dependent.push_back(static_cast<int>(k));
+    }
+    if (dependent.empty()) {
+      entry.at("radius").fail("expected at least one node within 'radius' of 'position', got none");
+    }
+    const YamlValue id = entry.at("node");
+    const int node = builder.add_node(id.as_positive_integer(), position, id.where());
+    const std::string what = "spider " + std::to_string(builder.peek().node_ids[static_cast<std::size_t>(node)]);
+    for (const fe::MultipointConstraint& constraint :
+         fe::rigid_link_constraints(builder.peek().node_positions, node, dependent, all_dofs)) {
+      builder.add_multipoint_constraint(constraint, what, entry.where());
+    }
   }
 }
 
@@ -318,7 +347,7 @@ FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& en
   check_name_text("flexible body", name, entry.key_where());
   if (!entry.is_map()) entry.fail("expected a map {beams: ..., modes: ...} for '" + name + "'");
   entry.allow_only(
-      {"beams", "plates", "bulk_data", "point_masses", "node_sets", "fixed", "modes"});
+      {"beams", "plates", "bulk_data", "spiders", "point_masses", "node_sets", "fixed", "modes"});
   FlexibleBodyCase body;
   body.name = name;
   body.where = entry.where();
@@ -335,6 +364,7 @@ FlexibleBodyCase read_flexible_body(const std::string& name, const YamlValue& en
   }
   if (auto beams = entry.find("beams")) read_beams(*beams, library, builder);
   if (auto plates = entry.find("plates")) read_plates(*plates, library, builder);
+  if (auto spiders = entry.find("spiders")) read_spiders(*spiders, builder);
   if (auto masses = entry.find("point_masses")) read_point_masses(*masses, builder);
   if (auto sets = entry.find("node_sets")) read_node_sets(*sets, builder);
   if (auto fixed = entry.find("fixed")) read_fixed(*fixed, builder);

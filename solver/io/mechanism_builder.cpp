@@ -194,11 +194,15 @@ void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBod
   for (const JointEntry& joint : mechanism.joints) {
     for (const MarkerEntry& marker : joint.markers) add_marker(marker, builder);
     builder.add_joint(joint.name, joint.type, joint.marker_i, joint.marker_j, joint.where);
+    if (joint.release) builder.release_joint(joint.name, *joint.release, joint.release_where);
   }
   for (const DriverEntry& driver : mechanism.drivers) {
     builder.add_driver(driver.name, driver.joint, driver.coordinate, driver.motion, driver.where);
   }
   for (const ForceEntry& force : mechanism.forces) add_force(force, builder);
+  for (const AccelerationProbeEntry& probe : mechanism.acceleration_probes) {
+    builder.add_acceleration_probe(probe.spec, probe.where);
+  }
 }
 
 }  // namespace

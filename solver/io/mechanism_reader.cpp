@@ -15,7 +15,8 @@
 namespace limber::io {
 
 const std::initializer_list<std::string_view> kMechanismSections = {
-    "gravity", "bodies", "markers", "joints", "drivers", "forces", "assembly", "run"};
+    "gravity", "bodies", "markers", "joints", "drivers", "forces", "acceleration_probes", "shock_spectrum",
+    "assembly", "run"};
 
 namespace {
 
@@ -136,8 +137,12 @@ JointType read_joint_type(const YamlValue& value) {
 // <name>.i on body_i and <name>.j on body_j, frames `orientation` and `orientation_j`).
 JointEntry read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible) {
   entry.allow_only({"type", "marker_i", "marker_j", "body_i", "body_j", "position", "orientation",
-                    "orientation_j"});
-  JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where()};
+                    "orientation_j", "release"});
+  JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where(), {}, {}};
+  if (const auto release = entry.find("release")) {
+    joint.release = release->as_non_negative();
+    joint.release_where = release->where();
+  }
   if (entry.find("marker_i") || entry.find("marker_j")) {
     for (const char* key : {"body_i", "body_j", "position", "orientation", "orientation_j"}) {
       if (entry.find(key)) {
@@ -362,6 +367,19 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
     result.assembly = read_assembly(*assembly, result.bodies);
   }
   if (const auto run = root.find("run")) result.run = read_run_settings(*run);
+
+  // Outputs: acceleration probes and their spectra over the band the sampling supports.
+  const auto probes = root.find("acceleration_probes");
+  const auto spectrum = root.find("shock_spectrum");
+  if (spectrum && !probes) {
+    spectrum->fail("expected 'acceleration_probes' for 'shock_spectrum' (the spectra are the probes'), got none");
+  }
+  if (probes) {
+    for (const auto& [name, entry] : probes->entries()) check_name_text("acceleration probe", name, entry.key_where());
+    result.acceleration_probes = read_acceleration_probes(*probes, flexible);
+    result.run.shock_spectrum =
+        read_shock_spectrum(spectrum ? &*spectrum : nullptr, *probes, result.run.sample_interval);
+  }
   return result;
 }
 

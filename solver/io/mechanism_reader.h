@@ -11,6 +11,8 @@
 //   forces     rsda | tsda | point_load | latch | stop
 //   assembly   coordinates held during assembly, tolerance
 //   run        integrator and its settings, end time, sample interval
+//   acceleration_probes, shock_spectrum   points whose acceleration and its shock response
+//              spectra are recorded (acceleration_probe_reader.h)
 // No mode is computed here: the model is built from this data and the modes by
 // mechanism_builder.h. Every error is an InputError at file:line:col of the offending value
 // (expected/got).
@@ -25,23 +27,33 @@
 #include <vector>
 
 #include "integrate/integrator_options.h"
+#include "io/acceleration_probe_reader.h"
 #include "io/yaml_reader.h"
 #include "multibody/assembly.h"
 #include "multibody/model.h"
 #include "multibody/model_builder.h"
+#include "results/shock_spectra.h"
 
 namespace limber::io {
 
 // What `limber run` does with the model: integrator options, end time and output interval.
+// Where a run starts: the initial poses assembled onto the joints (with the velocities
+// given), or the static equilibrium from there (multibody/statics.h: flexible bodies deformed
+// under the loads at t = 0, every joint holding, hold-downs included).
+enum class StartKind { kAssembly, kStatics };
+
 struct RunSettings {
   integrate::IntegratorOptions integrator;  // method, tolerances or step, ρ∞, step budget
   double t_end = 1.0;                       // [s], run from t = 0
   double sample_interval = 1e-2;            // [s], output every this long (and at t_end)
+  StartKind start = StartKind::kAssembly;
   // [s] Event peaks (run/event_peaks.h): the largest reactions this long after the start and
   // after each latch engagement, tracked at every step; 0: not tracked (they cost 11-13 % of a
   // run's CPU time, measured on the slider-crank and the satellite). `limber select` tracks
   // them always, over kSelectPeakWindow unless set.
   double peak_window = 0.0;
+  // The acceleration probes' shock response spectra (case key shock_spectrum).
+  results::ShockSpectrumSettings shock_spectrum;
 };
 
 // Values, one per mode, whose length only the modes tell (checked when the model is built).
@@ -93,6 +105,8 @@ struct JointEntry {
   std::string marker_i, marker_j;
   std::vector<MarkerEntry> markers;  // <name>.i and <name>.j for a joint given at a point
   SourceLocation where;
+  std::optional<double> release;     // [s]: a hold-down, removed then (Joint::release_time)
+  SourceLocation release_where;
 };
 
 struct DriverEntry {
@@ -117,6 +131,7 @@ struct MechanismCase {
   std::vector<JointEntry> joints;
   std::vector<DriverEntry> drivers;
   std::vector<ForceEntry> forces;
+  std::vector<AccelerationProbeEntry> acceleration_probes;
   // Each flexible body -> the `flexible_bodies` entry it uses (several bodies may share one
   // entry, and with it one mode set).
   std::map<std::string, std::string> flexible_components;

@@ -8,7 +8,8 @@ namespace limber::io {
 
 RunSettings read_run_settings(const YamlValue& entry) {
   entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "rho_inf", "max_steps", "max_wall",
-                    "max_order", "newton_matrix", "event_tolerance", "t_end", "sample_interval", "peak_window"});
+                    "max_order", "newton_matrix", "event_tolerance", "t_end", "sample_interval", "start",
+                    "peak_window"});
   RunSettings settings;
   integrate::IntegratorOptions& options = settings.integrator;
   // Integrator and its settings (those of the other integrator are allowed and kept).
@@ -46,6 +47,10 @@ RunSettings read_run_settings(const YamlValue& entry) {
   if (const auto budget = entry.find("max_steps")) options.max_steps = budget->as_positive_integer();
   if (const auto wall = entry.find("max_wall")) options.max_wall_seconds = wall->as_positive();
   if (const auto events = entry.find("event_tolerance")) options.event_tolerance = events->as_positive();
+  if (const auto start = entry.find("start")) {
+    settings.start = start->as_choice({"assembly", "statics"}) == "statics" ? StartKind::kStatics
+                                                                            : StartKind::kAssembly;
+  }
   // Time span and output.
   if (const auto t_end = entry.find("t_end")) settings.t_end = t_end->as_non_negative();
   const auto interval = entry.find("sample_interval");

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "core/input_file.h"
+
 namespace limber::io {
 
 namespace {
@@ -220,6 +222,16 @@ std::string YamlValue::as_choice(std::initializer_list<std::string_view> choices
     if (choice == text) return text;
   }
   fail("expected one of " + join(choices) + " for '" + name_ + "', got '" + text + "'");
+}
+
+std::filesystem::path YamlValue::as_existing_file(std::string_view what) const {
+  const std::string text = as_string();
+  const std::filesystem::path path = std::filesystem::path(*file_).parent_path() / text;
+  const std::string problem = regular_file_problem(path);
+  if (!problem.empty()) {
+    fail("expected " + std::string(what) + ", got '" + abbreviated(text) + "' (" + problem + ")");
+  }
+  return path;
 }
 
 YamlDocument::YamlDocument(YAML::Node root, std::shared_ptr<const std::string> file)

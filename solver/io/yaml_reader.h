@@ -13,6 +13,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -73,6 +74,10 @@ class YamlValue {
   Eigen::Vector3d as_vector3() const;  // sequence of exactly 3 numbers
   // One of `choices` (the message lists them).
   std::string as_choice(std::initializer_list<std::string_view> choices) const;
+  // A regular file named by this scalar, relative to the folder of the file that holds it;
+  // `what` says what it is ("a bulk-data file"): "expected a bulk-data file, got 'x.bdf' (no
+  // such file)", and "file name too long" and the like (core/input_file.h).
+  std::filesystem::path as_existing_file(std::string_view what) const;
 
   // The underlying node (for readers that need yaml-cpp directly).
   const YAML::Node& node() const { return node_; }

@@ -11,10 +11,20 @@
 namespace limber::modal {
 namespace {
 
-// Scale of the rotation columns: the largest node coordinate magnitude, at least 1 m.
-double rotation_scale(const Eigen::MatrixXd& psi) {
-  const double scale = psi.rightCols(3).cwiseAbs().maxCoeff();
-  return std::max(scale, 1.0);
+// Psi with every translational row divided by the nodes' extent: dimensionless (a unit rotation
+// moves the farthest node by at most about 1), so that rank decisions hold at any model size.
+Eigen::MatrixXd dimensionless_rows(const Eigen::MatrixXd& psi, double length) {
+  Eigen::MatrixXd scaled = psi;
+  for (Eigen::Index row = 0; row < scaled.rows(); row += fe::kDofsPerNode) {
+    scaled.middleRows(row, 3) /= length;
+  }
+  return scaled;
+}
+
+// An orthonormal basis (thin Q) of the columns of dimensionless_rows(motions, length).
+Eigen::MatrixXd dimensionless_basis(const Eigen::MatrixXd& motions, double length) {
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(dimensionless_rows(motions, length));
+  return qr.householderQ() * Eigen::MatrixXd::Identity(motions.rows(), motions.cols());
 }
 
 }  // namespace
@@ -40,16 +50,35 @@ Eigen::MatrixXd rigid_body_modes(const fe::FeModel& model) {
   return rigid_body_modes(model.node_positions);
 }
 
+double rigid_length_scale(const Eigen::MatrixXd& psi) {
+  // Node p's position from its rows of the rotation columns (-[x_p]x); a node with a zeroed row
+  // (a DOF made dependent by a multipoint constraint) is skipped.
+  std::vector<Eigen::Vector3d> positions;
+  for (Eigen::Index row = 0; row < psi.rows(); row += fe::kDofsPerNode) {
+    if (psi(row, 0) != 1.0 || psi(row + 1, 1) != 1.0 || psi(row + 2, 2) != 1.0) continue;
+    positions.emplace_back(psi(row + 1, 5), psi(row + 2, 3), psi(row, 4));
+  }
+  if (positions.empty()) return 1.0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& x : positions) centre += x;
+  centre /= static_cast<double>(positions.size());
+  double length = 0.0;
+  for (const Eigen::Vector3d& x : positions) length = std::max(length, (x - centre).stableNorm());
+  // One node (or all at one point): rotations move no node, any length will do.
+  return length > 0.0 ? length : 1.0;
+}
+
 Eigen::MatrixXd unrestrained_rigid_motion(const Eigen::MatrixXd& psi,
                                           const std::vector<int>& held_dofs) {
   LIMBER_DEMAND(psi.cols() == 6);
   if (held_dofs.empty()) return psi;
-  // Scale rotations to the model size so that the rank test is unit-free.
-  Eigen::VectorXd column_scale = Eigen::VectorXd::Ones(6);
-  column_scale.tail(3).setConstant(1.0 / rotation_scale(psi));
+  // An orthonormal basis of the rigid motions in dimensionless rows: the rank test below is
+  // then free of units, of the model's size and of its distance from the frame origin.
+  const double length = rigid_length_scale(psi);
+  const Eigen::MatrixXd basis = dimensionless_basis(psi, length);
   Eigen::MatrixXd held(static_cast<Eigen::Index>(held_dofs.size()), 6);
   for (std::size_t i = 0; i < held_dofs.size(); ++i) {
-    held.row(static_cast<Eigen::Index>(i)) = psi.row(held_dofs[i]).cwiseProduct(column_scale.transpose());
+    held.row(static_cast<Eigen::Index>(i)) = basis.row(held_dofs[i]);
   }
   // Null space of the held rows from the full SVD (right singular vectors).
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(held, Eigen::ComputeFullV);
@@ -58,14 +87,17 @@ Eigen::MatrixXd unrestrained_rigid_motion(const Eigen::MatrixXd& psi,
   for (Eigen::Index i = 0; i < s.size(); ++i) {
     if (s[i] > kRankTolerance * s[0]) ++rank;
   }
-  const Eigen::MatrixXd null_space = svd.matrixV().rightCols(6 - rank);
-  return psi * column_scale.asDiagonal() * null_space;
+  // Back to metres in the translational rows.
+  return dimensionless_rows(basis * svd.matrixV().rightCols(6 - rank), 1.0 / length);
 }
 
 std::vector<int> determinate_support(const Eigen::MatrixXd& psi_free,
-                                     const std::vector<int>& candidates) {
+                                     const std::vector<int>& candidates, double length) {
   const Eigen::Index r = psi_free.cols();
   if (r == 0) return {};
+  // The same motions in an orthonormal basis of dimensionless rows, as in the rank test of
+  // unrestrained_rigid_motion (psi_free may be Psi itself, whose columns differ by 1/length).
+  const Eigen::MatrixXd scaled = dimensionless_basis(psi_free, length);
   // Translational candidates first (a rotational support on a shell's drilling DOF
   // would be weak), then all of them.
   std::vector<int> translational;
@@ -77,7 +109,7 @@ std::vector<int> determinate_support(const Eigen::MatrixXd& psi_free,
     if (static_cast<Eigen::Index>(pool->size()) < r) continue;
     Eigen::MatrixXd rows_t(r, static_cast<Eigen::Index>(pool->size()));
     for (std::size_t i = 0; i < pool->size(); ++i) {
-      rows_t.col(static_cast<Eigen::Index>(i)) = psi_free.row((*pool)[i]).transpose();
+      rows_t.col(static_cast<Eigen::Index>(i)) = scaled.row((*pool)[i]).transpose();
     }
     // Column-pivoted QR: the first r pivots are the best-conditioned DOF choice.
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rows_t);
@@ -90,11 +122,11 @@ std::vector<int> determinate_support(const Eigen::MatrixXd& psi_free,
     std::sort(support.begin(), support.end());
     return support;
   }
-  // Unreachable from any input: psi_free's r columns are independent (psi holds a unit row
-  // per translation and rotation) and its rows over the held DOFs are zero to the rank
-  // tolerance, so its rows over the remaining DOFs, which the callers pass as candidates,
-  // have rank r (tests/modal/test_static_modes.cpp checks every held set of a beam and a
-  // shell node).
+  // Unreachable from any input: the basis's r columns are orthonormal and its rows over the
+  // held DOFs are zero to the rank tolerance, so its rows over the remaining DOFs, which the
+  // callers pass as candidates, have singular values near 1 whatever the model's size
+  // (tests/modal/test_static_modes.cpp checks every held set of a beam and a shell patch, at
+  // sizes 1e-12 to 1e12 m and far from the origin).
   LIMBER_DEMAND(false && "no statically determinate support among the candidate DOFs");
   return {};
 }

@@ -76,7 +76,7 @@ StaticModes compute_constraint_modes(const SparseMatrix& stiffness, const Sparse
   held.insert(held.end(), c.begin(), c.end());
   std::sort(held.begin(), held.end());
   const Eigen::MatrixXd psi_n = unrestrained_rigid_motion(psi, held);
-  const std::vector<int> unknowns = set_difference(v, determinate_support(psi_n, v));
+  const std::vector<int> unknowns = set_difference(v, determinate_support(psi_n, v, rigid_length_scale(psi)));
 
   // K_uu X = -K_uc (columns in the caller's order of chosen DOFs).
   const SparseMatrix k_uc = submatrix(stiffness, unknowns, chosen_dofs);
@@ -128,7 +128,7 @@ StaticModes compute_static_responses(const SparseMatrix& stiffness, const Sparse
   }
 
   // Solve with the temporary determinate support (none for a restrained component).
-  const std::vector<int> unknowns = set_difference(free_dofs, determinate_support(psi_n, free_dofs));
+  const std::vector<int> unknowns = set_difference(free_dofs, determinate_support(psi_n, free_dofs, rigid_length_scale(psi)));
   Eigen::MatrixXd x;
   if (!solve_restricted(stiffness, unknowns, gather_rows(loads, unknowns), x, result.message, what)) {
     result.status = ModalStatus::kSingular;

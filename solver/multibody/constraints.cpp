@@ -1,5 +1,6 @@
 #include "multibody/constraints.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -111,10 +112,18 @@ void evaluate_constraints(const Model& model, const State& state, Stage stage, W
   }
 }
 
-ConstraintViolation constraint_violation(const Model& model, const State& state, Workspace& ws) {
+ConstraintViolation constraint_violation(const Model& model, const State& state, Workspace& ws,
+                                         const std::vector<bool>& released) {
   if (model.num_equations() == 0) return {};
   evaluate_constraints(model, state, Stage::kPosition, ws);
-  return {ws.g.cwiseAbs().maxCoeff(), (ws.G * state.v + ws.g_t).cwiseAbs().maxCoeff()};
+  const Eigen::VectorXd rate = ws.G * state.v + ws.g_t;
+  ConstraintViolation out;
+  for (int row = 0; row < model.num_equations(); ++row) {
+    if (!released.empty() && released[static_cast<std::size_t>(row)]) continue;
+    out.position = std::max(out.position, std::abs(ws.g(row)));
+    out.velocity = std::max(out.velocity, std::abs(rate(row)));
+  }
+  return out;
 }
 
 }  // namespace limber::multibody

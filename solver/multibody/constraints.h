@@ -27,13 +27,15 @@ void update_marker_kinematics(const Model& model, const State& state, Stage stag
 // Updates ws.markers first.
 void evaluate_constraints(const Model& model, const State& state, Stage stage, Workspace& ws);
 
-// Largest residuals over all rows: max |g| [m or rad] and max |G v + g_t| [m/s or rad/s]
-// (the results file's constraint-violation norms). Updates ws.
+// Largest residuals over all rows but those flagged in `released` (rows of released joints,
+// redundancy.h's rows_released_by; empty: none): max |g| [m or rad] and max |G v + g_t|
+// [m/s or rad/s] (the results file's constraint-violation norms). Updates ws.
 struct ConstraintViolation {
   double position = 0.0;
   double velocity = 0.0;
 };
-ConstraintViolation constraint_violation(const Model& model, const State& state, Workspace& ws);
+ConstraintViolation constraint_violation(const Model& model, const State& state, Workspace& ws,
+                                         const std::vector<bool>& released = {});
 
 // Rotation angle of marker j about z_i: θ = atan2(x_j·y_i, x_j·x_i) ∈ (−π, π] [rad];
 // θ̇ = u·(ω_j − ω_i) exactly (u = (c ∂s − s ∂c)/(c² + s²), s, c the two dot products), and

@@ -1,5 +1,8 @@
 #include "multibody/model.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace limber::multibody {
 
 const char* to_string(ShapeType type) {
@@ -47,6 +50,16 @@ int Model::find_body(const std::string& name) const { return find_named(bodies, 
 int Model::find_joint(const std::string& name) const { return find_named(joints, name); }
 int Model::find_driver(const std::string& name) const { return find_named(drivers, name); }
 int Model::find_equation(const std::string& name) const { return find_named(equations, name); }
+
+std::vector<double> Model::release_times() const {
+  std::vector<double> times;
+  for (const Joint& joint : joints) {
+    if (std::isfinite(joint.release_time)) times.push_back(joint.release_time);
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
 
 const std::string& force_name(const ForceElement& force) {
   return std::visit([](const auto& f) -> const std::string& { return f.name; }, force);

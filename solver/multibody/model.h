@@ -12,6 +12,7 @@
 // See docs/multibody.md for each joint's equations.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <variant>
@@ -75,12 +76,15 @@ enum class JointType { kRevolute, kTranslational, kSpherical, kBracket, kUnivers
 const char* to_string(JointType type);
 
 // A joint between marker i (on body_i) and marker j (on body_j); its equations are rows
-// [first_row, first_row + rows) of the full constraint vector.
+// [first_row, first_row + rows) of the full constraint vector. A joint with a finite
+// release_time (a hold-down) holds up to that time and is then removed: its rows leave the
+// equations and its reaction is zero from then on (docs/multibody.md, "Hold-downs").
 struct Joint {
   std::string name;
   JointType type = JointType::kRevolute;
   int marker_i = 0, marker_j = 0;
   int first_row = 0, rows = 0;
+  double release_time = std::numeric_limits<double>::infinity();  // [s]
 };
 
 // What a driver prescribes on its joint: the rotation angle of marker j about z_i (x_j
@@ -163,6 +167,16 @@ struct HingeLimit {
 
 using ForceElement = std::variant<Rsda, Tsda, PointLoad, HingeLimit>;
 
+// Output only: a point whose absolute acceleration is recorded (acceleration_probe.h): p_B in
+// the frame of a rigid body, or FE node `node` of a flexible body (then p_B is the node's
+// undeformed position and the point follows the node's elastic motion).
+struct AccelerationProbe {
+  std::string name;
+  int body = 1;
+  Eigen::Vector3d p_B = Eigen::Vector3d::Zero();  // [m]
+  int node = -1;                                  // flexible bodies: node index; else −1
+};
+
 struct Model {
   std::vector<Body> bodies;  // bodies[0] is ground
   std::vector<Marker> markers;
@@ -170,6 +184,7 @@ struct Model {
   std::vector<Driver> drivers;
   std::vector<ForceElement> forces;
   std::vector<ConstraintEquation> equations;  // full set, joints then drivers
+  std::vector<AccelerationProbe> acceleration_probes;  // output only
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // [m/s²]
   int nq = 0, nv = 0;
 
@@ -179,6 +194,8 @@ struct Model {
   int find_joint(const std::string& name) const;
   int find_driver(const std::string& name) const;
   int find_equation(const std::string& name) const;
+  // The release times of the joints that have one, ascending, without repeats [s].
+  std::vector<double> release_times() const;
 };
 
 const std::string& force_name(const ForceElement& force);

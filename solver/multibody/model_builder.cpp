@@ -205,6 +205,26 @@ int ModelBuilder::add_joint(const std::string& name, JointType type, const std::
   return static_cast<int>(model_.joints.size()) - 1;
 }
 
+void ModelBuilder::release_joint(const std::string& joint, double time, const SourceLocation& where) {
+  const int j = model_.find_joint(joint);
+  if (j < 0) throw InputError(fmt::format("release: expected an existing joint, got \"{}\"", joint), where);
+  Joint& released = model_.joints[static_cast<std::size_t>(j)];
+  if (!std::isfinite(time) || time < 0.0) {
+    throw InputError(fmt::format("joint \"{}\": expected a release time >= 0 s, got {}", joint, time), where);
+  }
+  if (std::isfinite(released.release_time)) {
+    throw InputError(fmt::format("joint \"{}\": expected one release, got a second (at {} s after {} s)",
+                                 joint, time, released.release_time), where);
+  }
+  for (const Driver& driver : model_.drivers) {
+    if (driver.joint == j) {
+      throw InputError(fmt::format("joint \"{}\": expected an undriven joint to release, got one driven "
+                                   "by \"{}\"", joint, driver.name), where);
+    }
+  }
+  released.release_time = time;
+}
+
 int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
                              DriverCoordinate coordinate, TimeFunction motion,
                              const SourceLocation& where) {
@@ -212,6 +232,10 @@ int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
   check_name_text("driver", name, where);
   const int j = model_.find_joint(joint);
   if (j < 0) throw InputError(fmt::format("driver \"{}\": expected an existing joint, got \"{}\"", name, joint), where);
+  if (std::isfinite(model_.joints[static_cast<std::size_t>(j)].release_time)) {
+    throw InputError(fmt::format("driver \"{}\": expected a joint that is not released, got \"{}\"", name, joint),
+                     where);
+  }
   // The joint must leave the driven coordinate free.
   const JointType type = model_.joints[j].type;
   const bool rotation_ok = type == JointType::kRevolute || type == JointType::kCylindrical;
@@ -286,6 +310,47 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
   model_.forces.push_back(HingeLimit{spec.name, spec.kind, j, joint.marker_i, joint.marker_j,
                                      spec.angle, travel > 0.0 ? 1.0 : -1.0, spec.stiffness,
                                      spec.damping, theta0 + 0.5 * travel});
+}
+
+void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, const SourceLocation& where) {
+  check_name_text("acceleration probe", spec.name, where);
+  for (const AccelerationProbe& probe : model_.acceleration_probes) {
+    if (probe.name == spec.name) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected a unique name, got a duplicate", spec.name),
+                       where);
+    }
+  }
+  AccelerationProbe probe{spec.name, 0, spec.p_B, spec.node};
+  if (!spec.marker.empty()) {
+    // At a marker: its body, point and node.
+    const Marker& marker = model_.markers[static_cast<std::size_t>(marker_index(spec.marker, where))];
+    probe.body = marker.body;
+    probe.p_B = marker.p_BM;
+    probe.node = marker.node;
+  } else {
+    probe.body = model_.find_body(spec.body);
+    if (probe.body < 0) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected an existing body, got \"{}\"", spec.name,
+                                   spec.body), where);
+    }
+  }
+  const Body& body = model_.bodies[static_cast<std::size_t>(probe.body)];
+  if (body.kind == BodyKind::kGround) {
+    throw InputError(fmt::format("acceleration probe \"{}\": expected a moving body, got ground (it does not "
+                                 "accelerate)", spec.name), where);
+  }
+  if (body.kind == BodyKind::kFlexible) {
+    const int nodes = body.flexible->node_count();
+    if (probe.node < 0 || probe.node >= nodes) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected a node index in [0, {}) of flexible body "
+                                   "\"{}\", got {}", spec.name, nodes, body.name, probe.node), where);
+    }
+    probe.p_B = body.flexible->node_positions.col(probe.node);
+  } else if (probe.node >= 0) {
+    throw InputError(fmt::format("acceleration probe \"{}\": expected a point of rigid body \"{}\", got a node",
+                                 spec.name, body.name), where);
+  }
+  model_.acceleration_probes.push_back(probe);
 }
 
 void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {

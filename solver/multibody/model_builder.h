@@ -90,6 +90,15 @@ struct PointLoadSpec {
   LoadFrame frame = LoadFrame::kGround;
 };
 
+// An acceleration probe (output only, model.h): at marker `marker`'s origin (its node on a
+// flexible body) when given, else on body `body`: at p_B (body frame) of a rigid body, or at FE
+// node `node` (0-based index) of a flexible one.
+struct AccelerationProbeSpec {
+  std::string name, marker, body;
+  Eigen::Vector3d p_B = Eigen::Vector3d::Zero();  // [m], rigid bodies
+  int node = -1;                                  // flexible bodies
+};
+
 class ModelBuilder {
  public:
   ModelBuilder();
@@ -128,8 +137,13 @@ class ModelBuilder {
   // The markers must lie on different bodies.
   int add_joint(const std::string& name, JointType type, const std::string& marker_i,
                 const std::string& marker_j, const SourceLocation& where = {});
+  // The joint holds up to `time` and is then removed (a hold-down: Joint::release_time).
+  // Throws InputError for an unknown joint, a time that is negative or not finite, a joint
+  // released already, or a driven joint (its driver would prescribe a coordinate of nothing).
+  void release_joint(const std::string& joint, double time, const SourceLocation& where = {});
   // Rotation drivers need a revolute or cylindrical joint, translation drivers a
-  // translational or cylindrical one; at most one driver per joint coordinate.
+  // translational or cylindrical one; at most one driver per joint coordinate; none on a
+  // released joint.
   int add_driver(const std::string& name, const std::string& joint, DriverCoordinate coordinate,
                  TimeFunction motion, const SourceLocation& where = {});
   void add_rsda(const RsdaSpec& spec, const SourceLocation& where = {});
@@ -139,6 +153,10 @@ class ModelBuilder {
   // joint's angle at the initial poses θ0: 0 < |angle − θ0| < 2π (within one turn, and not
   // where the hinge starts).
   void add_hinge_limit(const HingeLimitSpec& spec, const SourceLocation& where = {});
+  // Throws unless the name is unique among probes, the marker (or body) exists and moves (not
+  // ground), and the point fits the body: p_B on a rigid body, a node index in range on a
+  // flexible one.
+  void add_acceleration_probe(const AccelerationProbeSpec& spec, const SourceLocation& where = {});
 
   // Numbers the coordinates and the constraint equations; the builder stays usable.
   // Precondition: no body was added by add_flexible_body_outline.

@@ -174,7 +174,8 @@ bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) c
     }
   }
   ConstraintPartition fresh =
-      analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_);
+      analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_,
+                         partition_.row_released);
   if (fresh.independent.size() != partition_.independent.size() ||
       fresh.independent == partition_.independent) {
     return false;
@@ -184,6 +185,14 @@ bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) c
   partition_ = std::move(fresh);
   chosen_pivot_ = better;
   return true;
+}
+
+void MultibodySystem::release_joints(double t, const Eigen::VectorXd& q) {
+  state_.t = t;
+  state_.q = q;
+  partition_ = analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_,
+                                  rows_released_by(model_, t));
+  chosen_pivot_ = -1.0;
 }
 
 std::vector<double> MultibodySystem::velocity_breakpoints() const {

@@ -56,6 +56,12 @@ class MultibodySystem final : public MechanicalSystem {
   // at (t, q) is better conditioned with the same rank.
   bool reselect_constraints(double t, const Eigen::VectorXd& q) const override;
 
+  // Removes the joints released at or before t (Joint::release_time ≤ t, redundancy.h's
+  // rows_released_by) from the equations: the partition is analysed anew at (t, q) without
+  // their rows, so nc() may shrink. An integrator holding this system must be started afresh
+  // after it (run_driver.h integrates from one release time to the next).
+  void release_joints(double t, const Eigen::VectorXd& q);
+
   // The slope jumps of the drivers' motions (TimeFunction::slope_jumps), ascending, merged.
   std::vector<double> velocity_breakpoints() const override;
   // One event per hinge latch and stop (hinge_limit.h), in model.forces order.

@@ -31,11 +31,16 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
   Reactions out;
   // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇, the rank decided
   // with the redundancy analysis' threshold (core/minimum_norm.h says why not Eigen's COD).
-  out.lambda = minimum_norm_solve(ws.G.transpose(), ws.Q - ws.M * v_dot, partition.relative_threshold);
+  // Released joints (hold-downs after their release) are out of the equations: zero rows.
+  Eigen::MatrixXd G = ws.G;
+  for (int row = 0; row < model.num_equations(); ++row) {
+    if (partition.released(row)) G.row(row).setZero();
+  }
+  out.lambda = minimum_norm_solve(G.transpose(), ws.Q - ws.M * v_dot, partition.relative_threshold);
   // Joints: generalized constraint force of their rows, turned into a wrench at a marker.
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const Joint& joint = model.joints[k];
-    const Eigen::VectorXd Q_k = -ws.G.middleRows(joint.first_row, joint.rows).transpose() *
+    const Eigen::VectorXd Q_k = -G.middleRows(joint.first_row, joint.rows).transpose() *
                                 out.lambda.segment(joint.first_row, joint.rows);
     const Marker& marker_i = model.markers[joint.marker_i];
     const Marker& marker_j = model.markers[joint.marker_j];

@@ -85,23 +85,46 @@ ConstraintPartition full_partition(const Model& model) {
   return p;
 }
 
+std::vector<bool> rows_released_by(const Model& model, double t) {
+  std::vector<bool> released(static_cast<std::size_t>(model.num_equations()), false);
+  bool any = false;
+  for (const Joint& joint : model.joints) {
+    if (joint.release_time > t) continue;
+    any = true;
+    for (int row = joint.first_row; row < joint.first_row + joint.rows; ++row) {
+      released[static_cast<std::size_t>(row)] = true;
+    }
+  }
+  return any ? released : std::vector<bool>{};
+}
+
 ConstraintPartition analyse_redundancy(const Model& model, const State& state, Workspace& ws,
-                                       double relative_threshold, const std::vector<int>& keep) {
+                                       double relative_threshold, const std::vector<int>& keep,
+                                       const std::vector<bool>& released) {
   const int m = model.num_equations();
   ConstraintPartition p;
   p.relative_threshold = relative_threshold;
+  p.row_released = released;
+  // Released rows as zero rows: pivoted last, below the rank, and then set aside.
+  const auto without_released = [&](Eigen::MatrixXd A) {
+    for (int row = 0; row < m; ++row) {
+      if (p.released(row)) A.row(row).setZero();
+    }
+    return A;
+  };
   // No equations (free bodies only): nothing to factorise (Eigen's QR of a 0-column matrix fails).
   if (m == 0) {
     mark_indeterminate(model, p);
     return p;
   }
   // The rank in the mass metric: rows of G L⁻ᵀ (M = L Lᵀ), whose products are G M⁻¹ Gᵀ.
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> weighted(mass_metric_rows(model, state, ws).transpose());
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> weighted(
+      without_released(mass_metric_rows(model, state, ws)).transpose());
   weighted.setThreshold(relative_threshold);
   const int rank = static_cast<int>(weighted.rank());
   // Which rows: the first `rank` pivots of G itself, whose order keeps whole joints where it
   // can (the mass metric would pick a set that turns singular as a slider-crank moves).
-  const Eigen::MatrixXd S = unit_rows(ws.G);
+  const Eigen::MatrixXd S = without_released(unit_rows(ws.G));
   Eigen::MatrixXd S_pivoting = S;
   for (int row : keep) S_pivoting.row(row) *= 2.0;  // larger norms are pivoted first
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S_pivoting.transpose());
@@ -113,7 +136,9 @@ ConstraintPartition analyse_redundancy(const Model& model, const State& state, W
   for (int k = 0; k < rank; ++k) S_ind.row(k) = S.row(p.independent[k]);
   const Eigen::HouseholderQR<Eigen::MatrixXd> basis(S_ind.transpose());
   std::vector<int> redundant_rows;
-  for (int k = rank; k < m; ++k) redundant_rows.push_back(perm(k));
+  for (int k = rank; k < m; ++k) {
+    if (!p.released(perm(k))) redundant_rows.push_back(perm(k));
+  }
   std::sort(redundant_rows.begin(), redundant_rows.end());
   for (int row : redundant_rows) {
     RedundantEquation r{row, {}};

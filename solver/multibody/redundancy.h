@@ -39,7 +39,14 @@ struct ConstraintPartition {
   std::vector<RedundantEquation> redundant;  // ascending row indices
   std::vector<bool> row_indeterminate;       // per row: in a dependency group
   std::vector<bool> joint_indeterminate;     // per joint: one of its rows is
+  // Per row: its joint has been released (Joint::release_time): the row is in neither set and
+  // carries no multiplier. Empty when no joint is released.
+  std::vector<bool> row_released;
   double relative_threshold = kRedundancyThreshold;
+
+  bool released(int row) const {
+    return !row_released.empty() && row_released[static_cast<std::size_t>(row)];
+  }
 
   // One line per redundant equation, e.g. "R3.y is redundant with R1.y, R2.y, T.y".
   std::vector<std::string> describe(const Model& model) const;
@@ -60,11 +67,16 @@ std::vector<bool> rows_adding_directions(const Eigen::MatrixXd& S, const std::ve
 // All rows independent (no analysis).
 ConstraintPartition full_partition(const Model& model);
 
+// Per row of the model: its joint's release time is at or before t (empty when none is).
+std::vector<bool> rows_released_by(const Model& model, double t);
+
 // Analyses G at `state` (evaluated there; updates ws). Rows in `keep` are pivoted first, so
-// they stay independent where the rank allows (MultibodySystem::reselect_constraints).
+// they stay independent where the rank allows (MultibodySystem::reselect_constraints); rows
+// flagged in `released` (rows_released_by) are left out of both sets.
 // Precondition: the state is assembled (redundancy is a property of the configuration).
 ConstraintPartition analyse_redundancy(const Model& model, const State& state, Workspace& ws,
                                        double relative_threshold = kRedundancyThreshold,
-                                       const std::vector<int>& keep = {});
+                                       const std::vector<int>& keep = {},
+                                       const std::vector<bool>& released = {});
 
 }  // namespace limber::multibody

@@ -31,4 +31,27 @@ bool try_write_scalar_attribute(hid_t object, const char* name, hid_t file_type,
   return attribute.valid() && H5Awrite(attribute.get(), memory_type, value) >= 0;
 }
 
+bool try_write_string_attribute(hid_t object, const char* name, const std::string& value) {
+  const H5Handle type(H5Tcopy(H5T_C_S1));
+  if (!type.valid() || H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)) < 0 ||
+      H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0) {
+    return false;
+  }
+  const std::string padded = value.empty() ? std::string(1, '\0') : value;
+  return try_write_scalar_attribute(object, name, type.get(), type.get(), padded.data());
+}
+
+bool try_write_string_dataset(hid_t parent, const char* name, const std::vector<std::string>& values) {
+  // One width for all: the longest value (at least 1).
+  std::size_t width = 1;
+  for (const std::string& value : values) width = std::max(width, value.size());
+  std::string packed(width * values.size(), '\0');
+  for (std::size_t k = 0; k < values.size(); ++k) packed.replace(k * width, values[k].size(), values[k]);
+  const H5Handle type(H5Tcopy(H5T_C_S1));
+  if (!type.valid() || H5Tset_size(type.get(), width) < 0 || H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0) {
+    return false;
+  }
+  return try_write_dataset(parent, name, type.get(), type.get(), {values.size()}, packed.data());
+}
+
 }  // namespace limber::results

@@ -5,6 +5,7 @@
 
 #include <hdf5.h>
 
+#include <string>
 #include <vector>
 
 namespace limber::results {
@@ -18,5 +19,12 @@ bool try_write_dataset(hid_t parent, const char* name, hid_t file_type, hid_t me
 // attribute of the same name.
 bool try_write_scalar_attribute(hid_t object, const char* name, hid_t file_type,
                                 hid_t memory_type, const void* value);
+
+// Writes the scalar string attribute `name` of `object`: fixed length, null-padded (replacing
+// one of the same name).
+bool try_write_string_attribute(hid_t object, const char* name, const std::string& value);
+
+// Creates the one-dimensional dataset `name` in `parent` of fixed-length, null-padded strings.
+bool try_write_string_dataset(hid_t parent, const char* name, const std::vector<std::string>& values);
 
 }  // namespace limber::results

@@ -216,6 +216,37 @@ inline constexpr const char* kTorqueComponent = "torque_component";
 inline constexpr const char* kTorqueComponentTime = "torque_component_time";
 }  // namespace event_peaks
 
+// /acceleration_probes/<probe>/ (optional): attributes name, body, node (int: the FE node's
+// user id on a flexible body, −1 on a rigid one) and point (float64 [3]: the point in the body
+// frame, undeformed [m]).
+inline constexpr const char* kAccelerationProbes = "/acceleration_probes";
+namespace acceleration_probe {
+inline constexpr const char* kBodyAttribute = "body";
+inline constexpr const char* kNodeAttribute = "node";
+inline constexpr const char* kPointAttribute = "point";
+inline constexpr const char* kAcceleration = "acceleration";  // float64 [ns, 3], absolute, ground axes [m/s²]
+}  // namespace acceleration_probe
+
+// /shock_spectra (optional; docs/shock-response-spectrum.md): the probes' maximax SRS per window,
+// written at the end of the run. Attributes q, window_length [s], and min_frequency,
+// max_frequency [Hz] (the grid's ends).
+inline constexpr const char* kShockSpectra = "/shock_spectra";
+namespace shock_spectra {
+inline constexpr const char* kQAttribute = "q";
+inline constexpr const char* kWindowLengthAttribute = "window_length";
+inline constexpr const char* kMinFrequencyAttribute = "min_frequency";
+inline constexpr const char* kMaxFrequencyAttribute = "max_frequency";
+inline constexpr const char* kFrequency = "frequency";      // float64 [nf], 1/6-octave grid [Hz]
+inline constexpr const char* kWindowName = "window_name";   // string [nw] "whole run" | "start" | "latch <name>[, <name>...]"
+inline constexpr const char* kWindowStart = "window_start";  // float64 [nw] [s]
+inline constexpr const char* kWindowEnd = "window_end";      // float64 [nw] [s]
+inline constexpr const char* kProbes = "probes";  // group: one group per probe (attribute name)
+// In probes/<probe>: float64 [nw, 3, nf], per window, ground axis x, y, z and frequency [m/s²].
+inline constexpr const char* kMaximax = "maximax";
+inline constexpr const char* kPrimary = "primary";    // during the window
+inline constexpr const char* kResidual = "residual";  // after it
+}  // namespace shock_spectra
+
 // /clearance (optional).
 inline constexpr const char* kClearance = "/clearance";
 namespace clearance {

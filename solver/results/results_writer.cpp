@@ -3,11 +3,13 @@
 #include <array>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "results/directory_lock.h"
 #include "results/h5_handle.h"
 #include "results/h5_write.h"
 #include "results/link_name.h"
 #include "results/results_layout.h"
+#include "results/shock_spectra_file.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,14 +30,15 @@ H5Handle checked(hid_t id, const char* what) {
   return H5Handle(id);
 }
 
+// The longest text of a string attribute, in bytes: an attribute holds at most 64 KiB in the
+// 1.8 file format. The case's names and title are shorter (core/names.h, io/case_reader.cpp);
+// longer text (a run's message, which may quote many names) is cut, ending "… (N bytes)".
+constexpr std::size_t kMaxAttributeText = 16384;
+
 // A fixed-length, null-padded string attribute (replacing one of the same name: status is
 // rewritten at finish).
 void write_string_attribute(hid_t object, const char* name, const std::string& value) {
-  H5Handle type = checked(H5Tcopy(H5T_C_S1), "copy the string type");
-  check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "size a string");
-  check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "pad a string");
-  const std::string padded = value.empty() ? std::string(1, '\0') : value;
-  check(try_write_scalar_attribute(object, name, type.get(), type.get(), padded.data()) ? 0 : -1,
+  check(try_write_string_attribute(object, name, abbreviated(value, kMaxAttributeText)) ? 0 : -1,
         "write a string attribute");
 }
 
@@ -93,14 +96,7 @@ void write_shapes(hid_t body_group, const std::vector<ShapeSpec>& shapes) {
 
 // A one-dimensional dataset of fixed-length, null-padded strings.
 void write_string_dataset(hid_t parent, const char* name, const std::vector<std::string>& values) {
-  std::size_t width = 1;
-  for (const std::string& value : values) width = std::max(width, value.size());
-  std::string packed(width * values.size(), '\0');
-  for (std::size_t k = 0; k < values.size(); ++k) packed.replace(k * width, values[k].size(), values[k]);
-  H5Handle type = checked(H5Tcopy(H5T_C_S1), "copy the string type");
-  check(H5Tset_size(type.get(), width), "size a string");
-  check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "pad a string");
-  write_dataset(parent, name, type.get(), type.get(), {values.size()}, packed.data());
+  check(try_write_string_dataset(parent, name, values) ? 0 : -1, "write a string dataset");
 }
 
 // The link of a declared name (results/link_name.h), new within its kind: names are unique on
@@ -144,7 +140,9 @@ struct StressSeries {
 }  // namespace
 
 struct ResultsWriter::Impl {
-  DirectoryLock lock;  // first member: released after the file is closed
+  // HDF5 prints no error stack while the writer lives: its failures are exceptions (check).
+  SilentHdf5Errors silent;
+  DirectoryLock lock;  // released after the file is closed
   std::filesystem::path path;
   H5Handle file;
   H5Handle bodies_group;
@@ -171,6 +169,11 @@ struct ResultsWriter::Impl {
   std::vector<Series> driver_series;
   std::vector<Series> energy_series;
   Series position_violation, velocity_violation, steps, time;
+  // Per acceleration probe: its acceleration [ns, 3].
+  H5Handle probes_group;
+  std::set<std::string> probe_links;
+  std::vector<Series> probe_series;
+  bool has_shock_spectra = false;
   // /clearance/minimum and /clearance/pair, when pairs were declared.
   Series clearance_minimum, clearance_pair;
   bool has_clearance = false;
@@ -257,6 +260,7 @@ struct ResultsWriter::Impl {
     for (std::array<Series, 3>& limit : limit_series) {
       for (Series& series : limit) write_pending(series, ns_written, rows);
     }
+    for (Series& series : probe_series) write_pending(series, ns_written, rows);
     for (Series* series : {&position_violation, &velocity_violation, &steps}) {
       write_pending(*series, ns_written, rows);
     }
@@ -386,7 +390,6 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
 
   // Create the file in the 1.8-compatible format: no "open for writing" flag survives a crash.
   {
-    SilentHdf5Errors silent;
     H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
     H5Pset_libver_bounds(access.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18);
     impl_->file = H5Handle(
@@ -573,6 +576,19 @@ int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
   return static_cast<int>(m.limit_series.size()) - 1;
 }
 
+int ResultsWriter::add_acceleration_probe(const AccelerationProbeSpec& probe) {
+  const std::lock_guard lock(hdf5_lock());
+  Impl& m = *impl_;
+  m.demand_declaring();
+  H5Handle group = create_named_group(m.group(m.probes_group, layout::kAccelerationProbes), m.probe_links, probe.name);
+  write_string_attribute(group.get(), layout::acceleration_probe::kBodyAttribute, probe.body);
+  write_int_attribute(group.get(), layout::acceleration_probe::kNodeAttribute, probe.node);
+  write_doubles_attribute(group.get(), layout::acceleration_probe::kPointAttribute, probe.point.data(), 3);
+  m.probe_series.push_back(m.create_series(group.get(), layout::acceleration_probe::kAcceleration, H5T_IEEE_F64LE,
+                                           H5T_NATIVE_DOUBLE, 3));
+  return static_cast<int>(m.probe_series.size()) - 1;
+}
+
 void ResultsWriter::append_event(const HingeEventRecord& event) {
   const std::lock_guard lock(hdf5_lock());
   Impl& m = *impl_;
@@ -638,6 +654,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
   LIMBER_DEMAND(sample.hinge_limit_angles.size() == m.limit_series.size());
   LIMBER_DEMAND(sample.hinge_limit_torques.size() == m.limit_series.size());
   LIMBER_DEMAND(sample.hinge_limits_engaged.size() == m.limit_series.size());
+  LIMBER_DEMAND(sample.probe_accelerations.size() == m.probe_series.size());
 
   // Bodies: pose, then modal coordinates, rates and deflection.
   for (std::size_t b = 0; b < sample.bodies.size(); ++b) {
@@ -689,6 +706,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
     m.append_row(m.limit_series[k][1], &sample.hinge_limit_torques[k]);
     m.append_row(m.limit_series[k][2], &sample.hinge_limits_engaged[k]);
   }
+  for (std::size_t p = 0; p < m.probe_series.size(); ++p) m.append_vector3(m.probe_series[p], sample.probe_accelerations[p]);
   m.append_row(m.position_violation, &sample.position_violation);
   m.append_row(m.velocity_violation, &sample.velocity_violation);
   m.append_row(m.steps, &sample.steps);
@@ -784,6 +802,13 @@ void ResultsWriter::set_event_peaks(const EventPeaks& peaks) {
     write_dataset(group.get(), scalar_names[k], H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw, nj}, scalars[k].data());
     write_dataset(group.get(), vector_names[k], H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {nw, nj, 3}, vectors[k].data());
   }
+}
+
+void ResultsWriter::set_shock_spectra(const ShockSpectra& spectra) {
+  const std::lock_guard lock(hdf5_lock());
+  LIMBER_DEMAND(!impl_->finished && !impl_->has_shock_spectra);
+  impl_->has_shock_spectra = true;
+  check(try_write_shock_spectra(impl_->file.get(), spectra) ? 0 : -1, "write the shock spectra");
 }
 
 void ResultsWriter::finish(RunStatus status, const std::string& message) {

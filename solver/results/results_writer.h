@@ -33,6 +33,7 @@
 
 #include "results/beam_sections.h"
 #include "results/event_peaks.h"
+#include "results/shock_spectra.h"
 
 namespace limber::results {
 
@@ -98,6 +99,15 @@ struct JointSpec {
   std::string marker_j;
 };
 
+// An acceleration probe (docs/case-format.md, acceleration_probes): a point of a body whose
+// absolute acceleration is recorded.
+struct AccelerationProbeSpec {
+  std::string name;
+  std::string body;
+  int node = -1;  // the FE node's user id on a flexible body, −1 on a rigid one
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // in the body frame, undeformed [m]
+};
+
 // A marker frame's pose at a sample: origin and orientation (ground <- marker).
 struct MarkerPose {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();                // [m]
@@ -159,6 +169,8 @@ struct Sample {
   // check) and the index of its pair in that list (−1 with +inf).
   double clearance_minimum = std::numeric_limits<double>::infinity();
   int clearance_pair = -1;
+  // Per declared acceleration probe: the point's absolute acceleration, ground axes [m/s²].
+  std::vector<Eigen::Vector3d> probe_accelerations;
 };
 
 struct HingeLimitSpec {
@@ -210,6 +222,9 @@ class ResultsWriter {
   int add_driver(const std::string& name, const std::string& unit = "");
   int add_energy(const std::string& name);
   int add_hinge_limit(const HingeLimitSpec& limit);
+  // /acceleration_probes/<probe> with its attributes and the per-sample dataset `acceleration`
+  // (Sample::probe_accelerations).
+  int add_acceleration_probe(const AccelerationProbeSpec& probe);
   // The redundant constraint equations found at the start (at most once, before the first
   // sample): /constraints/redundant [nr] holds their names ("R2.z"), /constraints/redundant_with
   // [nr] the independent equations each is a combination of ("R1.z, R3.z"). Sizes must match.
@@ -252,6 +267,9 @@ class ResultsWriter {
   // The run's event peaks (results/event_peaks.h), at most once before finish(): /event_peaks
   // (results_layout.h, event_peaks::). Every window holds peaks.joints.size() joints.
   void set_event_peaks(const EventPeaks& peaks);
+  // The probes' shock response spectra (shock_spectra.h), at most once before finish():
+  // /shock_spectra (docs/results-format.md).
+  void set_shock_spectra(const ShockSpectra& spectra);
 
   // Writes the buffered samples, sets the root attributes status ("ok" / "ok_inaccurate" /
   // "failed" / "interrupted") and message, flushes and closes the file.

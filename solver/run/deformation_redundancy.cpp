@@ -5,7 +5,10 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
+
 #include "multibody/constraints.h"
+#include "multibody/dynamics.h"
 #include "multibody/flexible_body.h"
 
 namespace limber::run {
@@ -52,8 +55,19 @@ void probe_body(const multibody::Model& model, const multibody::State& state, in
       largest = std::max(largest, flexible.translation_shapes(node).col(k).norm());
     }
     if (largest == 0.0) continue;
+    // The probe, halved while the mass matrix there is not positive definite: the floating
+    // frame's mass matrix of a slender body loses definiteness at deflections far beyond its
+    // section (a 1 km rod of 1 x 2 cm deflected by 1 m; issue 31); none left, no probe.
     multibody::State probe = state;
-    probe.q(b.q_offset + 7 + k) += kDeformationProbe * flexible.size / largest;
+    double deflection = 2.0 * kDeformationProbe;
+    bool definite = false;
+    for (int halving = 0; halving <= kMaxProbeHalvings && !definite; ++halving) {
+      deflection *= 0.5;
+      probe.q(b.q_offset + 7 + k) = state.q(b.q_offset + 7 + k) + deflection * flexible.size / largest;
+      multibody::mass_matrix(model, probe, ws);
+      definite = Eigen::LLT<Eigen::MatrixXd>(ws.M).info() == Eigen::Success;
+    }
+    if (!definite) continue;
     const Eigen::MatrixXd S = multibody::mass_metric_rows(model, probe, ws);
     const std::vector<bool> near = multibody::rows_adding_directions(S, order);
     for (const multibody::RedundantEquation& r : partition.redundant) {
@@ -68,6 +82,7 @@ void probe_body(const multibody::Model& model, const multibody::State& state, in
       d.group.push_back(r.row);
       d.body = body;
       d.mode = k;
+      d.deflection = deflection;
       // The direction it gains: its part orthogonal to all rows before it.
       Eigen::MatrixXd before(S.cols(), 0);
       for (int other : order) {
@@ -91,7 +106,7 @@ std::string DeformationRedundancy::description(const multibody::Model& model) co
   return fmt::format(
       "{} holds only while '{}' is undeformed: its mode {} ({:.4g} Hz), deflected by {:g} of the "
       "body's size, makes {} independent (pivot {:.2g} against the threshold {:g})",
-      model.equations[static_cast<std::size_t>(row)].name, b.name, mode + 1, hz, kDeformationProbe,
+      model.equations[static_cast<std::size_t>(row)].name, b.name, mode + 1, hz, deflection,
       model.equations[static_cast<std::size_t>(row)].name, pivot, multibody::kRedundancyThreshold);
 }
 

@@ -11,7 +11,8 @@
 // independent and the same runs hold to 1e-14.
 //
 // The test: deform each flexible body in each of its modes in turn, by a largest nodal
-// translation of kDeformationProbe of the body's size, and see whether a redundant row adds a
+// translation of kDeformationProbe of the body's size (less where the mass matrix is not positive
+// definite there: deformation_redundancy.cpp), and see whether a redundant row adds a
 // direction (redundancy.h's mass metric and threshold) to the rows before it in the start's
 // order. A row that does is listed with the mode, the joint node it acts at and the DOF that
 // would give the freedom it needs. The run watches such rows (redundant_row_watch.h).
@@ -30,12 +31,16 @@ namespace limber::run {
 // the spurious content of a computed mode set (a pivot of 2e-8, redundancy.h), small enough
 // to stay linear (the row gains O(1e-3) against the threshold 1e-6).
 inline constexpr double kDeformationProbe = 1e-3;
+// Halvings of the probe at most, while the mass matrix at it is not positive definite (down to
+// 1e-15 of the size; a mode whose probe has none is not probed).
+inline constexpr int kMaxProbeHalvings = 40;
 
 struct DeformationRedundancy {
   int row = 0;                 // the redundant equation (model.equations)
   std::vector<int> group;      // it and the rows it depends on: a reselection may drop any of them
   int body = 0;                // the flexible body whose deformation frees it
   int mode = 0;                // the first of its modes that does (0-based)
+  double deflection = kDeformationProbe;  // its probe's largest translation / the body's size
   double pivot = 0.0;          // the direction the row gains under that probe (unit rows)
   int node_id = 0;             // FE node (user id) of the row's marker on that body, 0 if none
   std::string dof;             // FE DOF at that node the row constrains ("rx", "uy", ...), or ""

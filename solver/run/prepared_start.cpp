@@ -1,5 +1,7 @@
 #include "run/prepared_start.h"
 
+#include <algorithm>
+
 #include "run/singular_start.h"
 
 namespace limber::run {
@@ -27,8 +29,14 @@ PreparedStart prepare_start(const multibody::Model& model,
     for (int row : equation.depends_on) report.depends_on.push_back(model.equations[row].name);
     start.redundant.push_back(std::move(report));
   }
-  start.deformation_redundant =
-      deformation_redundancies(model, start.state, start.partition, ws);
+  // Dependencies through hold-downs released at t = 0 end before the motion starts.
+  start.deformation_redundant = deformation_redundancies(model, start.state, start.partition, ws);
+  const std::vector<bool> released_at_start = multibody::rows_released_by(model, 0.0);
+  std::erase_if(start.deformation_redundant, [&](const DeformationRedundancy& d) {
+    return std::any_of(d.group.begin(), d.group.end(), [&](int row) {
+      return !released_at_start.empty() && released_at_start[static_cast<std::size_t>(row)];
+    });
+  });
   for (int row : rows_lost_at_singular_start(model, start.state, start.partition, ws)) {
     start.lost_at_singular_start.push_back(model.equations[row].name);
   }

@@ -29,7 +29,8 @@ struct PreparedStart {
   multibody::ConstraintPartition partition;  // independent rows (all rows after a failure)
   std::vector<RedundantEquationReport> redundant;
   // Redundant rows that a flexible body's deformation makes independent (deformation_redundancy.h):
-  // the run watches them (redundant_row_watch.h).
+  // the run watches them (redundant_row_watch.h). Dependencies through a hold-down released at
+  // t = 0 are left out: they end before the motion starts.
   std::vector<DeformationRedundancy> deformation_redundant;
   // Equations the start's singular configuration made dependent (singular_start.h), by name;
   // empty at a regular start. A run cannot hold them: it refuses to start.

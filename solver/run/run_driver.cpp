@@ -13,6 +13,7 @@
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/event_peaks.h"
+#include "results/shock_spectra_file.h"
 #include "run/redundant_row_watch.h"
 #include "run/sample_record.h"
 #include "run/singular_passage.h"
@@ -42,11 +43,26 @@ void check_settings(const io::RunSettings& settings) {
   }
 }
 
+results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
+                                          const Eigen::VectorXd& time,
+                                          const std::vector<results::ProbeHistory>& histories,
+                                          const std::vector<multibody::HingeEvent>& events) {
+  std::vector<results::LatchTime> latches;
+  for (const multibody::HingeEvent& event : events) {
+    const auto& limit = std::get<multibody::HingeLimit>(model.forces[static_cast<std::size_t>(event.force)]);
+    if (limit.kind == multibody::HingeLimitKind::kLatch && event.engaged) latches.push_back({limit.name, event.t});
+  }
+  return results::shock_spectra(time, settings.sample_interval, histories, latches, settings.shock_spectrum);
+}
+
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
                          const io::RunSettings& settings, const RunHooks& hooks) {
   const auto wall_start = std::chrono::steady_clock::now();
   check_settings(settings);
+  // The spectra's band, before anything is written.
+  const bool probes = !model.acceleration_probes.empty();
+  if (probes) results::shock_frequency_grid(settings.shock_spectrum, settings.sample_interval);
   RunSummary summary;
   summary.integrator = integrate::to_string(settings.integrator.method);
   summary.t_end = settings.t_end;
@@ -81,6 +97,17 @@ RunSummary run_mechanism(const multibody::Model& model,
         fmt::join(start.lost_at_singular_start, ", "));
     return finish(results::RunStatus::kFailed);
   }
+  // The static equilibrium at t = 0, every joint holding (hold-downs included), when asked.
+  multibody::State initial = start.state;
+  if (settings.start == io::StartKind::kStatics) {
+    summary.statics = multibody::solve_statics(model, start.partition, start.state);
+    if (summary.statics->status != multibody::StaticsStatus::kOk) {
+      summary.failure = "statics";
+      summary.message = summary.statics->message;
+      return finish(results::RunStatus::kFailed);
+    }
+    initial.q = summary.statics->state.q;
+  }
   summary.redundant = start.redundant;
   if (hooks.writer) {
     std::vector<std::string> names, depends_on;
@@ -95,7 +122,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   if (hooks.on_start) hooks.on_start(start);
 
   // Integration on the independent rows, energies accumulated by the integrator.
-  const multibody::MultibodySystem system(model, start.partition);
+  multibody::MultibodySystem system(model, start.partition);
   // A motion whose velocity jumps demands impulses: say where, once.
   for (const multibody::Driver& driver : model.drivers) {
     std::vector<double> jumps;
@@ -139,15 +166,14 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (hooks.on_event) hooks.on_event(event);
     }
   };
-  // Event peaks at every integrator step when asked for (event_peaks.h), in windows from each
-  // of window_starts (t = 0: the release of the start; hold-downs released at a set time add
-  // theirs here) and from each latch engagement as the integrator locates it.
-  const std::vector<results::WindowStart> window_starts = {{0.0, "start"}};
+  // Event peaks at every integrator step when asked for (event_peaks.h), in windows from the
+  // start (t = 0, where hold-downs released at 0 let go), from each later release
+  // (releases.apply below) and from each latch engagement as the integrator locates it.
   std::optional<EventPeakTracker> peaks;
   std::size_t events_seen = 0;
   if (settings.peak_window > 0.0) {
     peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
-    for (const results::WindowStart& window_start : window_starts) peaks->open(window_start);
+    peaks->open({0.0, "start"});
     options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
                           const Eigen::VectorXd&) {
       for (; events_seen < system.events().size(); ++events_seen) peaks->on_event(system.events()[events_seen]);
@@ -157,10 +183,15 @@ RunSummary run_mechanism(const multibody::Model& model,
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);
   summary.clearance.checked = !clearance_pairs.empty();
   AccuracyMonitor accuracy;
-  SingularPassageMonitor singular(model, static_cast<int>(start.partition.independent.size()));
+  // Re-made at each release: the rank it watches is that of the joints that remain.
+  std::optional<SingularPassageMonitor> singular;
+  singular.emplace(model, static_cast<int>(start.partition.independent.size()));
+  // The probes' accelerations, kept for their spectra.
+  std::vector<double> probe_times;
+  std::vector<std::vector<Eigen::Vector3d>> probe_rows;
   const auto report_singular = [&] {
-    summary.singular_passages.push_back(singular.last());
-    if (hooks.on_warning) hooks.on_warning(singular.last().message());
+    summary.singular_passages.push_back(singular->last());
+    if (hooks.on_warning) hooks.on_warning(singular->last().message());
   };
   const auto on_sample = [&](const integrate::Sample& sample) {
     report_events();
@@ -171,9 +202,13 @@ RunSummary run_mechanism(const multibody::Model& model,
       summary.warnings.push_back(check.warning);
       if (hooks.on_warning) hooks.on_warning(check.warning);
     }
-    if (singular.add({sample.t, sample.q, sample.v})) report_singular();
+    if (singular->add({sample.t, sample.q, sample.v})) report_singular();
     if (hooks.writer) hooks.writer->append_sample(record);
     accuracy.add(record);
+    if (probes) {
+      probe_times.push_back(sample.t);
+      probe_rows.push_back(record.probe_accelerations);
+    }
     summary.t_reached = sample.t;
     summary.max_position_violation =
         std::max(summary.max_position_violation, record.position_violation);
@@ -195,13 +230,28 @@ RunSummary run_mechanism(const multibody::Model& model,
   const auto check = [&](const integrate::Sample& sample) {
     return redundant_rows.check(sample.t, recorder.constraint_residuals(), accuracy.size());
   };
+  // Hold-downs leave the equations at their release times; the integrator starts afresh there.
+  integrate::Restarts releases;
+  releases.times = model.release_times();
+  releases.apply = [&](double t, const integrate::Sample& at) {
+    if (singular->finish()) report_singular();
+    system.release_joints(t, at.q);
+    singular.emplace(model, system.nc(), system.partition().row_released);
+    JointRelease release{t, {}};
+    for (const multibody::Joint& joint : model.joints) {
+      if (joint.release_time == t) release.joints.push_back(joint.name);
+    }
+    summary.releases.push_back(release);
+    if (peaks && t > 0.0) peaks->open({t, "release"});
+  };
   const integrate::SimulationResult result = integrate::simulate(
-      system, options, {0.0, start.state.q, start.state.v},
-      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample, check);
+      system, options, {0.0, initial.q, start.state.v},
+      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample, check,
+      releases);
 
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();
-  if (singular.finish()) report_singular();
+  if (singular->finish()) report_singular();
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);
@@ -214,6 +264,23 @@ RunSummary run_mechanism(const multibody::Model& model,
   // A change of branch at a singular passage is an impulse no force gave: not accurate.
   for (const SingularPassage& passage : summary.singular_passages) {
     if (passage.changed_branch()) summary.accuracy.warnings.push_back(passage.message());
+  }
+  // The probes' shock response spectra over the samples written.
+  if (probes && probe_times.size() >= 2) {
+    const auto ns = static_cast<Eigen::Index>(probe_times.size());
+    std::vector<results::ProbeHistory> histories;
+    for (std::size_t p = 0; p < model.acceleration_probes.size(); ++p) {
+      results::ProbeHistory history{model.acceleration_probes[p].name, {}};
+      history.acceleration.resize(ns, 3);
+      for (Eigen::Index k = 0; k < ns; ++k) history.acceleration.row(k) = probe_rows[static_cast<std::size_t>(k)][p].transpose();
+      histories.push_back(std::move(history));
+    }
+    summary.shock_spectra = probe_shock_spectra(
+        model, settings, Eigen::Map<const Eigen::VectorXd>(probe_times.data(), ns), histories, summary.events);
+    if (hooks.writer) {
+      hooks.writer->set_shock_spectra(*summary.shock_spectra);
+      results::write_shock_spectra_csv(hooks.writer->path().parent_path(), *summary.shock_spectra);
+    }
   }
   if (hooks.writer) {
     std::string warnings;

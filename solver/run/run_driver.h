@@ -3,13 +3,20 @@
 // (written in blocks; a failure or a signal writes the rest, a kill loses at most the last block:
 // results_writer.h).
 //
-// Failures are returned, never thrown (house style §11): an assembly that does not close, or an
-// integrator failure ("at t = … s: why"), ends the run with status "failed" and that message in
-// the summary and in results.h5. Bad settings throw InputError before anything is written.
+// The run starts from the assembled initial poses, or from the static equilibrium there
+// (settings.start); joints with a release time (hold-downs) leave the equations at that time,
+// where the integrator stops and starts afresh with the joints that remain
+// (integrate::Restarts).
+//
+// Failures are returned, never thrown (house style §11): an assembly that does not close, a
+// static equilibrium not found, or an integrator failure ("at t = … s: why"), ends the run with
+// status "failed" and that message in the summary and in results.h5. Bad settings throw
+// InputError before anything is written.
 #pragma once
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +24,9 @@
 #include "io/mechanism_reader.h"
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
+#include "multibody/statics.h"
 #include "results/results_writer.h"
+#include "results/shock_spectra.h"
 #include "run/accuracy_check.h"
 #include "run/singular_passage.h"
 #include "run/prepared_start.h"
@@ -30,6 +39,12 @@ struct ClearanceMinimum {
   double distance = std::numeric_limits<double>::infinity();  // [m], negative: interference
   double time = 0.0;                                          // [s]
   std::string body_a, body_b;                                 // "" while none was found
+};
+
+// Joints released together (hold-downs: Joint::release_time), and when [s].
+struct JointRelease {
+  double t = 0.0;
+  std::vector<std::string> joints;
 };
 
 struct RunSummary {
@@ -52,6 +67,10 @@ struct RunSummary {
   std::vector<SingularPassage> singular_passages;
   // Mode switches of hinge latches and stops, in order (located events).
   std::vector<multibody::HingeEvent> events;
+  // The static equilibrium the run started from (run.start: statics); empty otherwise.
+  std::optional<multibody::StaticsResult> statics;
+  // Hold-downs released along the run, in order.
+  std::vector<JointRelease> releases;
   ClearanceMinimum clearance;
   // The run's own accuracy estimate (accuracy_check.h), from every sample written.
   AccuracyEstimate accuracy;
@@ -59,6 +78,9 @@ struct RunSummary {
   // every integrator step (event_peaks.h); empty when not asked for (RunSettings::peak_window
   // 0) or the run did not integrate.
   results::EventPeaks peaks;
+  // The acceleration probes' shock response spectra over the samples written (none without
+  // probes or with fewer than 2 samples); also in results.h5 and DIR/srs_<probe>.csv.
+  std::optional<results::ShockSpectra> shock_spectra;
 
   // Reached t_end and its accuracy estimate holds.
   bool accurate() const { return ok && accuracy.accurate(); }
@@ -86,8 +108,16 @@ inline constexpr double kMinimumAtol = 1e-14;
 // interval not positive, peak window negative, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
-// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings or held
-// coordinates (before writing any sample).
+// The spectra of the probes' accelerations `histories` (one row per sample at `time`) over the
+// whole run and the windows from t = 0 and from each latch that locked (results/shock_spectra.h).
+results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
+                                          const Eigen::VectorXd& time,
+                                          const std::vector<results::ProbeHistory>& histories,
+                                          const std::vector<multibody::HingeEvent>& events);
+
+// Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings (a shock-spectrum
+// band the sample interval does not support included) or held coordinates (before writing any
+// sample).
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
                          const io::RunSettings& settings, const RunHooks& hooks = {});

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "multibody/acceleration_probe.h"
 #include "multibody/clearance.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
@@ -124,6 +125,16 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
       writer.add_hinge_limit({limit->name, multibody::to_string(limit->kind),
                               model.joints[limit->joint].name, limit->angle});
     }
+  }
+  // Acceleration probes: body, node (user id) or point.
+  for (const multibody::AccelerationProbe& probe : model.acceleration_probes) {
+    const multibody::Body& body = model.bodies[static_cast<std::size_t>(probe.body)];
+    int node = -1;
+    if (probe.node >= 0) {
+      const std::vector<int>& ids = body.flexible->mesh.node_ids;
+      node = ids.empty() ? probe.node + 1 : ids[static_cast<std::size_t>(probe.node)];
+    }
+    writer.add_acceleration_probe({probe.name, body.name, node, probe.p_B});
   }
   // Clearance pairs, only where there is something to check.
   const std::vector<multibody::ClearancePair> pairs = multibody::clearance_pairs(model);
@@ -285,9 +296,15 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     out.hinge_limits_engaged.push_back(engaged ? 1 : 0);
   }
 
+  // Acceleration probes: absolute, ground axes.
+  for (const multibody::AccelerationProbe& probe : model_.acceleration_probes) {
+    out.probe_accelerations.push_back(
+        multibody::probe_motion(model_, probe, sample.q, sample.v, sample.vdot, probe_frame_).a_W);
+  }
+
   // Constraint violations over all rows (redundant ones included).
   const multibody::ConstraintViolation violation =
-      multibody::constraint_violation(model_, state, workspace_);
+      multibody::constraint_violation(model_, state, workspace_, partition_.row_released);
   out.position_violation = violation.position;
   out.velocity_violation = violation.velocity;
 

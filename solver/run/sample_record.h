@@ -1,6 +1,7 @@
 // What `limber run` writes for one output sample (docs/results-format.md): body poses, joint
 // reactions on body j in the joint frame and in ground axes with the indeterminate flags,
-// driver efforts, energies, constraint violations, the step count and, when two or more bodies
+// driver efforts, energies, constraint violations, the step count, the acceleration probes'
+// absolute accelerations (multibody/acceleration_probe.h) and, when two or more bodies
 // have surfaces, the minimum clearance between them (multibody/clearance.h), computed from the
 // integrator's sample (q, v, v̇, λ and the energy integrals).
 #pragma once
@@ -59,6 +60,7 @@ class SampleRecorder {
   const multibody::ConstraintPartition& partition_;
   const std::vector<unsigned char>& engaged_;
   multibody::Workspace workspace_;
+  multibody::FrameKinematics probe_frame_;  // scratch of the acceleration probes
   bool check_clearance_ = false;  // two or more bodies with surfaces
   std::int64_t recorded_ = 0;     // samples recorded so far (stress history's `every`)
 };

@@ -34,13 +34,17 @@ std::string SingularPassage::message() const {
                      t, ratio, list, branch);
 }
 
-SingularPassageMonitor::SingularPassageMonitor(const multibody::Model& model, int rank)
-    : model_(model), rank_(rank), workspace_(model) {}
+SingularPassageMonitor::SingularPassageMonitor(const multibody::Model& model, int rank,
+                                               std::vector<bool> released)
+    : model_(model), rank_(rank), released_(std::move(released)), workspace_(model) {}
 
 bool SingularPassageMonitor::add(const multibody::State& state) {
   if (rank_ <= 0 || model_.num_equations() == 0) return false;
   multibody::evaluate_constraints(model_, state, multibody::Stage::kPosition, workspace_);
-  const Eigen::MatrixXd S = multibody::unit_rows(workspace_.G);
+  Eigen::MatrixXd S = multibody::unit_rows(workspace_.G);
+  for (std::size_t row = 0; row < released_.size(); ++row) {
+    if (released_[row]) S.row(static_cast<Eigen::Index>(row)).setZero();
+  }
   // Singular values and left vectors of S from its Gram matrix S Sᵀ (m x m, cheap for the
   // few equations of a mechanism; JacobiSVD of S made the deployment run 60 % slower). Its
   // eigenvalues ascend: the rank-th largest is at m − rank. Rounding in σ² (1e-16) is far

@@ -49,7 +49,9 @@ struct SingularPassage {
 
 class SingularPassageMonitor {
  public:
-  SingularPassageMonitor(const multibody::Model& model, int rank);
+  // `rank`: the independent rows at the start; rows flagged in `released` (released joints,
+  // multibody/redundancy.h) are left out.
+  SingularPassageMonitor(const multibody::Model& model, int rank, std::vector<bool> released = {});
   // Adds a sample (t, q, v); returns true when a passage has just ended (`last()` holds it).
   bool add(const multibody::State& state);
   // Ends an open passage (end of run, branch not checked); true when one was open.
@@ -59,6 +61,7 @@ class SingularPassageMonitor {
  private:
   const multibody::Model& model_;
   int rank_;
+  std::vector<bool> released_;
   multibody::Workspace workspace_;
   double start_ = -1.0;
   bool open_ = false;

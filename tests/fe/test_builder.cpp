@@ -151,7 +151,14 @@ TEST(FeModelBuilder, BeamElementErrors) {
   EXPECT_EQ(input_error_of([&] {
               f.builder.add_beam({{0, 6}, z, 0}, kWhere);
             }),
-            "case.yaml:12:5: beam 1-3: expected a positive length, got 0");
+            "case.yaml:12:5: beam 1-3: expected a positive finite length, got 0");
+  // Nodes 2e200 m apart: the length overflows (issue 31).
+  f.builder.add_node(4, {1e200, 0.0, 0.0});
+  f.builder.add_node(5, {-1e200, 0.0, 0.0});
+  EXPECT_EQ(input_error_of([&] {
+              f.builder.add_beam({{7, 8}, z, 0}, kWhere);
+            }),
+            "case.yaml:12:5: beam 4-5: expected a positive finite length, got inf");
   EXPECT_EQ(input_error_of([&] {
               f.builder.add_beam({{0, 1}, {-2.0, 0.0, 0.0}, 0}, kWhere);
             }),

@@ -88,6 +88,10 @@ TEST(BulkDataCase, BadEntriesFailAtTheirPlace) {
   // A deck that is not there: at the value.
   std::string text = panel_case("nowhere.bdf");
   EXPECT_TRUE(fails_at(text, location_of(text, "nowhere.bdf"), "no such file"));
+  // A name too long for the file system (issue 31).
+  text = panel_case(std::string(3000, 'd') + ".bdf");
+  EXPECT_TRUE(fails_at(text, location_of(text, "ddd"),
+                       "expected a bulk-data file, got '" + std::string(60, 'd') + "… (3004 bytes)' (file name too long)"));
   // Generated meshes besides a deck.
   text = "flexible_bodies:\n  panel:\n    plates: []\n    bulk_data: " + kDeck +
          "\n    modes: {normal: 2}\n";

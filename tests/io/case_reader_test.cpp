@@ -170,6 +170,23 @@ const std::string kGoodBeam =
     "{from: [0, 0, 0], to: [1, 0, 0], elements: 2, section: bar, material: steel, "
     "orientation: [0, 1, 0]}";
 
+// A spider: a new node at its position, and one constraint per (node within the radius, DOF):
+// the rod's nodes at x = 0, 0.5 and 1 m, radius 0.5 m around (1, 0, 0) → nodes 2 and 3, six
+// DOFs each. An empty bolt pattern is an error at the radius.
+TEST(CaseReader, SpidersTieTheNodesWithinTheirRadius) {
+  const Case input = read_case_text(
+      rod_case(kGoodBeam, "{normal: 2}", "    spiders: [{node: 1001, position: [1, 0, 0], radius: 0.5}]\n"),
+      "test.yaml");
+  const fe::FeModel& model = input.flexible_bodies[0].model;
+  ASSERT_EQ(model.node_count(), 4);
+  EXPECT_EQ(model.node_ids.back(), 1001);
+  EXPECT_EQ(model.node_positions.back(), Eigen::Vector3d(1, 0, 0));
+  EXPECT_EQ(model.multipoint_constraints.size(), 12u);
+  const std::string lonely =
+      rod_case(kGoodBeam, "{normal: 2}", "    spiders: [{node: 1001, position: [3, 0, 0], radius: 0.5}]\n");
+  EXPECT_TRUE(fails_at(lonely, location_of(lonely, "0.5}"), "expected at least one node within 'radius'"));
+}
+
 TEST(CaseReaderErrors, TheBaseCaseIsValid) {
   EXPECT_NO_THROW(read_case_text(rod_case(kGoodBeam), "test.yaml"));
 }
@@ -283,7 +300,7 @@ TEST(CaseReaderErrors, DegenerateElements) {
   const std::string beam = rod_case(
       "{from: [1, 0, 0], to: [1, 0, 0], elements: 2, "
       "section: bar, material: steel, orientation: [0, 1, 0]}");
-  EXPECT_TRUE(fails_at(beam, location_of(beam, "{from"), "expected a positive length"));
+  EXPECT_TRUE(fails_at(beam, location_of(beam, "{from"), "expected a positive finite length"));
   // Orientation along the beam axis.
   const std::string parallel = rod_case(
       "{from: [0, 0, 0], to: [1, 0, 0], elements: 2, "
@@ -321,6 +338,24 @@ TEST(CaseReaderErrors, ImpossibleModeRequests) {
   const std::string dof = rod_case(kGoodBeam, "{normal: 2, constraint: [{nodes: 3, dofs: [uw]}]}");
   EXPECT_TRUE(fails_at(dof, location_of(dof, "uw"),
                        "expected one of ux, uy, uz, rx, ry, rz, all for 'dofs[0]', got 'uw'"));
+}
+
+// Text that results.h5 and modes.h5 keep in HDF5 attributes (64 KiB at most each) is bounded
+// on input: a 70 000-byte title once ended `limber run` as "internal error: results.h5: HDF5
+// failed to write a string attribute" (issue 31).
+TEST(CaseReaderErrors, TitlesAndNamesHaveALimit) {
+  const std::string longest = "title: '" + std::string(1024, 't') + "'\n" + rod_case(kGoodBeam);
+  EXPECT_EQ(read_case_text(longest, "test.yaml").title.size(), 1024u);
+  const std::string title = "title: '" + std::string(70000, 't') + "'\n" + rod_case(kGoodBeam);
+  EXPECT_TRUE(fails_at(title, location_of(title, "'ttt"),
+                       "expected a title of at most 1024 bytes, got '" + std::string(60, 't') +
+                           "… (70000 bytes)'"));
+  // A name: at most 256 bytes (core/names.h).
+  std::string name = rod_case(kGoodBeam);
+  name.replace(name.find("  rod:"), 6, "  " + std::string(257, 'r') + ":");
+  EXPECT_TRUE(fails_at(name, location_of(name, "rrr"),
+                       "flexible body name: expected at most 256 bytes, got \"" + std::string(60, 'r') +
+                           "… (257 bytes)\""));
 }
 
 TEST(CaseReaderErrors, EmptyAndMalformedFiles) {
@@ -389,6 +424,15 @@ TEST_F(CaseBase, ErrorsPointIntoTheFileThatHasThem) {
   }
   // A missing base, and a base that has a base itself.
   EXPECT_THROW(read_case_file(write("missing.yaml", "base: nowhere.yaml\n")), InputError);
+  // A name too long for the file system: at the value, not a filesystem exception (issue 31).
+  const std::string long_name = write("long.yaml", "title: long\nbase: " + std::string(3000, 'b') + "\n");
+  try {
+    read_case_file(long_name);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), long_name + ":2:7: expected a case file for 'base', got '" +
+                                             std::string(60, 'b') + "… (3000 bytes)' (file name too long)");
+  }
   write("chained.yaml", "base: base.yaml\n");
   EXPECT_THROW(read_case_file(write("twice.yaml", "base: chained.yaml\n")), InputError);
 }

@@ -191,28 +191,53 @@ TEST(AttachmentModes, FreeRodGivesInertiaReliefResponse) {
 // held ones leave: never, by construction (rigid_body_modes.cpp). Checked on every held set of
 // a two-node beam (12 DOFs, collinear: 4096 sets) and on 3000 random held sets of a skewed
 // four-node shell patch (24 DOFs): the support has one DOF per free rigid motion and holds it
-// (its rows of psi_free are invertible to the rank tolerance's margin).
-void expect_support_for_every_held_set(const std::vector<Eigen::Vector3d>& nodes,
-                                       const std::vector<std::vector<int>>& held_sets) {
+// (its rows of the dimensionless orthonormal basis of psi_free are invertible to the rank
+// tolerance's margin). Returns the count of free rigid motions of each held set.
+std::vector<Eigen::Index> expect_support_for_every_held_set(
+    const std::vector<Eigen::Vector3d>& nodes, const std::vector<std::vector<int>>& held_sets) {
   const Eigen::MatrixXd psi = rigid_body_modes(nodes);
+  const double length = rigid_length_scale(psi);
   const int n = static_cast<int>(psi.rows());
+  std::vector<Eigen::Index> free_counts;
   for (const std::vector<int>& held : held_sets) {
     const Eigen::MatrixXd psi_free = unrestrained_rigid_motion(psi, held);
+    free_counts.push_back(psi_free.cols());
     std::vector<int> candidates;
     for (int d = 0; d < n; ++d) {
       if (std::find(held.begin(), held.end(), d) == held.end()) candidates.push_back(d);
     }
-    const std::vector<int> support = determinate_support(psi_free, candidates);
-    ASSERT_EQ(static_cast<Eigen::Index>(support.size()), psi_free.cols());
-    if (support.empty()) continue;
+    const std::vector<int> support = determinate_support(psi_free, candidates, length);
+    EXPECT_EQ(static_cast<Eigen::Index>(support.size()), psi_free.cols());
+    if (support.empty() || static_cast<Eigen::Index>(support.size()) != psi_free.cols()) continue;
+    Eigen::MatrixXd scaled = psi_free;
+    for (int node = 0; node < n / fe::kDofsPerNode; ++node) scaled.middleRows(fe::kDofsPerNode * node, 3) /= length;
+    const Eigen::MatrixXd basis = Eigen::HouseholderQR<Eigen::MatrixXd>(scaled).householderQ() *
+                                  Eigen::MatrixXd::Identity(n, psi_free.cols());
     Eigen::MatrixXd rows(psi_free.cols(), psi_free.cols());
-    for (std::size_t i = 0; i < support.size(); ++i) rows.row(static_cast<Eigen::Index>(i)) = psi_free.row(support[i]);
+    for (std::size_t i = 0; i < support.size(); ++i) rows.row(static_cast<Eigen::Index>(i)) = basis.row(support[i]);
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows);
     EXPECT_GT(svd.singularValues().minCoeff(), 1e3 * kRankTolerance * svd.singularValues().maxCoeff());
   }
+  return free_counts;
 }
 
-TEST(DeterminateSupport, ExistsForEveryHeldSet) {
+// The same held sets on the same shapes scaled to 1e-12 ... 1e12 m and moved far from the frame
+// origin (up to 1e6 sizes): the same count of free rigid motions, and a support for each (a
+// 2.1e9 m beam once aborted on determinate_support's DEMAND: issue 31).
+void expect_the_same_at_every_size(const std::vector<Eigen::Vector3d>& nodes,
+                                   const std::vector<std::vector<int>>& held_sets) {
+  const std::vector<Eigen::Index> reference = expect_support_for_every_held_set(nodes, held_sets);
+  for (const double size : {1e-12, 1e-6, 1e6, 2.1e9, 1e12}) {
+    for (const double offset : {0.0, 1e6}) {
+      std::vector<Eigen::Vector3d> moved;
+      for (const Eigen::Vector3d& x : nodes) moved.push_back(size * (x + Eigen::Vector3d(offset, -offset, offset)));
+      EXPECT_EQ(expect_support_for_every_held_set(moved, held_sets), reference)
+          << "size " << size << " m, offset " << offset << " sizes";
+    }
+  }
+}
+
+TEST(DeterminateSupport, ExistsForEveryHeldSetAtEverySize) {
   std::vector<std::vector<int>> beam_sets;
   for (int mask = 0; mask < (1 << 12); ++mask) {
     std::vector<int> held;
@@ -221,7 +246,7 @@ TEST(DeterminateSupport, ExistsForEveryHeldSet) {
     }
     beam_sets.push_back(held);
   }
-  expect_support_for_every_held_set({{0, 0, 0}, {1.5, 0.2, -0.1}}, beam_sets);
+  expect_the_same_at_every_size({{0, 0, 0}, {1.5, 0.2, -0.1}}, beam_sets);
 
   std::vector<std::vector<int>> patch_sets;
   unsigned state = 12345u;  // a fixed linear congruential sequence: the same sets every run
@@ -233,7 +258,7 @@ TEST(DeterminateSupport, ExistsForEveryHeldSet) {
     }
     patch_sets.push_back(held);
   }
-  expect_support_for_every_held_set({{0, 0, 0}, {1, 0.1, 0}, {1.2, 0.9, 0.05}, {-0.1, 1, 0}}, patch_sets);
+  expect_the_same_at_every_size({{0, 0, 0}, {1, 0.1, 0}, {1.2, 0.9, 0.05}, {-0.1, 1, 0}}, patch_sets);
 }
 
 }  // namespace

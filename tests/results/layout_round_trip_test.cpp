@@ -11,7 +11,9 @@
 #include "results/link_name.h"
 #include "results/results_layout.h"
 #include "results/results_writer.h"
+#include "results/shock_spectra.h"
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -27,8 +29,8 @@ using Dims = std::vector<hsize_t>;
 constexpr int kSamples = 3;
 
 // A run with a rigid and a flexible body (2 beams and a quad, 2 modes, deflection, stress), a
-// joint, a driver, an energy, a hinge limit with one event, redundancy, clearance and every
-// root attribute.
+// joint, a driver, an energy, a hinge limit with one event, redundancy, clearance, an
+// acceleration probe with its shock spectra (2 windows, 2 frequencies) and every root attribute.
 std::filesystem::path write_full_run() {
   const std::filesystem::path directory =
       std::filesystem::temp_directory_path() / "limber_layout_round_trip";
@@ -57,6 +59,7 @@ std::filesystem::path write_full_run() {
   writer.add_hinge_limit(HingeLimitSpec{"stop", "stop", "R1", 0.5});
   writer.set_redundant_equations({"R1.rot_x"}, {"R1.x"});
   writer.set_clearance_pairs({"crank, rod"});
+  writer.add_acceleration_probe({"tip", "rod", 3, Eigen::Vector3d(1, 0, 0)});
   writer.set_integrator("galpha");
   writer.set_axis_names({"X", "Y", "Z"});
   for (int k = 0; k < kSamples; ++k) {
@@ -84,8 +87,17 @@ std::filesystem::path write_full_run() {
     sample.hinge_limits_engaged = {0};
     sample.clearance_minimum = 0.25;
     sample.clearance_pair = 0;
+    sample.probe_accelerations = {Eigen::Vector3d(k, 0.0, -9.81)};
     writer.append_sample(sample);
   }
+  ShockSpectra spectra;
+  spectra.frequency_hz = {5.0, 5.0 * std::exp2(1.0 / 6.0)};
+  spectra.windows = {{"whole run", 0.0, 0.25}, {"start", 0.0, 0.25}};
+  ShockSpectrum axis;
+  axis.frequency_hz = Eigen::Map<const Eigen::VectorXd>(spectra.frequency_hz.data(), 2);
+  axis.maximax = axis.primary = axis.residual = Eigen::Vector2d(1.0, 2.0);
+  spectra.probes = {{"tip", {{axis, axis, axis}, {axis, axis, axis}}}};
+  writer.set_shock_spectra(spectra);
   writer.append_event(HingeEventRecord{0.2, 0, true, 0.5, 1.5});
   writer.set_accuracy(1e-6, 1e-5, 1e-7, "");
   writer.set_singular_passages({0.1}, {1e-3}, {"R1"}, {-1.0});
@@ -129,6 +141,9 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
   const std::string energy = L::at(L::kEnergy, link_name("kinetic"));
   const std::string limit = L::at(L::kHingeLimits, link_name("stop"));
   const std::string singular = L::at(L::kConstraints, L::constraints::kSingularPassages);
+  const std::string probe = L::at(L::kAccelerationProbes, link_name("tip"));
+  const std::string srs_probes = L::at(L::kShockSpectra, L::shock_spectra::kProbes);
+  const std::string srs_probe = L::at(srs_probes, link_name("tip"));
 
   // Datasets with their documented shapes (docs/results-format.md).
   std::map<std::string, Dims> datasets = {
@@ -182,6 +197,14 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
       {L::at(L::kClearance, L::clearance::kPairs), {1}},
       {L::at(L::kClearance, L::clearance::kMinimum), {ns}},
       {L::at(L::kClearance, L::clearance::kPair), {ns}},
+      {L::at(probe, L::acceleration_probe::kAcceleration), {ns, 3}},
+      {L::at(L::kShockSpectra, L::shock_spectra::kFrequency), {2}},
+      {L::at(L::kShockSpectra, L::shock_spectra::kWindowName), {2}},
+      {L::at(L::kShockSpectra, L::shock_spectra::kWindowStart), {2}},
+      {L::at(L::kShockSpectra, L::shock_spectra::kWindowEnd), {2}},
+      {L::at(srs_probe, L::shock_spectra::kMaximax), {2, 3, 2}},
+      {L::at(srs_probe, L::shock_spectra::kPrimary), {2, 3, 2}},
+      {L::at(srs_probe, L::shock_spectra::kResidual), {2, 3, 2}},
   };
   for (int side = 0; side < 2; ++side) {
     const std::string marker = L::at(joint, L::kMarkerGroups[side]);
@@ -192,7 +215,7 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
       L::kBodies, crank, L::at(crank, L::body::kShapes), shape, rod, mesh, modes, stress,
       L::kJoints, joint, L::at(joint, L::kMarkerGroups[0]), L::at(joint, L::kMarkerGroups[1]),
       L::kDrivers, driver, L::kEnergy, L::kConstraints, singular, L::kSolver, L::kHingeLimits,
-      limit, L::kEvents, L::kClearance};
+      limit, L::kEvents, L::kClearance, L::kAccelerationProbes, probe, L::kShockSpectra, srs_probes, srs_probe};
   // Attributes by object.
   const std::map<std::string, std::vector<const char*>> attributes = {
       {"/",
@@ -214,6 +237,11 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
       {energy, {kNameAttribute}},
       {limit, {kNameAttribute, L::hinge_limit::kKindAttribute, L::hinge_limit::kJointAttribute,
                L::hinge_limit::kAngleAttribute, L::hinge_limit::kIndexAttribute}},
+      {probe, {kNameAttribute, L::acceleration_probe::kBodyAttribute, L::acceleration_probe::kNodeAttribute,
+               L::acceleration_probe::kPointAttribute}},
+      {L::kShockSpectra, {L::shock_spectra::kQAttribute, L::shock_spectra::kWindowLengthAttribute,
+                          L::shock_spectra::kMinFrequencyAttribute, L::shock_spectra::kMaxFrequencyAttribute}},
+      {srs_probe, {kNameAttribute}},
   };
 
   // The layout's paths, read through the shared reader.
@@ -265,6 +293,12 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
   EXPECT_EQ(r.read<double>(L::at(L::kEvents, L::events::kRate), H5T_NATIVE_DOUBLE, 1),
             std::vector<double>{1.5});
   EXPECT_EQ(r.members(L::kEnergy), std::vector<std::string>{"kinetic"});
+  EXPECT_EQ(r.read<double>(L::at(probe, L::acceleration_probe::kAcceleration), H5T_NATIVE_DOUBLE, ns),
+            (std::vector<double>{0, 0, -9.81, 1, 0, -9.81, 2, 0, -9.81}));
+  EXPECT_EQ(r.strings(L::at(L::kShockSpectra, L::shock_spectra::kWindowName)),
+            (std::vector<std::string>{"whole run", "start"}));
+  EXPECT_EQ(r.read<double>(L::at(srs_probe, L::shock_spectra::kMaximax), H5T_NATIVE_DOUBLE, 2),
+            (std::vector<double>{1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 1, 2}));
 }
 
 }  // namespace

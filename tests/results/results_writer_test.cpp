@@ -276,6 +276,28 @@ TEST(ResultsWriter, FailedRunKeepsItsMessage) {
   H5Fclose(file);
 }
 
+// A string attribute holds at most 64 KiB in the file's 1.8 format: a 70 000-byte title once
+// ended a run as "results.h5: HDF5 failed to write a string attribute" after a page of HDF5's
+// own diagnostics (issue 31). Longer text is kept cut at 16 KiB with its length, and HDF5
+// prints nothing. (The case reader bounds titles and names well below: io/case_reader.cpp.)
+TEST(ResultsWriter, LongTextIsKeptCutWithItsLength) {
+  const auto dir = fresh_directory("long_text");
+  const std::string text(70000, 'm');
+  ::testing::internal::CaptureStderr();
+  {
+    ResultsWriter writer(dir, text, "c.yaml");
+    writer.finish(RunStatus::kFailed, text);
+  }
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const std::string cut = std::string(16384, 'm') + "… (70000 bytes)";
+  EXPECT_EQ(read_string_attribute(file, "/", "title"), cut);
+  EXPECT_EQ(read_string_attribute(file, "/", "message"), cut);
+  EXPECT_EQ(read_string_attribute(file, "/", "status"), "failed");
+  H5Fclose(file);
+}
+
 TEST(ResultsWriter, UnwritableDirectoryIsAnInputError) {
   // A regular file where the run directory should be.
   const auto dir = fresh_directory("blocked");

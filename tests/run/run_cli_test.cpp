@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <set>
 #include <string>
@@ -188,6 +189,23 @@ TEST(RunCli, InterferenceIsWarnedWithPairAndTime) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("minimum clearance: -0.1 m between bar and block at t = 0 s"), std::string::npos) << run.out;
   EXPECT_NE(run.err.find("limber: warning: bar passes through block at t = 0 s"), std::string::npos) << run.err;
+}
+
+// A probe on the rigid slider-crank's crank pin (0.05 m from R1): the run prints its spectra's
+// peak and CSV file, and the CSV holds its header.
+TEST(RunCli, AccelerationProbesGetSpectraOnStdoutAndInCsv) {
+  const std::string path = test::write_case(
+      "cli_probe", test::read_text(kCase) + "\nacceleration_probes:\n  pin: {body: crank, position: [0.05, 0, 0]}\n");
+  const auto dir = test::fresh_directory("cli_probe");
+  const test::CommandRun run = run_limber("run " + path + " -o " + dir.string() + " --t-end 0.2");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("shock response spectra: Q 10, 5 to "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  pin: peak "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("srs_pin.csv"), std::string::npos) << run.out;
+  std::ifstream csv(dir / "srs_pin.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "window,window_start_s,window_end_s,frequency_hz,x_m_s2,y_m_s2,z_m_s2,x_g,y_g,z_g");
 }
 
 TEST(RunCli, CoarseSettingsAreReportedAsInaccurate) {

@@ -1,0 +1,49 @@
+// The acceleration probes and their shock response spectra in a run's results.h5
+// (docs/results-format.md, /acceleration_probes and /shock_spectra; the spectra's method:
+// docs/shock-response-spectrum.md), read through limber_results' HDF5 reader at the layout's
+// paths.
+#pragma once
+
+#include "results/h5_reader.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace limber::report {
+
+// A probe's absolute acceleration, ground axes [m/s²], ns x 3.
+struct AccelerationProbeTrack {
+  std::string name;
+  std::string body;
+  int node = -1;  // FE node id on a flexible body, −1 on a rigid one
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> acceleration;
+};
+
+// One probe's maximax spectra: per window, per ground axis x, y, z, nf values [m/s²].
+struct ProbeSpectrumData {
+  std::string name;
+  std::vector<std::array<Eigen::VectorXd, 3>> maximax;
+};
+
+struct ShockSpectraData {
+  double q = 0.0;
+  double window_length = 0.0;  // [s]
+  Eigen::VectorXd frequency_hz;
+  std::vector<std::string> window_names;  // "whole run", "start", "latch <name>[, <name>...]"
+  std::vector<double> window_start, window_end;  // [s]
+  std::vector<ProbeSpectrumData> probes;
+};
+
+// The probes of the file, in name order; each history has its file's rows (the caller cuts
+// them to the complete samples).
+std::vector<AccelerationProbeTrack> read_acceleration_probes(const results::H5Reader& file);
+
+// The spectra, or none when the file has no /shock_spectra (no probes, or the run did not
+// write them). A group of another shape is an InputError naming the file.
+std::optional<ShockSpectraData> read_shock_spectra(const results::H5Reader& file);
+
+}  // namespace limber::report
