@@ -15,6 +15,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "core/error.h"
+#include "integrate/combined_statistics.h"
 #include "integrate/consistent_state.h"
 #include "integrate/dense_lu_solver.h"
 
@@ -257,12 +258,7 @@ struct IdaIntegrator::Impl {
     double last_step = 0.0;
     IDAGetLastStep(ida, &last_step);
     stats.last_step = last_step;
-    stats.steps += before.steps;
-    stats.rejected_steps += before.rejected_steps;
-    stats.newton_failures += before.newton_failures;
-    stats.newton_iterations += before.newton_iterations;
-    stats.jacobian_evaluations += before.jacobian_evaluations;
-    stats.residual_evaluations += before.residual_evaluations;
+    stats = combined(before, stats);
   }
 
   // New constraint rows at time t (the current step end, or a located event): the multipliers

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "integrate/combined_statistics.h"
 
 namespace limber::integrate {
 
@@ -18,19 +19,6 @@ SimulationResult simulate(const MechanicalSystem& system, const IntegratorOption
 }
 
 namespace {
-
-// Work of two stretches of one run, one after the other.
-Statistics combined(const Statistics& before, const Statistics& after) {
-  Statistics out = after;
-  out.steps += before.steps;
-  out.rejected_steps += before.rejected_steps;
-  out.newton_iterations += before.newton_iterations;
-  out.newton_failures += before.newton_failures;
-  out.jacobian_evaluations += before.jacobian_evaluations;
-  out.residual_evaluations += before.residual_evaluations;
-  out.max_local_error = std::max(before.max_local_error, after.max_local_error);
-  return out;
-}
 
 double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 
