@@ -1,0 +1,143 @@
+#include "nonlinear_beam/beam_structure.h"
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "nonlinear_beam/rotation.h"
+
+namespace limber::nonlinear_beam {
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+// Adds a 12x12 element matrix on nodes (a, b) to a triplet list.
+void add_element_matrix(const std::array<int, 2>& nodes, const Matrix12d& matrix,
+                        Triplets& triplets) {
+  for (int bi = 0; bi < 2; ++bi) {
+    for (int bj = 0; bj < 2; ++bj) {
+      for (int i = 0; i < 6; ++i) {
+        for (int j = 0; j < 6; ++j) {
+          triplets.emplace_back(6 * nodes[bi] + i, 6 * nodes[bj] + j, matrix(6 * bi + i, 6 * bj + j));
+        }
+      }
+    }
+  }
+}
+
+ElementResponse response_of(const CorotationalBeam& element, const BeamState& state) {
+  const int a = element.nodes[0];
+  const int b = element.nodes[1];
+  return corotational_beam_response(element, state.positions[a], state.positions[b],
+                                    state.rotations[a].toRotationMatrix(),
+                                    state.rotations[b].toRotationMatrix());
+}
+
+}  // namespace
+
+BeamStructure build_beam_structure(const fe::FeModel& model) {
+  // Only beams are treated nonlinearly in this step.
+  const auto unsupported = [](const char* what, std::size_t count) {
+    if (count > 0) {
+      throw InputError(fmt::format(
+          "nonlinear beams: expected a model of beams only, got {} {}", count, what));
+    }
+  };
+  unsupported("shell quads", model.shells.size());
+  unsupported("shell triangles", model.triangles.size());
+  unsupported("DOF stiffness matrices (springs, bushings, rods)", model.dof_stiffnesses.size());
+  unsupported("multipoint constraints", model.multipoint_constraints.size());
+  if (model.beams.empty()) {
+    throw InputError("nonlinear beams: expected at least one beam element, got none");
+  }
+
+  BeamStructure out;
+  out.reference_positions = model.node_positions;
+  out.elements.reserve(model.beams.size());
+  for (const fe::BeamElement& beam : model.beams) out.elements.push_back(make_corotational_beam(model, beam));
+
+  // Free DOFs: all but the fixed ones.
+  std::vector<bool> fixed(model.dof_count(), false);
+  for (const fe::FixedDof& f : model.fixed_dofs) fixed[fe::FeModel::dof_index(f.node, f.dof)] = true;
+  for (int i = 0; i < model.dof_count(); ++i) {
+    if (!fixed[i]) out.free_dofs.push_back(i);
+  }
+
+  // Size scale of the structure.
+  Eigen::Vector3d lo = model.node_positions.front();
+  Eigen::Vector3d hi = lo;
+  for (const Eigen::Vector3d& p : model.node_positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  out.size = (hi - lo).norm();
+  return out;
+}
+
+BeamState reference_state(const BeamStructure& structure) {
+  BeamState state;
+  state.positions = structure.reference_positions;
+  state.rotations.assign(structure.node_count(), Eigen::Quaterniond::Identity());
+  return state;
+}
+
+void apply_increment(BeamState& state, const Eigen::VectorXd& delta) {
+  LIMBER_DEMAND(delta.size() == 6 * static_cast<Eigen::Index>(state.positions.size()));
+  for (std::size_t i = 0; i < state.positions.size(); ++i) {
+    state.positions[i] += delta.segment<3>(6 * i);
+    // Multiplicative update on the group, spatial spin on the left.
+    state.rotations[i] = (exp_quaternion(delta.segment<3>(6 * i + 3)) * state.rotations[i]).normalized();
+  }
+}
+
+Eigen::Matrix<double, 6, 1> node_displacement(const BeamStructure& structure,
+                                              const BeamState& state, int node) {
+  Eigen::Matrix<double, 6, 1> out;
+  out.head<3>() = state.positions[node] - structure.reference_positions[node];
+  out.tail<3>() = log_so3(state.rotations[node].toRotationMatrix());
+  return out;
+}
+
+Eigen::VectorXd internal_force(const BeamStructure& structure, const BeamState& state) {
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(structure.dof_count());
+  for (const CorotationalBeam& element : structure.elements) {
+    const ElementResponse r = response_of(element, state);
+    force.segment<6>(6 * element.nodes[0]) += r.force.head<6>();
+    force.segment<6>(6 * element.nodes[1]) += r.force.tail<6>();
+  }
+  return force;
+}
+
+ForceAndTangent internal_force_and_tangent(const BeamStructure& structure,
+                                           const BeamState& state) {
+  ForceAndTangent out;
+  out.force = Eigen::VectorXd::Zero(structure.dof_count());
+  Triplets triplets;
+  triplets.reserve(144 * structure.elements.size());
+  for (const CorotationalBeam& element : structure.elements) {
+    const ElementResponse r = response_of(element, state);
+    out.force.segment<6>(6 * element.nodes[0]) += r.force.head<6>();
+    out.force.segment<6>(6 * element.nodes[1]) += r.force.tail<6>();
+    add_element_matrix(element.nodes, r.tangent, triplets);
+  }
+  out.tangent.resize(structure.dof_count(), structure.dof_count());
+  out.tangent.setFromTriplets(triplets.begin(), triplets.end());
+  return out;
+}
+
+SparseMatrix corotational_mass(const BeamStructure& structure, const BeamState& state) {
+  Triplets triplets;
+  triplets.reserve(144 * structure.elements.size());
+  for (const CorotationalBeam& element : structure.elements) {
+    // The element frame of the current state, E = diag(R_r, R_r, R_r, R_r).
+    const Eigen::Matrix3d frame = response_of(element, state).frame;
+    Matrix12d e = Matrix12d::Zero();
+    for (int blk = 0; blk < 4; ++blk) e.block<3, 3>(3 * blk, 3 * blk) = frame;
+    add_element_matrix(element.nodes, e * element.local_mass * e.transpose(), triplets);
+  }
+  SparseMatrix mass(structure.dof_count(), structure.dof_count());
+  mass.setFromTriplets(triplets.begin(), triplets.end());
+  return mass;
+}
+
+}  // namespace limber::nonlinear_beam
