@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "core/error.h"
 #include "nonlinear_beam/rotation.h"
 
@@ -71,6 +74,12 @@ BeamStructure build_beam_structure(const fe::FeModel& model) {
     hi = hi.cwiseMax(p);
   }
   out.size = (hi - lo).norm();
+
+  // Round-off level of the internal force.
+  double k_max = 0.0;
+  for (const CorotationalBeam& e : out.elements) k_max = std::max(k_max, e.local_stiffness.cwiseAbs().maxCoeff());
+  const double x_max = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  out.force_roundoff = 100.0 * std::numeric_limits<double>::epsilon() * k_max * (out.size + x_max);
   return out;
 }
 

@@ -26,6 +26,10 @@ struct BeamStructure {
   std::vector<CorotationalBeam> elements;
   std::vector<int> free_dofs;  // DOFs not in FeModel::fixed_dofs, ascending
   double size = 0.0;           // diagonal of the nodes' bounding box [m] (convergence scale)
+  // Round-off level of an internal force [N, N m]: 100 eps max|K_l| (size + max |X|). Local
+  // deformations are differences of absolute coordinates, so f_int carries an error of about
+  // eps |X| times the stiffest local stiffness (EA / l0) whatever the load.
+  double force_roundoff = 0.0;
 
   int node_count() const { return static_cast<int>(reference_positions.size()); }
   int dof_count() const { return fe::kDofsPerNode * node_count(); }

@@ -70,7 +70,10 @@ NewtonOutcome newton(const BeamStructure& structure, const Eigen::VectorXd& f_ex
       double r2 = 0.0;
       for (int i : free) r2 += f_after(i) * f_after(i);
       out.residual = std::sqrt(r2) / f_scale;
-      if (out.residual <= options.residual_tolerance) return out;
+      if (out.residual <= options.residual_tolerance ||
+          std::sqrt(r2) <= structure.force_roundoff) {
+        return out;
+      }
     }
   }
   out.status = StaticStatus::kNotConverged;
@@ -97,7 +100,8 @@ StaticSolution solve_static(const BeamStructure& structure, const std::vector<No
   int bisections = 0;
   while (solution.load_factor < 1.0) {
     // Next load factor, landing exactly on 1.
-    const double target = std::min(1.0, solution.load_factor + step);
+    double target = solution.load_factor + step;
+    if (target > 1.0 - 1e-12) target = 1.0;
     BeamState trial = solution.state;
     const NewtonOutcome outcome = newton(structure, f_ext, target, options, trial);
     if (outcome.status == StaticStatus::kConverged) {

@@ -7,7 +7,8 @@
 // derivative of f_int (dead loads have no load stiffness on spatial spins) and is not symmetric
 // off equilibrium: it is factorised by sparse LU (Eigen's SparseLU, COLAMD ordering).
 // Converged when both
-//   |r_free| <= residual_tolerance |f_ext|                       (2-norm, N and N m)
+//   |r_free| <= residual_tolerance |f_ext|  or  |r_free| <= BeamStructure::force_roundoff
+//     (2-norm, N and N m; the second: the residual is at the round-off of f_int itself)
 //   max |delta_u| <= increment_tolerance * size  and  max |delta_w| <= increment_tolerance
 // hold (size: BeamStructure::size). A failed increment is halved (at most max_bisections
 // times) before the solve gives up.
@@ -25,7 +26,9 @@
 
 namespace limber::nonlinear_beam {
 
-// A dead load at a node, component axes.
+// A dead load at a node, component axes. Spell out Eigen::Vector3d::Zero() for an absent
+// component in a braced list: `{}` value-initialises an Eigen vector, which leaves it
+// uninitialised.
 struct NodalLoad {
   int node = 0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // [N]
@@ -36,7 +39,7 @@ struct StaticOptions {
   int load_increments = 10;           // n >= 1
   int max_iterations = 30;            // Newton iterations per increment
   int max_bisections = 6;             // halvings of a failed increment
-  double residual_tolerance = 1e-10;  // relative to |f_ext|
+  double residual_tolerance = 1e-9;   // relative to |f_ext|
   double increment_tolerance = 1e-10; // relative to the structure size (translations), rad
 };
 
