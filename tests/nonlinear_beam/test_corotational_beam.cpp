@@ -7,7 +7,9 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <iostream>
+#include <string>
 
+#include "core/error.h"
 #include "fe/assembly.h"
 #include "fe/beam_section.h"
 #include "fe/fe_model_builder.h"
@@ -110,6 +112,8 @@ TEST(CorotationalBeam, RigidMotionMakesNoForce) {
   const ForceAndTangent moved = internal_force_and_tangent(structure, state);
   // Force scale: EA times a 1 % strain.
   const double ea = 210e9 * 0.01 * 0.02;
+  std::cout << "rigid motion: max |f_int| = " << moved.force.cwiseAbs().maxCoeff() << " N (EA = "
+            << ea << " N)\n";
   EXPECT_LT(moved.force.cwiseAbs().maxCoeff(), 1e-12 * 0.01 * ea);
 
   // K(moved) = T K(reference) T^T with T = diag(R, R, ...).
@@ -133,6 +137,34 @@ TEST(CorotationalBeam, UndeformedTangentIsTheLinearStiffness) {
     const Eigen::MatrixXd k_lin = Eigen::MatrixXd(fe::assemble(model).stiffness);
     EXPECT_LT((k_nl - k_lin).cwiseAbs().maxCoeff(), 1e-10 * k_lin.cwiseAbs().maxCoeff())
         << "timoshenko " << timoshenko;
+  }
+}
+
+// Models with elements this step does not treat nonlinearly are refused with an expected/got
+// message naming them.
+TEST(CorotationalBeam, ModelsWithShellsAreRefused) {
+  fe::FeModelBuilder builder;
+  builder.add_beam_property(steel_bar(false));
+  fe::ShellProperty shell;
+  shell.name = "plate";
+  shell.material = {"steel", 210e9, 0.3, 7850.0};
+  shell.thickness = 0.002;
+  builder.add_shell_property(shell);
+  fe::StraightBeamMesh beam;
+  beam.elements = 2;
+  fe::add_straight_beam(builder, beam);
+  fe::RectangularPlateMesh plate;
+  plate.origin = Eigen::Vector3d(0.0, 0.0, 1.0);
+  plate.first_node_id = 100;
+  fe::add_rectangular_plate(builder, plate);
+  const fe::FeModel model = std::move(builder).build();
+  try {
+    build_beam_structure(model);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("expected a model of beams only, got 1 shell quads"),
+              std::string::npos)
+        << error.what();
   }
 }
 
