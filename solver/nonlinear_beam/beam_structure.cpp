@@ -107,6 +107,18 @@ Eigen::Matrix<double, 6, 1> node_displacement(const BeamStructure& structure,
   return out;
 }
 
+double strain_energy(const BeamStructure& structure, const BeamState& state) {
+  double energy = 0.0;
+  for (const CorotationalBeam& element : structure.elements) {
+    const int a = element.nodes[0];
+    const int b = element.nodes[1];
+    energy += corotational_beam_energy(element, state.positions[a], state.positions[b],
+                                       state.rotations[a].toRotationMatrix(),
+                                       state.rotations[b].toRotationMatrix());
+  }
+  return energy;
+}
+
 Eigen::VectorXd internal_force(const BeamStructure& structure, const BeamState& state) {
   Eigen::VectorXd force = Eigen::VectorXd::Zero(structure.dof_count());
   for (const CorotationalBeam& element : structure.elements) {

@@ -63,6 +63,9 @@ Eigen::Matrix<double, 6, 1> node_displacement(const BeamStructure& structure,
 // Internal force vector f_int (dof_count) of the structure in `state`.
 Eigen::VectorXd internal_force(const BeamStructure& structure, const BeamState& state);
 
+// Strain energy of the beams [J]; internal_force is its gradient.
+double strain_energy(const BeamStructure& structure, const BeamState& state);
+
 struct ForceAndTangent {
   Eigen::VectorXd force;  // f_int, dof_count
   SparseMatrix tangent;   // d f_int / d(translations, spins), dof_count square, compressed

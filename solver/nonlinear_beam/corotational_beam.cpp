@@ -22,7 +22,35 @@ Matrix3x12 spin_selector(int node) {
   return s;
 }
 
+// Element frame R_r (Battini & Pacoste 2002, eq. 12) from the chord direction r1 and the
+// nodes' triads.
+Eigen::Matrix3d element_frame(const Eigen::Vector3d& r1, const Eigen::Matrix3d& triad_a,
+                              const Eigen::Matrix3d& triad_b) {
+  const Eigen::Vector3d q = 0.5 * (triad_a.col(1) + triad_b.col(1));
+  const Eigen::Vector3d r3_raw = r1.cross(q);
+  LIMBER_DEMAND(r3_raw.norm() > 1e-8);
+  const Eigen::Vector3d r3 = r3_raw.normalized();
+  Eigen::Matrix3d frame;
+  frame << r1, r3.cross(r1), r3;
+  return frame;
+}
+
 }  // namespace
+
+double corotational_beam_energy(const CorotationalBeam& element, const Eigen::Vector3d& x_a,
+                                const Eigen::Vector3d& x_b, const Eigen::Matrix3d& rotation_a,
+                                const Eigen::Matrix3d& rotation_b) {
+  const Eigen::Vector3d chord = x_b - x_a;
+  const double ln = chord.norm();
+  LIMBER_DEMAND(ln > 0.0);
+  const Eigen::Matrix3d triad_a = rotation_a * element.r_0;
+  const Eigen::Matrix3d triad_b = rotation_b * element.r_0;
+  const Eigen::Matrix3d frame = element_frame(chord / ln, triad_a, triad_b);
+  Vector7d p_l;
+  p_l << ln - element.length_0, log_so3(frame.transpose() * triad_a),
+      log_so3(frame.transpose() * triad_b);
+  return 0.5 * p_l.dot(element.local_stiffness * p_l);
+}
 
 CorotationalBeam make_corotational_beam(const fe::FeModel& model, const fe::BeamElement& beam) {
   const Eigen::Vector3d& p_a = model.node_positions[beam.nodes[0]];
@@ -59,13 +87,8 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
   const Eigen::Vector3d q_b = triad_b.col(1);
   const Eigen::Vector3d q = 0.5 * (q_a + q_b);
 
-  // Element frame R_r = [r1 r2 r3] (Battini & Pacoste 2002, eq. 12).
-  const Eigen::Vector3d r3_raw = r1.cross(q);
-  LIMBER_DEMAND(r3_raw.norm() > 1e-8);
-  const Eigen::Vector3d r3 = r3_raw.normalized();
-  const Eigen::Vector3d r2 = r3.cross(r1);
-  Eigen::Matrix3d frame;
-  frame << r1, r2, r3;
+  // Element frame R_r = [r1 r2 r3].
+  const Eigen::Matrix3d frame = element_frame(r1, triad_a, triad_b);
 
   // Local deformations p_l and forces f_l = K_l p_l.
   const Eigen::Vector3d theta_a = log_so3(frame.transpose() * triad_a);

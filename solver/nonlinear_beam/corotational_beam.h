@@ -56,6 +56,12 @@ struct ElementResponse {
   Vector7d local_forces;   // f_l = (N, m_a, m_b) conjugate to p_l
 };
 
+// Strain energy 1/2 p_l^T K_l p_l [J] of the element in the same configuration; f_g is its
+// gradient along (translations, spatial spins).
+double corotational_beam_energy(const CorotationalBeam& element, const Eigen::Vector3d& x_a,
+                                const Eigen::Vector3d& x_b, const Eigen::Matrix3d& rotation_a,
+                                const Eigen::Matrix3d& rotation_b);
+
 // Response at node positions x_a, x_b [m] and nodal rotations rotation_a, rotation_b (from the
 // undeformed state, component axes). Precondition (LIMBER_DEMAND): the nodes do not coincide
 // and the mean y axis q is not parallel to the chord (a relative rotation of the two node

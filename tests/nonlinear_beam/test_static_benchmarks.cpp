@@ -314,7 +314,7 @@ TEST(CorotationalStatics, FortyFiveDegreeBendMatchesThePublishedTipPositions) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  Eigen::Vector3d tip_8;
+  Eigen::Vector3d tip_8 = Eigen::Vector3d::Zero();
   for (int elements : {8, 32}) {
     const Bend bend = bend_45(elements);
     const BeamStructure structure = build_beam_structure(bend.model);
