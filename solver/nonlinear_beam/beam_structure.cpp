@@ -129,21 +129,67 @@ Eigen::VectorXd internal_force(const BeamStructure& structure, const BeamState& 
   return force;
 }
 
-ForceAndTangent internal_force_and_tangent(const BeamStructure& structure,
-                                           const BeamState& state) {
-  ForceAndTangent out;
-  out.force = Eigen::VectorXd::Zero(structure.dof_count());
+BeamWorkspace make_workspace(const BeamStructure& structure) {
+  const int n = structure.dof_count();
+  BeamWorkspace workspace;
+  workspace.result.force = Eigen::VectorXd::Zero(n);
+
+  // Pattern: the four 6x6 node blocks of every element (duplicates summed away).
   Triplets triplets;
   triplets.reserve(144 * structure.elements.size());
   for (const CorotationalBeam& element : structure.elements) {
-    const ElementResponse r = response_of(element, state);
-    out.force.segment<6>(6 * element.nodes[0]) += r.force.head<6>();
-    out.force.segment<6>(6 * element.nodes[1]) += r.force.tail<6>();
-    add_element_matrix(element.nodes, r.tangent, triplets);
+    add_element_matrix(element.nodes, Matrix12d::Zero(), triplets);
   }
-  out.tangent.resize(structure.dof_count(), structure.dof_count());
-  out.tangent.setFromTriplets(triplets.begin(), triplets.end());
-  return out;
+  SparseMatrix& k = workspace.result.tangent;
+  k.resize(n, n);
+  k.setFromTriplets(triplets.begin(), triplets.end());
+  k.makeCompressed();
+
+  // Slot of each element entry in the value array (sorted row indices per column).
+  workspace.slots.resize(structure.elements.size());
+  for (std::size_t e = 0; e < structure.elements.size(); ++e) {
+    const std::array<int, 2>& nodes = structure.elements[e].nodes;
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) {
+        const int row = 6 * nodes[i / 6] + i % 6;
+        const int col = 6 * nodes[j / 6] + j % 6;
+        const int* begin = k.innerIndexPtr() + k.outerIndexPtr()[col];
+        const int* end = k.innerIndexPtr() + k.outerIndexPtr()[col + 1];
+        const int* found = std::lower_bound(begin, end, row);
+        LIMBER_DEMAND(found != end && *found == row);
+        workspace.slots[e][12 * i + j] = static_cast<int>(found - k.innerIndexPtr());
+      }
+    }
+  }
+  return workspace;
+}
+
+void evaluate_force_and_tangent(const BeamStructure& structure, const BeamState& state,
+                                BeamWorkspace& workspace) {
+  LIMBER_DEMAND(workspace.slots.size() == structure.elements.size());
+  Eigen::VectorXd& force = workspace.result.force;
+  SparseMatrix& k = workspace.result.tangent;
+  force.setZero();
+  std::fill(k.valuePtr(), k.valuePtr() + k.nonZeros(), 0.0);
+  double* values = k.valuePtr();
+  for (std::size_t e = 0; e < structure.elements.size(); ++e) {
+    const CorotationalBeam& element = structure.elements[e];
+    const ElementResponse r = response_of(element, state);
+    force.segment<6>(6 * element.nodes[0]) += r.force.head<6>();
+    force.segment<6>(6 * element.nodes[1]) += r.force.tail<6>();
+    // Scatter the 12x12 tangent into its slots.
+    const std::array<int, 144>& slots = workspace.slots[e];
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) values[slots[12 * i + j]] += r.tangent(i, j);
+    }
+  }
+}
+
+ForceAndTangent internal_force_and_tangent(const BeamStructure& structure,
+                                           const BeamState& state) {
+  BeamWorkspace workspace = make_workspace(structure);
+  evaluate_force_and_tangent(structure, state, workspace);
+  return std::move(workspace.result);
 }
 
 SparseMatrix corotational_mass(const BeamStructure& structure, const BeamState& state) {

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
+#include <array>
 #include <vector>
 
 #include "fe/fe_model.h"
@@ -71,7 +72,22 @@ struct ForceAndTangent {
   SparseMatrix tangent;   // d f_int / d(translations, spins), dof_count square, compressed
 };
 
-// f_int and its exact tangent (corotational_beam.h), assembled over the elements.
+// Scratch space of evaluate_force_and_tangent, sized from the structure: the tangent's sparsity
+// pattern (full 6x6 blocks for the node pairs of every element, built once) and, per element,
+// the position in the value array of each of its 144 entries, so that evaluations write in
+// place and allocate nothing.
+struct BeamWorkspace {
+  ForceAndTangent result;
+  std::vector<std::array<int, 144>> slots;  // per element, row-major over its 12x12 matrix
+};
+
+BeamWorkspace make_workspace(const BeamStructure& structure);
+
+// f_int and its exact tangent (corotational_beam.h) assembled into workspace.result.
+void evaluate_force_and_tangent(const BeamStructure& structure, const BeamState& state,
+                                BeamWorkspace& workspace);
+
+// The same, returned as a value (a fresh workspace per call; for tests and one-off uses).
 ForceAndTangent internal_force_and_tangent(const BeamStructure& structure,
                                            const BeamState& state);
 

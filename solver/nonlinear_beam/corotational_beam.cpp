@@ -194,12 +194,15 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
   dh.row(10) = -0.5 * c(0) * d_eta21;
   k_local -= dh;
 
-  // Back to component axes: f_g = E f, K_g = E K E^T.
-  Matrix12d e = Matrix12d::Zero();
-  for (int blk = 0; blk < 4; ++blk) e.block<3, 3>(3 * blk, 3 * blk) = frame;
+  // Back to component axes block by block: f_g = E f, K_g = E K E^T, E = diag(R_r x 4).
   ElementResponse out;
-  out.force = e * f_local;
-  out.tangent = e * k_local * e.transpose();
+  for (int bi = 0; bi < 4; ++bi) {
+    out.force.segment<3>(3 * bi) = frame * f_local.segment<3>(3 * bi);
+    for (int bj = 0; bj < 4; ++bj) {
+      out.tangent.block<3, 3>(3 * bi, 3 * bj) =
+          frame * k_local.block<3, 3>(3 * bi, 3 * bj) * frame.transpose();
+    }
+  }
   out.frame = frame;
   out.local_forces = f_l;
   return out;

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "fe/assembly.h"
 
 namespace limber::nonlinear_beam {
 
@@ -19,39 +18,55 @@ struct NewtonOutcome {
   double residual = 0.0;  // last relative residual
 };
 
+// What the Newton iterations of one solve share: the assembly workspace, the LU factor (its
+// pattern analysed once: the tangent's pattern never changes) and the fixed-DOF mask.
+struct NewtonContext {
+  BeamWorkspace workspace;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  bool pattern_analysed = false;
+  std::vector<bool> fixed;
+};
+
+// Holds the fixed DOFs in the full tangent in place: their rows and columns become those of
+// the identity, so the solve gives zero increments there.
+void hold_fixed_dofs(const std::vector<bool>& fixed, SparseMatrix& k) {
+  for (int col = 0; col < k.outerSize(); ++col) {
+    for (SparseMatrix::InnerIterator it(k, col); it; ++it) {
+      if (fixed[it.row()] || fixed[col]) it.valueRef() = it.row() == col ? 1.0 : 0.0;
+    }
+  }
+}
+
 NewtonOutcome newton(const BeamStructure& structure, const Eigen::VectorXd& f_ext, double lambda,
-                     const StaticOptions& options, BeamState& state) {
-  const std::vector<int>& free = structure.free_dofs;
+                     const StaticOptions& options, NewtonContext& context, BeamState& state) {
   const double f_scale = std::max(f_ext.norm(), 1e-300);
   NewtonOutcome out;
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
-  bool pattern_known = false;
   for (int it = 0; it < options.max_iterations; ++it) {
-    // Residual on the free DOFs.
-    ForceAndTangent ft = internal_force_and_tangent(structure, state);
-    const Eigen::VectorXd r_full = ft.force - lambda * f_ext;
-    Eigen::VectorXd r(free.size());
-    for (std::size_t i = 0; i < free.size(); ++i) r(i) = r_full(free[i]);
+    // Residual, zero at the fixed DOFs.
+    evaluate_force_and_tangent(structure, state, context.workspace);
+    Eigen::VectorXd r = context.workspace.result.force - lambda * f_ext;
+    for (int i = 0; i < structure.dof_count(); ++i) {
+      if (context.fixed[i]) r(i) = 0.0;
+    }
     out.residual = r.norm() / f_scale;
     if (!std::isfinite(out.residual)) {
       out.status = StaticStatus::kNotConverged;
       return out;
     }
 
-    // Newton step on the free DOFs.
-    const SparseMatrix k = fe::restrict_to(ft.tangent, free);
-    if (!pattern_known) {
-      lu.analyzePattern(k);
-      pattern_known = true;
+    // Newton step.
+    SparseMatrix& k = context.workspace.result.tangent;
+    hold_fixed_dofs(context.fixed, k);
+    if (!context.pattern_analysed) {
+      context.lu.analyzePattern(k);
+      context.pattern_analysed = true;
     }
-    lu.factorize(k);
-    if (lu.info() != Eigen::Success) {
+    context.lu.factorize(k);
+    if (context.lu.info() != Eigen::Success) {
       out.status = StaticStatus::kSingularTangent;
       return out;
     }
-    const Eigen::VectorXd step = lu.solve(-r);
-    Eigen::VectorXd delta = Eigen::VectorXd::Zero(structure.dof_count());
-    for (std::size_t i = 0; i < free.size(); ++i) delta(free[i]) = step(i);
+    const Eigen::VectorXd delta = context.lu.solve(-r);
     apply_increment(state, delta);
     out.iterations = it + 1;
 
@@ -68,7 +83,7 @@ NewtonOutcome newton(const BeamStructure& structure, const Eigen::VectorXd& f_ex
       // The residual after the step decides.
       const Eigen::VectorXd f_after = internal_force(structure, state) - lambda * f_ext;
       double r2 = 0.0;
-      for (int i : free) r2 += f_after(i) * f_after(i);
+      for (int i : structure.free_dofs) r2 += f_after(i) * f_after(i);
       out.residual = std::sqrt(r2) / f_scale;
       if (out.residual <= options.residual_tolerance ||
           std::sqrt(r2) <= structure.force_roundoff) {
@@ -94,6 +109,12 @@ StaticSolution solve_static(const BeamStructure& structure, const std::vector<No
     f_ext.segment<3>(6 * load.node + 3) += load.moment;
   }
 
+  // Shared Newton data.
+  NewtonContext context;
+  context.workspace = make_workspace(structure);
+  context.fixed.assign(structure.dof_count(), true);
+  for (int i : structure.free_dofs) context.fixed[i] = false;
+
   StaticSolution solution;
   solution.state = reference_state(structure);
   double step = 1.0 / options.load_increments;
@@ -103,7 +124,7 @@ StaticSolution solve_static(const BeamStructure& structure, const std::vector<No
     double target = solution.load_factor + step;
     if (target > 1.0 - 1e-12) target = 1.0;
     BeamState trial = solution.state;
-    const NewtonOutcome outcome = newton(structure, f_ext, target, options, trial);
+    const NewtonOutcome outcome = newton(structure, f_ext, target, options, context, trial);
     if (outcome.status == StaticStatus::kConverged) {
       solution.state = std::move(trial);
       solution.load_factor = target;
