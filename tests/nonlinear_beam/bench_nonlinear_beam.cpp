@@ -1,0 +1,69 @@
+// Wall time of the co-rotational structure's evaluations (not a test; docs/nonlinear-beams.md):
+// one f_int + K_t evaluation of a 100-element straight rod in a deformed state, and the static
+// solve of a 100-element cantilever under a tip load PL^2/EI = 10 in 10 increments.
+// Usage: limber_bench_nonlinear_beam [elements, default 100]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+
+#include "fe/fe_model_builder.h"
+#include "fe/mesh_generators.h"
+#include "nonlinear_beam/beam_structure.h"
+#include "nonlinear_beam/rotation.h"
+#include "nonlinear_beam/static_solver.h"
+
+using namespace limber;
+
+int main(int argc, char** argv) {
+  const int elements = argc > 1 ? std::atoi(argv[1]) : 100;
+
+  // A unit cantilever, EI = 1, EA = 1e8.
+  fe::FeModelBuilder builder;
+  fe::BeamProperty property;
+  property.name = "rod";
+  property.material = {"unit", 1e8, 0.3, 1.0};
+  property.section.area = 1.0;
+  property.section.inertia_y = 1e-8;
+  property.section.inertia_z = 1e-8;
+  property.section.torsion_constant = 2e-8;
+  builder.add_beam_property(property);
+  fe::StraightBeamMesh mesh;
+  mesh.end = Eigen::Vector3d::UnitX();
+  mesh.elements = elements;
+  mesh.orientation = Eigen::Vector3d::UnitY();
+  const std::vector<int> nodes = fe::add_straight_beam(builder, mesh);
+  for (int d = 0; d < fe::kDofsPerNode; ++d) builder.fix(nodes.front(), static_cast<fe::Dof>(d));
+  const fe::FeModel model = std::move(builder).build();
+  const nonlinear_beam::BeamStructure structure = nonlinear_beam::build_beam_structure(model);
+
+  // Evaluations in a bent, twisted state.
+  nonlinear_beam::BeamState state = nonlinear_beam::reference_state(structure);
+  for (int i = 0; i < structure.node_count(); ++i) {
+    const double s = static_cast<double>(i) / elements;
+    state.positions[i] += 0.1 * Eigen::Vector3d(-s * s, s * s, 0.2 * s);
+    state.rotations[i] = nonlinear_beam::exp_quaternion(Eigen::Vector3d(0.3 * s, -0.2 * s, 0.5 * s));
+  }
+  nonlinear_beam::BeamWorkspace workspace = nonlinear_beam::make_workspace(structure);
+  const int repeats = 2000;
+  auto start = std::chrono::steady_clock::now();
+  for (int r = 0; r < repeats; ++r) nonlinear_beam::evaluate_force_and_tangent(structure, state, workspace);
+  const double per_evaluation =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / repeats;
+
+  // Static solve.
+  nonlinear_beam::StaticOptions options;
+  options.load_increments = 10;
+  start = std::chrono::steady_clock::now();
+  const nonlinear_beam::StaticSolution solution = nonlinear_beam::solve_static(
+      structure, {{nodes.back(), Eigen::Vector3d(0.0, 10.0, 0.0), Eigen::Vector3d::Zero()}},
+      options);
+  const double solve = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int iterations = std::accumulate(solution.iterations.begin(), solution.iterations.end(), 0);
+  std::printf("%d elements: f_int + K_t %.1f us per evaluation; static solve PL^2/EI = 10: %.1f ms, "
+              "%d Newton iterations, status %d, v/L = %.6f\n",
+              elements, per_evaluation * 1e6, solve * 1e3, iterations,
+              static_cast<int>(solution.status), solution.state.positions[nodes.back()].y());
+  return solution.status == nonlinear_beam::StaticStatus::kConverged ? 0 : 1;
+}
