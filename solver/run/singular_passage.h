@@ -61,7 +61,7 @@ class SingularPassageMonitor {
  private:
   const multibody::Model& model_;
   int rank_;
-  std::vector<bool> released_;
+  std::vector<int> rows_;  // the equations still in force (released joints' rows left out)
   multibody::Workspace workspace_;
   double start_ = -1.0;
   bool open_ = false;
