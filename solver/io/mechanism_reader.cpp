@@ -208,7 +208,7 @@ ForceEntry read_force(const std::string& name, const YamlValue& entry) {
   const std::string type =
       entry.at("type").as_choice({"rsda", "tsda", "point_load", "latch", "stop"});
   if (type == "latch" || type == "stop") {
-    entry.allow_only({"type", "joint", "angle", "stiffness", "damping"});
+    entry.allow_only({"type", "joint", "angle", "stiffness", "damping", "damping_depth"});
     multibody::HingeLimitSpec spec;
     spec.name = name;
     spec.kind = type == "latch" ? multibody::HingeLimitKind::kLatch : multibody::HingeLimitKind::kStop;
@@ -216,6 +216,7 @@ ForceEntry read_force(const std::string& name, const YamlValue& entry) {
     spec.angle = entry.at("angle").as_number();
     if (const auto k = entry.find("stiffness")) spec.stiffness = k->as_positive();
     if (const auto c = entry.find("damping")) spec.damping = c->as_non_negative();
+    if (const auto d = entry.find("damping_depth")) spec.damping_depth = d->as_non_negative();
     return {spec, entry.where()};
   } else if (type == "rsda") {
     entry.allow_only({"type", "marker_i", "marker_j", "stiffness", "damping", "free_angle",

@@ -11,8 +11,10 @@ namespace limber::multibody {
 
 namespace {
 
-// Whether force element k is in its engaged mode (State::engaged).
-bool is_engaged(const State& state, size_t k) { return k < state.engaged.size() && state.engaged[k]; }
+// The mode of force element k (State::engaged; hinge_limit.h's kLimit* values).
+unsigned char mode_of(const State& state, size_t k) {
+  return k < state.engaged.size() ? state.engaged[k] : kLimitFree;
+}
 
 // θ of an RSDA, unwrapped within ±π of its reference angle.
 double rsda_angle(const Rsda& r, const RelativeAngle& angle) {
@@ -24,7 +26,7 @@ struct ForceVisitor {
   Workspace& ws;
   PowerTerms* powers;
   std::vector<MarkerLoad>* loads = nullptr;  // when set, collects the loads instead of adding Q
-  bool engaged = false;                      // mode of the element being visited
+  unsigned char mode = kLimitFree;           // mode of the element being visited
 
   // Force and torque (ground axes) at the origin of marker m.
   void apply(int m, const Eigen::Vector3d& f_W, const Eigen::Vector3d& tau_W) const {
@@ -81,11 +83,11 @@ struct ForceVisitor {
   }
 
   void operator()(const HingeLimit& h) const {
-    if (!engaged) return;
+    if (mode == kLimitFree) return;
     const FrameKinematics& mi = ws.markers[h.marker_i];
     const FrameKinematics& mj = ws.markers[h.marker_j];
     const RelativeAngle angle = relative_angle(mi, mj, Stage::kVelocity);
-    const HingeLimitForce f = hinge_limit_force(h, hinge_limit_angle(h, angle), angle.rate, engaged);
+    const HingeLimitForce f = hinge_limit_force(h, hinge_limit_angle(h, angle), angle.rate, mode);
     apply(h.marker_j, Eigen::Vector3d::Zero(), f.torque * angle.u);
     apply(h.marker_i, Eigen::Vector3d::Zero(), -f.torque * angle.u);
     if (powers) powers->dissipation += f.dissipation;
@@ -105,7 +107,7 @@ void force_element_loads(const Model& model, const State& state, Workspace& ws, 
   update_marker_kinematics(model, state, Stage::kVelocity, ws);
   ForceVisitor visitor{state, ws, nullptr, &loads};
   for (size_t k = 0; k < model.forces.size(); ++k) {
-    visitor.engaged = is_engaged(state, k);
+    visitor.mode = mode_of(state, k);
     std::visit(visitor, model.forces[k]);
   }
 }
@@ -134,7 +136,7 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
     update_marker_kinematics(model, state, Stage::kVelocity, ws);
     ForceVisitor visitor{state, ws, powers};
     for (size_t k = 0; k < model.forces.size(); ++k) {
-      visitor.engaged = is_engaged(state, k);
+      visitor.mode = mode_of(state, k);
       std::visit(visitor, model.forces[k]);
     }
   }
@@ -162,7 +164,7 @@ EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
     } else if (const HingeLimit* h = std::get_if<HingeLimit>(&force)) {
       const RelativeAngle angle =
           relative_angle(ws.markers[h->marker_i], ws.markers[h->marker_j], Stage::kPosition);
-      e.spring += hinge_limit_energy(*h, hinge_limit_angle(*h, angle), is_engaged(state, k));
+      e.spring += hinge_limit_energy(*h, hinge_limit_angle(*h, angle), mode_of(state, k) != kLimitFree);
     }
   }
   return e;

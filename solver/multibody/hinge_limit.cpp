@@ -8,19 +8,31 @@ double hinge_limit_angle(const HingeLimit& limit, const RelativeAngle& angle) {
   return limit.angle_center + wrap_angle(angle.theta - limit.angle_center);
 }
 
-HingeLimitForce hinge_limit_force(const HingeLimit& limit, double theta, double rate, bool engaged) {
+namespace {
+
+// The damping's share at penetration p in `mode` (hinge_limit.h).
+double damping_share(const HingeLimit& limit, double p, unsigned char mode) {
+  if (mode == kLatchSeated || limit.damping_depth <= 0.0) return 1.0;
+  const double x = std::clamp(p / limit.damping_depth, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
+}  // namespace
+
+HingeLimitForce hinge_limit_force(const HingeLimit& limit, double theta, double rate, unsigned char mode) {
   HingeLimitForce f;
-  if (!engaged) return f;
+  if (mode == kLimitFree) return f;
+  const double p = limit.direction * (theta - limit.angle);
+  const double damping = damping_share(limit, p, mode) * limit.damping;
   if (limit.kind == HingeLimitKind::kLatch) {
     // Locked hinge: a two-sided torsional spring-damper about the latch angle.
-    f.torque = -limit.stiffness * (theta - limit.angle) - limit.damping * rate;
-    f.dissipation = limit.damping * rate * rate;
+    f.torque = -limit.stiffness * (theta - limit.angle) - damping * rate;
+    f.dissipation = damping * rate * rate;
     return f;
   }
   // Stop: contact force on the penetration p = direction (θ − angle), clamped to push only.
-  const double p = limit.direction * (theta - limit.angle);
   const double p_rate = limit.direction * rate;
-  const double push = std::max(0.0, limit.stiffness * p + limit.damping * p_rate);
+  const double push = std::max(0.0, limit.stiffness * p + damping * p_rate);
   f.torque = -limit.direction * push;
   // Removed power = −τ θ̇ − d/dt(½ k p²); it is c ṗ² while unclamped and k p |ṗ| when clamped.
   f.dissipation = push * p_rate - limit.stiffness * p * p_rate;
@@ -34,10 +46,17 @@ double hinge_limit_energy(const HingeLimit& limit, double theta, bool engaged) {
   return 0.5 * limit.stiffness * p * p;
 }
 
-double hinge_limit_event(const HingeLimit& limit, double theta, bool engaged) {
+double hinge_limit_event(const HingeLimit& limit, double theta, unsigned char mode) {
   const double p = limit.direction * (theta - limit.angle);
-  if (limit.kind == HingeLimitKind::kLatch) return engaged ? -1.0 : p;
-  return engaged ? -p : p;
+  if (limit.kind == HingeLimitKind::kStop) return mode == kLimitFree ? p : -p;
+  if (mode == kLimitFree) return p;
+  // Locked: seated when p reaches the damping's depth; then no switch ever again.
+  return mode == kLimitEngaged && limit.damping_depth > 0.0 ? p - limit.damping_depth : -1.0;
+}
+
+unsigned char hinge_limit_next_mode(const HingeLimit& limit, unsigned char mode) {
+  if (limit.kind == HingeLimitKind::kStop) return mode == kLimitFree ? kLimitEngaged : kLimitFree;
+  return mode == kLimitFree ? kLimitEngaged : kLatchSeated;
 }
 
 void hinge_limit_events(const Model& model, const std::vector<int>& limits, const State& state,
@@ -50,8 +69,8 @@ void hinge_limit_events(const Model& model, const std::vector<int>& limits, cons
     const RelativeAngle angle =
         relative_angle(ws.markers[limit.marker_i], ws.markers[limit.marker_j], Stage::kPosition);
     const size_t f = static_cast<size_t>(limits[k]);
-    const bool engaged = f < state.engaged.size() && state.engaged[f];
-    e(static_cast<Eigen::Index>(k)) = hinge_limit_event(limit, hinge_limit_angle(limit, angle), engaged);
+    const unsigned char mode = f < state.engaged.size() ? state.engaged[f] : kLimitFree;
+    e(static_cast<Eigen::Index>(k)) = hinge_limit_event(limit, hinge_limit_angle(limit, angle), mode);
   }
 }
 

@@ -149,8 +149,10 @@ struct PointLoad {
 // θ is the joint's angle as for a rotation driver, unwrapped within ±π of angle_center; the
 // hinge starts on the free side, and direction = sign(angle − θ at the initial poses) says
 // which way it travels towards the limit. Penetration p = direction (θ − angle).
-//   latch: engages (for good) when p rises through 0; locked, τ = −k (θ − angle) − c θ̇.
-//   stop:  in contact while p > 0;  τ = −direction max(0, k p + c ṗ)  (pushes, never pulls).
+//   latch: engages (for good) when p rises through 0; locked, τ = −k (θ − angle) − s c θ̇.
+//   stop:  in contact while p > 0;  τ = −direction max(0, k p + s c ṗ)  (pushes, never pulls).
+// s, the share of the damping, rises from 0 at p = 0 to 1 at p = damping_depth (1 throughout
+// when it is 0), so that the torque is continuous at engagement (hinge_limit.h).
 // Torque on body j about z_i, like an RSDA's. Switches are events located by the integrator.
 enum class HingeLimitKind { kLatch, kStop };
 const char* to_string(HingeLimitKind kind);
@@ -163,6 +165,7 @@ struct HingeLimit {
   double direction = 1.0;                 // ±1
   double stiffness = 0.0, damping = 0.0;  // [N·m/rad], [N·m·s/rad]
   double angle_center = 0.0;              // [rad]
+  double damping_depth = 0.0;             // [rad] ≥ 0
 };
 
 using ForceElement = std::variant<Rsda, Tsda, PointLoad, HingeLimit>;

@@ -289,9 +289,11 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
     throw InputError(fmt::format("{} \"{}\": expected a revolute joint, got {} joint \"{}\"", kind,
                                  spec.name, to_string(joint.type), spec.joint), where);
   }
-  if (!(spec.stiffness > 0.0) || !(spec.damping >= 0.0)) {
-    throw InputError(fmt::format("{} \"{}\": expected stiffness > 0 and damping ≥ 0, got k = {}, "
-                                 "c = {}", kind, spec.name, spec.stiffness, spec.damping), where);
+  if (!(spec.stiffness > 0.0) || !(spec.damping >= 0.0) || !(spec.damping_depth >= 0.0) ||
+      !std::isfinite(spec.damping_depth)) {
+    throw InputError(fmt::format("{} \"{}\": expected stiffness > 0, damping ≥ 0 and damping_depth ≥ 0, "
+                                 "got k = {}, c = {}, depth = {}", kind, spec.name, spec.stiffness,
+                                 spec.damping, spec.damping_depth), where);
   }
   // The joint angle at the initial poses, as for a rotation driver: x_j from x_i towards y_i.
   Eigen::Vector3d p_i, p_j;
@@ -309,7 +311,7 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
   // Unwrap about the middle of the travel: start and limit both lie within ±π of it.
   model_.forces.push_back(HingeLimit{spec.name, spec.kind, j, joint.marker_i, joint.marker_j,
                                      spec.angle, travel > 0.0 ? 1.0 : -1.0, spec.stiffness,
-                                     spec.damping, theta0 + 0.5 * travel});
+                                     spec.damping, theta0 + 0.5 * travel, spec.damping_depth});
 }
 
 void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, const SourceLocation& where) {

@@ -74,6 +74,7 @@ struct HingeLimitSpec {
   double angle = 0.0;
   double stiffness = kDefaultHingeLimitStiffness;  // > 0
   double damping = kDefaultHingeLimitDamping;      // ≥ 0
+  double damping_depth = 0.0;                      // [rad] ≥ 0: the damping's ramp (model.h)
 };
 
 struct TsdaSpec {

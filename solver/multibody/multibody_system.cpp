@@ -223,10 +223,12 @@ void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q,
   state_.v = v;
   update_marker_kinematics(model_, state_, Stage::kVelocity, workspace_);
   const RelativeAngle angle = hinge_limit_state(limit, workspace_);
-  // A latch locks for good; a stop toggles between free and in contact.
+  // A latch locks for good (and is seated later); a stop toggles between free and in contact.
   unsigned char& mode = state_.engaged[force];
-  mode = limit.kind == HingeLimitKind::kLatch ? 1 : !mode;
-  events_.push_back(HingeEvent{force, t, angle.theta, angle.rate, mode != 0});
+  mode = hinge_limit_next_mode(limit, mode);
+  // A latch's seating changes only its damping's share: not a switch a user sees.
+  if (mode == kLatchSeated) return;
+  events_.push_back(HingeEvent{force, t, angle.theta, angle.rate, mode != kLimitFree});
 }
 
 }  // namespace limber::multibody

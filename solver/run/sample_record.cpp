@@ -288,12 +288,12 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   for (std::size_t k = 0; k < model_.forces.size(); ++k) {
     const auto* limit = std::get_if<multibody::HingeLimit>(&model_.forces[k]);
     if (!limit) continue;
-    const bool engaged = k < engaged_.size() && engaged_[k];
+    const unsigned char mode = k < engaged_.size() ? engaged_[k] : multibody::kLimitFree;
     const multibody::RelativeAngle angle = multibody::hinge_limit_state(*limit, workspace_);
     out.hinge_limit_angles.push_back(angle.theta);
     out.hinge_limit_torques.push_back(
-        multibody::hinge_limit_force(*limit, angle.theta, angle.rate, engaged).torque);
-    out.hinge_limits_engaged.push_back(engaged ? 1 : 0);
+        multibody::hinge_limit_force(*limit, angle.theta, angle.rate, mode).torque);
+    out.hinge_limits_engaged.push_back(mode != multibody::kLimitFree ? 1 : 0);
   }
 
   // Acceleration probes: absolute, ground axes.

@@ -169,6 +169,69 @@ TEST(HingeLatch, EnergyStoredInTheLockedLatchIsCounted) {
   EXPECT_NEAR(energies(model, state, ws).spring, 0.5 * c.stiffness * c.angle * c.angle, 1e-9);
 }
 
+// The damping's ramp over damping_depth d (hinge_limit.h): share s = x² (3 − 2x), x = p / d.
+TEST(HingeLimitDamping, RampsFromZeroAtContactToFullAtTheDepthAndStaysFullOnceSeated) {
+  HingeLimit latch{"l", HingeLimitKind::kLatch, 0, 0, 1, 1.0, 1.0, 1e3, 10.0, 0.5, 0.01};
+  const double rate = 0.3;
+  // θ − angle carries the rounding of θ (1e-16), over d and times k: 1e-11 covers it.
+  constexpr double kRounding = 1e-11;
+  // At contact the damper adds nothing: the torque is continuous with the free hinge's zero.
+  EXPECT_EQ(hinge_limit_force(latch, 1.0, rate, kLimitEngaged).torque, 0.0);
+  // Half way: s = 1/4 (3 − 1) = 1/2.
+  const HingeLimitForce half = hinge_limit_force(latch, 1.005, rate, kLimitEngaged);
+  EXPECT_NEAR(half.torque, -1e3 * 0.005 - 0.5 * 10.0 * rate, kRounding);
+  EXPECT_NEAR(half.dissipation, 0.5 * 10.0 * rate * rate, kRounding);
+  // Past the depth, and seated anywhere (the latch swinging back below its angle), in full.
+  EXPECT_NEAR(hinge_limit_force(latch, 1.02, rate, kLimitEngaged).torque, -1e3 * 0.02 - 10.0 * rate, kRounding);
+  EXPECT_NEAR(hinge_limit_force(latch, 0.999, rate, kLatchSeated).torque, 1e3 * 0.001 - 10.0 * rate, kRounding);
+  // Events: engaged, the seating at p = d; seated, none.
+  EXPECT_NEAR(hinge_limit_event(latch, 1.004, kLimitEngaged), 0.004 - 0.01, kRounding);
+  EXPECT_LT(hinge_limit_event(latch, 1.5, kLatchSeated), 0.0);
+  EXPECT_EQ(hinge_limit_next_mode(latch, kLimitEngaged), kLatchSeated);
+  // Without a depth the damping acts in full from contact, and a locked latch never switches.
+  latch.damping_depth = 0.0;
+  EXPECT_NEAR(hinge_limit_force(latch, 1.0, rate, kLimitEngaged).torque, -10.0 * rate, kRounding);
+  EXPECT_LT(hinge_limit_event(latch, 1.5, kLimitEngaged), 0.0);
+  // A stop ramps likewise while in contact and toggles.
+  HingeLimit stop{"s", HingeLimitKind::kStop, 0, 0, 1, 1.0, 1.0, 1e3, 10.0, 0.5, 0.01};
+  EXPECT_NEAR(hinge_limit_force(stop, 1.005, rate, kLimitEngaged).torque, -(1e3 * 0.005 + 0.5 * 10.0 * rate), kRounding);
+  EXPECT_EQ(hinge_limit_next_mode(stop, kLimitEngaged), kLimitFree);
+}
+
+TEST(HingeLatch, DampingRampSeatsTheLatchSilentlyAndThenDampsInFull) {
+  // The latch case with the damping ramped in over d = 0.01 rad: the locked oscillation about
+  // θ_eq = θ_L + τ/k (amplitude 0.063 rad) passes p = d within its first quarter period, so
+  // the latch is seated early and then rings as the closed-form oscillator with the full
+  // damping: successive maxima decay by exp(−2π ζ / sqrt(1 − ζ²)) per period.
+  const LatchCase c;
+  ModelBuilder builder = disk_on_hinge(0.0, kTorque);
+  builder.add_hinge_limit({"latch", "R", HingeLimitKind::kLatch, c.angle, c.stiffness, c.damping, 0.01});
+  const Model model = builder.build();
+  const double zeta = c.damping / (2.0 * std::sqrt(c.stiffness * kJ));
+  const double decrement = std::exp(-2.0 * std::numbers::pi * zeta / std::sqrt(1.0 - zeta * zeta));
+  for (const auto& options : {integrate::IntegratorOptions::generalized_alpha(1e-4, 0.9),
+                              integrate::IntegratorOptions::ida(1e-10, 1e-12)}) {
+    const HingeRun r = run(model, options, 2.0, 1e-4);
+    ASSERT_TRUE(r.ok);
+    // The seating is not a switch a user sees: one event, the engagement.
+    ASSERT_EQ(r.events.size(), 1u);
+    const double t_latch = std::sqrt(2.0 * kJ * c.angle / kTorque);
+    EXPECT_NEAR(r.events[0].t, t_latch, 1e-7);
+    // The first two maxima of θ − θ_eq after the engagement (sampled every 0.1 ms: a maximum
+    // is read to (ω Δt)² / 8 = 2.5e-6 of itself).
+    const double theta_eq = c.angle + kTorque / c.stiffness;
+    std::vector<double> maxima;
+    for (size_t k = 1; k + 1 < r.t.size() && maxima.size() < 2; ++k) {
+      if (r.t[k] <= t_latch) continue;
+      if (r.theta[k] > r.theta[k - 1] && r.theta[k] >= r.theta[k + 1]) maxima.push_back(r.theta[k] - theta_eq);
+    }
+    ASSERT_EQ(maxima.size(), 2u);
+    // Gen-α at ωh = 4.5e-3 damps 1e-6 per period numerically; IDA at rtol 1e-10 less.
+    EXPECT_NEAR(maxima[1] / maxima[0], decrement, 1e-3 * decrement);
+    EXPECT_NEAR(r.theta.back(), theta_eq, 1e-5);
+  }
+}
+
 TEST(HingeLimitInput, RejectsNonRevoluteJointsAndUnreachableAngles) {
   ModelBuilder builder = disk_on_hinge();
   builder.add_marker("S.i", "ground", Eigen::Vector3d(1, 0, 0));
@@ -180,6 +243,7 @@ TEST(HingeLimitInput, RejectsNonRevoluteJointsAndUnreachableAngles) {
   EXPECT_THROW(builder.add_hinge_limit({"l3", "R", HingeLimitKind::kLatch, 7.0, 1e3, 0.0}), InputError);
   EXPECT_THROW(builder.add_hinge_limit({"l4", "R", HingeLimitKind::kStop, 1.0, 0.0, 0.0}), InputError);
   EXPECT_THROW(builder.add_hinge_limit({"l5", "nope", HingeLimitKind::kStop, 1.0, 1.0, 0.0}), InputError);
+  EXPECT_THROW(builder.add_hinge_limit({"l6", "R", HingeLimitKind::kStop, 1.0, 1.0, 0.0, -1e-3}), InputError);
   EXPECT_NO_THROW(builder.add_hinge_limit({"ok", "R", HingeLimitKind::kLatch, -6.0, 1e3, 0.0}));
 }
 
