@@ -21,7 +21,7 @@ NodalInertia lumped_inertia(const fe::FeModel& model) {
   out.mass.assign(structure.node_count(), 0.0);
   out.inertia.assign(structure.node_count(), Eigen::Matrix3d::Zero());
 
-  // Half of each element's mass and section rotary inertia to each of its nodes.
+  // Half of each element's mass to each of its nodes, and the rotary inertia above.
   for (std::size_t e = 0; e < model.beams.size(); ++e) {
     const fe::BeamElement& beam = model.beams[e];
     const CorotationalBeam& element = structure.elements[e];
@@ -31,9 +31,13 @@ NodalInertia lumped_inertia(const fe::FeModel& model) {
     const double half = 0.5 * element.length_0;
     const double iy = property.rotary_inertia ? section.inertia_y : 0.0;
     const double iz = property.rotary_inertia ? section.inertia_z : 0.0;
-    const Eigen::Vector3d local(rho * (section.inertia_y + section.inertia_z), rho * iy, rho * iz);
-    const Eigen::Matrix3d j_node =
-        half * element.r_0 * local.asDiagonal() * element.r_0.transpose();
+    // Section rotary inertia (half the element's), plus the HRZ diagonal of the consistent
+    // Euler-Bernoulli translational mass on the two bending rotations, rho A l0^3 / 78.
+    const double l3 = element.length_0 * element.length_0 * element.length_0;
+    const double hrz = rho * section.area * l3 / 78.0;
+    const Eigen::Vector3d local(half * rho * (section.inertia_y + section.inertia_z),
+                                half * rho * iy + hrz, half * rho * iz + hrz);
+    const Eigen::Matrix3d j_node = element.r_0 * local.asDiagonal() * element.r_0.transpose();
     for (int node : element.nodes) {
       out.mass[node] += half * rho * section.area;
       out.inertia[node] += j_node;

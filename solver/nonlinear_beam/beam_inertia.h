@@ -3,12 +3,18 @@
 // kinetic energy and the momenta.
 //
 // Formulation: lumped (nodal) inertia. Each element gives each of its nodes half its mass,
-// m_e/2 = rho A l0 / 2 [kg], and half its section's rotary inertia,
-// (l0/2) rho diag(Iy + Iz, Iy, Iz) [kg m^2] about its local axes (x along the beam), the two
-// bending terms dropped when BeamProperty::rotary_inertia is false, as the linear element
-// does; FeModel point masses add their mass and inertia at their node. The nodal inertia J_i
-// is constant in the node's material frame (the frame R_i carries from the undeformed
-// component axes), so with the material angular velocity W_i (R_i' = R_i S(W_i)) the inertial
+// rho A l0 / 2 [kg], and a rotary inertia about the element's local axes (x along the beam)
+//   diag(rho (Iy + Iz) l0/2,  rho Iy l0/2 + rho A l0^3/78,  rho Iz l0/2 + rho A l0^3/78)
+// [kg m^2]: half the section's rotary inertia (the two bending terms dropped when
+// BeamProperty::rotary_inertia is false, as the linear element does), plus on the two bending
+// rotations the HRZ diagonal lumping of the consistent Euler-Bernoulli mass (Hinton, Rock &
+// Zienkiewicz, Earthquake Eng. Struct. Dyn. 4 (1976) 245-249: the consistent diagonal
+// 4 l0^2 rho A l0/420 scaled by 420/312 so that the translations carry the exact mass). The
+// HRZ term vanishes as l0^2 under refinement and keeps the bending rotations from being
+// nearly massless (their frequencies, and so the response to a suddenly applied moment, stay
+// within reach of the time step). FeModel point masses add their mass and inertia at their
+// node. The nodal inertia J_i is constant in the node's material frame (the frame R_i carries
+// from the undeformed component axes), so with the material angular velocity W_i (R_i' = R_i S(W_i)) the inertial
 // force of a node is exact and has no element-frame terms:
 //   translations  m_i a_i                       (a_i = x_i'', component axes) [N]
 //   rotations     J_i W_i' + W_i × J_i W_i        (material axes: Euler's equations) [N m]
@@ -20,9 +26,8 @@
 // session). Chosen over the consistent co-rotational mass because its inertial force is
 // exactly that of the nodal rigid bodies: the translational mass is constant, the only
 // velocity term is the gyroscopic one above, energy and momentum follow in closed form, and
-// the tangent is a 3x3 block per
-// node. The price is the lumped mass's discretisation error on the frequencies, which falls as
-// 1/n^2 with the element count n (the consistent linear mass, corotational_mass in
+// the tangent is a 3x3 block per node. The price is the lumped mass's discretisation error on
+// the frequencies, which falls as 1/n^2 with the element count n (the consistent linear mass, corotational_mass in
 // beam_structure.h, stays available for modal checks): measured in
 // tests/nonlinear_beam/test_dynamics.cpp and docs/nonlinear-beams.md.
 #pragma once

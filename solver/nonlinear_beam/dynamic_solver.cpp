@@ -315,43 +315,68 @@ DynamicReport BeamGeneralizedAlpha::advance_to(double t_end) {
   return ok;
 }
 
+void BeamGeneralizedAlpha::end_of_step(double h, Eigen::VectorXd& xi, StepEnd& end) const {
+  const int nn = structure_.node_count();
+  // a from the Newmark position formula, then v, v̇ and q (held DOFs from their prescription).
+  end.a = (xi / (h * h) - v_ / h - (0.5 - beta_) * a_) / beta_;
+  end.v = v_ + h * (1.0 - gamma_) * a_ + h * gamma_ * end.a;
+  end.vdot = ((1.0 - alpha_m_) * end.a + alpha_m_ * a_ - alpha_f_ * vdot_) / (1.0 - alpha_f_);
+  hold(t_ + h, state_, xi, end.v, end.vdot, end.a);
+  end.q = state_;
+  for (int i = 0; i < nn; ++i) {
+    end.q.positions[i] = state_.positions[i] + xi.segment<3>(6 * i);
+    end.q.rotations[i] = (state_.rotations[i] * exp_quaternion(xi.segment<3>(6 * i + 3))).normalized();
+  }
+}
+
+void BeamGeneralizedAlpha::evaluate_step(double h, const Eigen::VectorXd& xi, const StepEnd& end,
+                                         bool with_matrix) {
+  const double c_m = (1.0 - alpha_m_) / ((1.0 - alpha_f_) * beta_ * h * h);
+  const double c_v = gamma_ / (beta_ * h);
+  assemble(t_ + h, end.q, end.v, end.vdot, xi, c_m, c_v, with_matrix);
+  // Held rows (and columns) replaced by the identity's.
+  for (int i = 0; i < structure_.dof_count(); ++i) {
+    if (held_[i]) r_(i) = 0.0;
+  }
+  if (!with_matrix) return;
+  for (int col = 0; col < structure_.dof_count(); ++col) {
+    for (SparseMatrix::InnerIterator e(s_, col); e; ++e) {
+      if (held_[e.row()] || held_[col]) e.valueRef() = e.row() == col ? 1.0 : 0.0;
+    }
+  }
+}
+
+Eigen::VectorXd BeamGeneralizedAlpha::step_residual(double h, const Eigen::VectorXd& xi) {
+  Eigen::VectorXd x = xi;
+  StepEnd end;
+  end_of_step(h, x, end);
+  evaluate_step(h, x, end, false);
+  return r_;
+}
+
+SparseMatrix BeamGeneralizedAlpha::step_matrix(double h, const Eigen::VectorXd& xi) {
+  Eigen::VectorXd x = xi;
+  StepEnd end;
+  end_of_step(h, x, end);
+  evaluate_step(h, x, end, true);
+  return s_;
+}
+
 DynamicReport BeamGeneralizedAlpha::take_step(double h) {
   const int n = structure_.dof_count();
   const int nn = structure_.node_count();
   const double t1 = t_ + h;
-  const double c_m = (1.0 - alpha_m_) / ((1.0 - alpha_f_) * beta_ * h * h);
-  const double c_v = gamma_ / (beta_ * h);
 
   // Predictor: v̇_{n+1} = v̇_n, a from the α relation, ξ from the Newmark formula.
-  Eigen::VectorXd a1 = (vdot_ - alpha_m_ * a_) / (1.0 - alpha_m_);
-  Eigen::VectorXd xi = h * v_ + h * h * (0.5 - beta_) * a_ + beta_ * h * h * a1;
-  Eigen::VectorXd v1(n), vdot1(n), delta(n);
-  BeamState q1 = state_;
-
-  // End-of-step kinematics from ξ (held DOFs from their prescription).
-  const auto kinematics = [&]() {
-    a1 = (xi / (h * h) - v_ / h - (0.5 - beta_) * a_) / beta_;
-    v1 = v_ + h * (1.0 - gamma_) * a_ + h * gamma_ * a1;
-    vdot1 = ((1.0 - alpha_m_) * a1 + alpha_m_ * a_ - alpha_f_ * vdot_) / (1.0 - alpha_f_);
-    hold(t1, state_, xi, v1, vdot1, a1);
-    for (int i = 0; i < nn; ++i) {
-      q1.positions[i] = state_.positions[i] + xi.segment<3>(6 * i);
-      q1.rotations[i] = (state_.rotations[i] * exp_quaternion(xi.segment<3>(6 * i + 3))).normalized();
-    }
-  };
-  kinematics();
+  const Eigen::VectorXd a_pred = (vdot_ - alpha_m_ * a_) / (1.0 - alpha_m_);
+  Eigen::VectorXd xi = h * v_ + h * h * (0.5 - beta_) * a_ + beta_ * h * h * a_pred;
+  Eigen::VectorXd delta(n);
+  StepEnd end;
+  end_of_step(h, xi, end);
 
   for (int it = 0; it < options_.max_iterations; ++it) {
-    // Residual and iteration matrix, held rows and columns replaced by the identity's.
-    assemble(t1, q1, v1, vdot1, xi, c_m, c_v, true);
-    for (int i = 0; i < n; ++i) {
-      if (held_[i]) r_(i) = 0.0;
-    }
-    for (int col = 0; col < n; ++col) {
-      for (SparseMatrix::InnerIterator e(s_, col); e; ++e) {
-        if (held_[e.row()] || held_[col]) e.valueRef() = e.row() == col ? 1.0 : 0.0;
-      }
-    }
+    // Residual and iteration matrix.
+    evaluate_step(h, xi, end, true);
     if (!r_.allFinite() || !Eigen::Map<const Eigen::VectorXd>(s_.valuePtr(), s_.nonZeros()).allFinite()) {
       return fail(DynamicStatus::kNotFinite,
                   fmt::format("non-finite residual or iteration matrix in Newton iteration {} of "
@@ -375,7 +400,7 @@ DynamicReport BeamGeneralizedAlpha::take_step(double h) {
                   fmt::format("non-finite Newton increment in the step to {:.9g} s", t1));
     }
     xi += delta;
-    kinematics();
+    end_of_step(h, xi, end);
     ++stats_.newton_iterations;
 
     // Increment test: translations against the structure size, rotations in rad.
@@ -388,10 +413,10 @@ DynamicReport BeamGeneralizedAlpha::take_step(double h) {
         dw <= options_.increment_tolerance) {
       // Accept the step.
       t_ = t1;
-      state_ = std::move(q1);
-      v_ = std::move(v1);
-      vdot_ = std::move(vdot1);
-      a_ = std::move(a1);
+      state_ = std::move(end.q);
+      v_ = std::move(end.v);
+      vdot_ = std::move(end.vdot);
+      a_ = std::move(end.a);
       ++stats_.steps;
       DynamicReport ok;
       ok.t = t_;

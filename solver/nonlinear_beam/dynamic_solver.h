@@ -125,8 +125,24 @@ class BeamGeneralizedAlpha {
   BeamVelocity acceleration() const;
   const DynamicStatistics& statistics() const { return stats_; }
 
+  // For tests of the tangent: the Newton residual r of a step of length h from the current
+  // state at the increment ξ (6 per node; held entries are overridden by their prescription),
+  // and the iteration matrix S there; held rows (and S's held columns) are the identity's.
+  Eigen::VectorXd step_residual(double h, const Eigen::VectorXd& xi);
+  SparseMatrix step_matrix(double h, const Eigen::VectorXd& xi);
+
  private:
+  // The end of a step: configuration, velocity, v̇ and the algorithmic acceleration a.
+  struct StepEnd {
+    BeamState q;
+    Eigen::VectorXd v, vdot, a;
+  };
   DynamicReport take_step(double h);
+  // The end of the step of length h from the current state with increment ξ (held entries of
+  // ξ overridden).
+  void end_of_step(double h, Eigen::VectorXd& xi, StepEnd& end) const;
+  // r_ (and s_ when with_matrix) at that end, held rows and columns set to the identity's.
+  void evaluate_step(double h, const Eigen::VectorXd& xi, const StepEnd& end, bool with_matrix);
   // Residual r (and the iteration matrix S when c_m > 0) at q, v, v̇ with increment ξ.
   void assemble(double t, const BeamState& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
                 const Eigen::VectorXd& xi, double c_m, double c_v, bool with_matrix);
