@@ -363,13 +363,26 @@ SparseMatrix BeamGeneralizedAlpha::step_matrix(double h, const Eigen::VectorXd& 
 }
 
 DynamicReport BeamGeneralizedAlpha::take_step(double h) {
+  // Predictor: v̇_{n+1} = v̇_n, a from the α relation, ξ from the Newmark formula.
+  const Eigen::VectorXd a_pred = (vdot_ - alpha_m_ * a_) / (1.0 - alpha_m_);
+  const Eigen::VectorXd newmark = h * v_ + h * h * (0.5 - beta_) * a_ + beta_ * h * h * a_pred;
+  const DynamicReport first = attempt_step(h, newmark);
+  if (first.status == DynamicStatus::kOk || first.status == DynamicStatus::kSingularMatrix) return first;
+  // Retry once from constant velocity, ξ = h v_n: the Newmark predictor carries a_n, which on
+  // nearly massless or stiff DOFs (a suddenly applied load on one node of a fine mesh; fast
+  // components left by a sudden event) can put nodes far outside Newton's basin.
+  const DynamicReport second = attempt_step(h, h * v_);
+  if (second.status == DynamicStatus::kOk) return second;
+  DynamicReport out = second;
+  out.message += " (from constant velocity; from the Newmark predictor it failed too)";
+  return out;
+}
+
+DynamicReport BeamGeneralizedAlpha::attempt_step(double h, const Eigen::VectorXd& predictor) {
   const int n = structure_.dof_count();
   const int nn = structure_.node_count();
   const double t1 = t_ + h;
-
-  // Predictor: v̇_{n+1} = v̇_n, a from the α relation, ξ from the Newmark formula.
-  const Eigen::VectorXd a_pred = (vdot_ - alpha_m_ * a_) / (1.0 - alpha_m_);
-  Eigen::VectorXd xi = h * v_ + h * h * (0.5 - beta_) * a_ + beta_ * h * h * a_pred;
+  Eigen::VectorXd xi = predictor;
   Eigen::VectorXd delta(n);
   StepEnd end;
   end_of_step(h, xi, end);

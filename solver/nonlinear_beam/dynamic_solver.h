@@ -25,10 +25,14 @@
 // exp per node (exact increment map; the derivative of C in q is left out, so with β > 0 Newton
 // is quasi-Newton). S is sparse (the element node-pair blocks) and factorised by Eigen's
 // SparseLU (COLAMD), its pattern analysed once.
+// Predictor: the Newmark one (v̇_{n+1} = v̇_n); when Newton fails from it, the step is tried
+// once more from constant velocity, ξ = h v_n (the Newmark predictor carries a_n, which on
+// nearly massless or stiff DOFs can start Newton far outside its basin).
 // Converged when the increment is below `increment_tolerance` (translations relative to
 // BeamStructure::size, rotations in rad). A step that does not converge within
-// `max_iterations`, meets a singular S or non-finite numbers is NOT accepted: the step returns
-// a status naming the time and the reason, and the state stays at the step's start.
+// `max_iterations` from either predictor, meets a singular S or non-finite numbers is NOT
+// accepted: the step returns a status naming the time and the reason, and the state stays at
+// the step's start. The step is fixed: no halving.
 //
 // Held nodes: FeModel fixed DOFs (translations singly; rotations all three of a node or none,
 // since a single fixed component of a material increment is not a fixed spatial rotation) are
@@ -137,7 +141,10 @@ class BeamGeneralizedAlpha {
     BeamState q;
     Eigen::VectorXd v, vdot, a;
   };
+  // A step of length h: Newton from the Newmark predictor, then once more from ξ = h v_n.
   DynamicReport take_step(double h);
+  // Newton from the increment `predictor`; the state is updated only on success.
+  DynamicReport attempt_step(double h, const Eigen::VectorXd& predictor);
   // The end of the step of length h from the current state with increment ξ (held entries of
   // ξ overridden).
   void end_of_step(double h, Eigen::VectorXd& xi, StepEnd& end) const;
