@@ -82,7 +82,7 @@ PrescribedNode hub_rotation(const BeamStructure& structure, int node, const Eige
 
 struct DynamicOptions {
   double step = 0.0;                   // h [s], > 0
-  double rho_inf = 0.9;                // ρ∞ ∈ [0, 1]
+  double rho_inf = 0.8;                // ρ∞ ∈ [0, 1]; ≤ 0.8 on stiff, suddenly loaded structures
   int max_iterations = 25;             // Newton iterations per step
   double increment_tolerance = 1e-10;  // relative to the structure size (translations), rad
   double rayleigh_mass = 0.0;          // α [1/s] of C = α M + β K
