@@ -1,0 +1,74 @@
+// `limber linearize`'s library (run/linearize_run.h) on case files: bad input named (a
+// reference body the case lacks, a singular linearization point), and the stowed satellite's
+// system modes, mass properties and modes with the bus held.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
+#include "run/linearize_run.h"
+
+namespace limber::run {
+namespace {
+
+io::Mechanism build(const std::string& path) {
+  const io::Case input = io::read_case_file(path);
+  return io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+}
+
+// A --reference-body that names no moving body: InputError listing the bodies there are.
+TEST(LinearizeRun, UnknownReferenceBodyIsAnInputErrorNamingTheBodies) {
+  const io::Mechanism m = build(std::string(LIMBER_CASES_DIR) + "/four_bar.yaml");
+  LinearizeSettings settings;
+  settings.reference_body = "no_such_body";
+  try {
+    linearize_mechanism(m.model, m.assembly, settings);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    const std::string text = error.what();
+    EXPECT_NE(text.find("got 'no_such_body'"), std::string::npos) << text;
+    EXPECT_NE(text.find(m.model.bodies[1].name), std::string::npos) << text;
+  }
+}
+
+// The parallelogram assembled at its singular configuration: a failure named, no modes, no NaN.
+TEST(LinearizeRun, SingularLinearizationPointIsNamed) {
+  const io::Mechanism m = build(std::string(LIMBER_TEST_DATA_DIR) + "/parallelogram_singular_start.yaml");
+  const LinearizeSummary s = linearize_mechanism(m.model, m.assembly, {});
+  EXPECT_FALSE(s.ok);
+  EXPECT_EQ(s.failure, "singular start");
+  EXPECT_NE(s.message.find("constraints are singular at the linearization point: equation(s) R"), std::string::npos)
+      << s.message;
+  EXPECT_EQ(s.modes.frequencies_hz.size(), 0);
+}
+
+// The stowed satellite about its static equilibrium, bus held: six rigid modes of the free
+// spacecraft; every number finite; the whole spacecraft's mass the sum of the bodies' (bus
+// 400 kg and four panels); effective masses never above the totals about the bus CoM.
+TEST(LinearizeRun, StowedSatelliteHasSixRigidModesAndConsistentMassProperties) {
+  const io::Mechanism m = build(std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml");
+  LinearizeSettings settings;
+  settings.statics = true;
+  settings.reference_body = "bus";
+  const LinearizeSummary s = linearize_mechanism(m.model, m.assembly, settings);
+  ASSERT_TRUE(s.ok) << s.message;
+  EXPECT_EQ(s.modes.rigid_modes, 6);
+  EXPECT_EQ(s.modes.unstable_modes, 0);
+  EXPECT_TRUE(s.modes.frequencies_hz.allFinite() && s.modes.damping.allFinite());
+  double mass = 0.0;
+  for (const multibody::Body& body : m.model.bodies) mass += body.mass;
+  // Flexible bodies' mass is their undeformed invariant: equal to rounding (1e-12).
+  EXPECT_NEAR(s.mass.mass / mass, 1.0, 1e-12);
+  ASSERT_TRUE(s.cantilevered.has_value());
+  const multibody::CantileveredModes& c = *s.cantilevered;
+  EXPECT_EQ(c.modes.frequencies_hz.size() + 6, s.modes.frequencies_hz.size());
+  for (int d = 0; d < 6; ++d) EXPECT_LE(c.effective_sum(d), c.appendage_mass(d, d) * (1.0 + 1e-12)) << d;
+  EXPECT_LT(c.largest_constraint_rate, 1e-9);
+}
+
+}  // namespace
+}  // namespace limber::run
