@@ -60,12 +60,12 @@ std::string json_report(const run::LinearizeSummary& s, const std::vector<std::f
   return fmt::format(
       "{{\"status\": {}, \"failure\": {}, \"message\": {}, \"about\": {}, \"free_motions\": {}, "
       "\"frequencies_hz\": {}, \"damping\": {}, \"undamped_hz\": {}, \"rigid_modes\": {}, \"unstable_modes\": {}, "
-      "\"zero_threshold_hz\": {}, \"mass\": {}, \"center_of_mass\": {}, \"inertia_about_com\": {}, "
+      "\"zero_threshold_hz\": {}, \"largest_rigid_hz\": {}, \"mass\": {}, \"center_of_mass\": {}, \"inertia_about_com\": {}, "
       "\"cantilevered\": {}, \"files\": {}], \"wall_s\": {}}}",
       json_string(s.ok ? "ok" : "failed"), json_string(s.failure), json_string(s.message),
       json_string(s.statics ? "statics" : "assembly"), s.free_motions, json_array(s.modes.frequencies_hz),
       json_array(s.modes.damping), json_array(s.modes.undamped_hz), s.modes.rigid_modes, s.modes.unstable_modes,
-      json_number(s.modes.zero_threshold_hz), json_number(s.mass.mass), json_array(s.mass.com_W),
+      json_number(s.modes.zero_threshold_hz), json_number(s.modes.largest_rigid_hz), json_number(s.mass.mass), json_array(s.mass.com_W),
       json_matrix(s.mass.inertia_com_W), cantilevered, paths, json_number(s.wall_seconds));
 }
 
@@ -108,8 +108,8 @@ int linearize_case(const LinearizeOptions& options) {
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
              s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
-  fmt::print(text, "rigid-body modes (zero frequency, below {:.3g} Hz): {}\n", s.modes.zero_threshold_hz,
-             s.modes.rigid_modes);
+  fmt::print(text, "rigid-body modes (zero frequency, below {:.3g} Hz): {} (the largest of them {:.3g} Hz before "
+                   "zeroing)\n", s.modes.zero_threshold_hz, s.modes.rigid_modes, s.modes.largest_rigid_hz);
   if (s.modes.unstable_modes > 0) {
     fmt::print(stderr, "limber: warning: {} unstable mode(s) (negative stiffness, reported as negative "
                        "frequencies)\n", s.modes.unstable_modes);
@@ -168,7 +168,7 @@ Command add_linearize_command(CLI::App& app) {
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"failure\", \"message\", \"about\", "
                 "\"free_motions\", \"frequencies_hz\", \"damping\", \"undamped_hz\", \"rigid_modes\", "
-                "\"unstable_modes\", \"zero_threshold_hz\", \"mass\", \"center_of_mass\", \"inertia_about_com\", "
+                "\"unstable_modes\", \"zero_threshold_hz\", \"largest_rigid_hz\", \"mass\", \"center_of_mass\", \"inertia_about_com\", "
                 "\"cantilevered\" (null or {\"reference_point\", \"frequencies_hz\", \"damping\", \"rigid_modes\", "
                 "\"translational_coupling\", \"rotational_coupling\", \"effective_mass\", \"effective_mass_sum\", "
                 "\"rigid_mass\"}), \"files\", \"wall_s\"}; the text goes to stderr");

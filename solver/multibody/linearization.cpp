@@ -160,6 +160,7 @@ SystemModes system_modes(const TangentMatrices& tangent, const Eigen::MatrixXd& 
     const double f = std::sqrt(std::abs(w2(i))) / (2.0 * std::numbers::pi);
     if (std::abs(w2(i)) <= w_zero * w_zero) {
       ++modes.rigid_modes;
+      modes.largest_rigid_hz = std::max(modes.largest_rigid_hz, f);
       continue;
     }
     if (w2(i) < 0.0) ++modes.unstable_modes;

@@ -54,6 +54,7 @@ struct SystemModes {
   int rigid_modes = 0;                // zeros (frequency and damping reported as 0)
   int unstable_modes = 0;             // negative ω² beyond the threshold (reported as −|f|)
   double zero_threshold_hz = 0.0;     // the rigid-mode threshold used
+  double largest_rigid_hz = 0.0;      // the largest √|ω²|/2π counted rigid: the zeros' noise
   Eigen::VectorXd frequencies_hz;     // n, ascending: damped natural frequency |s|/2π [Hz]
   Eigen::VectorXd damping;            // n: ζ = −Re s/|s| (0 for rigid modes) [-]
   Eigen::VectorXd undamped_hz;        // n: √(ω²)/2π of the undamped normal modes [Hz]
