@@ -69,8 +69,10 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
   // The independent rows must keep their rank here: a lost one frees a motion the joints forbid.
   if (nc > 0) {
     Eigen::BDCSVD<Eigen::MatrixXd> svd(out.G, Eigen::ComputeFullU);
-    const Eigen::VectorXd& sigma = svd.singularValues();
-    if (sigma(nc - 1) <= kRedundancyThreshold * sigma(0)) {
+    const Eigen::VectorXd& sigma = svd.singularValues();  // min(nc, nv) of them, descending
+    const double smallest = nc > nv ? 0.0 : sigma(nc - 1);
+    if (smallest <= kRedundancyThreshold * sigma(0)) {
+      // The last left singular vector combines the dependent rows.
       const Eigen::VectorXd u = svd.matrixU().col(nc - 1);
       std::string names;
       for (int k = 0; k < nc; ++k) {
@@ -81,7 +83,7 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
           "the constraints are singular at the linearization point: equation(s) {} depend on each "
           "other here (smallest singular value {:.3g} of {:.3g}), so the motions the joints allow "
           "are not known to first order; linearize slightly off this configuration",
-          names, sigma(nc - 1), sigma(0));
+          names, smallest, sigma(0));
       return LinearizationStatus::kSingularConstraints;
     }
   }

@@ -239,26 +239,30 @@ TEST(Linearization, EffectiveMassesOfAnAppendageOnSpringsSumToItsRigidMass) {
   EXPECT_NEAR((mp.inertia_com_W - I_c).cwiseAbs().maxCoeff(), 0.0, 1e-10 * I_c.norm());
 }
 
-// Rows that depend on each other at the state (two coaxial hinges, both kept as independent)
-// are a singular linearization point: named, no NaN.
+// Rows that depend on each other at the state are a singular linearization point: named, no
+// NaN. Two cases: more rows kept than coordinates (two coaxial hinges on one bar, 10 rows on 6)
+// and as many (two ball joints on one bar, 6 rows of rank 5: the turn about the bar's line).
 TEST(Linearization, SingularConstraintsAreNamed) {
-  ModelBuilder builder;
-  builder.add_rigid_body(body_spec("bar", 1.0, Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d::Zero()));
-  builder.add_marker_at("A.ground", "ground", Eigen::Vector3d::Zero());
-  builder.add_marker_at("A.bar", "bar", Eigen::Vector3d::Zero());
-  builder.add_joint("A", JointType::kRevolute, "A.ground", "A.bar");
-  builder.add_marker_at("B.ground", "ground", Eigen::Vector3d(0, 0, 1));
-  builder.add_marker_at("B.bar", "bar", Eigen::Vector3d(0, 0, 1));
-  builder.add_joint("B", JointType::kRevolute, "B.ground", "B.bar");
-  const Model model = builder.build();
-  ConstraintPartition all;
-  for (int row = 0; row < model.num_equations(); ++row) all.independent.push_back(row);
-  TangentMatrices tangent;
-  std::string message;
-  EXPECT_EQ(tangent_matrices(model, all, initial_state(model), tangent, message),
-            LinearizationStatus::kSingularConstraints);
-  EXPECT_NE(message.find("constraints are singular"), std::string::npos) << message;
-  EXPECT_NE(message.find("B."), std::string::npos) << message;
+  for (const JointType type : {JointType::kRevolute, JointType::kSpherical}) {
+    ModelBuilder builder;
+    builder.add_rigid_body(body_spec("bar", 1.0, Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d::Zero()));
+    builder.add_marker_at("A.ground", "ground", Eigen::Vector3d::Zero());
+    builder.add_marker_at("A.bar", "bar", Eigen::Vector3d::Zero());
+    builder.add_joint("A", type, "A.ground", "A.bar");
+    builder.add_marker_at("B.ground", "ground", Eigen::Vector3d(0, 0, 1));
+    builder.add_marker_at("B.bar", "bar", Eigen::Vector3d(0, 0, 1));
+    builder.add_joint("B", type, "B.ground", "B.bar");
+    const Model model = builder.build();
+    ConstraintPartition all;
+    for (int row = 0; row < model.num_equations(); ++row) all.independent.push_back(row);
+    TangentMatrices tangent;
+    std::string message;
+    EXPECT_EQ(tangent_matrices(model, all, initial_state(model), tangent, message),
+              LinearizationStatus::kSingularConstraints) << to_string(type);
+    EXPECT_NE(message.find("constraints are singular"), std::string::npos) << message;
+    EXPECT_NE(message.find("equation(s) "), std::string::npos) << message;
+    EXPECT_EQ(message.find("nan"), std::string::npos) << message;
+  }
 }
 
 }  // namespace
