@@ -16,6 +16,7 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "run/linear_file.h"
 #include "run/linearize_run.h"
 
 namespace limber::app {
@@ -104,7 +105,8 @@ int linearize_case(const LinearizeOptions& options) {
       options.output_dir.empty()
           ? std::filesystem::path("out") / (std::filesystem::path(options.case_file).stem().string() + "_linear")
           : std::filesystem::path(options.output_dir);
-  const std::vector<std::filesystem::path> files = run::write_linear_csv(model, s, directory);
+  std::vector<std::filesystem::path> files = run::write_linear_csv(model, s, directory);
+  files.insert(files.begin(), run::write_linear_h5(model, s, directory, input.title, input.file));
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
              s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
@@ -153,7 +155,8 @@ Command add_linearize_command(CLI::App& app) {
       "projected onto the motions the joints allow (null space of the constraint Jacobian, SVD),\n"
       "then the quadratic eigenproblem as a first-order problem (docs/linearize.md). Drivers are\n"
       "held; latches act in their current mode. Rigid-body modes are reported as zero frequencies.\n"
-      "Writes DIR/linear_modes.csv, DIR/mode_shapes.csv, DIR/mass_properties.csv and, with\n"
+      "Writes DIR/linear.h5 (tangent matrices, null-space basis, modes, mass properties, held\n"
+      "modes), DIR/linear_modes.csv, DIR/mode_shapes.csv, DIR/mass_properties.csv and, with\n"
       "--reference-body, DIR/cantilevered_modes.csv (modes with that body held, participation\n"
       "factors and effective masses T1-T3, R1-R3).\n"
       "Exit codes: 0 done, 1 bad input, 2 numerical failure (assembly, statics, singular constraints).");

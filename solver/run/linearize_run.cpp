@@ -24,18 +24,6 @@ int reference_body_index(const multibody::Model& model, const std::string& name)
                                fmt::join(names, ", "), name));
 }
 
-// "bus.vx", "bus.wz", "panel.eta3": the name of each velocity coordinate ξ.
-std::vector<std::string> coordinate_names(const multibody::Model& model) {
-  static const char* kFrame[] = {"vx", "vy", "vz", "wx", "wy", "wz"};
-  std::vector<std::string> names;
-  for (const multibody::Body& body : model.bodies) {
-    for (int k = 0; k < body.nv; ++k) {
-      names.push_back(k < 6 ? body.name + "." + kFrame[k] : fmt::format("{}.eta{}", body.name, k - 5));
-    }
-  }
-  return names;
-}
-
 }  // namespace
 
 LinearizeSummary linearize_mechanism(const multibody::Model& model, const multibody::AssemblyOptions& assembly,
@@ -80,9 +68,9 @@ LinearizeSummary linearize_mechanism(const multibody::Model& model, const multib
     summary.failure = "singular constraints";
     return finish(false);
   }
-  const Eigen::MatrixXd Z = multibody::null_space_basis(summary.tangent.G, model.nv);
-  summary.free_motions = static_cast<int>(Z.cols());
-  summary.modes = multibody::system_modes(summary.tangent, Z, settings.zero_threshold_hz);
+  summary.null_space = multibody::null_space_basis(summary.tangent.G, model.nv);
+  summary.free_motions = static_cast<int>(summary.null_space.cols());
+  summary.modes = multibody::system_modes(summary.tangent, summary.null_space, settings.zero_threshold_hz);
   // Mass properties of the whole mechanism (about the ground origin), the held modes.
   const Eigen::MatrixXd Psi = multibody::rigid_motion_basis(model, summary.point, Eigen::Vector3d::Zero());
   summary.mass = multibody::mass_properties(Psi.transpose() * summary.tangent.M * Psi, Eigen::Vector3d::Zero());
@@ -91,6 +79,17 @@ LinearizeSummary linearize_mechanism(const multibody::Model& model, const multib
         multibody::cantilevered_modes(model, summary.point, summary.tangent, reference, settings.zero_threshold_hz);
   }
   return finish(true);
+}
+
+std::vector<std::string> coordinate_names(const multibody::Model& model) {
+  static const char* kFrame[] = {"vx", "vy", "vz", "wx", "wy", "wz"};
+  std::vector<std::string> names;
+  for (const multibody::Body& body : model.bodies) {
+    for (int k = 0; k < body.nv; ++k) {
+      names.push_back(k < 6 ? body.name + "." + kFrame[k] : fmt::format("{}.eta{}", body.name, k - 5));
+    }
+  }
+  return names;
 }
 
 std::vector<std::filesystem::path> write_linear_csv(const multibody::Model& model, const LinearizeSummary& summary,

@@ -35,6 +35,7 @@ struct LinearizeSummary {
   multibody::State point;  // the linearization point
   multibody::TangentMatrices tangent;
   int free_motions = 0;    // n = nv − rank G_i
+  Eigen::MatrixXd null_space;  // Z, nv x n: orthonormal basis of the motions the joints allow
   multibody::SystemModes modes;
   multibody::MassProperties mass;  // the whole mechanism (every moving body)
   std::optional<multibody::CantileveredModes> cantilevered;
@@ -43,6 +44,9 @@ struct LinearizeSummary {
 
 LinearizeSummary linearize_mechanism(const multibody::Model& model, const multibody::AssemblyOptions& assembly,
                                      const LinearizeSettings& settings);
+
+// "bus.vx", "bus.wz", "panel.eta3": the name of each velocity coordinate ξ (nv).
+std::vector<std::string> coordinate_names(const multibody::Model& model);
 
 // Writes DIR/linear_modes.csv (mode, frequency_hz, damping_ratio, undamped_hz, rigid),
 // DIR/mode_shapes.csv (one row per velocity coordinate, named, one column per mode),

@@ -2,11 +2,13 @@
 // bus held, --json and the CSV files; a reference body the case lacks (exit 1) and a singular
 // linearization point (exit 2), each named.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../results/h5_test_read.h"
 #include "mini_json.h"
 #include "run_test_support.h"
 
@@ -39,11 +41,24 @@ TEST(LinearizeCli, StowedSatelliteJsonAndFiles) {
   for (std::size_t i = 7; i < f.size(); ++i) EXPECT_GE(f[i].number(), f[i - 1].number() * (1.0 - 1e-6));
   EXPECT_GT(f[6].number(), 10.0);
   EXPECT_EQ(json["cantilevered"]["translational_coupling"].array().size(), 3u);
-  EXPECT_EQ(json["files"].array().size(), 4u);
+  EXPECT_EQ(json["files"].array().size(), 5u);
   // One CSV row per mode, and one per velocity coordinate in the shapes.
   EXPECT_EQ(count_lines(dir / "linear_modes.csv"), static_cast<int>(f.size()) + 1);
   EXPECT_EQ(count_lines(dir / "cantilevered_modes.csv"), static_cast<int>(f.size()) - 6 + 1);
   EXPECT_TRUE(std::filesystem::exists(dir / "mode_shapes.csv"));
+  // linear.h5 holds the same frequencies, the tangent matrices and the mode shapes.
+  const hid_t h5 = H5Fopen((dir / "linear.h5").string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(h5, 0);
+  EXPECT_EQ(results::testing::read_string_attribute(h5, "/", "format"), "limber-linear");
+  const std::vector<double> f_h5 = results::testing::read_doubles(h5, "/modes/frequencies_hz");
+  ASSERT_EQ(f_h5.size(), f.size());
+  for (std::size_t i = 0; i < f.size(); ++i) EXPECT_EQ(f_h5[i], f[i].number());
+  const std::vector<hsize_t> dims = results::testing::dataset_dims(h5, "/K");
+  ASSERT_EQ(dims.size(), 2u);
+  EXPECT_EQ(dims[0], dims[1]);
+  EXPECT_EQ(results::testing::dataset_dims(h5, "/modes/shapes")[1], f.size());
+  EXPECT_EQ(results::testing::dataset_dims(h5, "/cantilevered/effective_mass")[0], f.size() - 6);
+  H5Fclose(h5);
 }
 
 TEST(LinearizeCli, UnknownReferenceBodyIsBadInput) {
