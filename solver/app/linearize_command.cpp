@@ -61,12 +61,14 @@ std::string json_report(const run::LinearizeSummary& s, const std::vector<std::f
   return fmt::format(
       "{{\"status\": {}, \"failure\": {}, \"message\": {}, \"about\": {}, \"free_motions\": {}, "
       "\"frequencies_hz\": {}, \"damping\": {}, \"undamped_hz\": {}, \"rigid_modes\": {}, \"unstable_modes\": {}, "
-      "\"zero_threshold_hz\": {}, \"largest_rigid_hz\": {}, \"mass\": {}, \"center_of_mass\": {}, \"inertia_about_com\": {}, "
+      "\"approximate_damping\": {}, \"zero_threshold_hz\": {}, \"largest_rigid_hz\": {}, \"mass\": {}, "
+      "\"center_of_mass\": {}, \"inertia_about_com\": {}, "
       "\"cantilevered\": {}, \"files\": {}], \"wall_s\": {}}}",
       json_string(s.ok ? "ok" : "failed"), json_string(s.failure), json_string(s.message),
       json_string(s.statics ? "statics" : "assembly"), s.free_motions, json_array(s.modes.frequencies_hz),
       json_array(s.modes.damping), json_array(s.modes.undamped_hz), s.modes.rigid_modes, s.modes.unstable_modes,
-      json_number(s.modes.zero_threshold_hz), json_number(s.modes.largest_rigid_hz), json_number(s.mass.mass), json_array(s.mass.com_W),
+      s.modes.approximate_damping, json_number(s.modes.zero_threshold_hz), json_number(s.modes.largest_rigid_hz),
+      json_number(s.mass.mass), json_array(s.mass.com_W),
       json_matrix(s.mass.inertia_com_W), cantilevered, paths, json_number(s.wall_seconds));
 }
 
@@ -116,6 +118,10 @@ int linearize_case(const LinearizeOptions& options) {
     fmt::print(stderr, "limber: warning: {} unstable mode(s) (negative stiffness, reported as negative "
                        "frequencies)\n", s.modes.unstable_modes);
   }
+  if (s.modes.approximate_damping > 0) {
+    fmt::print(text, "{} mode(s) with their damping from the modal value (close, strongly damped modes)\n",
+               s.modes.approximate_damping);
+  }
   fmt::print(text, "first natural frequencies:\n");
   print_modes(text, s.modes, 10);
   const multibody::MassProperties& m = s.mass;
@@ -127,7 +133,8 @@ int linearize_case(const LinearizeOptions& options) {
   }
   if (s.cantilevered) {
     const multibody::CantileveredModes& c = *s.cantilevered;
-    fmt::print(text, "with {} held (about its centre of mass [{:.5g} {:.5g} {:.5g}] m): {} modes, {} of zero frequency\n",
+    fmt::print(text,
+               "with {} held (about its centre of mass [{:.5g} {:.5g} {:.5g}] m): {} modes, {} of zero frequency\n",
                options.reference_body, c.p_WP.x(), c.p_WP.y(), c.p_WP.z(), c.modes.frequencies_hz.size(),
                c.modes.rigid_modes);
     print_modes(text, c.modes, 10);
@@ -171,7 +178,8 @@ Command add_linearize_command(CLI::App& app) {
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"failure\", \"message\", \"about\", "
                 "\"free_motions\", \"frequencies_hz\", \"damping\", \"undamped_hz\", \"rigid_modes\", "
-                "\"unstable_modes\", \"zero_threshold_hz\", \"largest_rigid_hz\", \"mass\", \"center_of_mass\", \"inertia_about_com\", "
+                "\"unstable_modes\", \"approximate_damping\", \"zero_threshold_hz\", \"largest_rigid_hz\", \"mass\", "
+                "\"center_of_mass\", \"inertia_about_com\", "
                 "\"cantilevered\" (null or {\"reference_point\", \"frequencies_hz\", \"damping\", \"rigid_modes\", "
                 "\"translational_coupling\", \"rotational_coupling\", \"effective_mass\", \"effective_mass_sum\", "
                 "\"rigid_mass\"}), \"files\", \"wall_s\"}; the text goes to stderr");

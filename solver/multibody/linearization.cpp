@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <numeric>
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
@@ -207,7 +208,22 @@ SystemModes system_modes(const TangentMatrices& tangent, const Eigen::MatrixXd& 
       modes.damping(i) = C_m(k, k) / (2.0 * std::sqrt(std::abs(w2(i))));
     }
   }
-  return modes;
+
+  // Ascending damped natural frequencies (damping may swap close undamped neighbours).
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), Eigen::Index{0});
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return modes.frequencies_hz(a) < modes.frequencies_hz(b);
+  });
+  SystemModes sorted = modes;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index i = order[static_cast<std::size_t>(k)];
+    sorted.frequencies_hz(k) = modes.frequencies_hz(i);
+    sorted.damping(k) = modes.damping(i);
+    sorted.undamped_hz(k) = modes.undamped_hz(i);
+    sorted.shapes.col(k) = modes.shapes.col(i);
+  }
+  return sorted;
 }
 
 }  // namespace limber::multibody

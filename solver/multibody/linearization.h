@@ -50,7 +50,7 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
 Eigen::MatrixXd null_space_basis(const Eigen::MatrixXd& G, int nv);
 
 struct SystemModes {
-  // Entries ordered by the undamped ω²: unstable ones (negative) first, then the rigid zeros.
+  // Entries in ascending frequencies_hz: unstable ones (negative) first, then the rigid zeros.
   int rigid_modes = 0;                // zeros (frequency and damping reported as 0)
   int unstable_modes = 0;             // negative ω² beyond the threshold (reported as −|f|)
   double zero_threshold_hz = 0.0;     // the rigid-mode threshold used

@@ -130,7 +130,9 @@ std::vector<std::filesystem::path> write_linear_csv(const multibody::Model& mode
     out << "quantity,value,unit\n" << fmt::format("mass,{:.10g},kg\n", m.mass);
     for (int k = 0; k < 3; ++k) out << fmt::format("com_{},{:.10g},m\n", "xyz"[k], m.com_W(k));
     for (int r = 0; r < 3; ++r) {
-      for (int c = r; c < 3; ++c) out << fmt::format("I_{}{},{:.10g},kg m^2\n", "xyz"[r], "xyz"[c], m.inertia_com_W(r, c));
+      for (int c = r; c < 3; ++c) {
+        out << fmt::format("I_{}{},{:.10g},kg m^2\n", "xyz"[r], "xyz"[c], m.inertia_com_W(r, c));
+      }
     }
   }
   if (summary.cantilevered) {

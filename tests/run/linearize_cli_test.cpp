@@ -38,7 +38,7 @@ TEST(LinearizeCli, StowedSatelliteJsonAndFiles) {
   ASSERT_EQ(f.size(), static_cast<std::size_t>(json["free_motions"].number()));
   // Ascending, zeros first, then elastic modes of the stowed panels (≈ 129 Hz at this mesh).
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(f[i].number(), 0.0);
-  for (std::size_t i = 7; i < f.size(); ++i) EXPECT_GE(f[i].number(), f[i - 1].number() * (1.0 - 1e-6));
+  for (std::size_t i = 7; i < f.size(); ++i) EXPECT_GE(f[i].number(), f[i - 1].number());
   EXPECT_GT(f[6].number(), 10.0);
   EXPECT_EQ(json["cantilevered"]["translational_coupling"].array().size(), 3u);
   EXPECT_EQ(json["files"].array().size(), 5u);
