@@ -46,6 +46,62 @@ Eigen::VectorXd residual(const Model& model, const std::vector<int>& rows, const
   return ws.M * vdot + rows_of(ws.G, rows).transpose() * lambda - ws.Q;
 }
 
+// The first-order problem [0 I; −K_m −C_m] of the elastic modes (K_m, C_m in their normal
+// coordinates): each root belongs to the normal mode that dominates its displacement part; a
+// mode with its two roots gets ω_n = √(s1 s2) and ζ = −(s1 + s2)/(2 ω_n) (a conjugate pair: |s|
+// and −Re s/|s|; two real roots: overdamped, ζ > 1). Writes modes' entries `elastic`.
+void damp_elastic_modes(const Eigen::MatrixXd& K_m, const Eigen::MatrixXd& C_m, const Eigen::VectorXd& w2,
+                        const std::vector<Eigen::Index>& elastic, SystemModes& modes) {
+  const Eigen::Index ne = K_m.rows();
+  if (ne == 0) return;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * ne, 2 * ne);
+  A.topRightCorner(ne, ne).setIdentity();
+  A.bottomLeftCorner(ne, ne) = -K_m;
+  A.bottomRightCorner(ne, ne) = -C_m;
+  const Eigen::EigenSolver<Eigen::MatrixXd> first_order(A, true);
+  const Eigen::VectorXcd s = first_order.eigenvalues();
+  const Eigen::MatrixXcd V = first_order.eigenvectors();
+  std::vector<std::vector<std::complex<double>>> roots(static_cast<std::size_t>(ne));
+  for (Eigen::Index r = 0; r < 2 * ne; ++r) {
+    Eigen::Index owner = 0;
+    V.col(r).head(ne).cwiseAbs().maxCoeff(&owner);
+    roots[static_cast<std::size_t>(owner)].push_back(s(r));
+  }
+  for (Eigen::Index k = 0; k < ne; ++k) {
+    const Eigen::Index i = elastic[static_cast<std::size_t>(k)];
+    if (w2(i) < 0.0) continue;  // unstable: a growing and a decaying root, no damping ratio
+    const auto& own = roots[static_cast<std::size_t>(k)];
+    if (own.size() == 2) {
+      const double w_n = std::sqrt(std::abs((own[0] * own[1]).real()));
+      modes.frequencies_hz(i) = w_n / (2.0 * std::numbers::pi);
+      modes.damping(i) = -(own[0] + own[1]).real() / (2.0 * w_n);
+    } else {
+      // Roots shared out unevenly (close, strongly coupled modes): modal damping φᵀCφ / 2ω.
+      ++modes.approximate_damping;
+      modes.damping(i) = C_m(k, k) / (2.0 * std::sqrt(w2(i)));
+    }
+  }
+}
+
+// The modes in ascending frequencies_hz (damping may swap close undamped neighbours).
+SystemModes sorted_by_frequency(const SystemModes& modes) {
+  const Eigen::Index n = modes.frequencies_hz.size();
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), Eigen::Index{0});
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return modes.frequencies_hz(a) < modes.frequencies_hz(b);
+  });
+  SystemModes sorted = modes;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index i = order[static_cast<std::size_t>(k)];
+    sorted.frequencies_hz(k) = modes.frequencies_hz(i);
+    sorted.damping(k) = modes.damping(i);
+    sorted.undamped_hz(k) = modes.undamped_hz(i);
+    sorted.shapes.col(k) = modes.shapes.col(i);
+  }
+  return sorted;
+}
+
 }  // namespace
 
 Eigen::MatrixXd null_space_basis(const Eigen::MatrixXd& G, int nv) {
@@ -171,59 +227,11 @@ SystemModes system_modes(const TangentMatrices& tangent, const Eigen::MatrixXd& 
     modes.frequencies_hz(i) = modes.undamped_hz(i);
     elastic.push_back(i);
   }
-  const Eigen::Index ne = static_cast<Eigen::Index>(elastic.size());
-  if (ne == 0) return modes;
-
-  // The first-order problem on the elastic modes' coordinates z (x = X_e z).
-  Eigen::MatrixXd X_e(n, ne);
-  for (Eigen::Index k = 0; k < ne; ++k) X_e.col(k) = X.col(elastic[static_cast<std::size_t>(k)]);
-  const Eigen::MatrixXd K_m = X_e.transpose() * K_t * X_e, C_m = X_e.transpose() * C_t * X_e;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * ne, 2 * ne);
-  A.topRightCorner(ne, ne).setIdentity();
-  A.bottomLeftCorner(ne, ne) = -K_m;
-  A.bottomRightCorner(ne, ne) = -C_m;
-  const Eigen::EigenSolver<Eigen::MatrixXd> first_order(A, true);
-  const Eigen::VectorXcd s = first_order.eigenvalues();
-  const Eigen::MatrixXcd V = first_order.eigenvectors();
-
-  // Each root belongs to the normal mode that dominates its displacement part; a mode with
-  // its two roots gets ω_n = √(s1 s2) and ζ = −(s1 + s2)/(2 ω_n) (a conjugate pair: |s|,
-  // −Re s/|s|; two real roots: overdamped, ζ > 1).
-  std::vector<std::vector<std::complex<double>>> roots(static_cast<std::size_t>(ne));
-  for (Eigen::Index r = 0; r < 2 * ne; ++r) {
-    Eigen::Index owner = 0;
-    V.col(r).head(ne).cwiseAbs().maxCoeff(&owner);
-    roots[static_cast<std::size_t>(owner)].push_back(s(r));
-  }
-  for (Eigen::Index k = 0; k < ne; ++k) {
-    const Eigen::Index i = elastic[static_cast<std::size_t>(k)];
-    const auto& own = roots[static_cast<std::size_t>(k)];
-    if (own.size() == 2 && w2(i) > 0.0) {
-      const double w_n = std::sqrt(std::abs((own[0] * own[1]).real()));
-      modes.frequencies_hz(i) = w_n / (2.0 * std::numbers::pi);
-      modes.damping(i) = -(own[0] + own[1]).real() / (2.0 * w_n);
-    } else {
-      // Roots shared out unevenly (close, strongly coupled modes): modal damping φᵀCφ / 2ω.
-      ++modes.approximate_damping;
-      modes.damping(i) = C_m(k, k) / (2.0 * std::sqrt(std::abs(w2(i))));
-    }
-  }
-
-  // Ascending damped natural frequencies (damping may swap close undamped neighbours).
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), Eigen::Index{0});
-  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
-    return modes.frequencies_hz(a) < modes.frequencies_hz(b);
-  });
-  SystemModes sorted = modes;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const Eigen::Index i = order[static_cast<std::size_t>(k)];
-    sorted.frequencies_hz(k) = modes.frequencies_hz(i);
-    sorted.damping(k) = modes.damping(i);
-    sorted.undamped_hz(k) = modes.undamped_hz(i);
-    sorted.shapes.col(k) = modes.shapes.col(i);
-  }
-  return sorted;
+  // Damped natural frequencies and damping ratios of the elastic modes, then ascending order.
+  Eigen::MatrixXd X_e(n, static_cast<Eigen::Index>(elastic.size()));
+  for (std::size_t k = 0; k < elastic.size(); ++k) X_e.col(static_cast<Eigen::Index>(k)) = X.col(elastic[k]);
+  damp_elastic_modes(X_e.transpose() * K_t * X_e, X_e.transpose() * C_t * X_e, w2, elastic, modes);
+  return sorted_by_frequency(modes);
 }
 
 }  // namespace limber::multibody

@@ -1,5 +1,6 @@
 // Linearization (multibody/linearization.h, hybrid_coordinates.h) against closed forms: a
-// free-floating hinged pair with a torsion spring, a pendulum about its hanging equilibrium,
+// free-floating hinged pair with a torsion spring (centres on and off the axis), a pendulum
+// about its hanging and its upside-down equilibrium,
 // a damped spring–mass on a slider, a clamped flexible beam against its own component modes,
 // the effective masses' completeness on an appendage held by springs; and a singular
 // linearization point named.
@@ -131,6 +132,29 @@ TEST(Linearization, PendulumAboutItsHangingEquilibriumHasTheClosedFormFrequency)
   EXPECT_NEAR(lin.modes.frequencies_hz(0) / f, 1.0, 1e-8);
   EXPECT_NEAR(lin.modes.undamped_hz(0) / f, 1.0, 1e-8);
   EXPECT_NEAR(lin.tangent.vdot.norm(), 0.0, 1e-9);  // an equilibrium: v̇0 = 0
+}
+
+// The same pendulum balanced upside down (centre of mass l above the pivot, an equilibrium):
+// one unstable mode, reported as the negative frequency −√(m g l / J_pivot)/2π, with a zero
+// damping ratio rather than a NaN. Tolerance as above.
+TEST(Linearization, InvertedPendulumIsOneUnstableModeWithANegativeFrequency) {
+  const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2;
+  ModelBuilder builder;
+  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
+  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
+                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, l)));
+  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
+  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
+  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
+  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
+  const Model model = builder.build();
+  const Linearized lin = linearize(model, true);
+  ASSERT_EQ(lin.free_motions, 1);
+  EXPECT_EQ(lin.modes.unstable_modes, 1);
+  const double f = std::sqrt(m * g * l / (Jy + m * l * l)) / kTwoPi;
+  EXPECT_NEAR(lin.modes.frequencies_hz(0) / -f, 1.0, 1e-8);
+  EXPECT_EQ(lin.modes.damping(0), 0.0);
+  EXPECT_EQ(lin.modes.approximate_damping, 0);
 }
 
 // A mass on a translational joint along x, held by a spring–damper (k, c) to ground at its
