@@ -263,6 +263,51 @@ TEST(Linearization, EffectiveMassesOfAnAppendageOnSpringsSumToItsRigidMass) {
   EXPECT_NEAR((mp.inertia_com_W - I_c).cwiseAbs().maxCoeff(), 0.0, 1e-10 * I_c.norm());
 }
 
+// The seed rod (1 m, 10 beams, 6 normal modes clamped at node 0) bracketed to a floating hub
+// at the hub's centre of mass, hub held: the held modes are the rod's, and their coupling
+// matrices and effective masses are Euler–Bernoulli's for a cantilever of mass m, length L
+// (mode shape φ = cosh βx − cos βx − σ(sinh βx − sin βx), ∫φ² = L, ∫φ = 2σ/β, ∫xφ = 2/β²):
+// translational effective mass 4σ²/(βL)² m (0.6131 m, 0.1883 m for the first two bendings)
+// and rotational about the root 4 m L²/(βL)⁴, each along its bending plane only. Tolerance
+// 1e-3 relative: the FE mass carries the sections' rotary inertia, which Euler–Bernoulli
+// omits, ~(h²/12)(β)² relative: 3e-5 × 22 = 7e-4 for the second bending of the 20 mm side;
+// measured 4e-5 to 5.4e-4 (ten cubic elements add far less).
+TEST(Linearization, CantileverOnAFreeHubHasEulerBernoulliEffectiveMasses) {
+  const double L = 1.0;
+  const fe::FeModel fe_model = testing::straight_rod(L, 10, {0});
+  const modal::ModeSet modes = testing::normal_modes(fe_model, 6);
+  ModelBuilder builder;
+  builder.add_rigid_body(body_spec("hub", 100.0, Eigen::Vector3d(10, 12, 14), Eigen::Vector3d::Zero()));
+  builder.add_flexible_body(testing::flexible_spec("rod", fe_model, modes, {}));
+  builder.add_marker_at("root.hub", "hub", Eigen::Vector3d::Zero());
+  builder.add_node_marker("root.rod", "rod", 0);
+  builder.add_joint("root", JointType::kBracket, "root.hub", "root.rod");
+  const Model model = builder.build();
+  const Linearized lin = linearize(model, false);
+  EXPECT_EQ(lin.modes.rigid_modes, 6);
+  const CantileveredModes held = cantilevered_modes(model, lin.point, lin.tangent, model.find_body("hub"));
+  ASSERT_EQ(held.modes.frequencies_hz.size(), 6);
+  const double m = model.bodies[static_cast<std::size_t>(model.find_body("rod"))].mass;
+  // Modes 1 and 3 bend in the soft plane, 2 and 4 in the stiff one (the section is 1:2).
+  const double beta_L[] = {1.8751040687, 1.8751040687, 4.6940911330, 4.6940911330};
+  for (int i = 0; i < 4; ++i) {
+    const double bl = beta_L[i];
+    const double sigma = (std::sinh(bl) - std::sin(bl)) / (std::cosh(bl) + std::cos(bl));
+    const Eigen::VectorXd meff = held.effective_mass.row(i).transpose();
+    Eigen::Index t = 0, r = 0;
+    meff.head<3>().maxCoeff(&t);
+    meff.tail<3>().maxCoeff(&r);
+    EXPECT_NEAR(meff(t) / (4.0 * sigma * sigma / (bl * bl) * m), 1.0, 1e-3) << "mode " << i + 1;
+    EXPECT_NEAR(meff(3 + r) / (4.0 * m * L * L / std::pow(bl, 4)), 1.0, 1e-3) << "mode " << i + 1;
+    // Bending along one axis (t, normal to the rod along x) turns about the third one.
+    EXPECT_NE(t, 0);
+    EXPECT_EQ(t + r, 3) << "mode " << i + 1;
+    for (int d = 0; d < 6; ++d) {
+      if (d != t && d != 3 + r) EXPECT_LT(meff(d), 1e-9 * m) << "mode " << i + 1 << " direction " << d;
+    }
+  }
+}
+
 // Rows that depend on each other at the state are a singular linearization point: named, no
 // NaN. Two cases: more rows kept than coordinates (two coaxial hinges on one bar, 10 rows on 6)
 // and as many (two ball joints on one bar, 6 rows of rank 5: the turn about the bar's line).
