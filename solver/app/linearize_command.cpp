@@ -174,7 +174,8 @@ Command add_linearize_command(CLI::App& app) {
   cli->add_option("--reference-body", options->reference_body,
                   "Body held for the cantilevered modes and effective masses (e.g. the satellite's bus)");
   cli->add_option("--zero-hz", options->zero_hz,
-                  "Frequencies at or below this are rigid-body modes [Hz] (default: 1e-4 of the highest)");
+                  "Frequencies at or below this are rigid-body modes [Hz] (default: 1e-4 of the highest)")
+      ->check(CLI::Range(0.0, 1e9));
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"failure\", \"message\", \"about\", "
                 "\"free_motions\", \"frequencies_hz\", \"damping\", \"undamped_hz\", \"rigid_modes\", "
