@@ -17,6 +17,7 @@
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
 #include "run/linear_file.h"
+#include "run/linearize_at.h"
 #include "run/linearize_run.h"
 
 namespace limber::app {
@@ -28,6 +29,7 @@ struct LinearizeOptions {
   std::string output_dir;
   std::string reference_body;
   double zero_hz = 0.0;
+  double at = -1.0;  // < 0: not given
   bool statics = false;
   bool json = false;
 };
@@ -65,7 +67,7 @@ std::string json_report(const run::LinearizeSummary& s, const std::vector<std::f
       "\"center_of_mass\": {}, \"inertia_about_com\": {}, "
       "\"cantilevered\": {}, \"files\": {}], \"wall_s\": {}}}",
       json_string(s.ok ? "ok" : "failed"), json_string(s.failure), json_string(s.message),
-      json_string(s.statics ? "statics" : "assembly"), s.free_motions, json_array(s.modes.frequencies_hz),
+      json_string(s.at >= 0.0 ? "run" : s.statics ? "statics" : "assembly"), s.free_motions, json_array(s.modes.frequencies_hz),
       json_array(s.modes.damping), json_array(s.modes.undamped_hz), s.modes.rigid_modes, s.modes.unstable_modes,
       s.modes.approximate_damping, json_number(s.modes.zero_threshold_hz), json_number(s.modes.largest_rigid_hz),
       json_number(s.mass.mass), json_array(s.mass.com_W),
@@ -97,7 +99,12 @@ int linearize_case(const LinearizeOptions& options) {
   settings.statics = options.statics;
   settings.reference_body = options.reference_body;
   settings.zero_threshold_hz = options.zero_hz;
-  const run::LinearizeSummary s = run::linearize_mechanism(model, mechanism.assembly, settings);
+  if (options.at >= 0.0 && options.statics) {
+    throw InputError("expected one of --at and --statics, got both");
+  }
+  const run::LinearizeSummary s =
+      options.at >= 0.0 ? run::linearize_at(model, mechanism.assembly, input.mechanism->run, options.at, settings)
+                        : run::linearize_mechanism(model, mechanism.assembly, settings);
   if (!s.ok) {
     fmt::print(stderr, "limber: error: {}\n", s.message);
     if (options.json) fmt::print(stdout, "{}\n", json_report(s, {}));
@@ -111,7 +118,7 @@ int linearize_case(const LinearizeOptions& options) {
   files.insert(files.begin(), run::write_linear_h5(model, s, directory, input.title, input.file));
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
-             s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
+             s.at >= 0.0 ? "state the run reaches" : s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
   fmt::print(text, "rigid-body modes (zero frequency, below {:.3g} Hz): {} (the largest of them {:.3g} Hz before "
                    "zeroing)\n", s.modes.zero_threshold_hz, s.modes.rigid_modes, s.modes.largest_rigid_hz);
   if (s.modes.unstable_modes > 0) {
@@ -171,6 +178,9 @@ Command add_linearize_command(CLI::App& app) {
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>_linear)");
   cli->add_flag("--statics", options->statics, "Linearize about the static equilibrium at t = 0 (docs/statics.md)");
+  cli->add_option("--at", options->at,
+                  "Linearize about the state a run of the case reaches at this time [s] (0 < T <= run.t_end; "
+                  "the case's run settings, no results.h5)");
   cli->add_option("--reference-body", options->reference_body,
                   "Body held for the cantilevered modes and effective masses (e.g. the satellite's bus)");
   cli->add_option("--zero-hz", options->zero_hz,

@@ -29,7 +29,8 @@ int reference_body_index(const multibody::Model& model, const std::string& name)
 LinearizeSummary linearize_mechanism(const multibody::Model& model, const multibody::AssemblyOptions& assembly,
                                      const LinearizeSettings& settings) {
   const auto wall_start = std::chrono::steady_clock::now();
-  const int reference = settings.reference_body.empty() ? -1 : reference_body_index(model, settings.reference_body);
+  // A reference body the model lacks is bad input, before any work.
+  if (!settings.reference_body.empty()) reference_body_index(model, settings.reference_body);
   LinearizeSummary summary;
   const auto finish = [&](bool ok) {
     summary.ok = ok;
@@ -62,23 +63,30 @@ LinearizeSummary linearize_mechanism(const multibody::Model& model, const multib
     }
     summary.point = summary.statics->state;
   }
+  return finish(linearize_about(model, summary.start.partition, summary.point, settings, summary));
+}
+
+bool linearize_about(const multibody::Model& model, const multibody::ConstraintPartition& partition,
+                     const multibody::State& point, const LinearizeSettings& settings, LinearizeSummary& summary) {
+  const int reference = settings.reference_body.empty() ? -1 : reference_body_index(model, settings.reference_body);
+  summary.point = point;
   // Tangent matrices, the joints' free motions, the system modes.
-  if (multibody::tangent_matrices(model, summary.start.partition, summary.point, summary.tangent, summary.message) !=
+  if (multibody::tangent_matrices(model, partition, point, summary.tangent, summary.message) !=
       multibody::LinearizationStatus::kOk) {
     summary.failure = "singular constraints";
-    return finish(false);
+    return false;
   }
   summary.null_space = multibody::null_space_basis(summary.tangent.G, model.nv);
   summary.free_motions = static_cast<int>(summary.null_space.cols());
   summary.modes = multibody::system_modes(summary.tangent, summary.null_space, settings.zero_threshold_hz);
   // Mass properties of the whole mechanism (about the ground origin), the held modes.
-  const Eigen::MatrixXd Psi = multibody::rigid_motion_basis(model, summary.point, Eigen::Vector3d::Zero());
+  const Eigen::MatrixXd Psi = multibody::rigid_motion_basis(model, point, Eigen::Vector3d::Zero());
   summary.mass = multibody::mass_properties(Psi.transpose() * summary.tangent.M * Psi, Eigen::Vector3d::Zero());
   if (reference >= 0) {
     summary.cantilevered =
-        multibody::cantilevered_modes(model, summary.point, summary.tangent, reference, settings.zero_threshold_hz);
+        multibody::cantilevered_modes(model, point, summary.tangent, reference, settings.zero_threshold_hz);
   }
-  return finish(true);
+  return true;
 }
 
 std::vector<std::string> coordinate_names(const multibody::Model& model) {

@@ -33,6 +33,7 @@ struct LinearizeSummary {
   PreparedStart start;
   std::optional<multibody::StaticsResult> statics;
   multibody::State point;  // the linearization point
+  double at = -1.0;        // the time of the run's state linearized about (linearize_at.h); < 0: none
   multibody::TangentMatrices tangent;
   int free_motions = 0;    // n = nv − rank G_i
   Eigen::MatrixXd null_space;  // Z, nv x n: orthonormal basis of the motions the joints allow
@@ -44,6 +45,12 @@ struct LinearizeSummary {
 
 LinearizeSummary linearize_mechanism(const multibody::Model& model, const multibody::AssemblyOptions& assembly,
                                      const LinearizeSettings& settings);
+
+// The part after the point is chosen: tangent matrices with `partition`'s independent rows at
+// `point`, the system modes, the mass properties and the held modes, into `summary`. False
+// (failure and message set) when the constraints are singular at the point.
+bool linearize_about(const multibody::Model& model, const multibody::ConstraintPartition& partition,
+                     const multibody::State& point, const LinearizeSettings& settings, LinearizeSummary& summary);
 
 // "bus.vx", "bus.wz", "panel.eta3": the name of each velocity coordinate ξ (nv).
 std::vector<std::string> coordinate_names(const multibody::Model& model);

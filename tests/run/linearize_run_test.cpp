@@ -14,6 +14,9 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "../multibody/test_models.h"
+#include "multibody/model_builder.h"
+#include "run/linearize_at.h"
 #include "run/linearize_run.h"
 
 namespace limber::run {
@@ -91,6 +94,44 @@ TEST(LinearizeRun, StowedSatelliteHasSixRigidModesAndConsistentMassProperties) {
     const double f_hybrid = std::sqrt(hybrid.eigenvalues()(6 + i)) / (2.0 * std::numbers::pi);
     EXPECT_NEAR(f_hybrid / s.modes.undamped_hz(6 + i), 1.0, 1e-9) << "mode " << 6 + i;
   }
+}
+
+// --at T: a pendulum with a hinge damper, released 0.3 rad from hanging and run for 12 s until
+// it has settled (ζ = 0.2 at ω = 4.3 rad/s: amplitude 0.3 e^(−0.2·4.3·12) ≈ 1e-5 rad), then
+// linearized there: the hanging pendulum's f = √(m g l / J_pivot)/2π and ζ = c/(2 J_pivot ω).
+// Tolerance 1e-6 relative: the state at T is off the equilibrium by ~1e-5 rad and moving
+// (2e-6 rad/s); the frequency depends on the angle at second order (1e-10), M v̇0 and the
+// velocity terms at first order in the residual motion's effect on forces (measured 3.5e-10).
+TEST(LinearizeRun, AtTimeTLinearizesAboutTheStateTheRunReaches) {
+  using multibody::testing::body_spec;
+  const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2, J = Jy + m * l * l;
+  const double w = std::sqrt(m * g * l / J), c = 2.0 * 0.2 * J * w;
+  multibody::ModelBuilder builder;
+  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
+  const double a = 0.3;  // initial angle about y, centre of mass swung towards −x
+  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
+                                   multibody::axis_angle_matrix(Eigen::Vector3d::UnitY(), a),
+                                   Eigen::Vector3d(0, 0, -l)));
+  const Eigen::Matrix3d R_y = multibody::frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
+  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
+  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
+  builder.add_joint("P", multibody::JointType::kRevolute, "P.ground", "P.bob");
+  builder.add_rsda({"damper", "P.ground", "P.bob", 0.0, c, 0.0, {}, false, {}});
+  const multibody::Model model = builder.build();
+  io::RunSettings run;
+  run.t_end = 12.0;
+  run.sample_interval = 0.5;
+  run.integrator.rtol = 1e-8;
+  run.integrator.atol = 1e-10;
+  const LinearizeSummary s = linearize_at(model, {}, run, 12.0, {});
+  ASSERT_TRUE(s.ok) << s.message;
+  EXPECT_DOUBLE_EQ(s.point.t, 12.0);
+  ASSERT_EQ(s.free_motions, 1);
+  EXPECT_NEAR(s.modes.frequencies_hz(0) / (w / (2.0 * std::numbers::pi)), 1.0, 1e-6);
+  EXPECT_NEAR(s.modes.damping(0) / 0.2, 1.0, 1e-6);
+  // Beyond the run, or not after its start: bad input.
+  EXPECT_THROW(linearize_at(model, {}, run, 12.5, {}), InputError);
+  EXPECT_THROW(linearize_at(model, {}, run, 0.0, {}), InputError);
 }
 
 }  // namespace
