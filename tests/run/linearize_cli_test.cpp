@@ -69,6 +69,21 @@ TEST(LinearizeCli, UnknownReferenceBodyIsBadInput) {
   EXPECT_NE(run.err.find("--reference-body: expected a moving body of the case"), std::string::npos) << run.err;
 }
 
+// --at beyond the case's run (the satellite runs 6 s), and --at with --statics: bad input,
+// before any run.
+TEST(LinearizeCli, AtBeyondTheRunIsBadInput) {
+  const std::string satellite = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml -o " +
+                                test::fresh_directory("linearize_at_bad").string();
+  const test::CommandRun beyond = run_limber("linearize " + satellite + " --at 7");
+  EXPECT_EQ(beyond.exit_code, 1);
+  EXPECT_NE(beyond.err.find("--at: expected a time within the case's run, 0 < T <= 6 s (run.t_end), got 7"),
+            std::string::npos)
+      << beyond.err;
+  const test::CommandRun both = run_limber("linearize " + satellite + " --at 1 --statics");
+  EXPECT_EQ(both.exit_code, 1);
+  EXPECT_NE(both.err.find("expected one of --at and --statics"), std::string::npos) << both.err;
+}
+
 TEST(LinearizeCli, SingularPointIsANamedNumericalFailure) {
   const test::CommandRun run = run_limber("linearize " + std::string(LIMBER_TEST_DATA_DIR) +
                                           "/parallelogram_singular_start.yaml --json -o " +
