@@ -1,5 +1,6 @@
-// `limber linearize`: the mechanism linearized about its assembled state at t = 0 or its static
-// equilibrium (run/linearize_run.h, docs/linearize.md). Prints the system's natural
+// `limber linearize`: the mechanism linearized about its assembled state at t = 0, its static
+// equilibrium or the state a run reaches at T (run/linearize_run.h, run/linearize_at.h,
+// docs/linearize.md). Prints the system's natural
 // frequencies, damping ratios and rigid modes, the whole mechanism's mass properties and, with
 // --reference-body, the modes with that body held and their effective masses; writes the CSV
 // files to DIR.
@@ -163,17 +164,21 @@ int linearize_case(const LinearizeOptions& options) {
 Command add_linearize_command(CLI::App& app) {
   auto options = std::make_shared<LinearizeOptions>();
   CLI::App* cli = app.add_subcommand(
-      "linearize", "Linearized mechanism at t = 0 or at static equilibrium: frequencies, damping, mass properties");
+      "linearize",
+      "Linearized mechanism at t = 0, at static equilibrium or at T of a run: frequencies, damping, mass properties");
   cli->footer(
       "Tangent mass, damping and stiffness of the equations of motion by central differences,\n"
       "projected onto the motions the joints allow (null space of the constraint Jacobian, SVD),\n"
       "then the quadratic eigenproblem as a first-order problem (docs/linearize.md). Drivers are\n"
       "held; latches act in their current mode. Rigid-body modes are reported as zero frequencies.\n"
+      "About the assembled start at t = 0 (default), the static equilibrium (--statics) or the\n"
+      "state a run of the case reaches at T (--at T: hold-downs released, latches as switched).\n"
       "Writes DIR/linear.h5 (tangent matrices, null-space basis, modes, mass properties, held\n"
       "modes), DIR/linear_modes.csv, DIR/mode_shapes.csv, DIR/mass_properties.csv and, with\n"
       "--reference-body, DIR/cantilevered_modes.csv (modes with that body held, participation\n"
       "factors and effective masses T1-T3, R1-R3).\n"
-      "Exit codes: 0 done, 1 bad input, 2 numerical failure (assembly, statics, singular constraints).");
+      "Exit codes: 0 done, 1 bad input, 2 numerical failure (assembly, statics, the run to T, singular\n"
+      "constraints).");
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>_linear)");
