@@ -120,6 +120,10 @@ int linearize_case(const LinearizeOptions& options) {
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
              s.at >= 0.0 ? "state the run reaches" : s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
+  if (s.at >= 0.0) {
+    const auto engaged = std::count(s.point.engaged.begin(), s.point.engaged.end(), 1);
+    fmt::print(text, "hinge latches and stops engaged at t = {:g} s: {}\n", s.point.t, engaged);
+  }
   fmt::print(text, "rigid-body modes (zero frequency, below {:.3g} Hz): {} (the largest of them {:.3g} Hz before "
                    "zeroing)\n", s.modes.zero_threshold_hz, s.modes.rigid_modes, s.modes.largest_rigid_hz);
   if (s.modes.unstable_modes > 0) {
