@@ -62,13 +62,13 @@ std::string json_report(const run::LinearizeSummary& s, const std::vector<std::f
   std::string paths = "[";
   for (std::size_t k = 0; k < files.size(); ++k) paths += (k ? ", " : "") + json_string(files[k].string());
   return fmt::format(
-      "{{\"status\": {}, \"failure\": {}, \"message\": {}, \"about\": {}, \"free_motions\": {}, "
+      "{{\"status\": {}, \"failure\": {}, \"message\": {}, \"about\": {}, \"t\": {}, \"free_motions\": {}, "
       "\"frequencies_hz\": {}, \"damping\": {}, \"undamped_hz\": {}, \"rigid_modes\": {}, \"unstable_modes\": {}, "
       "\"approximate_damping\": {}, \"zero_threshold_hz\": {}, \"largest_rigid_hz\": {}, \"mass\": {}, "
       "\"center_of_mass\": {}, \"inertia_about_com\": {}, "
       "\"cantilevered\": {}, \"files\": {}], \"wall_s\": {}}}",
       json_string(s.ok ? "ok" : "failed"), json_string(s.failure), json_string(s.message),
-      json_string(s.at >= 0.0 ? "run" : s.statics ? "statics" : "assembly"), s.free_motions, json_array(s.modes.frequencies_hz),
+      json_string(s.at >= 0.0 ? "run" : s.statics ? "statics" : "assembly"), json_number(s.point.t), s.free_motions, json_array(s.modes.frequencies_hz),
       json_array(s.modes.damping), json_array(s.modes.undamped_hz), s.modes.rigid_modes, s.modes.unstable_modes,
       s.modes.approximate_damping, json_number(s.modes.zero_threshold_hz), json_number(s.modes.largest_rigid_hz),
       json_number(s.mass.mass), json_array(s.mass.com_W),
@@ -126,6 +126,12 @@ int linearize_case(const LinearizeOptions& options) {
   }
   fmt::print(text, "rigid-body modes (zero frequency, below {:.3g} Hz): {} (the largest of them {:.3g} Hz before "
                    "zeroing)\n", s.modes.zero_threshold_hz, s.modes.rigid_modes, s.modes.largest_rigid_hz);
+  // Zeros within a decade of the threshold are not clearly rigid (a state in motion).
+  if (s.modes.rigid_modes > 0 && s.modes.largest_rigid_hz > 0.1 * s.modes.zero_threshold_hz) {
+    fmt::print(stderr, "limber: warning: a rigid-body mode reached {:.3g} Hz, within a decade of the {:.3g} Hz "
+                       "threshold: check the gap to the first elastic mode and set --zero-hz\n",
+               s.modes.largest_rigid_hz, s.modes.zero_threshold_hz);
+  }
   if (s.modes.unstable_modes > 0) {
     fmt::print(stderr, "limber: warning: {} unstable mode(s) (negative stiffness, reported as negative "
                        "frequencies)\n", s.modes.unstable_modes);
@@ -196,7 +202,8 @@ Command add_linearize_command(CLI::App& app) {
                   "Frequencies at or below this are rigid-body modes [Hz] (default: 1e-4 of the highest)")
       ->check(CLI::Range(0.0, 1e9));
   cli->add_flag("--json", options->json,
-                "Print exactly one JSON object on stdout: {\"status\", \"failure\", \"message\", \"about\", "
+                "Print exactly one JSON object on stdout: {\"status\", \"failure\", \"message\", \"about\" "
+                "(\"assembly\", \"statics\" or \"run\"), \"t\", "
                 "\"free_motions\", \"frequencies_hz\", \"damping\", \"undamped_hz\", \"rigid_modes\", "
                 "\"unstable_modes\", \"approximate_damping\", \"zero_threshold_hz\", \"largest_rigid_hz\", \"mass\", "
                 "\"center_of_mass\", \"inertia_about_com\", "
