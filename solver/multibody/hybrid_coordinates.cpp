@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/error.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -36,6 +37,8 @@ MassProperties mass_properties(const Eigen::MatrixXd& rigid_mass_P, const Eigen:
 
 CantileveredModes cantilevered_modes(const Model& model, const State& state, const TangentMatrices& tangent,
                                      int reference_body, double zero_threshold_hz) {
+  LIMBER_DEMAND(reference_body > 0 && reference_body < static_cast<int>(model.bodies.size()) &&
+                model.bodies[static_cast<std::size_t>(reference_body)].nv > 0);
   const Body& ref = model.bodies[static_cast<std::size_t>(reference_body)];
   CantileveredModes out;
   out.reference_body = reference_body;

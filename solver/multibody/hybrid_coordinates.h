@@ -53,8 +53,8 @@ struct CantileveredModes {
 
 // The modes with body `reference_body` held (its 6 frame velocities appended to the rows of
 // `tangent`), their coupling to Ψ about the body's centre of mass and their effective masses.
-// Precondition (DEMAND-free: the caller checks): reference_body indexes a moving body. Throws
-// NumericalError as system_modes does.
+// Precondition (DEMAND): reference_body indexes a moving body (the command checks the name
+// first, as bad input). Throws NumericalError as system_modes does.
 CantileveredModes cantilevered_modes(const Model& model, const State& state, const TangentMatrices& tangent,
                                      int reference_body, double zero_threshold_hz = 0.0);
 
