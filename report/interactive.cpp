@@ -158,6 +158,13 @@ constexpr const char* kInitScript = R"JS(
         setTimeout(function () { g.limberPending = false; refine(g); }, 0);
       };
     }
+    // Curves lying on earlier ones are dashed, as in the PNG (curve_styles.h).
+    if (spec.dashes) {
+      options.series = {};
+      for (var c = 0; c < spec.dashes.length; ++c) {
+        if (spec.dashes[c]) options.series[spec.labels[c + 1]] = { strokePattern: spec.dashes[c] };
+      }
+    }
     var chart = new Dygraph(div, spec.data, options);
     if (spec.full) {
       chart.limberFull = spec.full;

@@ -14,12 +14,17 @@
 
 namespace limber::report {
 
+// How a curve's line is drawn: solid by default; a curve lying on an earlier one of its plot
+// is dashed or dotted (curve_styles.h) so that both stay visible.
+enum class LineStyle { kSolid, kDashed, kDotted, kDashDot };
+
 // One curve: y(x) drawn as a line; x and y have the same length.
 struct Curve {
   std::string label;  // legend entry
   Eigen::VectorXd x;
   Eigen::VectorXd y;
   int color = -1;     // index into kCurveColors; -1: the curve's place in its plot
+  LineStyle style = LineStyle::kSolid;
 
   Curve() = default;
   Curve(std::string label_, Eigen::VectorXd x_, Eigen::VectorXd y_, int color_ = -1)

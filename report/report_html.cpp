@@ -34,6 +34,7 @@ figcaption { font-size: .95em; color: #444; }
 .banner.failed { background: #fde2e1; border: 2px solid #c62828; color: #8e0000; }
 .banner.running { background: #fff4d6; border: 2px solid #e09b00; color: #6d4c00; }
 .note { color: #555; font-style: italic; }
+.coincide { font-weight: bold; color: #333; }
 .strip { display: flex; gap: 6px; flex-wrap: wrap; }
 .strip figure { margin: 0; flex: 1 1 180px; }
 .modes { display: grid; grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); gap: 8px; }
@@ -59,7 +60,7 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
   const NamedPlot& plot = written.plot;
   const std::string caption = markup_escape(plot.caption);
   const std::string id = stem_of(plot.file);
-  std::string out = "<figure class=\"plot\">\n";
+  std::string out = fmt::format("<figure class=\"plot\" id=\"fig-{}\">\n", id);
   if (!written.interactive_json.empty()) {
     out += fmt::format(
         "<div class=\"dygraph-plot\" id=\"plot-{0}\" data-source=\"json-{0}\" "
@@ -70,8 +71,14 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
   if (!plot.warning.empty()) {
     out += "<p class=\"plot-warning\" role=\"note\">" + markup_escape(plot.warning) + "</p>\n";
   }
-  out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>{}", kImageFolder,
-                     plot.file, caption, caption);
+  out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>", kImageFolder,
+                     plot.file, caption);
+  // Curves lying on each other are dashed; say which, before the caption.
+  if (!plot.coincidence.empty()) {
+    out += "<span class=\"coincide\">Coinciding curves (the later dashed): " +
+           markup_escape(plot.coincidence) + ".</span> ";
+  }
+  out += caption;
   if (!written.csv_file.empty()) {
     out += fmt::format(" <a class=\"csv\" href=\"{}/{}\">Data (CSV)</a>", kDataFolder, written.csv_file);
   }
