@@ -1,6 +1,7 @@
 #include "report_html.h"
 
 #include "hinge_summary.h"
+#include "run_summary.h"
 #include "html.h"
 #include "selection_html.h"
 #include "sizing_loads.h"
@@ -46,6 +47,18 @@ tr.reference td, .reference-key { background: #eef2f7; font-style: italic; }
 .plot-warning { background: #fff4d6; border-left: 4px solid #e09b00; padding: .4em .8em;
                 margin: .3em 0; color: #6d4c00; }
 td.failed { color: #8e0000; font-weight: bold; }
+#summary h3 { margin: .6em 0 .2em; }
+.badge { display: inline-block; padding: .1em .6em; border-radius: 4px; color: #fff; font-size: .9em; }
+.badge.ok { background: #2e7d32; }
+.badge.inaccurate { background: #b26a00; }
+.badge.failed { background: #c62828; }
+.accuracy, .peaks-line, .seed-figures { margin: .2em 0; }
+span.pass { color: #1b5e20; }
+span.fail, p.fail { color: #8e0000; font-weight: bold; }
+.summary-grid { display: grid; grid-template-columns: minmax(0, 2fr) minmax(0, 3fr); gap: 1em; align-items: start; }
+table.compact { margin: .2em 0 .4em; font-size: .92em; }
+table.compact td, table.compact th { padding: .1em .45em; }
+details > summary { cursor: pointer; color: #1f4e79; }
 @media print { nav { display: none; } h2 { page-break-before: always; } }
 )";
 
@@ -463,8 +476,11 @@ std::string report_html(const ReportContent& content) {
            "</p>\n";
   }
 
+  // The summary first: status, model, events, peaks, the seed's figures.
+  out += summary_section(content);
+
   // Contents.
-  out += "<nav><ul>\n";
+  out += "<nav><ul>\n<li><a href=\"#summary\">Summary</a></li>\n";
   for (const RunSection& s : content.runs) {
     out += fmt::format("<li><a href=\"#{}\">{}</a>{}</li>\n", s.anchor, markup_escape(s.label),
                        s.run->finished_ok() ? "" : " (" + markup_escape(s.run->results.status) + ")");
