@@ -26,7 +26,9 @@ cli::Command add_report_command(CLI::App& app) {
                       "frame of the reaction plots, repeatable, in order: ground (default; the "
                       "case's axis names), joint (the joint frame: marker j's axes), a marker "
                       "(e.g. R1.j: the case names a joint's markers <joint>.i and <joint>.j) or a "
-                      "body (e.g. crank): components rotated into that frame at every sample");
+                      "body (e.g. crank): components rotated into that frame at every sample")
+      // One value per --frame: `--frame joint DIR` leaves DIR to the positional argument.
+      ->allow_extra_args(false);
   command->add_option("--config", options->config,
                       "report config (YAML) listing plots, each with a kind: reaction (joint, "
                       "frame, quantity force|torque, components x, y, z, magnitude), probe (body, "

@@ -427,10 +427,15 @@ std::string run_section(const RunSection& s, bool interactive) {
   const RunData& run = *s.run;
   std::string out = fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n", s.anchor, markup_escape(s.label));
   out += status_banner(run);
+  // The case's details, folded: the summary at the top holds what a reviewer reads first.
   out += subsection(s, "summary", "Case summary",
-                    summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) +
-                        "<h4>Joints</h4>\n" + joints_table(run) + redundancy_table(run) +
-                        mode_tables(run) + notes(run));
+                    notes(run) +
+                        fmt::format("<details><summary>case file, solver settings and accuracy "
+                                    "attributes, {} bodies, {} joints{}, mode tables</summary>\n",
+                                    run.results.bodies.size(), run.results.joints.size(),
+                                    run.redundant_equations.empty() ? "" : ", redundant constraints") +
+                        summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) + "<h4>Joints</h4>\n" +
+                        joints_table(run) + redundancy_table(run) + mode_tables(run) + "</details>\n");
   if (interactive && !s.plots.empty()) out += time_window_form(s.anchor);
   out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
   if (run.selection) {
@@ -458,7 +463,11 @@ std::string run_section(const RunSection& s, bool interactive) {
   out += subsection(s, "shock", "Acceleration probes and shock response spectra", plots_of(s, PlotSection::kShock));
   out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
   out += subsection(s, "animation", "Animation", media(s));
-  if (!s.mode_images.empty()) out += subsection(s, "mode-shapes", "Mode shapes", mode_images(s));
+  if (!s.mode_images.empty()) {
+    out += subsection(s, "mode-shapes", "Mode shapes",
+                      fmt::format("<details><summary>{} mode-shape images</summary>\n{}</details>\n",
+                                  s.mode_images.size(), mode_images(s)));
+  }
   return out + "</section>\n";
 }
 

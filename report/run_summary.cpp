@@ -39,6 +39,10 @@ Eigen::Index zero_from(const RowMatrix3d& values) {
 
 std::string number(double value) { return fmt::format("{:.3g}", value); }
 
+// Loads at or below this fraction of the run's largest are rounding, shown "≈ 0" (as in the
+// loads for sizing, sizing_loads.cpp).
+constexpr double kRoundingFraction = 1e-6;
+
 // "0.00196 of the allowed 0.01" and whether it passed.
 std::string measure_text(const AccuracyMeasure& m) {
   return fmt::format("<span class=\"{}\">{} {} of the allowed {:g}</span>", m.passed() ? "pass" : "fail",
@@ -91,11 +95,15 @@ std::string events_table(const RunData& run, const RunDigest& d) {
          "</table>\n";
 }
 
-std::string peak_row(const JointPeakRow& p) {
-  return fmt::format(
-      "<tr><td>{}</td><td>{}</td><td class=\"number\">{:.4g}</td><td class=\"number\">{:.4f}</td>"
-      "<td class=\"number\">{:.4g}</td><td class=\"number\">{:.4f}</td></tr>\n",
-      markup_escape(p.joint), markup_escape(p.type), p.force, p.force_time, p.torque, p.torque_time);
+// A value at or below `floor` is rounding: "≈ 0" and no time (as the loads for sizing).
+std::string peak_cells(double value, double time, double floor) {
+  if (value <= floor) return "<td class=\"number\">≈ 0</td><td></td>";
+  return fmt::format("<td class=\"number\">{:.4g}</td><td class=\"number\">{:.4f}</td>", value, time);
+}
+
+std::string peak_row(const JointPeakRow& p, double floor) {
+  return fmt::format("<tr><td>{}</td><td>{}</td>{}{}</tr>\n", markup_escape(p.joint), markup_escape(p.type),
+                     peak_cells(p.force, p.force_time, floor), peak_cells(p.torque, p.torque_time, floor));
 }
 
 // The largest kSummaryPeakRows reactions, the rest folded.
@@ -104,13 +112,17 @@ std::string peaks_table(const RunDigest& d) {
   const std::string head =
       "<tr><th>joint</th><th>type</th><th>peak |F| [N]</th><th>at t [s]</th><th>peak |T| [N m]</th>"
       "<th>at t [s]</th></tr>\n";
+  // Below a millionth of the largest load is rounding (a revolute's torque about its free axis).
+  double largest = 0.0;
+  for (const JointPeakRow& p : d.peaks) largest = std::max({largest, p.force, p.torque});
+  const double floor = kRoundingFraction * largest;
   std::string out = "<table class=\"compact peaks\">\n" + head;
-  for (std::size_t k = 0; k < d.peaks.size() && k < kSummaryPeakRows; ++k) out += peak_row(d.peaks[k]);
+  for (std::size_t k = 0; k < d.peaks.size() && k < kSummaryPeakRows; ++k) out += peak_row(d.peaks[k], floor);
   out += "</table>\n";
   if (d.peaks.size() > kSummaryPeakRows) {
     out += fmt::format("<details><summary>the other {} joints</summary>\n<table class=\"compact peaks\">\n{}",
                        d.peaks.size() - kSummaryPeakRows, head);
-    for (std::size_t k = kSummaryPeakRows; k < d.peaks.size(); ++k) out += peak_row(d.peaks[k]);
+    for (std::size_t k = kSummaryPeakRows; k < d.peaks.size(); ++k) out += peak_row(d.peaks[k], floor);
     out += "</table>\n</details>\n";
   }
   return out;
