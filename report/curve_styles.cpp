@@ -41,6 +41,16 @@ double curve_distance(const Curve& a, const Curve& b) {
   return worst;
 }
 
+// "1e-9" (not printf's "1e-09").
+std::string tolerance_text(double tolerance) {
+  std::string text = fmt::format("{:g}", tolerance);
+  for (const char* padded : {"e-0", "e+0"}) {
+    const std::size_t at = text.find(padded);
+    if (at != std::string::npos) text.erase(at + 2, 1);
+  }
+  return text;
+}
+
 }  // namespace
 
 std::vector<Coincidence> coinciding_curves(const PlotSpec& plot, double tolerance) {
@@ -80,7 +90,7 @@ std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance) {
       ++members;
     }
     if (members == 0) continue;
-    note += fmt::format("{}{} (to {:g})", note.empty() ? "" : "; ", names, tolerance);
+    note += fmt::format("{}{} (to {})", note.empty() ? "" : "; ", names, tolerance_text(tolerance));
   }
   return note;
 }
