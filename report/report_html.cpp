@@ -59,7 +59,8 @@ span.fail, p.fail { color: #8e0000; font-weight: bold; }
 table.compact { margin: .2em 0 .4em; font-size: .92em; }
 table.compact td, table.compact th { padding: .1em .45em; }
 details > summary { cursor: pointer; color: #1f4e79; }
-@media print { nav { display: none; } h2 { page-break-before: always; } }
+@media print { nav { display: none; } h2 { page-break-before: always; }
+               details::details-content { content-visibility: visible; display: block; } }
 )";
 
 std::string number(double value) { return fmt::format("{:.6g}", value); }
