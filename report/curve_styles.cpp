@@ -90,7 +90,11 @@ std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance) {
       ++members;
     }
     if (members == 0) continue;
-    note += fmt::format("{}{} (to {})", note.empty() ? "" : "; ", names, tolerance_text(tolerance));
+    // Curves at exactly 0 throughout (modes the motion does not excite) say so.
+    const Eigen::VectorXd& y = plot.curves[head].y;
+    const bool zero = y.size() > 0 && (y.array() == 0.0).all();
+    note += fmt::format("{}{}{} (to {})", note.empty() ? "" : "; ", names, zero ? " ≡ 0" : "",
+                        tolerance_text(tolerance));
   }
   return note;
 }

@@ -52,7 +52,7 @@ td.failed { color: #8e0000; font-weight: bold; }
 .badge.ok { background: #2e7d32; }
 .badge.inaccurate { background: #b26a00; }
 .badge.failed { background: #c62828; }
-.accuracy, .peaks-line, .seed-figures { margin: .2em 0; }
+.accuracy, .model, .peaks-line, .seed-figures { margin: .2em 0; }
 span.pass { color: #1b5e20; }
 span.fail, p.fail { color: #8e0000; font-weight: bold; }
 .summary-grid { display: grid; grid-template-columns: minmax(0, 2fr) minmax(0, 3fr); gap: 1em; align-items: start; }

@@ -58,18 +58,16 @@ std::string badge(const std::string& status) {
   return fmt::format("<span class=\"badge {}\">{}</span>", kind, markup_escape(status));
 }
 
-std::string model_table(const RunData& run, const RunDigest& d) {
+// The model in one line: bodies, the flexible ones with their mode counts, joints.
+std::string model_line(const RunData& run, const RunDigest& d) {
   std::string flexible;
   for (const auto& [name, modes] : d.flexible_bodies) {
-    flexible += fmt::format("{}{} ({} modes)", flexible.empty() ? "" : ", ", markup_escape(name), modes);
+    flexible += fmt::format("{}{}: {} modes", flexible.empty() ? "" : ", ", markup_escape(name), modes);
   }
-  std::string out = "<table class=\"compact\"><tr><th colspan=\"2\">Model</th></tr>\n";
-  out += fmt::format("<tr><td>bodies</td><td class=\"number\">{}</td></tr>\n", run.results.bodies.size());
-  out += fmt::format("<tr><td>rigid</td><td class=\"number\">{}</td></tr>\n", d.rigid_bodies);
-  out += fmt::format("<tr><td>flexible</td><td>{}</td></tr>\n", flexible.empty() ? "none" : flexible);
-  out += fmt::format("<tr><td>joints</td><td class=\"number\">{}</td></tr>\n", d.joints);
-  out += "<tr><td>masses</td><td class=\"note\">not in results.h5</td></tr>\n";
-  return out + "</table>\n";
+  return fmt::format("<p class=\"model\">Model: {} bodies, {} rigid and {} flexible{}; {} joints. Masses "
+                     "are not in results.h5.</p>\n",
+                     run.results.bodies.size(), d.rigid_bodies, d.flexible_bodies.size(),
+                     flexible.empty() ? "" : " (" + flexible + ")", d.joints);
 }
 
 // Latch and stop switches, then joints released.
@@ -348,7 +346,8 @@ std::string summary_section(const ReportContent& content) {
     if (d.status == results::layout::status::kFailed && !d.message.empty()) {
       out += "<p class=\"fail\">" + markup_escape(d.message) + "</p>\n";
     }
-    out += "<div class=\"summary-grid\">\n<div>" + model_table(run, d) + events_table(run, d) +
+    out += model_line(run, d);
+    out += "<div class=\"summary-grid\">\n<div>" + events_table(run, d) +
            "</div>\n<div>" + peaks_table(d) + "</div>\n</div>\n";
     out += peaks_line(d);
     out += "</div>\n";
