@@ -321,8 +321,25 @@ std::vector<SeedFigureLink> seed_figure_links(const ReportContent& content) {
   const bool satellite = std::any_of(content.runs.begin(), content.runs.end(),
                                      [](const RunSection& s) { return case_is(s, "satellite_deployment"); });
   if (satellite) {
-    if (const WrittenPlot* p = comparison_plot(content, "R1", {"ground_x", "Fx"})) {
-      links.push_back({"Fig. 10", "R1 X over the runs (static modes added)", figure_id(*p)});
+    // The paper's "X" is its own axis; here the overlay of R1's dominant component (the largest
+    // peak over the runs).
+    const WrittenPlot* dominant = nullptr;
+    double largest = -1.0;
+    const std::string prefix = "compare_" + file_stem("R1") + "_";
+    for (const WrittenPlot& p : content.comparisons) {
+      if (p.plot.file.rfind(prefix, 0) != 0) continue;
+      double peak = 0.0;
+      for (const Curve& c : p.plot.spec.curves) {
+        if (c.y.size() > 0) peak = std::max(peak, c.y.cwiseAbs().maxCoeff());
+      }
+      if (peak > largest) {
+        largest = peak;
+        dominant = &p;
+      }
+    }
+    if (dominant != nullptr) {
+      links.push_back({"Fig. 10", "R1's dominant component over the runs: " + dominant->plot.spec.title,
+                       figure_id(*dominant)});
     }
   }
   return links;

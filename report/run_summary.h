@@ -82,8 +82,10 @@ struct SeedFigureLink {
 // The seed paper's figures the report holds, in figure order (docs/seed-paper.md): for a run of
 // cases/slider_crank*.yaml, Figs. 4–5 (R2 and R3 in ground axes) and Fig. 6 (the mode sets'
 // R3 force, from `limber select`, or the comparison of R3's Z over the runs); for
-// cases/satellite_deployment*.yaml, Fig. 9 (R1's reaction, the first run) and Fig. 10 (R1's X
-// over the runs, when two or more runs hold R1). Figures whose plot is absent are left out.
+// cases/satellite_deployment*.yaml, Fig. 9 (R1's reaction, the first run) and Fig. 10 (the
+// overlay over the runs of R1's dominant component, the one of largest peak: the paper's "X" is
+// its own axis; present when two or more runs hold R1). Figures whose plot is absent are left
+// out.
 std::vector<SeedFigureLink> seed_figure_links(const ReportContent& content);
 
 // The summary section (HTML, every text escaped), placed above the contents.

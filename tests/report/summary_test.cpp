@@ -206,15 +206,21 @@ TEST(Summary, SeedFigureLinksPointAtTheirPlots) {
   r1.plot.subject = "R1";
   section.plots.push_back(r1);
   content.runs.push_back(section);
-  WrittenPlot overlay;
-  overlay.plot.file = "compare_R1_ground_x.png";
-  content.comparisons.push_back(overlay);
+  // Two overlays of R1: Fig. 10 is the dominant component's (peak 30 N against 10 N).
+  const Eigen::VectorXd t = linspace(3, 0.0, 1.0);
+  WrittenPlot small, large;
+  small.plot.file = "compare_R1_ground_y.png";
+  small.plot.spec.curves.push_back({"run 1", t, Eigen::Vector3d(0.0, -10.0, 5.0)});
+  large.plot.file = "compare_R1_ground_z.png";
+  large.plot.spec.curves.push_back({"run 1", t, Eigen::Vector3d(0.0, 30.0, 5.0)});
+  content.comparisons.push_back(small);
+  content.comparisons.push_back(large);
   const std::vector<SeedFigureLink> links = seed_figure_links(content);
   ASSERT_EQ(links.size(), 2u);
   EXPECT_EQ(links[0].figure, "Fig. 9");
   EXPECT_EQ(links[0].target, "fig-run1_reaction_R1_force_ground");
   EXPECT_EQ(links[1].figure, "Fig. 10");
-  EXPECT_EQ(links[1].target, "fig-compare_R1_ground_x");
+  EXPECT_EQ(links[1].target, "fig-compare_R1_ground_z");
   // A case of neither scene: no links.
   run.results.case_file = "cases/four_bar.yaml";
   EXPECT_TRUE(seed_figure_links(content).empty());
