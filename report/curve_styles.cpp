@@ -68,6 +68,7 @@ std::vector<Coincidence> coinciding_curves(const PlotSpec& plot, double toleranc
 std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance) {
   const std::vector<Coincidence> pairs = coinciding_curves(plot, tolerance);
   if (pairs.empty()) return "";
+  const double range = plot_range(plot);
   // Groups of coinciding curves: each curve joins the group of the first curve it lies on.
   const std::size_t n = plot.curves.size();
   std::vector<std::size_t> group(n);
@@ -90,9 +91,9 @@ std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance) {
       ++members;
     }
     if (members == 0) continue;
-    // Curves at exactly 0 throughout (modes the motion does not excite) say so.
+    // Curves at 0 throughout, to the same tolerance (modes the motion does not excite), say so.
     const Eigen::VectorXd& y = plot.curves[head].y;
-    const bool zero = y.size() > 0 && (y.array() == 0.0).all();
+    const bool zero = y.size() > 0 && (y.array().abs() <= tolerance * range).all();
     note += fmt::format("{}{}{} (to {})", note.empty() ? "" : "; ", names, zero ? " ≡ 0" : "",
                         tolerance_text(tolerance));
   }

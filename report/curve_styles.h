@@ -27,8 +27,8 @@ std::vector<Coincidence> coinciding_curves(const PlotSpec& plot, double toleranc
 // Gives each curve that coincides with an earlier one a line style of its own (the k-th curve of
 // a group of coinciding curves, k = 0, 1, 2…: solid, dashed, dotted, dash-dot, then repeating
 // from dashed), and returns the note under the plot: "R1 ≡ R2 (to 1e-9)", groups separated
-// by "; " ("R1 ≡ R2 ≡ R3 (to 1e-9)"; "eta1 ≡ eta3 ≡ 0 (to 1e-9)" for curves at exactly 0
-// throughout), "" when no curves coincide. Curves already styled are
+// by "; " ("R1 ≡ R2 ≡ R3 (to 1e-9)"; "eta1 ≡ eta3 ≡ 0 (to 1e-9)" for curves within the
+// tolerance of 0 throughout), "" when no curves coincide. Curves already styled are
 // left as they are.
 std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance = 1e-9);
 

@@ -61,6 +61,12 @@ TEST(CurveStyles, CoincidingCurvesAreDashedAndSaid) {
   EXPECT_EQ(distinguish_coinciding_curves(apart), "");
   EXPECT_EQ(apart.curves[1].style, LineStyle::kSolid);
 
+  // Curves at 0 beside a sine: "≡ 0".
+  PlotSpec zeros = sine_plot(1);
+  zeros.curves.push_back({"eta1", zeros.curves[0].x, Eigen::VectorXd::Zero(201)});
+  zeros.curves.push_back({"eta3", zeros.curves[0].x, Eigen::VectorXd::Constant(201, 1e-12)});
+  EXPECT_EQ(distinguish_coinciding_curves(zeros), "eta1 ≡ eta3 ≡ 0 (to 1e-9)");
+
   // Other sample times: not compared.
   PlotSpec shifted = sine_plot(2);
   shifted.curves[1].x.array() += 1e-3;
