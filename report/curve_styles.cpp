@@ -65,38 +65,49 @@ std::vector<Coincidence> coinciding_curves(const PlotSpec& plot, double toleranc
   return pairs;
 }
 
-std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance) {
-  const std::vector<Coincidence> pairs = coinciding_curves(plot, tolerance);
+std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance, double visual) {
+  const std::vector<Coincidence> pairs = coinciding_curves(plot, std::max(tolerance, visual));
   if (pairs.empty()) return "";
   const double range = plot_range(plot);
-  // Groups of coinciding curves: each curve joins the group of the first curve it lies on.
+  // Groups of curves on one another: each curve joins the group of the first curve it lies on.
   const std::size_t n = plot.curves.size();
   std::vector<std::size_t> group(n);
+  std::vector<double> distance(n, 0.0);  // to the group's first curve
   for (std::size_t i = 0; i < n; ++i) group[i] = i;
   for (const Coincidence& c : pairs) {
-    if (group[c.later] == c.later) group[c.later] = group[c.first];
+    if (group[c.later] != c.later || group[c.first] != c.first) continue;
+    group[c.later] = c.first;
+    distance[c.later] = c.max_difference;
   }
-  // Styles in each group's order, the first curve solid; the note lists each group.
+  // Styles in each group's order, the first curve solid; the note lists each group, the curves
+  // within `tolerance` of the first after "≡", those only within `visual` after "≈".
   constexpr LineStyle kStyles[] = {LineStyle::kDashed, LineStyle::kDotted, LineStyle::kDashDot};
   std::string note;
+  bool near_only = false;  // some curve only within `visual`
   for (std::size_t head = 0; head < n; ++head) {
     if (group[head] != head) continue;
-    std::string names = plot.curves[head].label;
+    std::string same, near;
     std::size_t members = 0;
     for (std::size_t k = head + 1; k < n; ++k) {
       if (group[k] != head) continue;
       Curve& curve = plot.curves[k];
       if (curve.style == LineStyle::kSolid) curve.style = kStyles[members % std::size(kStyles)];
-      names += " ≡ " + curve.label;
+      (distance[k] <= tolerance * range ? same : near) += (distance[k] <= tolerance * range ? " ≡ " : " ≈ ") + curve.label;
       ++members;
     }
     if (members == 0) continue;
-    // Curves at 0 throughout, to the same tolerance (modes the motion does not excite), say so.
-    const Eigen::VectorXd& y = plot.curves[head].y;
-    const bool zero = y.size() > 0 && (y.array().abs() <= tolerance * range).all();
-    note += fmt::format("{}{}{} (to {})", note.empty() ? "" : "; ", names, zero ? " ≡ 0" : "",
-                        tolerance_text(tolerance));
+    near_only = near_only || !near.empty();
+    // Curves at 0 throughout (modes the motion does not excite) say so.
+    const Eigen::ArrayXd y = plot.curves[head].y.array().abs();
+    const std::string zero = y.size() == 0                          ? ""
+                             : near.empty() && (y <= tolerance * range).all() ? " ≡ 0"
+                             : (y <= visual * range).all()                    ? " ≈ 0"
+                                                                              : "";
+    note += (note.empty() ? "" : "; ") + plot.curves[head].label + same + near + zero;
   }
+  note += near_only ? fmt::format(" (≡ to {}, ≈ to {} of the plot's range: under a pixel)",
+                                  tolerance_text(tolerance), tolerance_text(visual))
+                    : fmt::format(" (to {})", tolerance_text(tolerance));
   return note;
 }
 

@@ -1,7 +1,7 @@
 // Curves of one plot that lie on each other (a symmetric mechanism's twin joints, two runs of
-// one case) must not hide each other: a later curve that coincides with an earlier one is
-// dashed, dotted or dash-dotted (in the PNG and in the interactive chart alike), and the plot
-// says which curves coincide ("R1 ≡ R2 (to 1e-9)").
+// one case) must not hide each other: a later curve that coincides with an earlier one, or lies
+// within a pixel of it, is dashed, dotted or dash-dotted (in the PNG and in the interactive
+// chart alike), and the plot says which curves coincide ("R1 ≡ R2 (to 1e-9)").
 #pragma once
 
 #include "plot.h"
@@ -24,12 +24,15 @@ struct Coincidence {
 // throughout coincide). Non-finite samples must sit at the same places and are skipped.
 std::vector<Coincidence> coinciding_curves(const PlotSpec& plot, double tolerance = 1e-9);
 
-// Gives each curve that coincides with an earlier one a line style of its own (the k-th curve of
-// a group of coinciding curves, k = 0, 1, 2…: solid, dashed, dotted, dash-dot, then repeating
-// from dashed), and returns the note under the plot: "R1 ≡ R2 (to 1e-9)", groups separated
-// by "; " ("R1 ≡ R2 ≡ R3 (to 1e-9)"; "eta1 ≡ eta3 ≡ 0 (to 1e-9)" for curves within the
-// tolerance of 0 throughout), "" when no curves coincide. Curves already styled are
-// left as they are.
-std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance = 1e-9);
+// Gives each curve that lies on an earlier one a line style of its own (the k-th curve of a
+// group, k = 0, 1, 2…: solid, dashed, dotted, dash-dot, then repeating from dashed), and returns
+// the note under the plot. Two curves lie on each other when they coincide to `visual` (1e-3 of
+// the range: less than a pixel of a 600-pixel figure, so a solid later curve would hide the
+// earlier). The note lists each group, its first curve, then after "≡" those within `tolerance`
+// of it and after "≈" those only within `visual`, "≡ 0" or "≈ 0" when the group lies on 0
+// throughout; groups separated by "; ", then the tolerances: "R1 ≡ R2 (to 1e-9)",
+// "eta1 ≡ eta3 ≡ 0; R1 ≡ R2 (to 1e-9)", "R3 ≈ R4 (≡ to 1e-9, ≈ to 0.001 of the plot's range:
+// under a pixel)"; "" when no curves lie on each other. Curves already styled keep their style.
+std::string distinguish_coinciding_curves(PlotSpec& plot, double tolerance = 1e-9, double visual = 1e-3);
 
 }  // namespace limber::report

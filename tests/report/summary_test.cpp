@@ -54,10 +54,15 @@ TEST(CurveStyles, CoincidingCurvesAreDashedAndSaid) {
   EXPECT_EQ(distinguish_coinciding_curves(three), "R1 ≡ R2 ≡ R3 (to 1e-9)");
   EXPECT_EQ(three.curves[2].style, LineStyle::kDotted);
 
-  // 1e-10 of the 180-deg range apart coincide; 1e-7 apart (visible when zoomed) do not.
+  // 1e-10 of the 180-deg range apart coincide; 1e-5 apart (visible when zoomed, not in the
+  // figure) lie within a pixel: dashed and "≈"; 1e-2 apart (6 pixels of 600) are left alone.
   PlotSpec close = sine_plot(2, 180.0 * 1e-10);
   EXPECT_EQ(distinguish_coinciding_curves(close), "R1 ≡ R2 (to 1e-9)");
-  PlotSpec apart = sine_plot(2, 180.0 * 1e-7);
+  PlotSpec near = sine_plot(2, 180.0 * 1e-5);
+  EXPECT_EQ(distinguish_coinciding_curves(near),
+            "R1 ≈ R2 (≡ to 1e-9, ≈ to 0.001 of the plot's range: under a pixel)");
+  EXPECT_EQ(near.curves[1].style, LineStyle::kDashed);
+  PlotSpec apart = sine_plot(2, 180.0 * 1e-2);
   EXPECT_EQ(distinguish_coinciding_curves(apart), "");
   EXPECT_EQ(apart.curves[1].style, LineStyle::kSolid);
 
@@ -73,9 +78,10 @@ TEST(CurveStyles, CoincidingCurvesAreDashedAndSaid) {
   EXPECT_TRUE(coinciding_curves(shifted).empty());
 }
 
-// No two coinciding curves of a plot are drawn in the same colour and line style.
+// No two curves of a plot within a pixel of each other (1e-3 of the range) are drawn in the
+// same colour and line style.
 void expect_told_apart(const PlotSpec& plot) {
-  for (const Coincidence& c : coinciding_curves(plot)) {
+  for (const Coincidence& c : coinciding_curves(plot, 1e-3)) {
     const Curve& a = plot.curves[c.first];
     const Curve& b = plot.curves[c.later];
     EXPECT_FALSE(curve_color(a, c.first) == curve_color(b, c.later) && a.style == b.style)
