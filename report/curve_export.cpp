@@ -111,6 +111,12 @@ std::string curve_json(const PlotSpec& plot, const CurveTable& table, const std:
            : style == LineStyle::kDashDot ? "[10,4,2,4]"
                                           : "null";
   }
+  // Each curve's line width [pixels] (the PNG's extra width over dygraphs' 1.5).
+  out += "],\"widths\":[";
+  for (std::size_t i = 0; i < table.labels.size(); ++i) {
+    const float extra = i < plot.curves.size() ? plot.curves[i].extra_width : 0.0f;
+    out += fmt::format("{}{:g}", i > 0 ? "," : "", 1.5 + extra);
+  }
   out += "],\"data\":[";
   for (std::size_t r = 0; r < table.x.size(); ++r) {
     out += r > 0 ? ",[" : "[";

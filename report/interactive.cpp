@@ -159,10 +159,14 @@ constexpr const char* kInitScript = R"JS(
       };
     }
     // Curves lying on earlier ones are dashed, as in the PNG (curve_styles.h).
-    if (spec.dashes) {
+    // Earlier runs of a comparison are drawn wider, so later ones leave them visible.
+    if (spec.dashes || spec.widths) {
       options.series = {};
-      for (var c = 0; c < spec.dashes.length; ++c) {
-        if (spec.dashes[c]) options.series[spec.labels[c + 1]] = { strokePattern: spec.dashes[c] };
+      for (var c = 0; c + 1 < spec.labels.length; ++c) {
+        var series = {};
+        if (spec.dashes && spec.dashes[c]) series.strokePattern = spec.dashes[c];
+        if (spec.widths && spec.widths[c] !== 1.5) series.strokeWidth = spec.widths[c];
+        options.series[spec.labels[c + 1]] = series;
       }
     }
     var chart = new Dygraph(div, spec.data, options);

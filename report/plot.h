@@ -25,6 +25,9 @@ struct Curve {
   Eigen::VectorXd y;
   int color = -1;     // index into kCurveColors; -1: the curve's place in its plot
   LineStyle style = LineStyle::kSolid;
+  // Extra line width [pixels] over the plot's default (2.5 px in the PNG, 1.5 px in the chart):
+  // comparisons draw earlier runs wider, so a later run drawn over them leaves them visible.
+  float extra_width = 0.0f;
 
   Curve() = default;
   Curve(std::string label_, Eigen::VectorXd x_, Eigen::VectorXd y_, int color_ = -1)

@@ -903,6 +903,14 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                         "deflection [m]", curves, false}});
     }
   }
+  // Earlier runs wider (2 px more per later run, at most 4 px more than the last), so a later
+  // run drawn over them leaves them visible where the runs are close without coinciding.
+  for (NamedPlot& plot : plots) {
+    const std::size_t n = plot.spec.curves.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      plot.spec.curves[k].extra_width = std::min(4.0f, 2.0f * static_cast<float>(n - 1 - k));
+    }
+  }
   return with_coinciding_marked(std::move(plots));
 }
 

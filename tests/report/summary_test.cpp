@@ -107,6 +107,10 @@ TEST(CurveStyles, ComparisonOfTwoEqualRunsDashesTheLaterRun) {
     // The interactive chart gets the same dash pattern.
     const std::string json = curve_json(plot.spec, curve_table(plot.spec.curves));
     EXPECT_NE(json.find("\"dashes\":[null,[10,6]]"), std::string::npos) << plot.file;
+    // The earlier run drawn wider (2 px), so the later one leaves it visible when close.
+    EXPECT_EQ(plot.spec.curves[0].extra_width, 2.0f) << plot.file;
+    EXPECT_EQ(plot.spec.curves[1].extra_width, 0.0f) << plot.file;
+    EXPECT_NE(json.find("\"widths\":[3.5,1.5]"), std::string::npos) << plot.file;
   }
   // A run's own plots: every pair of coinciding curves told apart too.
   for (const NamedPlot& plot : run_plots(runs[0], "run1_")) expect_told_apart(plot.spec);
