@@ -138,6 +138,10 @@ std::string peaks_line(const RunDigest& d) {
                                 markup_escape(d.stress->body), markup_escape(d.stress->element_name),
                                 d.stress->time));
   }
+  if (d.acceleration_g) {
+    parts.push_back(fmt::format("peak acceleration {:.3g} g (probe {}, t = {:.3f} s)", *d.acceleration_g,
+                                markup_escape(d.acceleration_probe), d.acceleration_time));
+  }
   if (d.energy_residual) {
     parts.push_back(d.peak_kinetic > 0.0
                         ? fmt::format("energy balance closes to {:.3g} J ({:.2g} of the peak kinetic "
@@ -268,6 +272,19 @@ RunDigest digest_run(const RunData& run) {
   // Peak stress over the bodies.
   for (const StressPeak& p : stress_peaks(run)) {
     if (!d.stress || p.value > d.stress->value) d.stress = p;
+  }
+
+  // Peak probe acceleration, in g.
+  constexpr double kStandardGravity = 9.80665;  // [m/s²]
+  for (const AccelerationProbeTrack& probe : run.acceleration_probes) {
+    if (probe.acceleration.rows() == 0) continue;
+    Eigen::Index k = 0;
+    const double peak = probe.acceleration.rowwise().norm().maxCoeff(&k) / kStandardGravity;
+    if (!d.acceleration_g || peak > *d.acceleration_g) {
+      d.acceleration_g = peak;
+      d.acceleration_time = k < r.time.size() ? r.time(k) : 0.0;
+      d.acceleration_probe = probe.name;
+    }
   }
 
   // Energy closure.

@@ -2,8 +2,8 @@
 // minute, computed from run data (no drawing). Per run: the status with each accuracy measure
 // against its threshold, the model (bodies, flexible bodies with their mode counts, joints), the
 // events (latches, stops, joints released), the peak reaction of each joint with its time
-// (largest first), the peak deflection and stress, the energy balance's closure; and links to the
-// plots that reproduce the seed paper's figures.
+// (largest first), the peak deflection, stress and probe acceleration, the energy balance's
+// closure; and links to the plots that reproduce the seed paper's figures.
 #pragma once
 
 #include "report_html.h"
@@ -64,6 +64,10 @@ struct RunDigest {
   double deflection_time = 0.0;           // [s]
   std::string deflection_body;
   std::optional<StressPeak> stress;       // the largest over the bodies
+  // The largest |a| of any acceleration probe (absolute, ground axes) [g = 9.80665 m/s²].
+  std::optional<double> acceleration_g;
+  double acceleration_time = 0.0;         // [s]
+  std::string acceleration_probe;
   // The energy balance's worst residual [J] and the peak kinetic energy [J] (0: none).
   std::optional<double> energy_residual;
   double peak_kinetic = 0.0;

@@ -181,6 +181,21 @@ TEST(Summary, PeaksAccuracyAndReleasesOfAKnownRun) {
   EXPECT_NEAR(d.peaks[0].force, peak, 1e-12 * peak);  // the stored doubles, norm rounding only
   EXPECT_DOUBLE_EQ(d.peaks[0].force_time, at);
   EXPECT_TRUE(d.releases.empty());  // loaded to the end: not released
+  EXPECT_FALSE(d.acceleration_g);   // no probes
+
+  // A probe at 1 g in x with a 3 g z-peak at sample 50: 3.1623 g (|(1, 0, 3)| g) there.
+  RunData probed = run;
+  AccelerationProbeTrack probe;
+  probe.name = "tip";
+  probe.acceleration.setZero(spec.samples, 3);
+  probe.acceleration.col(0).setConstant(9.80665);
+  probe.acceleration(50, 2) = 3.0 * 9.80665;
+  probed.acceleration_probes.push_back(probe);
+  const RunDigest a = digest_run(probed);
+  ASSERT_TRUE(a.acceleration_g);
+  EXPECT_NEAR(*a.acceleration_g, std::sqrt(10.0), 1e-12);
+  EXPECT_DOUBLE_EQ(a.acceleration_time, probed.results.time(50));
+  EXPECT_EQ(a.acceleration_probe, "tip");
 
   // A joint whose reaction is 0 from sample 40 on is listed as released there.
   RunData released = run;
