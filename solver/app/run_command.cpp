@@ -5,7 +5,6 @@
 // why; the samples before it stay in the file (status "failed").
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -19,6 +18,7 @@
 #include "app/run_progress.h"
 #include "app/settings_overrides.h"
 #include "app/stop_signal.h"
+#include "cli/help_wrap.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "multibody/joint_placement.h"
@@ -32,33 +32,6 @@
 namespace limber::app {
 
 namespace {
-
-// `text` with line breaks between words so that no line exceeds `width` characters (a word
-// longer than that stays whole); existing line breaks are kept.
-std::string wrap_words(const std::string& text, std::size_t width) {
-  std::string out;
-  std::size_t line = 0;  // characters on the current line
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = std::min(text.find_first_of(" \n", start), text.size());
-    const std::string word = text.substr(start, end - start);
-    if (line > 0 && line + 1 + word.size() > width) {
-      out += '\n';
-      line = 0;
-    } else if (line > 0) {
-      out += ' ';
-      ++line;
-    }
-    out += word;
-    line += word.size();
-    if (end < text.size() && text[end] == '\n') {
-      out += '\n';
-      line = 0;
-    }
-    start = end + 1;
-  }
-  return out;
-}
 
 struct RunOptions {
   std::string case_file;
@@ -492,10 +465,7 @@ Command add_run_command(CLI::App& app) {
                 "\"start\", \"end\", \"states\", \"joints\": [{\"joint\", \"force\", \"force_time\", \"torque\", "
                 "\"torque_time\", \"force_component\", ...}]}]}, \"results\"}; status is \"ok\", "
                 "\"ok_inaccurate\" or \"failed\"; the text goes to stderr");
-  // Help within 100 columns: CLI11 prints a description from column 30 and does not wrap it.
-  for (CLI::Option* option : cli->get_options()) {
-    option->description(wrap_words(option->get_description(), 100 - 30));
-  }
+  limber::cli::wrap_option_help(*cli);  // within 100 columns
   return {cli, [options] { return run_case(*options); }};
 }
 

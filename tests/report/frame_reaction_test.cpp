@@ -21,6 +21,7 @@
 
 #include <cstdlib>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 namespace limber::report {
@@ -45,6 +46,29 @@ const JointReactions& joint_named(const RunData& run, const std::string& name) {
     if (joint.name == name) return joint;
   }
   throw std::runtime_error("no joint " + name);
+}
+
+// `limber run --help` and `limber report --help` within 100 columns (code points), the run's
+// long --json description wrapped over several lines (issue 28).
+TEST(CommandLine, RunAndReportHelpFitIn100Columns) {
+  const auto dir = testing::fresh_directory("help_width");
+  for (const std::string command : {"run", "report"}) {
+    const auto out = dir / (command + ".txt");
+    ASSERT_EQ(std::system((std::string(LIMBER_EXE) + " " + command + " --help > " + out.string()).c_str()), 0);
+    std::istringstream text(testing::read_text(out));
+    int lines = 0, json_lines = 0;
+    bool in_json = false;
+    for (std::string line; std::getline(text, line); ++lines) {
+      std::size_t width = 0;
+      for (const char c : line) width += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+      EXPECT_LE(width, 100u) << command << " --help: " << line;
+      if (line.find("  --json") == 0) in_json = true;
+      else if (line.find("  --") == 0) in_json = false;
+      json_lines += in_json;
+    }
+    EXPECT_GT(lines, 10) << command;
+    if (command == "run") EXPECT_GE(json_lines, 10);  // 900 characters over ~70-column lines
+  }
 }
 
 TEST(FrameReactions, CrankPinForceIsTheConstantCentripetalForceInTheCranksFrame) {

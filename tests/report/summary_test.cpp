@@ -3,6 +3,7 @@
 // reactions, accuracy against thresholds, releases, the seed's figures) on a run of known
 // reactions, the page order (summary before the contents and the runs), and `--frame` leaving
 // the directory to the positional argument.
+#include "cli/help_wrap.h"
 #include "curve_export.h"
 #include "curve_styles.h"
 #include "decimate.h"
@@ -147,6 +148,13 @@ TEST(CurveStyles, DashedCurveLeavesTheOneBelowVisibleInThePng) {
   EXPECT_EQ(distinguish_coinciding_curves(styled), "R1 ≡ R2 (to 1e-9)");
   EXPECT_GT(count(styled, "dashed.png", 0), span / 4) << "dashed: the first line shows in the gaps";
   EXPECT_GT(count(styled, "dashed.png", 1), span / 4) << "dashed: the second line shows";
+}
+
+TEST(HelpWrap, WordsWrapAtTheWidthKeepingLineBreaks) {
+  EXPECT_EQ(cli::wrap_words("aaa bbb ccc", 7), "aaa bbb\nccc");
+  EXPECT_EQ(cli::wrap_words("aaa\nbbb ccc", 7), "aaa\nbbb ccc");
+  EXPECT_EQ(cli::wrap_words("a verylongword b", 5), "a\nverylongword\nb");  // a long word stays whole
+  EXPECT_EQ(cli::wrap_words("≈ 0 (peak …)", 12), "≈ 0 (peak …)");             // code points, not bytes
 }
 
 TEST(Summary, PeaksAccuracyAndReleasesOfAKnownRun) {
