@@ -229,6 +229,34 @@ TEST(Summary, PeaksAccuracyAndReleasesOfAKnownRun) {
   EXPECT_NE(html.find("badge ok"), std::string::npos);
 }
 
+TEST(Summary, FailedAndInaccurateRunsGetTheirBadge) {
+  const auto dir = fresh_directory("summary_badges");
+  testing::ReactionRun failed;
+  failed.status = "failed";
+  failed.message = "Newton did not converge at t = 0.5 s";
+  testing::write_reaction_run(dir / "failed", failed);
+  testing::write_reaction_run(dir / "ok", {});
+  RunData failed_run = read_run_data(dir / "failed");
+  RunData inaccurate = read_run_data(dir / "ok");
+  inaccurate.results.status = "ok_inaccurate";
+  inaccurate.solver_attributes.emplace_back("accuracy_local_error", "0.013");
+  inaccurate.solver_attributes.emplace_back("accuracy_warnings", "local error 1.3 % (use --step h/4)");
+  ReportContent content;
+  for (RunData* run : {&failed_run, &inaccurate}) {
+    RunSection section;
+    section.run = run;
+    section.label = run == &failed_run ? "run 1: failed" : "run 2: ok";
+    section.anchor = run == &failed_run ? "run1" : "run2";
+    content.runs.push_back(section);
+  }
+  const std::string html = summary_section(content);
+  EXPECT_NE(html.find("<span class=\"badge failed\">failed</span>"), std::string::npos);
+  EXPECT_NE(html.find("Newton did not converge at t = 0.5 s"), std::string::npos);
+  EXPECT_NE(html.find("<span class=\"badge inaccurate\">ok_inaccurate</span>"), std::string::npos);
+  EXPECT_NE(html.find("<span class=\"fail\">local error 0.013 of the allowed 0.01</span>"), std::string::npos);
+  EXPECT_NE(html.find("use --step h/4"), std::string::npos);
+}
+
 TEST(Summary, SeedFigureLinksPointAtTheirPlots) {
   const auto dir = fresh_directory("summary_seed_links");
   testing::write_reaction_run(dir / "run", {});
