@@ -29,12 +29,12 @@ std::pair<Eigen::Index, double> largest_row(const RowMatrix3d& values) {
   return {k, peak};
 }
 
-// First sample from which every row to the end is exactly 0, when an earlier one is not; −1
-// otherwise (never loaded, or loaded to the end).
-Eigen::Index zero_from(const RowMatrix3d& values) {
+// First sample of the all-zero tail of an ns x 3 matrix: ns when its last row is not 0, 0 when
+// every row is.
+Eigen::Index zero_tail(const RowMatrix3d& values) {
   Eigen::Index k = values.rows();
   while (k > 0 && (values.row(k - 1).array() == 0.0).all()) --k;
-  return k > 0 && k < values.rows() ? k : -1;
+  return k;
 }
 
 std::string number(double value) { return fmt::format("{:.3g}", value); }
@@ -189,6 +189,43 @@ bool case_is(const RunSection& s, const std::string& stem) {
   return name.rfind(stem, 0) == 0;
 }
 
+// Each joint's peak reaction, largest first, and the joints released (reaction exactly 0 from
+// some sample to the end), grouped by that sample's time.
+void add_joint_peaks(const RunData& run, RunDigest& d) {
+  for (const JointReactions& joint : run.joints) {
+    const RowMatrix3d& force = joint.force_ground.rows() > 0 ? joint.force_ground : joint.force_joint;
+    const RowMatrix3d& torque = joint.torque_ground.rows() > 0 ? joint.torque_ground : joint.torque_joint;
+    const auto [kf, f] = largest_row(force);
+    if (kf < 0) continue;
+    JointPeakRow row;
+    row.joint = joint.name;
+    const auto track = std::find_if(run.results.joints.begin(), run.results.joints.end(),
+                                    [&](const render::JointTrack& j) { return j.name == joint.name; });
+    if (track != run.results.joints.end()) row.type = track->type;
+    row.force = f;
+    row.force_time = run.results.time(kf);
+    const auto [kt, t] = largest_row(torque);
+    if (kt >= 0) {
+      row.torque = t;
+      row.torque_time = run.results.time(kt);
+    }
+    d.peaks.push_back(row);
+    // Released: force and torque exactly 0 from a sample to the end, loaded before it.
+    const Eigen::Index released = zero_tail(force);
+    if (released > 0 && released < force.rows() && (torque.rows() == 0 || zero_tail(torque) <= released)) {
+      const double at = run.results.time(released);
+      auto same = std::find_if(d.releases.begin(), d.releases.end(),
+                               [&](const ReleaseRow& rr) { return rr.time == at; });
+      if (same == d.releases.end()) same = d.releases.insert(d.releases.end(), ReleaseRow{at, {}});
+      same->joints.push_back(joint.name);
+    }
+  }
+  std::stable_sort(d.peaks.begin(), d.peaks.end(),
+                   [](const JointPeakRow& a, const JointPeakRow& b) { return a.force > b.force; });
+  std::sort(d.releases.begin(), d.releases.end(),
+            [](const ReleaseRow& a, const ReleaseRow& b) { return a.time < b.time; });
+}
+
 }  // namespace
 
 RunDigest digest_run(const RunData& run) {
@@ -222,38 +259,7 @@ RunDigest digest_run(const RunData& run) {
   }
   d.joints = static_cast<int>(r.joints.size());
 
-  // Peak reactions, largest first; joints released (reaction exactly 0 to the end).
-  for (const JointReactions& joint : run.joints) {
-    const RowMatrix3d& force = joint.force_ground.rows() > 0 ? joint.force_ground : joint.force_joint;
-    const RowMatrix3d& torque = joint.torque_ground.rows() > 0 ? joint.torque_ground : joint.torque_joint;
-    const auto [kf, f] = largest_row(force);
-    if (kf < 0) continue;
-    JointPeakRow row;
-    row.joint = joint.name;
-    const auto track = std::find_if(r.joints.begin(), r.joints.end(),
-                                    [&](const render::JointTrack& j) { return j.name == joint.name; });
-    if (track != r.joints.end()) row.type = track->type;
-    row.force = f;
-    row.force_time = r.time(kf);
-    const auto [kt, t] = largest_row(torque);
-    if (kt >= 0) {
-      row.torque = t;
-      row.torque_time = r.time(kt);
-    }
-    d.peaks.push_back(row);
-    const Eigen::Index released = zero_from(force);
-    if (released >= 0 && (torque.rows() == 0 || zero_from(torque) <= released)) {
-      const double at = r.time(released);
-      auto same = std::find_if(d.releases.begin(), d.releases.end(),
-                               [&](const ReleaseRow& rr) { return rr.time == at; });
-      if (same == d.releases.end()) same = d.releases.insert(d.releases.end(), ReleaseRow{at, {}});
-      same->joints.push_back(joint.name);
-    }
-  }
-  std::stable_sort(d.peaks.begin(), d.peaks.end(),
-                   [](const JointPeakRow& a, const JointPeakRow& b) { return a.force > b.force; });
-  std::sort(d.releases.begin(), d.releases.end(),
-            [](const ReleaseRow& a, const ReleaseRow& b) { return a.time < b.time; });
+  add_joint_peaks(run, d);
 
   // Peak relative deflection over the flexible bodies.
   for (const render::BodyTrack& b : r.bodies) {

@@ -213,6 +213,10 @@ TEST(Summary, PeaksAccuracyAndReleasesOfAKnownRun) {
   ASSERT_EQ(r.releases.size(), 1u);
   EXPECT_DOUBLE_EQ(r.releases[0].time, released.results.time(40));
   EXPECT_EQ(r.releases[0].joints, std::vector<std::string>{"R3"});
+  // ...but not while its torque still carries load.
+  RunData held = released;
+  held.joints[0].torque_ground.setConstant(1.0);
+  EXPECT_TRUE(digest_run(held).releases.empty());
 
   // The section says each measure against its threshold, with the peak in newtons.
   ReportContent content;
