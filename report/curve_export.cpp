@@ -101,6 +101,22 @@ std::string curve_json(const PlotSpec& plot, const CurveTable& table, const std:
     const auto& rgb = i < plot.curves.size() ? curve_color(plot.curves[i], i) : kCurveColors[i % kCurveColors.size()];
     out += fmt::format("{}\"#{:02x}{:02x}{:02x}\"", i > 0 ? "," : "", rgb[0], rgb[1], rgb[2]);
   }
+  // Each curve's dash pattern in pixels (dygraphs' strokePattern; null: solid), as the PNG.
+  out += "],\"dashes\":[";
+  for (std::size_t i = 0; i < table.labels.size(); ++i) {
+    const LineStyle style = i < plot.curves.size() ? plot.curves[i].style : LineStyle::kSolid;
+    out += i > 0 ? "," : "";
+    out += style == LineStyle::kDashed    ? "[10,6]"
+           : style == LineStyle::kDotted  ? "[2,4]"
+           : style == LineStyle::kDashDot ? "[10,4,2,4]"
+                                          : "null";
+  }
+  // Each curve's line width [pixels] (the PNG's extra width over dygraphs' 1.5).
+  out += "],\"widths\":[";
+  for (std::size_t i = 0; i < table.labels.size(); ++i) {
+    const float extra = i < plot.curves.size() ? plot.curves[i].extra_width : 0.0f;
+    out += fmt::format("{}{:g}", i > 0 ? "," : "", 1.5 + extra);
+  }
   out += "],\"data\":[";
   for (std::size_t r = 0; r < table.x.size(); ++r) {
     out += r > 0 ? ",[" : "[";

@@ -25,7 +25,9 @@ std::string curve_csv(const CurveTable& table, const std::string& x_label,
 std::string json_string(const std::string& text);
 
 // The plot as JSON: {"title", "xlabel", "ylabel", "labels" (x label first), "log",
-// "colors" ("#rrggbb" per curve, as the PNG), "samples" (before decimation), "data":
+// "colors" ("#rrggbb" per curve, as the PNG), "dashes" (per curve a dash pattern in pixels
+// [on, off, ...], null for solid: LineStyle, as the PNG), "widths" (per curve its line width
+// in pixels, 1.5 + its extra width), "samples" (before decimation), "data":
 // [[x, y1, y2, ...], ...] with null for a missing or non-finite value}; "log" only when the
 // plot asks for it and every value is positive (as the PNG). A non-empty `full`
 // (full_resolution_json) is added as "full".

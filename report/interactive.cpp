@@ -158,6 +158,17 @@ constexpr const char* kInitScript = R"JS(
         setTimeout(function () { g.limberPending = false; refine(g); }, 0);
       };
     }
+    // Curves lying on earlier ones are dashed, as in the PNG (curve_styles.h).
+    // Earlier runs of a comparison are drawn wider, so later ones leave them visible.
+    if (spec.dashes || spec.widths) {
+      options.series = {};
+      for (var c = 0; c + 1 < spec.labels.length; ++c) {
+        var series = {};
+        if (spec.dashes && spec.dashes[c]) series.strokePattern = spec.dashes[c];
+        if (spec.widths && spec.widths[c] !== 1.5) series.strokeWidth = spec.widths[c];
+        options.series[spec.labels[c + 1]] = series;
+      }
+    }
     var chart = new Dygraph(div, spec.data, options);
     if (spec.full) {
       chart.limberFull = spec.full;

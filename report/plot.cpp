@@ -12,6 +12,7 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotPoints.h>
 #include <vtkPointData.h>
@@ -202,7 +203,12 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     line->SetInputData(table, 0, 1);
     const auto& rgb = curve_color(curve, i);
     line->SetColor(rgb[0], rgb[1], rgb[2], 255);
-    line->SetWidth(kLineWidth);
+    line->SetWidth(kLineWidth + curve.extra_width);
+    // A curve lying on an earlier one is dashed or dotted so that both show (curve_styles.h).
+    line->GetPen()->SetLineType(curve.style == LineStyle::kDashed    ? vtkPen::DASH_LINE
+                                : curve.style == LineStyle::kDotted  ? vtkPen::DOT_LINE
+                                : curve.style == LineStyle::kDashDot ? vtkPen::DASH_DOT_LINE
+                                                                     : vtkPen::SOLID_LINE);
     line->SetLabel(curve.label);
     if (plot.markers) {
       vtkPlotPoints::SafeDownCast(line)->SetMarkerStyle(vtkPlotPoints::CIRCLE);

@@ -14,12 +14,20 @@
 
 namespace limber::report {
 
+// How a curve's line is drawn: solid by default; a curve lying on an earlier one of its plot
+// is dashed or dotted (curve_styles.h) so that both stay visible.
+enum class LineStyle { kSolid, kDashed, kDotted, kDashDot };
+
 // One curve: y(x) drawn as a line; x and y have the same length.
 struct Curve {
   std::string label;  // legend entry
   Eigen::VectorXd x;
   Eigen::VectorXd y;
   int color = -1;     // index into kCurveColors; -1: the curve's place in its plot
+  LineStyle style = LineStyle::kSolid;
+  // Extra line width [pixels] over the plot's default (2.5 px in the PNG, 1.5 px in the chart):
+  // comparisons draw earlier runs wider, so a later run drawn over them leaves them visible.
+  float extra_width = 0.0f;
 
   Curve() = default;
   Curve(std::string label_, Eigen::VectorXd x_, Eigen::VectorXd y_, int color_ = -1)
@@ -49,10 +57,13 @@ struct PlotFrame {
   Eigen::Vector2d to_pixel(double x, double y) const;
 };
 
-// Line colours in curve order (RGB 0..255), repeated past the end (curve_color picks).
+// Line colours in curve order (RGB 0..255), repeated past the end (curve_color picks): the
+// colour-blind-safe palette of Okabe & Ito ("Color Universal Design", 2008) — blue, vermillion,
+// bluish green, orange, reddish purple, sky blue, black — with grey for its yellow, which does
+// not show on white paper.
 inline constexpr std::array<std::array<unsigned char, 3>, 8> kCurveColors{{
-    {31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
-    {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}}};
+    {0, 114, 178}, {213, 94, 0}, {0, 158, 115}, {230, 159, 0},
+    {204, 121, 167}, {86, 180, 233}, {0, 0, 0}, {128, 128, 128}}};
 // The colour of curve `index` of a plot: its own when set, else by its place.
 inline const std::array<unsigned char, 3>& curve_color(const Curve& curve, std::size_t index) {
   const std::size_t k = curve.color >= 0 ? static_cast<std::size_t>(curve.color) : index;

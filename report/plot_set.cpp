@@ -1,5 +1,6 @@
 #include "plot_set.h"
 
+#include "curve_styles.h"
 #include "hinge_summary.h"
 #include "html.h"
 #include "indeterminate_components.h"
@@ -603,7 +604,7 @@ std::vector<NamedPlot> default_run_plots(const RunData& run, const std::string& 
                          (zeros > 0 ? fmt::format(" {} samples at exactly 0 are left out (no "
                                                   "logarithm).", zeros)
                                     : std::string()),
-                     {"Constraint violation", kTimeLabel, "violation norm", violations, true}});
+                     {"Constraint violation", kTimeLabel, "violation norm [m, rad; m/s, rad/s]", violations, true}});
     tag(plots, PlotKind::kViolation, "");
   }
 
@@ -657,9 +658,26 @@ PlotKind plot_kind(const std::string& name) {
   return found == names.end() ? PlotKind::kOther : static_cast<PlotKind>(found - names.begin());
 }
 
+namespace {
+// The bracketed unit at the end of a quantity's name ("R3 force z on rod [N]" -> "[N]"), else
+// "[same unit as the quantity]".
+std::string bracketed_unit(const std::string& quantity) {
+  const std::size_t open = quantity.rfind('[');
+  const std::size_t close = quantity.rfind(']');
+  if (open == std::string::npos || close == std::string::npos || close < open) return "[unit of the quantity]";
+  return quantity.substr(open, close - open + 1);
+}
+
+// Curves lying on each other dashed, and said (curve_styles.h).
+std::vector<NamedPlot> with_coinciding_marked(std::vector<NamedPlot> plots) {
+  for (NamedPlot& plot : plots) plot.coincidence = distinguish_coinciding_curves(plot.spec);
+  return plots;
+}
+}  // namespace
+
 std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix, const PlotOptions& options) {
   std::vector<NamedPlot> defaults = default_run_plots(run, prefix, options);
-  if (options.configured.empty()) return defaults;
+  if (options.configured.empty()) return with_coinciding_marked(std::move(defaults));
   // The configured plots in the config's order, then the default plots of the kinds it does
   // not list.
   std::vector<NamedPlot> plots;
@@ -673,7 +691,7 @@ std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix, 
                                     [&](const PlotRequest& request) { return request.kind == plot.kind; });
     if (!listed) plots.push_back(std::move(plot));
   }
-  return plots;
+  return with_coinciding_marked(std::move(plots));
 }
 
 std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std::string& prefix) {
@@ -690,7 +708,10 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
     const auto role = roles.find(s.set);
     const bool named = role == roles.end() || role->second == s.set;  // "reference" needs no "(reference)"
     const std::string label = named ? s.set : s.set + " (" + role->second + ")";
-    curves[s.quantity].push_back({label, s.time, s.values});
+    // The reference underneath the other sets: drawn first, so that they show over it.
+    std::vector<Curve>& quantity_curves = curves[s.quantity];
+    const bool reference = role != roles.end() && role->second == "reference";
+    quantity_curves.insert(reference ? quantity_curves.begin() : quantity_curves.end(), Curve{label, s.time, s.values});
   }
 
   // Each set's difference to the reference set, per quantity: where the sets part, which the
@@ -720,7 +741,7 @@ std::vector<NamedPlot> selection_plots(const SelectionData& selection, const std
       plots.push_back({PlotSection::kSelection, stem + "_difference.png",
                        quantity + ": each mode set minus the reference set, the error the comparison "
                                   "table measures.",
-                       {"Difference to the reference: " + quantity, kTimeLabel, "difference",
+                       {"Difference to the reference: " + quantity, kTimeLabel, "difference " + bracketed_unit(quantity),
                         std::move(differences[quantity]), false}});
     }
   }
@@ -842,7 +863,7 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                               : named ? "in_" + file_stem(asked.name) + "_" + component
                                       : component;
       plots.push_back({PlotSection::kComparison, "compare_" + file_stem(name) + "_" + tag + ".png",
-                       "Reaction " + component + " at joint " + name + " (" + note + ") in " +
+                       "Reaction " + component + " at joint " + name + ", " + note + ", in " +
                            std::to_string(held.size()) + " runs." + not_drawn,
                        {"Joint " + name + ": " + component + " (" + frame + ")" +
                             (minimum_norm.empty() ? "" : ", minimum-norm in " + runs_named(minimum_norm, held, labels)),
@@ -882,7 +903,15 @@ std::vector<NamedPlot> comparison_plots(const std::vector<RunData>& runs,
                         "deflection [m]", curves, false}});
     }
   }
-  return plots;
+  // Earlier runs wider (2 px more per later run, at most 4 px more than the last), so a later
+  // run drawn over them leaves them visible where the runs are close without coinciding.
+  for (NamedPlot& plot : plots) {
+    const std::size_t n = plot.spec.curves.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      plot.spec.curves[k].extra_width = std::min(4.0f, 2.0f * static_cast<float>(n - 1 - k));
+    }
+  }
+  return with_coinciding_marked(std::move(plots));
 }
 
 }  // namespace limber::report

@@ -45,6 +45,8 @@ struct NamedPlot {
   std::string warning;  // plain text shown as a visible note with the plot ("" for none)
   PlotKind kind = PlotKind::kOther;
   std::string subject;  // the joint (reaction), body (probe, modal) or unit (drivers); "" else
+  // Curves that lie on each other, drawn dashed: "R1 ≡ R2 (to 1e-9)" (curve_styles.h); "" none.
+  std::string coincidence;
 
   NamedPlot() = default;
   NamedPlot(PlotSection section_, std::string file_, std::string caption_, PlotSpec spec_,
@@ -101,7 +103,9 @@ struct PlotOptions {
 };
 
 // The plots of one run; file names start with `prefix` (e.g. "run1_"), a configured plot's
-// with "<prefix>plot<n>_" (n: its place in the config).
+// with "<prefix>plot<n>_" (n: its place in the config). In every plot of this and of
+// comparison_plots, a curve lying on an earlier one is dashed and `coincidence` says so
+// (curve_styles.h).
 std::vector<NamedPlot> run_plots(const RunData& run, const std::string& prefix,
                                  const PlotOptions& options = {});
 

@@ -1,6 +1,7 @@
 #include "report_command.h"
 
 #include "report_job.h"
+#include "cli/help_wrap.h"
 
 #include <fmt/core.h>
 
@@ -14,8 +15,9 @@ cli::Command add_report_command(CLI::App& app) {
   auto no_modes = std::make_shared<bool>(false);
 
   CLI::App* command = app.add_subcommand(
-      "report", "Write an HTML report with plots (reactions, energy, deflection, violation) of "
-                "one or more run directories");
+      "report", "Write an HTML report of one or more run directories: a summary\n"
+                "(status, events, peak reactions), then plots of reactions, energy,\n"
+                "deflection, violation (docs/report.md)");
   command->add_option("DIR", options->directories,
                       "run directories holding results.h5; several: plots compare them")
       ->required();
@@ -26,7 +28,9 @@ cli::Command add_report_command(CLI::App& app) {
                       "frame of the reaction plots, repeatable, in order: ground (default; the "
                       "case's axis names), joint (the joint frame: marker j's axes), a marker "
                       "(e.g. R1.j: the case names a joint's markers <joint>.i and <joint>.j) or a "
-                      "body (e.g. crank): components rotated into that frame at every sample");
+                      "body (e.g. crank): components rotated into that frame at every sample")
+      // One value per --frame: `--frame joint DIR` leaves DIR to the positional argument.
+      ->allow_extra_args(false);
   command->add_option("--config", options->config,
                       "report config (YAML) listing plots, each with a kind: reaction (joint, "
                       "frame, quantity force|torque, components x, y, z, magnitude), probe (body, "
@@ -39,6 +43,8 @@ cli::Command add_report_command(CLI::App& app) {
                       "a reaction component whose peak is below this fraction of the joint's "
                       "largest is listed as '≈ 0 (peak …)' instead of drawn (default 1e-4)")
       ->check(CLI::Range(0.0, 1.0));
+
+  cli::wrap_option_help(*command);  // within 100 columns
 
   return {command, [options, no_modes] {
             options->mode_shapes = !*no_modes;

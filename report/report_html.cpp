@@ -1,6 +1,7 @@
 #include "report_html.h"
 
 #include "hinge_summary.h"
+#include "run_summary.h"
 #include "html.h"
 #include "selection_html.h"
 #include "sizing_loads.h"
@@ -34,6 +35,7 @@ figcaption { font-size: .95em; color: #444; }
 .banner.failed { background: #fde2e1; border: 2px solid #c62828; color: #8e0000; }
 .banner.running { background: #fff4d6; border: 2px solid #e09b00; color: #6d4c00; }
 .note { color: #555; font-style: italic; }
+.coincide { font-weight: bold; color: #333; }
 .strip { display: flex; gap: 6px; flex-wrap: wrap; }
 .strip figure { margin: 0; flex: 1 1 180px; }
 .modes { display: grid; grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); gap: 8px; }
@@ -45,7 +47,20 @@ tr.reference td, .reference-key { background: #eef2f7; font-style: italic; }
 .plot-warning { background: #fff4d6; border-left: 4px solid #e09b00; padding: .4em .8em;
                 margin: .3em 0; color: #6d4c00; }
 td.failed { color: #8e0000; font-weight: bold; }
-@media print { nav { display: none; } h2 { page-break-before: always; } }
+#summary h3 { margin: .6em 0 .2em; }
+.badge { display: inline-block; padding: .1em .6em; border-radius: 4px; color: #fff; font-size: .9em; }
+.badge.ok { background: #2e7d32; }
+.badge.inaccurate { background: #b26a00; }
+.badge.failed { background: #c62828; }
+.accuracy, .model, .peaks-line, .seed-figures { margin: .2em 0; }
+span.pass { color: #1b5e20; }
+span.fail, p.fail { color: #8e0000; font-weight: bold; }
+.summary-grid { display: grid; grid-template-columns: minmax(0, 2fr) minmax(0, 3fr); gap: 1em; align-items: start; }
+table.compact { margin: .2em 0 .4em; font-size: .92em; }
+table.compact td, table.compact th { padding: .1em .45em; }
+details > summary { cursor: pointer; color: #1f4e79; }
+@media print { nav { display: none; } h2 { page-break-before: always; }
+               details::details-content { content-visibility: visible; display: block; } }
 )";
 
 std::string number(double value) { return fmt::format("{:.6g}", value); }
@@ -59,7 +74,7 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
   const NamedPlot& plot = written.plot;
   const std::string caption = markup_escape(plot.caption);
   const std::string id = stem_of(plot.file);
-  std::string out = "<figure class=\"plot\">\n";
+  std::string out = fmt::format("<figure class=\"plot\" id=\"fig-{}\">\n", id);
   if (!written.interactive_json.empty()) {
     out += fmt::format(
         "<div class=\"dygraph-plot\" id=\"plot-{0}\" data-source=\"json-{0}\" "
@@ -70,8 +85,14 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
   if (!plot.warning.empty()) {
     out += "<p class=\"plot-warning\" role=\"note\">" + markup_escape(plot.warning) + "</p>\n";
   }
-  out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>{}", kImageFolder,
-                     plot.file, caption, caption);
+  out += fmt::format("<img class=\"static\" src=\"{}/{}\" alt=\"{}\">\n<figcaption>", kImageFolder,
+                     plot.file, caption);
+  // Curves lying on each other are dashed; say which, before the caption.
+  if (!plot.coincidence.empty()) {
+    out += "<span class=\"coincide\">Coinciding curves (the later dashed): " +
+           markup_escape(plot.coincidence) + ".</span> ";
+  }
+  out += caption;
   if (!written.csv_file.empty()) {
     out += fmt::format(" <a class=\"csv\" href=\"{}/{}\">Data (CSV)</a>", kDataFolder, written.csv_file);
   }
@@ -407,10 +428,15 @@ std::string run_section(const RunSection& s, bool interactive) {
   const RunData& run = *s.run;
   std::string out = fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n", s.anchor, markup_escape(s.label));
   out += status_banner(run);
+  // The case's details, folded: the summary at the top holds what a reviewer reads first.
   out += subsection(s, "summary", "Case summary",
-                    summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) +
-                        "<h4>Joints</h4>\n" + joints_table(run) + redundancy_table(run) +
-                        mode_tables(run) + notes(run));
+                    notes(run) +
+                        fmt::format("<details><summary>case file, solver settings and accuracy "
+                                    "attributes, {} bodies, {} joints{}, mode tables</summary>\n",
+                                    run.results.bodies.size(), run.results.joints.size(),
+                                    run.redundant_equations.empty() ? "" : ", redundant constraints") +
+                        summary_table(run) + "<h4>Bodies</h4>\n" + bodies_table(run) + "<h4>Joints</h4>\n" +
+                        joints_table(run) + redundancy_table(run) + mode_tables(run) + "</details>\n");
   if (interactive && !s.plots.empty()) out += time_window_form(s.anchor);
   out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
   if (run.selection) {
@@ -438,7 +464,11 @@ std::string run_section(const RunSection& s, bool interactive) {
   out += subsection(s, "shock", "Acceleration probes and shock response spectra", plots_of(s, PlotSection::kShock));
   out += subsection(s, "violation", "Constraint violation", plots_of(s, PlotSection::kViolation));
   out += subsection(s, "animation", "Animation", media(s));
-  if (!s.mode_images.empty()) out += subsection(s, "mode-shapes", "Mode shapes", mode_images(s));
+  if (!s.mode_images.empty()) {
+    out += subsection(s, "mode-shapes", "Mode shapes",
+                      fmt::format("<details><summary>{} mode-shape images</summary>\n{}</details>\n",
+                                  s.mode_images.size(), mode_images(s)));
+  }
   return out + "</section>\n";
 }
 
@@ -456,8 +486,11 @@ std::string report_html(const ReportContent& content) {
            "</p>\n";
   }
 
+  // The summary first: status, model, events, peaks, the seed's figures.
+  out += summary_section(content);
+
   // Contents.
-  out += "<nav><ul>\n";
+  out += "<nav><ul>\n<li><a href=\"#summary\">Summary</a></li>\n";
   for (const RunSection& s : content.runs) {
     out += fmt::format("<li><a href=\"#{}\">{}</a>{}</li>\n", s.anchor, markup_escape(s.label),
                        s.run->finished_ok() ? "" : " (" + markup_escape(s.run->results.status) + ")");

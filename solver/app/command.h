@@ -33,4 +33,8 @@ Command add_run_command(CLI::App& app);
 // `limber statics CASE [-o DIR] [--json]` (statics_command.cpp).
 Command add_statics_command(CLI::App& app);
 
+// `limber linearize CASE [--statics | --at T] [--reference-body NAME] [-o DIR] [--json]`
+// (linearize_command.cpp).
+Command add_linearize_command(CLI::App& app);
+
 }  // namespace limber::app

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
       add_modes_command(app),
       add_run_command(app),
       add_statics_command(app),
+      add_linearize_command(app),
       add_select_command(app),
       add_sweep_command(app),
       limber::render::add_render_command(app),

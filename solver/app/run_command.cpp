@@ -18,6 +18,7 @@
 #include "app/run_progress.h"
 #include "app/settings_overrides.h"
 #include "app/stop_signal.h"
+#include "cli/help_wrap.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "multibody/joint_placement.h"
@@ -464,6 +465,7 @@ Command add_run_command(CLI::App& app) {
                 "\"start\", \"end\", \"states\", \"joints\": [{\"joint\", \"force\", \"force_time\", \"torque\", "
                 "\"torque_time\", \"force_component\", ...}]}]}, \"results\"}; status is \"ok\", "
                 "\"ok_inaccurate\" or \"failed\"; the text goes to stderr");
+  limber::cli::wrap_option_help(*cli);  // within 100 columns
   return {cli, [options] { return run_case(*options); }};
 }
 

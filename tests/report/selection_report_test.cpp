@@ -190,13 +190,15 @@ TEST(SelectionReport, TablesAndOverlayPlotsOfTheModeSets) {
   EXPECT_EQ(plots[0].section, PlotSection::kSelection);
   EXPECT_EQ(plots[0].spec.y_label, "R3 force z on rod [N]");
   ASSERT_EQ(plots[0].spec.curves.size(), 3u);
-  EXPECT_EQ(plots[0].spec.curves[0].label, "normal");
-  EXPECT_EQ(plots[0].spec.curves[1].label, "kept (chosen)");
-  EXPECT_EQ(plots[0].spec.curves[2].label, "reference");  // named after its role
-  EXPECT_EQ(values(plots[0].spec.curves[2].x), (std::vector<double>{0.0, 0.1, 0.2}));
-  EXPECT_EQ(values(plots[0].spec.curves[2].y), (std::vector<double>{3.0, 30.0, -7.0}));
+  // The reference first, so that it is drawn underneath the other sets (issue 28).
+  EXPECT_EQ(plots[0].spec.curves[0].label, "reference");  // named after its role
+  EXPECT_EQ(plots[0].spec.curves[1].label, "normal");
+  EXPECT_EQ(plots[0].spec.curves[2].label, "kept (chosen)");
+  EXPECT_EQ(values(plots[0].spec.curves[0].x), (std::vector<double>{0.0, 0.1, 0.2}));
+  EXPECT_EQ(values(plots[0].spec.curves[0].y), (std::vector<double>{3.0, 30.0, -7.0}));
   ASSERT_EQ(plots[1].spec.curves.size(), 2u);
   EXPECT_EQ(plots[1].file, "run1_selection_1_R3_force_z_on_rod__N__difference.png");
+  EXPECT_EQ(plots[1].spec.y_label, "difference [N]");  // the quantity's unit (issue 28)
   EXPECT_EQ(plots[1].spec.curves[0].label, "normal");
   EXPECT_EQ(values(plots[1].spec.curves[0].y), (std::vector<double>{-2.0, -20.0, 2.0}));
   EXPECT_EQ(values(plots[1].spec.curves[1].y), (std::vector<double>{-1.0, -10.0, 1.0}));

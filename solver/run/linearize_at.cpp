@@ -1,0 +1,56 @@
+#include "run/linearize_at.h"
+
+#include <chrono>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "multibody/redundancy.h"
+
+namespace limber::run {
+
+LinearizeSummary linearize_at(const multibody::Model& model, const multibody::AssemblyOptions& assembly,
+                              const io::RunSettings& run, double t_at, const LinearizeSettings& settings) {
+  if (!(t_at > 0.0 && t_at <= run.t_end)) {
+    throw InputError(fmt::format("--at: expected a time within the case's run, 0 < T <= {:g} s (run.t_end), got {:g}",
+                                 run.t_end, t_at));
+  }
+  const auto wall_start = std::chrono::steady_clock::now();
+  LinearizeSummary summary;
+  summary.at = t_at;
+  // The run to T, keeping its last sample and the hinge modes it switched.
+  io::RunSettings to_t = run;
+  to_t.t_end = t_at;
+  std::optional<integrate::Sample> last;
+  std::vector<unsigned char> engaged(model.forces.size(), 0);
+  RunHooks hooks;
+  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) { last = sample; };
+  hooks.on_event = [&](const multibody::HingeEvent& event) {
+    engaged[static_cast<std::size_t>(event.force)] = event.engaged ? 1 : 0;
+  };
+  const RunSummary ran = run_mechanism(model, assembly, to_t, hooks);
+  const auto finish = [&](bool ok) {
+    summary.ok = ok;
+    summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    return summary;
+  };
+  if (!ran.ok || !last || last->t < t_at - 1e-12 * std::max(1.0, t_at)) {
+    summary.failure = "run: " + ran.failure;
+    summary.message = fmt::format("the run to t = {:g} s stopped at {:g} s: {}", t_at, ran.t_reached, ran.message);
+    return finish(false);
+  }
+  // The state at T, its joints (released hold-downs out) analysed afresh there.
+  multibody::State point;
+  point.t = last->t;
+  point.q = last->q;
+  point.v = last->v;
+  point.engaged = engaged;
+  multibody::Workspace ws(model);
+  const multibody::ConstraintPartition partition = multibody::analyse_redundancy(
+      model, point, ws, multibody::kRedundancyThreshold, {}, multibody::rows_released_by(model, point.t));
+  summary.start.partition = partition;
+  return finish(linearize_about(model, partition, point, settings, summary));
+}
+
+}  // namespace limber::run
