@@ -303,7 +303,8 @@ constexpr double kConvergedChange = 0.03;
 ReferenceCheck check_reference(const select::CandidateRun& reference, const select::CandidateRun& half_step) {
   ReferenceCheck check{reference.step.step, half_step.step.step, half_step.status(), {}, false};
   if (!half_step.ok()) return check;
-  check.change = select::compare_peaks(half_step.summary.peaks, reference.summary.peaks);
+  check.change = select::compare_peaks(half_step.summary.peaks, reference.summary.peaks,
+                                       select::joint_release_times(reference.mechanism.model));
   check.converged = check.change.error < kConvergedChange;
   return check;
 }

@@ -23,7 +23,16 @@ double relative(double value, double reference, double floor) {
 
 }  // namespace
 
-PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference) {
+ReleaseTimes joint_release_times(const multibody::Model& model) {
+  ReleaseTimes times;
+  for (const multibody::Joint& joint : model.joints) {
+    if (std::isfinite(joint.release_time)) times[joint.name] = joint.release_time;
+  }
+  return times;
+}
+
+PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference,
+                             const ReleaseTimes& released) {
   PeakComparison out;
   for (const results::PeakWindow& window : run.windows) {
     if (!find_window(reference, window.start.label)) out.unmatched.push_back(window.start.label);
@@ -48,8 +57,11 @@ PeakComparison compare_peaks(const results::EventPeaks& run, const results::Even
       const results::JointPeak& p = mine->joints[static_cast<std::size_t>(at - run.joints.begin())];
       PeakDifference row{ref.start.label, reference.joints[j], mine->start.t, ref.start.t, p.force, r.force,
                          p.torque, r.torque, p.force_time, r.force_time};
-      row.force_error = relative(p.force, r.force, kPeakFloor * largest_force);
-      row.torque_error = relative(p.torque, r.torque, kPeakFloor * largest_torque);
+      const auto release = released.find(row.joint);
+      if (release == released.end() || release->second > ref.start.t) {
+        row.force_error = relative(p.force, r.force, kPeakFloor * largest_force);
+        row.torque_error = relative(p.torque, r.torque, kPeakFloor * largest_torque);
+      }
       for (const auto& [error, kind] : {std::pair{row.force_error, "force"}, std::pair{row.torque_error, "torque"}}) {
         if (!std::isnan(error) && error > worst) {
           worst = error;

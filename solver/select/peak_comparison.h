@@ -8,13 +8,19 @@
 // other has not (an event that happened in one only) makes the comparison's error infinite and
 // is named. A joint whose reference peak is below kPeakFloor of the window's largest peak of
 // that kind (force or torque) is not compared: a relative difference of a load that is noise
-// beside the window's main loads means nothing.
+// beside the window's main loads means nothing. Nor is a joint released at or before the
+// window's start (a hold-down released at t = 0): after its release it carries nothing, and
+// its value at the instant of release is its stowed preload, a static load that the
+// minimum-norm rule splits among redundant supports (and so depends on the mode set), not the
+// window's response.
 #pragma once
 
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "multibody/model.h"
 #include "results/event_peaks.h"
 
 namespace limber::select {
@@ -48,7 +54,12 @@ struct PeakComparison {
   std::string worst;
 };
 
+// Release time [s] of every joint that has one (Joint::release_time), by name.
+using ReleaseTimes = std::map<std::string, double>;
+ReleaseTimes joint_release_times(const multibody::Model& model);
+
 // `run` against `reference`. Joints are matched by name (both runs of one case have the same).
-PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference);
+PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference,
+                             const ReleaseTimes& released = {});
 
 }  // namespace limber::select

@@ -177,7 +177,8 @@ void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity
   for (CandidateRun& run : runs) {
     if (run.candidate.reference || !run.ok()) continue;
     if (run.time.size() == 0) continue;
-    run.peaks = compare_peaks(run.summary.peaks, reference->summary.peaks);
+    run.peaks = compare_peaks(run.summary.peaks, reference->summary.peaks,
+                              joint_release_times(reference->mechanism.model));
     run.error_peak = run.error_rms = 0.0;
     double worst = -1.0;
     for (const KeyQuantity& key : keys) {

@@ -104,6 +104,21 @@ TEST(PeakComparison, RelativeDifferencesPerJointAndWindowAndTheWorst) {
   EXPECT_TRUE(c.unmatched.empty());
 }
 
+TEST(PeakComparison, AJointReleasedByTheWindowsStartIsNotCompared) {
+  // B (a hold-down) released at t = 0: in the window opened at 0 its "peak" is its preload at
+  // the instant of release (30 against 10: 200 %), which is not compared; A's 5 % is the error.
+  // Released later than the window's start (at 1 s), B is compared like any joint.
+  const auto run = peaks("start", 0.0, 105.0, 2.0, 30.0, 1.0);
+  const auto reference = peaks("start", 0.0, 100.0, 2.0, 10.0, 1.0);
+  const PeakComparison c = compare_peaks(run, reference, {{"B", 0.0}});
+  ASSERT_EQ(c.rows.size(), 2u);
+  EXPECT_TRUE(std::isnan(c.rows[1].force_error));
+  EXPECT_TRUE(std::isnan(c.rows[1].torque_error));
+  EXPECT_DOUBLE_EQ(c.error, 0.05);
+  EXPECT_EQ(c.worst, "A force, start");
+  EXPECT_DOUBLE_EQ(compare_peaks(run, reference, {{"B", 1.0}}).error, 2.0);
+}
+
 TEST(PeakComparison, AnEventInOneRunOnlyIsAnInfiniteError) {
   const PeakComparison c =
       compare_peaks(peaks("latch M", 2.0, 100.0, 2.0, 1.0, 1.0), peaks("latch L", 2.0, 100.0, 2.0, 1.0, 1.0));
