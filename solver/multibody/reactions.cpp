@@ -1,5 +1,7 @@
 #include "multibody/reactions.h"
 
+#include <vector>
+
 #include <Eigen/QR>
 
 #include "core/minimum_norm.h"
@@ -31,12 +33,22 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
   Reactions out;
   // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇, the rank decided
   // with the redundancy analysis' threshold (core/minimum_norm.h says why not Eigen's COD).
-  // Released joints (hold-downs after their release) are out of the equations: zero rows.
+  // Released joints (hold-downs after their release) are out of the equations: zero rows and
+  // multipliers. The solve takes the rows in force only: its eigen-solve costs m³, and the
+  // satellite's 48 released rows made it 5 times dearer (18 % of the run).
   Eigen::MatrixXd G = ws.G;
+  std::vector<int> active;
   for (int row = 0; row < model.num_equations(); ++row) {
-    if (partition.released(row)) G.row(row).setZero();
+    if (partition.released(row)) {
+      G.row(row).setZero();
+    } else {
+      active.push_back(row);
+    }
   }
-  out.lambda = minimum_norm_solve(G.transpose(), ws.Q - ws.M * v_dot, partition.relative_threshold);
+  const Eigen::VectorXd lambda_active = minimum_norm_solve(G(active, Eigen::all).transpose(), ws.Q - ws.M * v_dot,
+                                                           partition.relative_threshold);
+  out.lambda = Eigen::VectorXd::Zero(model.num_equations());
+  for (std::size_t k = 0; k < active.size(); ++k) out.lambda(active[k]) = lambda_active(static_cast<Eigen::Index>(k));
   // Joints: generalized constraint force of their rows, turned into a wrench at a marker.
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const Joint& joint = model.joints[k];
