@@ -26,8 +26,7 @@ cli::Command add_render_command(CLI::App& app) {
   auto no_vtk = std::make_shared<bool>(false);
 
   CLI::App* command = app.add_subcommand(
-      "render", "Render DIR/results.h5 offscreen: PNG frames, MP4 (and GIF), and a ParaView scene "
-      "(DIR/vtk/scene.xmf over scene.h5, opened by DIR/vtk/open_in_paraview.py)");
+      "render", "Render DIR/results.h5 offscreen: PNG, MP4, a ParaView scene");
   command->add_option("DIR", options->directory, "run directory holding results.h5")
       ->required();
   auto slow_motion = std::make_shared<double>(1.0);

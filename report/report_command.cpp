@@ -1,7 +1,6 @@
 #include "report_command.h"
 
 #include "report_job.h"
-#include "cli/help_wrap.h"
 
 #include <fmt/core.h>
 
@@ -44,7 +43,6 @@ cli::Command add_report_command(CLI::App& app) {
                       "largest is listed as '≈ 0 (peak …)' instead of drawn (default 1e-4)")
       ->check(CLI::Range(0.0, 1.0));
 
-  cli::wrap_option_help(*command);  // within 100 columns
 
   return {command, [options, no_modes] {
             options->mode_shapes = !*no_modes;

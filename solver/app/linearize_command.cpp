@@ -175,7 +175,7 @@ Command add_linearize_command(CLI::App& app) {
   auto options = std::make_shared<LinearizeOptions>();
   CLI::App* cli = app.add_subcommand(
       "linearize",
-      "Linearized mechanism at t = 0, at static equilibrium or at T of a run: frequencies, damping, mass properties");
+      "Linearized mechanism: frequencies, damping, mass properties");
   cli->footer(
       "Tangent mass, damping and stiffness of the equations of motion by central differences,\n"
       "projected onto the motions the joints allow (null space of the constraint Jacobian, SVD),\n"

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/command.h"
+#include "cli/help_wrap.h"
 #include "core/error.h"
 #include "render_command.h"
 #include "report_command.h"
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
       limber::render::add_render_command(app),
       limber::report::add_report_command(app),
   };
+  // Every option's help within 100 columns (CLI11 does not wrap it).
+  limber::cli::wrap_option_help(app);
+  for (const Command& command : commands) limber::cli::wrap_option_help(*command.cli);
 
   try {
     app.parse(argc, argv);

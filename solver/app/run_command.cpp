@@ -18,7 +18,6 @@
 #include "app/run_progress.h"
 #include "app/settings_overrides.h"
 #include "app/stop_signal.h"
-#include "cli/help_wrap.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "multibody/joint_placement.h"
@@ -415,7 +414,7 @@ int run_case(const RunOptions& options) {
 Command add_run_command(CLI::App& app) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* cli = app.add_subcommand(
-      "run", "Simulate a mechanism: assembly, redundancy, time integration; write results.h5");
+      "run", "Simulate a mechanism (assembly, redundancy, integration); results.h5");
   cli->footer(
       "Prints the model size, the assembly, every redundant constraint equation with the\n"
       "equations it depends on, and a summary; a progress line on a terminal. Writes\n"
@@ -465,7 +464,6 @@ Command add_run_command(CLI::App& app) {
                 "\"start\", \"end\", \"states\", \"joints\": [{\"joint\", \"force\", \"force_time\", \"torque\", "
                 "\"torque_time\", \"force_component\", ...}]}]}, \"results\"}; status is \"ok\", "
                 "\"ok_inaccurate\" or \"failed\"; the text goes to stderr");
-  limber::cli::wrap_option_help(*cli);  // within 100 columns
   return {cli, [options] { return run_case(*options); }};
 }
 

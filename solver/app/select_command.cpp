@@ -482,8 +482,7 @@ int select_case(const SelectOptions& options) {
 Command add_select_command(CLI::App& app) {
   auto options = std::make_shared<SelectOptions>();
   CLI::App* cli = app.add_subcommand(
-      "select", "Choose the modes of the flexible bodies by the seed paper's procedure: normal modes, "
-                "reaction ranking, static modes where the reactions are large, compared mode sets");
+      "select", "Choose the modes by the seed paper's procedure, compare mode sets");
   cli->footer(
       "Runs the case with normal modes only on every flexible body; ranks every joint-reaction\n"
       "component acting on a flexible body (peak and rms, in the body's own axes); keeps those at\n"

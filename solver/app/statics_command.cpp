@@ -138,7 +138,7 @@ int solve_case_statics(const StaticsOptions& options) {
 Command add_statics_command(CLI::App& app) {
   auto options = std::make_shared<StaticsOptions>();
   CLI::App* cli = app.add_subcommand(
-      "statics", "Static equilibrium at t = 0: deformed shape and joint reactions; write results.h5");
+      "statics", "Static equilibrium: deformed shape, joint reactions; results.h5");
   cli->footer(
       "Solves Q(q) - G(q)^T lambda = 0, g(q) = 0 at rest by Newton's method with a line search\n"
       "(docs/statics.md): modal elastic forces, springs and their preloads, actuators, point loads\n"

@@ -352,8 +352,7 @@ int sweep_case(const SweepOptions& options) {
 Command add_sweep_command(CLI::App& app) {
   auto options = std::make_shared<SweepOptions>();
   CLI::App* cli = app.add_subcommand(
-      "sweep", "Measure speed against accuracy: run a case over a grid of integrators, tolerances or steps and "
-               "mode counts, against a reference; the work-precision table");
+      "sweep", "Speed against accuracy over a grid of settings, against a reference");
   cli->footer(
       "Each grid point is its own 'limber run' child process (single-threaded; --jobs at a time)\n"
       "writing DIR/runs/<point>/{results.h5,run.json,run.log,process.json}. Per point: the run's\n"

@@ -52,10 +52,11 @@ const JointReactions& joint_named(const RunData& run, const std::string& name) {
 
 // `limber run --help` and `limber report --help` within 100 columns (code points), the run's
 // long --json description wrapped over several lines (issue 28).
-TEST(CommandLine, RunAndReportHelpFitIn100Columns) {
+TEST(CommandLine, EveryCommandsHelpFitsIn100Columns) {
   const auto dir = testing::fresh_directory("help_width");
-  for (const std::string command : {"run", "report"}) {
-    const auto out = dir / (command + ".txt");
+  for (const std::string command :
+       {"", "modes", "run", "statics", "linearize", "select", "sweep", "render", "report"}) {
+    const auto out = dir / ((command.empty() ? "limber" : command) + ".txt");
     ASSERT_EQ(std::system((std::string(LIMBER_EXE) + " " + command + " --help > " + out.string()).c_str()), 0);
     std::istringstream text(testing::read_text(out));
     int lines = 0, json_lines = 0;
@@ -69,7 +70,9 @@ TEST(CommandLine, RunAndReportHelpFitIn100Columns) {
       json_lines += in_json;
     }
     EXPECT_GT(lines, 10) << command;
-    if (command == "run") EXPECT_GE(json_lines, 10);  // 900 characters over ~70-column lines
+    if (command == "run") {
+      EXPECT_GE(json_lines, 10);  // 900 characters over ~70-column lines
+    }
   }
 }
 
