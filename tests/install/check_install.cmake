@@ -1,0 +1,30 @@
+# Installs BUILD_DIR into PREFIX and checks what an installed limber needs (tests/install).
+file(REMOVE_RECURSE ${PREFIX})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX}
+                RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "cmake --install failed (${status}): ${errors}")
+endif()
+
+foreach(file bin/limber share/limber/cases/satellite_deployment.yaml share/limber/cases/satellite_panel.bdf
+             share/doc/limber/README.md share/doc/limber/case-format.md)
+  if(NOT EXISTS ${PREFIX}/${file})
+    message(FATAL_ERROR "not installed: ${file}")
+  endif()
+endforeach()
+
+execute_process(COMMAND ${PREFIX}/bin/limber --version OUTPUT_VARIABLE version RESULT_VARIABLE status)
+if(NOT status EQUAL 0 OR NOT version MATCHES "limber ${VERSION}")
+  message(FATAL_ERROR "installed limber --version: status ${status}, printed '${version}'")
+endif()
+
+# An installed case runs from a folder outside the checkout (10 ms of the slider-crank).
+set(work ${PREFIX}/../run)
+file(REMOVE_RECURSE ${work})
+file(MAKE_DIRECTORY ${work})
+execute_process(COMMAND ${PREFIX}/bin/limber run ${PREFIX}/share/limber/cases/slider_crank.yaml
+                        --t-end 0.01 -o ${work}/slider_crank
+                WORKING_DIRECTORY ${work} RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
+if(NOT status EQUAL 0 OR NOT EXISTS ${work}/slider_crank/results.h5)
+  message(FATAL_ERROR "installed limber run of an installed case failed (${status}): ${errors}")
+endif()
