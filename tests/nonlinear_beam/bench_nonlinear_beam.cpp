@@ -11,36 +11,22 @@
 #include <cstdlib>
 #include <numeric>
 
-#include "fe/fe_model_builder.h"
-#include "fe/mesh_generators.h"
 #include "nonlinear_beam/beam_inertia.h"
 #include "nonlinear_beam/beam_structure.h"
 #include "nonlinear_beam/dynamic_solver.h"
 #include "nonlinear_beam/rotation.h"
 #include "nonlinear_beam/static_solver.h"
+#include "beam_test_support.h"
 
 using namespace limber;
 
 int main(int argc, char** argv) {
   const int elements = argc > 1 ? std::atoi(argv[1]) : 100;
 
-  // A unit cantilever, EI = 1, EA = 1e8.
-  fe::FeModelBuilder builder;
-  fe::BeamProperty property;
-  property.name = "rod";
-  property.material = {"unit", 1e8, 0.3, 1.0};
-  property.section.area = 1.0;
-  property.section.inertia_y = 1e-8;
-  property.section.inertia_z = 1e-8;
-  property.section.torsion_constant = 2e-8;
-  builder.add_beam_property(property);
-  fe::StraightBeamMesh mesh;
-  mesh.end = Eigen::Vector3d::UnitX();
-  mesh.elements = elements;
-  mesh.orientation = Eigen::Vector3d::UnitY();
-  const std::vector<int> nodes = fe::add_straight_beam(builder, mesh);
-  for (int d = 0; d < fe::kDofsPerNode; ++d) builder.fix(nodes.front(), static_cast<fe::Dof>(d));
-  const fe::FeModel model = std::move(builder).build();
+  // A unit cantilever, EI = 1, EA = 1e8 (the elastica tests' rod).
+  const nonlinear_beam::test_models::Cantilever cantilever = nonlinear_beam::test_models::unit_cantilever(elements);
+  const fe::FeModel& model = cantilever.model;
+  const int tip = cantilever.tip;
   const nonlinear_beam::BeamStructure structure = nonlinear_beam::build_beam_structure(model);
 
   // Evaluations in a bent, twisted state.
@@ -62,14 +48,14 @@ int main(int argc, char** argv) {
   options.load_increments = 10;
   start = std::chrono::steady_clock::now();
   const nonlinear_beam::StaticSolution solution = nonlinear_beam::solve_static(
-      structure, {{nodes.back(), Eigen::Vector3d(0.0, 10.0, 0.0), Eigen::Vector3d::Zero()}},
+      structure, {{tip, Eigen::Vector3d(0.0, 10.0, 0.0), Eigen::Vector3d::Zero()}},
       options);
   const double solve = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const int iterations = std::accumulate(solution.iterations.begin(), solution.iterations.end(), 0);
   std::printf("%d elements: f_int + K_t %.1f us per evaluation; static solve PL^2/EI = 10: %.1f ms, "
               "%d Newton iterations, status %d, v/L = %.6f\n",
               elements, per_evaluation * 1e6, solve * 1e3, iterations,
-              static_cast<int>(solution.status), solution.state.positions[nodes.back()].y());
+              static_cast<int>(solution.status), solution.state.positions[tip].y());
 
   // Dynamics: 1000 steps from rest under a sudden tip load (rho A = 1, EI = 1: first period
   // 2 pi / 3.516 s).
@@ -77,7 +63,7 @@ int main(int argc, char** argv) {
   nonlinear_beam::DynamicOptions dynamic;
   dynamic.step = 2.0 * 3.14159265358979323846 / 3.516 / 100.0;
   dynamic.rho_inf = 0.8;
-  dynamic.loads.push_back({nodes.back(), Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d::Zero()});
+  dynamic.loads.push_back({tip, Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d::Zero()});
   nonlinear_beam::BeamGeneralizedAlpha integrator(structure, inertia, dynamic);
   integrator.init(0.0, nonlinear_beam::reference_state(structure),
                   nonlinear_beam::zero_velocity(structure.node_count()));
@@ -91,7 +77,7 @@ int main(int argc, char** argv) {
               static_cast<double>(integrator.statistics().newton_iterations) /
                   std::max<long>(1, integrator.statistics().steps),
               static_cast<int>(report.status), integrator.time(),
-              integrator.state().positions[nodes.back()].y());
+              integrator.state().positions[tip].y());
   return solution.status == nonlinear_beam::StaticStatus::kConverged &&
                  report.status == nonlinear_beam::DynamicStatus::kOk
              ? 0

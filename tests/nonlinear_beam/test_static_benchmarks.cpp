@@ -21,9 +21,14 @@
 #include "nonlinear_beam/beam_structure.h"
 #include "nonlinear_beam/rotation.h"
 #include "nonlinear_beam/static_solver.h"
+#include "beam_test_support.h"
 
 namespace limber::nonlinear_beam {
 namespace {
+
+using test_models::seconds_since;
+using test_models::Cantilever;
+using test_models::unit_cantilever;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -80,43 +85,6 @@ TEST(Elastica, ClosedFormReproducesMattiassonsTable) {
     EXPECT_NEAR(e.deflection, row.deflection, 5e-6) << "alpha " << row.alpha;
     EXPECT_NEAR(e.shortening, row.shortening, 5e-6) << "alpha " << row.alpha;
   }
-}
-
-// ---------------------------------------------------------------------------------------------
-// A straight cantilever along x from the origin, clamped at node 0, `elements` Euler-Bernoulli
-// elements, EI = 1 about local z (bending in the x-y plane) and about y, L = 1.
-// EA = 1e8 EI / L^2 keeps the rod practically inextensible: the axial strain P / EA <= 1e-7 at
-// alpha = 10 changes tip displacements by ~1e-7 relative, far below the tolerances.
-struct Cantilever {
-  fe::FeModel model;
-  int tip = 0;
-};
-
-Cantilever unit_cantilever(int elements) {
-  fe::FeModelBuilder builder;
-  fe::BeamProperty property;
-  property.name = "elastica";
-  property.material = {"unit", 1e8, 0.3, 1.0};
-  property.section.area = 1.0;
-  property.section.inertia_y = 1e-8;
-  property.section.inertia_z = 1e-8;
-  property.section.torsion_constant = 2e-8;
-  builder.add_beam_property(property);
-  fe::StraightBeamMesh mesh;
-  mesh.start = Eigen::Vector3d::Zero();
-  mesh.end = Eigen::Vector3d::UnitX();
-  mesh.elements = elements;
-  mesh.orientation = Eigen::Vector3d::UnitY();
-  const std::vector<int> nodes = fe::add_straight_beam(builder, mesh);
-  for (int d = 0; d < fe::kDofsPerNode; ++d) builder.fix(nodes.front(), static_cast<fe::Dof>(d));
-  Cantilever out;
-  out.model = std::move(builder).build();
-  out.tip = nodes.back();
-  return out;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Tip dead load P = alpha EI / L^2 along +y at alpha = 1, 2, 5, 10; mesh of 20 elements, load
