@@ -23,14 +23,6 @@ double relative(double value, double reference, double floor) {
 
 }  // namespace
 
-ReleaseTimes joint_release_times(const multibody::Model& model) {
-  ReleaseTimes times;
-  for (const multibody::Joint& joint : model.joints) {
-    if (std::isfinite(joint.release_time)) times[joint.name] = joint.release_time;
-  }
-  return times;
-}
-
 PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference,
                              const ReleaseTimes& released) {
   PeakComparison out;

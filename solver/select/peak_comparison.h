@@ -20,7 +20,6 @@
 #include <string>
 #include <vector>
 
-#include "multibody/model.h"
 #include "results/event_peaks.h"
 
 namespace limber::select {
@@ -54,9 +53,8 @@ struct PeakComparison {
   std::string worst;
 };
 
-// Release time [s] of every joint that has one (Joint::release_time), by name.
+// Release time [s] of the joints that have one (Joint::release_time), by name.
 using ReleaseTimes = std::map<std::string, double>;
-ReleaseTimes joint_release_times(const multibody::Model& model);
 
 // `run` against `reference`. Joints are matched by name (both runs of one case have the same).
 PeakComparison compare_peaks(const results::EventPeaks& run, const results::EventPeaks& reference,

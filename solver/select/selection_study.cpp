@@ -170,6 +170,14 @@ Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity)
                              : Eigen::VectorXd(run.reactions.col(quantity.column));
 }
 
+ReleaseTimes joint_release_times(const multibody::Model& model) {
+  ReleaseTimes times;
+  for (const multibody::Joint& joint : model.joints) {
+    if (std::isfinite(joint.release_time)) times[joint.name] = joint.release_time;
+  }
+  return times;
+}
+
 void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity>& keys) {
   const auto reference = std::find_if(runs.begin(), runs.end(),
                                       [](const CandidateRun& r) { return r.candidate.reference; });
