@@ -45,6 +45,7 @@ struct SelectOptions {
   int max_single = 6;
   int reference_normal = 0;
   bool keep_step = false;
+  bool whole_run = false;
   int max_refinement = 8;
   int jobs = 2;
   SettingsOverrides overrides;
@@ -91,6 +92,13 @@ void print_ranking(std::FILE* out, const std::vector<select::RankedComponent>& r
 std::string resolution(const select::StepChoice& step) {
   if (!std::isfinite(step.steps_per_period)) return "-";
   return fmt::format("{:.1f}{}", step.steps_per_period, step.resolved ? "" : " (not resolved)");
+}
+
+// "step 6.25e-05 s", or "step 6.25e-05 s in the 0.3 s event windows (5e-04 s between)".
+std::string step_text(const select::StepChoice& step) {
+  if (step.window == 0.0) return fmt::format("step {:.3g} s", step.step);
+  return fmt::format("step {:.3g} s in the {:g} s event windows ({:.3g} s between)", step.step, step.window,
+                     step.outside_step);
 }
 
 void print_comparison(std::FILE* out, const std::vector<select::CandidateRun>& runs,
@@ -177,13 +185,16 @@ std::string json_comparison(const std::vector<select::CandidateRun>& runs, const
     const select::CandidateRun& run = runs[k];
     text += fmt::format(
         "{}{{\"set\": {}, \"description\": {}, \"modes\": {}, \"reduction_s\": {}, \"run_s\": {}, "
-        "\"status\": {}, \"message\": {}, \"f_max_hz\": {}, \"step\": {}, \"steps_per_period\": {}, "
+        "\"status\": {}, \"message\": {}, \"f_max_hz\": {}, \"step\": {}, \"event_window\": {}, "
+        "\"step_between_windows\": {}, \"steps_per_period\": {}, "
         "\"resolved\": {}, \"error_event\": {}, \"worst_event\": {}, \"error_peak\": {}, \"error_rms\": {}, "
         "\"worst_quantity\": {}, \"event_peaks\": {}, \"directory\": {}}}",
         k ? ", " : "", json_string(run.candidate.name), json_string(run.candidate.description), run.modes,
         json_number(run.reduction_seconds), json_number(run.summary.wall_seconds),
         json_string(run.status().substr(0, run.status().find(':'))), json_string(run.summary.message),
-        json_number(run.step.f_max), json_number(run.step.step), json_number(run.step.steps_per_period),
+        json_number(run.step.f_max), json_number(run.step.step), json_number(run.step.window),
+        json_number(run.step.window > 0.0 ? run.step.outside_step : run.step.step),
+        json_number(run.step.steps_per_period),
         run.step.resolved ? "true" : "false", json_number(run.peaks.error), json_string(run.peaks.worst),
         json_number(run.error_peak), json_number(run.error_rms), json_string(run.worst_quantity),
         json_peak_rows(run.peaks), json_string(run.directory.lexically_relative(root).generic_string()));
@@ -232,9 +243,9 @@ struct SetRunner {
   void print_outcome(const select::CandidateRun& run, const std::string& name = "") {
     std::string lines;
     for (const std::string& notice : run.notices) lines += fmt::format("      notice: {}\n", notice);
-    lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, step {:.3g} s, steps per period {}, reduction {:.3f} s, "
+    lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, {}, steps per period {}, reduction {:.3f} s, "
                          "run {:.3f} s{}\n",
-                         name.empty() ? "" : name + ": ", run.modes, run.step.f_max, run.step.step,
+                         name.empty() ? "" : name + ": ", run.modes, run.step.f_max, step_text(run.step),
                          resolution(run.step), run.reduction_seconds, run.summary.wall_seconds,
                          run.status() == results::layout::status::kOk ? "" : ", " + run.status());
     print(lines);
@@ -284,10 +295,10 @@ std::string refusal(const select::CandidateRun& reference, int max_refinement, c
                                                  fmt::join(reference.summary.accuracy.warnings, "; "))
                                    : "failed: " + reference.summary.message;
   return fmt::format(
-      "the reference set ({} modes, f_max {:.0f} Hz, step {:.3g} s, steps per period: {}) {}, so differences to it "
+      "the reference set ({} modes, f_max {:.0f} Hz, {}, steps per period: {}) {}, so differences to it "
       "mean nothing; run select with a shorter step (--max-refinement {} allows one {} times shorter than the "
       "case's, or --step) or fewer reference modes (--reference-normal); its run is in {}",
-      reference.modes, reference.step.f_max, reference.step.step, resolution(reference.step), why, 2 * max_refinement,
+      reference.modes, reference.step.f_max, step_text(reference.step), resolution(reference.step), why, 2 * max_refinement,
       2 * max_refinement, reference.directory.lexically_relative(root).generic_string());
 }
 
@@ -407,7 +418,7 @@ int select_case(const SelectOptions& options) {
   const StopSignals stop_signals;
   SetRunner runner{shared_input,
                    [&](const io::RunSettings& settings) { return options.overrides.apply(settings); },
-                   {options.keep_step, options.max_refinement},
+                   {options.keep_step, options.max_refinement, 1.0, options.whole_run},
                    root,
                    text,
                    options.overrides.apply(input.mechanism->run).t_end,
@@ -491,7 +502,9 @@ Command add_select_command(CLI::App& app) {
       "as many normal modes as that, and a reference (--reference-normal normal modes plus every\n"
       "kept static mode). Each set runs at a step that resolves its highest natural frequency\n"
       "f_max (20 steps per period; generalized-alpha's step, IDA's max_step), at most\n"
-      "--max-refinement times shorter than the case's (longer: marked 'not resolved');\n"
+      "--max-refinement times shorter than the case's (longer: marked 'not resolved'); with\n"
+      "generalized-alpha only in the event windows (--peak-window after the start and after\n"
+      "every event), the case's step between them (--whole-run: throughout);\n"
       "--keep-step runs every set at the case's step. Sets run --jobs at a time, with the\n"
       "reference a second time at half its step: a reference whose own accuracy check fails is\n"
       "refused, and the change of its event peaks at half the step is reported (< 3 %: converged).\n"
@@ -536,6 +549,9 @@ Command add_select_command(CLI::App& app) {
       ->capture_default_str();
   cli->add_flag("--keep-step", options->keep_step,
                 "Run every set at the case's step (or --step) instead of one resolving its highest frequency");
+  cli->add_flag("--whole-run", options->whole_run,
+                "Generalized-alpha: each set's step throughout the run, not only in the event windows "
+                "(--peak-window after the start and after every event) with the case's step between");
   cli->add_option("--max-refinement", options->max_refinement,
                   "A set's step is at least the case's divided by this (IDA: the sample interval's)")
       ->capture_default_str();
@@ -545,7 +561,8 @@ Command add_select_command(CLI::App& app) {
                 "Print one JSON object on stdout: {\"status\", \"ranking\": [{\"component\", \"body\", "
                 "\"joint\", \"node\", \"quantity\", \"axis\", \"peak\", \"rms\", \"relative\", \"kept\", "
                 "\"indeterminate\"}], \"comparison\": [{\"set\", \"description\", \"modes\", \"reduction_s\", "
-                "\"run_s\", \"status\", \"message\", \"f_max_hz\", \"step\", \"steps_per_period\", \"resolved\", "
+                "\"run_s\", \"status\", \"message\", \"f_max_hz\", \"step\", \"event_window\", "
+                "\"step_between_windows\", \"steps_per_period\", \"resolved\", "
                 "\"error_event\", \"worst_event\", \"error_peak\", \"error_rms\", \"worst_quantity\", "
                 "\"event_peaks\": [{\"window\", \"joint\", \"start\", \"reference_start\", \"force\", "
                 "\"reference_force\", \"force_error\", \"torque\", \"reference_torque\", \"torque_error\"}], "

@@ -61,15 +61,13 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   coef_ = GeneralizedAlphaCoefficients::from_rho_inf(options.rho_inf);
   nv_ = system.nv();
   nc_ = system.nc();
-  t0_ = x0.t;
-  grid_index_ = 0;
-  h_try_ = options.step;
-  halvings_ = 0;
+  window_end_ = -std::numeric_limits<double>::infinity();
+  open_event_window(x0.t);
   failed_ = false;
   stats_ = {};
   budget_.start(options.max_wall_seconds);
-  largest_increment_ = 0.0;
-  largest_error_ = 0.0;
+  largest_increment_ = {};
+  largest_error_ = {};
   jacobian_h_ = 0.0;
   J_.resize(nv_ + nc_, nv_ + nc_);
   has_structure_ = system.diagonal_stiffness_damping(stiffness_, damping_);
@@ -129,7 +127,7 @@ Status GeneralizedAlpha::accept_step(double h) {
   curr_ = next_;
   ++stats_.steps;
   estimate_local_error();
-  if (options_.on_step && stats_.last_step >= kObservedStepFraction * options_.step) {
+  if (options_.on_step && stats_.last_step >= kObservedStepFraction * grid_step_) {
     options_.on_step(curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
   }
   return Status::success(curr_.t);
@@ -150,9 +148,11 @@ Status GeneralizedAlpha::take_step() {
   if (const Status status = apply_pending_events(); !status.ok()) return status;
   if (const Status status = apply_breakpoint(); !status.ok()) return status;
   if (const Status status = reselect_constraints(); !status.ok()) return status;
-  // The next grid point, or the next velocity breakpoint when it comes first.
-  const double grid_target = std::min(t0_ + static_cast<double>(grid_index_ + 1) * options_.step,
-                                      options_.t_stop);
+  // The next grid point (or the end of the event window), or the next velocity breakpoint
+  // when it comes first.
+  const double grid_end = grid_in_window_ ? std::min(window_end_, options_.t_stop) : options_.t_stop;
+  const double grid_target =
+      std::min(grid_origin_ + static_cast<double>(grid_index_ + 1) * grid_step_, grid_end);
   const double target = next_breakpoint_ < breakpoints_.size()
                             ? std::min(grid_target, breakpoints_[next_breakpoint_])
                             : grid_target;
@@ -161,13 +161,15 @@ Status GeneralizedAlpha::take_step() {
     const Attempt attempt = attempt_step(h);
     if (attempt == Attempt::kAccepted) {
       if (const Status status = accept_step(h); !status.ok()) return status;
-      // On the target: snap the time; back on the nominal grid, restore the nominal step.
+      // On the target: snap the time; back on the grid, restore its step, and at the end of
+      // an event window go on with the step.
       if (target - curr_.t <= time_tolerance(target)) {
         curr_.t = target;
         if (grid_target - target <= time_tolerance(target)) {
           ++grid_index_;
-          h_try_ = options_.step;
+          h_try_ = grid_step_;
           halvings_ = 0;
+          if (grid_in_window_ && !in_event_window(curr_.t)) start_grid(curr_.t);
         }
       }
       return check_budgets();
@@ -186,10 +188,11 @@ Status GeneralizedAlpha::take_step() {
       const Attempt over = attempt_step(h_try_);
       if (over == Attempt::kAccepted) {
         if (const Status status = accept_step(h_try_); !status.ok()) return status;
-        grid_index_ = static_cast<long>(std::floor((curr_.t - t0_) / options_.step + 1e-9));
-        h_try_ = options_.step;
+        grid_index_ = static_cast<long>(std::floor((curr_.t - grid_origin_) / grid_step_ + 1e-9));
+        h_try_ = grid_step_;
         halvings_ = 0;
         stepped_over_ = false;
+        if (grid_in_window_ && !in_event_window(curr_.t)) start_grid(curr_.t);
         return check_budgets();
       }
       h_try_ = h;
@@ -376,10 +379,33 @@ void GeneralizedAlpha::estimate_local_error() {
   const double h = curr_.t - prev_.t;
   const double beta = coef_.beta;
   const Eigen::VectorXd xi = h * prev_.v + h * h * ((0.5 - beta) * prev_.a + beta * curr_.a);
-  largest_increment_ = std::max(largest_increment_, xi.norm());
-  largest_error_ = std::max(largest_error_, std::abs(beta - 1.0 / 6.0) * h * h * (curr_.a - prev_.a).norm());
-  if (largest_increment_ > 0.0) stats_.max_local_error = largest_error_ / largest_increment_;
+  const int regime = grid_in_window_ ? 1 : 0;
+  largest_increment_[regime] = std::max(largest_increment_[regime], xi.norm());
+  largest_error_[regime] =
+      std::max(largest_error_[regime], std::abs(beta - 1.0 / 6.0) * h * h * (curr_.a - prev_.a).norm());
+  stats_.max_local_error = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    if (largest_increment_[k] > 0.0) {
+      stats_.max_local_error = std::max(stats_.max_local_error, largest_error_[k] / largest_increment_[k]);
+    }
+  }
 }
+
+void GeneralizedAlpha::open_event_window(double t) {
+  if (options_.event_step > 0.0 && options_.event_window > 0.0) window_end_ = t + options_.event_window;
+  start_grid(t);
+}
+
+void GeneralizedAlpha::start_grid(double t) {
+  grid_in_window_ = in_event_window(t);
+  grid_origin_ = t;
+  grid_index_ = 0;
+  grid_step_ = grid_in_window_ ? options_.event_step : options_.step;
+  h_try_ = grid_step_;
+  halvings_ = 0;
+}
+
+bool GeneralizedAlpha::in_event_window(double t) const { return t < window_end_ - time_tolerance(t); }
 
 Status GeneralizedAlpha::apply_pending_events() {
   if (pending_events_.empty()) return Status::success(curr_.t);
@@ -394,6 +420,8 @@ Status GeneralizedAlpha::apply_pending_events() {
                                             "solved: {}", status.message));
   }
   restart_at_current();
+  // Without event windows the scheme returns to its grid; with them a window opens here.
+  if (options_.event_step > 0.0 && options_.event_window > 0.0) open_event_window(curr_.t);
   return Status::success(curr_.t);
 }
 

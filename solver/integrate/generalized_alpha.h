@@ -47,11 +47,15 @@
 // that crosses within event_tolerance after it, so that simultaneous events do not leave a
 // step of the tolerance's length between them), and the scheme restarts
 // there like at t0 (v̇, λ from the saddle-point system, a = v̇), then returns to its step grid.
+// With event windows (IntegratorOptions::event_step, event_window) the grid restarts at t0 and
+// at every event with the event step, and at the window's end with the step; the step changes
+// there without a restart (the predictor scales its extrapolation by the step ratio).
 //
 // Accuracy estimate (Zienkiewicz & Xie 1991, Earthquake Eng Struct Dyn 20:871–887, for the
 // Newmark family, whose position update this scheme shares): the leading local error term of a
 // step's position increment is (β − 1/6) h² (a_{n+1} − a_n). Its largest value over the run,
-// relative to the run's largest increment |ξ|, is Statistics::max_local_error. It costs nothing
+// relative to the run's largest increment |ξ| (with event windows: the larger of that ratio in
+// the windows and outside them), is Statistics::max_local_error. It costs nothing
 // (no extra solve) and does not steer the fixed step: `limber run` turns it into a warning.
 //
 // Output times are served by interpolating inside the last step: positions by a cubic Hermite
@@ -60,6 +64,8 @@
 // with the trapezoidal rule over each step.
 #pragma once
 
+#include <array>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -111,8 +117,15 @@ class GeneralizedAlpha final : public Integrator {
   // Restarts the scheme at curr_ once v̇ and λ there are solved: a = v̇, the integrand and
   // event functions at curr_, no extrapolation across (prev_ = curr_), a fresh iteration matrix.
   void restart_at_current();
-  // Switches the pending events' modes at curr_ and restarts the scheme there.
+  // Switches the pending events' modes at curr_ and restarts the scheme there (and opens an
+  // event window).
   Status apply_pending_events();
+  // Opens the event window from t (when the options ask for windows) and starts the grid there.
+  void open_event_window(double t);
+  // Starts the step grid at t: with the event step inside an event window, else with the step.
+  void start_grid(double t);
+  // True when t is inside an event window.
+  bool in_event_window(double t) const;
   // At the next velocity breakpoint (MechanicalSystem::velocity_breakpoints), once curr_ has
   // reached it: v projected after the jump, the integrals' jump added, and the scheme restarts.
   Status apply_breakpoint();
@@ -144,9 +157,14 @@ class GeneralizedAlpha final : public Integrator {
   int nv_ = 0;
   int nc_ = 0;
 
-  // Step grid t0 + k h, the step being tried (h/2^halvings) and the failure that ended the run.
-  double t0_ = 0.0;
+  // Step grid origin + k h_grid: from t0 with the step, or from the start of an event window
+  // with the event step until window_end_ (IntegratorOptions::event_step), then from there with
+  // the step. The step being tried (h_grid/2^halvings) and the failure that ended the run.
+  double grid_origin_ = 0.0;
+  double grid_step_ = 0.0;
   long grid_index_ = 0;
+  double window_end_ = -std::numeric_limits<double>::infinity();
+  bool grid_in_window_ = false;  // the grid's step is the event step
   double h_try_ = 0.0;
   int halvings_ = 0;
   bool stepped_over_ = false;  // a step onto a singular configuration was stretched past it
@@ -175,8 +193,11 @@ class GeneralizedAlpha final : public Integrator {
 
   Statistics stats_;
   WallClockBudget budget_;  // IntegratorOptions::max_wall_seconds
-  double largest_increment_ = 0.0;  // largest |ξ| of the run (estimate_local_error)
-  double largest_error_ = 0.0;      // largest local error estimate of the run
+  // Largest |ξ| and local error estimate of the run (estimate_local_error), apart for the steps
+  // in event windows [1] and outside them [0]: each is measured against increments of its own
+  // step, so a long step's increments do not hide a short step's errors.
+  std::array<double, 2> largest_increment_{};
+  std::array<double, 2> largest_error_{};
 };
 
 }  // namespace limber::integrate

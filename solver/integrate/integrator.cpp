@@ -54,6 +54,10 @@ void IntegratorOptions::validate() const {
   demand_input(initial_step >= 0.0, "integrator initial_step", "initial_step ≥ 0 (0: automatic)",
                initial_step);
   demand_input(step > 0.0 && std::isfinite(step), "integrator step", "step > 0", step);
+  demand_input(event_step >= 0.0 && std::isfinite(event_step), "integrator event_step",
+               "event_step ≥ 0 (0: none)", event_step);
+  demand_input(event_window >= 0.0 && std::isfinite(event_window), "integrator event_window",
+               "event_window ≥ 0 (0: none)", event_window);
   demand_input(max_order >= 0 && max_order <= 5, "integrator max_order", "1 to 5 (0: 5)",
                max_order);
   demand_input(rho_inf >= 0.0 && rho_inf <= 1.0, "integrator rho_inf", "0 ≤ rho_inf ≤ 1",

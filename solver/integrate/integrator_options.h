@@ -67,6 +67,13 @@ struct IntegratorOptions {
   // Constrained systems need ρ∞ < 1 (see `trapezoidal`).
   double step = 1e-3;
   double rho_inf = 0.8;
+  // Generalized-α: a shorter step `event_step` [s] for `event_window` s after the start and after
+  // every event, `step` elsewhere (0: `step` throughout). A release or a latch-up rings stiff
+  // modes that structural damping quiets within the window; resolving them only there costs a
+  // fraction of a run at the short step throughout (docs/integrators.md, "Event windows").
+  // IDA ignores both: its error control shortens and lengthens its steps itself.
+  double event_step = 0.0;
+  double event_window = 0.0;
   int max_newton_iterations = 10;
   // Newton stops when ‖Δξ‖∞ ≤ newton_tolerance ‖ξ‖∞ and ‖GᵀΔλ‖∞ ≤ newton_tolerance ‖Gᵀλ‖∞
   // (each plus a round-off floor), ξ the step's tangent displacement [m, rad]: relative bounds.

@@ -7,7 +7,8 @@
 namespace limber::io {
 
 RunSettings read_run_settings(const YamlValue& entry) {
-  entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "rho_inf", "max_steps", "max_wall",
+  entry.allow_only({"integrator", "rtol", "atol", "max_step", "step", "event_step", "event_window", "rho_inf",
+                    "max_steps", "max_wall",
                     "max_order", "newton_matrix", "event_tolerance", "t_end", "sample_interval", "start",
                     "peak_window"});
   RunSettings settings;
@@ -27,6 +28,15 @@ RunSettings read_run_settings(const YamlValue& entry) {
   if (const auto atol = entry.find("atol")) options.atol = atol->as_positive();
   if (const auto max_step = entry.find("max_step")) options.max_step = max_step->as_non_negative();
   if (const auto step = entry.find("step")) options.step = step->as_positive();
+  if (const auto event_step = entry.find("event_step")) {
+    options.event_step = event_step->as_positive();
+    const auto window = entry.find("event_window");
+    if (!window) {
+      event_step->fail("expected 'event_window' beside 'event_step' (how long after the start and after every "
+                       "event the event step applies)");
+    }
+    options.event_window = window->as_positive();
+  }
   if (const auto rho = entry.find("rho_inf")) {
     options.rho_inf = rho->as_non_negative();
     if (options.rho_inf > 1.0) {

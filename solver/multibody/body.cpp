@@ -19,6 +19,18 @@ Eigen::Vector4d body_quaternion(const Body& b, const Eigen::VectorXd& q) {
 
 }  // namespace
 
+void clear_frame_jacobians(int nv, int v_offset, int body_nv, FrameKinematics& out) {
+  if (out.J_p.cols() != nv || out.J_w.cols() != nv || out.body_v_offset != v_offset || out.body_nv != body_nv) {
+    out.J_p.setZero(3, nv);
+    out.J_w.setZero(3, nv);
+  } else {
+    out.J_p.middleCols(v_offset, body_nv).setZero();
+    out.J_w.middleCols(v_offset, body_nv).setZero();
+  }
+  out.body_v_offset = v_offset;
+  out.body_nv = body_nv;
+}
+
 void marker_kinematics(const Model& model, int marker, const Eigen::VectorXd& q,
                        const Eigen::VectorXd* v, FrameKinematics& out) {
   const Marker& m = model.markers[marker];
@@ -33,10 +45,7 @@ void body_frame_kinematics(const Model& model, int body, const Eigen::Vector3d& 
                            const Eigen::Matrix3d& R_BF, const Eigen::VectorXd& q,
                            const Eigen::VectorXd* v, FrameKinematics& out) {
   const Body& b = model.bodies[body];
-  out.J_p.setZero(3, model.nv);
-  out.J_w.setZero(3, model.nv);
-  out.body_v_offset = b.v_offset;
-  out.body_nv = b.kind == BodyKind::kGround ? 0 : b.nv;
+  clear_frame_jacobians(model.nv, b.v_offset, b.kind == BodyKind::kGround ? 0 : b.nv, out);
   // Ground: a fixed frame.
   if (b.kind == BodyKind::kGround) {
     out.p_W = p_BF;

@@ -1,6 +1,7 @@
 #include "multibody/flexible_marker.h"
 
 #include "core/error.h"
+#include "multibody/body.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -25,10 +26,7 @@ void node_frame_kinematics(const Model& model, int body, int node, const Eigen::
   out.p_W = q.segment<3>(b.q_offset) + A * s;
   out.R_WF = A * rotation_vector_matrix(theta) * R_BF;
   // Jacobians over [ṙ, ω, η̇].
-  out.J_p.setZero(3, model.nv);
-  out.J_w.setZero(3, model.nv);
-  out.body_v_offset = b.v_offset;
-  out.body_nv = b.nv;
+  clear_frame_jacobians(model.nv, b.v_offset, b.nv, out);
   out.J_p.block<3, 3>(0, b.v_offset).setIdentity();
   out.J_p.block<3, 3>(0, b.v_offset + 3) = -A * skew(s);
   out.J_p.middleCols(b.v_offset + 6, nm).noalias() = A * Phi_t;

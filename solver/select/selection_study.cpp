@@ -65,7 +65,7 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   // Event peaks always (peak_comparison.h).
   if (settings.peak_window == 0.0) settings.peak_window = kSelectPeakWindow;
   // The step that resolves the set's highest frequency (step_choice.h).
-  result.step = choose_step(highest_frequency(model), settings.integrator, policy);
+  result.step = choose_step(highest_frequency(model), settings.integrator, policy, settings.peak_window);
   settings.integrator = apply_step(settings.integrator, result.step);
   run::check_settings(settings);
 

@@ -16,7 +16,8 @@ double highest_frequency(const multibody::Model& model) {
   return f_max;
 }
 
-StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options, const StepPolicy& policy) {
+StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options, const StepPolicy& policy,
+                       double event_window) {
   StepChoice choice;
   choice.f_max = f_max;
   choice.needed = f_max > 0.0 ? 1.0 / (kStepsPerPeriod * f_max) : 0.0;
@@ -31,6 +32,10 @@ StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options
     const double bound = case_step > 0.0 ? std::min(case_step, choice.needed) : choice.needed;
     choice.step = std::max(bound, floor);
   }
+  if (galpha && !policy.whole_run && event_window > 0.0 && choice.step < case_step) {
+    choice.window = event_window;
+    choice.outside_step = case_step * policy.scale;
+  }
   choice.step *= policy.scale;
   choice.steps_per_period = choice.step > 0.0 && f_max > 0.0 ? 1.0 / (choice.step * f_max)
                                                               : std::numeric_limits<double>::infinity();
@@ -40,7 +45,11 @@ StepChoice choose_step(double f_max, const integrate::IntegratorOptions& options
 }
 
 integrate::IntegratorOptions apply_step(integrate::IntegratorOptions options, const StepChoice& choice) {
-  if (options.method == integrate::Method::kGeneralizedAlpha) {
+  if (options.method == integrate::Method::kGeneralizedAlpha && choice.window > 0.0) {
+    options.step = choice.outside_step;
+    options.event_step = choice.step;
+    options.event_window = choice.window;
+  } else if (options.method == integrate::Method::kGeneralizedAlpha) {
     options.step = choice.step;
   } else {
     options.max_step = choice.step;

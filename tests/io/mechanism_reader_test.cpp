@@ -64,6 +64,8 @@ assembly:
 run:
   integrator: galpha
   step: 2e-4
+  event_step: 5e-5
+  event_window: 0.1
   rho_inf: 0.9
   newton_matrix: structured
   t_end: 0.5
@@ -137,6 +139,8 @@ TEST(MechanismReader, ValuesLandInTheModelAndSettings) {
   EXPECT_EQ(mechanism.assembly.tolerance, 1e-12);
   EXPECT_EQ(mechanism.run.integrator.method, integrate::Method::kGeneralizedAlpha);
   EXPECT_EQ(mechanism.run.integrator.step, 2e-4);
+  EXPECT_EQ(mechanism.run.integrator.event_step, 5e-5);
+  EXPECT_EQ(mechanism.run.integrator.event_window, 0.1);
   EXPECT_EQ(mechanism.run.integrator.rho_inf, 0.9);
   EXPECT_EQ(mechanism.run.integrator.ida_newton_matrix, integrate::IdaNewtonMatrix::kStructured);
   EXPECT_EQ(mechanism.run.integrator.max_steps, 1000);
@@ -215,9 +219,13 @@ TEST(MechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // Run settings out of range.
   text = edited("rho_inf: 0.9", "rho_inf: 1.5");
   EXPECT_TRUE(fails_at(text, location_of(text, "1.5"), "expected 0 <= rho_inf <= 1"));
+  text = edited("  event_window: 0.1\n", "");
+  EXPECT_TRUE(fails_at(text, location_of(text, "5e-5"), "expected 'event_window' beside 'event_step'"));
+  text = edited("event_window: 0.1", "event_window: -1");
+  EXPECT_TRUE(fails_at(text, location_of(text, "-1\n"), "expected a positive number"));
   // Settings that used to fail only in run::check_settings, without a place in the file.
   text = edited("  step: 2e-4\n", "  step: 2e-4\n  rtol: 2.0\n");
-  EXPECT_TRUE(fails_at(text, location_of(text, "2.0\n  rho_inf"), "expected 0 < rtol < 1"));
+  EXPECT_TRUE(fails_at(text, location_of(text, "2.0\n  event_step"), "expected 0 < rtol < 1"));
   text = edited("sample_interval: 0.01", "sample_interval: 1.0e-300");
   EXPECT_TRUE(fails_at(text, location_of(text, "1.0e-300"), "number of samples"));
   text = edited("integrator: galpha", "integrator: euler");

@@ -18,57 +18,82 @@ namespace {
 TEST(StepChoice, ResolvesTheHighestFrequencyWithTwentyStepsPerPeriod) {
   const integrate::IntegratorOptions galpha = integrate::IntegratorOptions::generalized_alpha(1e-3);
   // 100 Hz needs h ≤ 1 / (20 · 100) = 0.5 ms: half the case's step.
-  StepChoice c = choose_step(100.0, galpha, {});
+  StepChoice c = choose_step(100.0, galpha, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.needed, 5e-4);
   EXPECT_DOUBLE_EQ(c.step, 5e-4);
   EXPECT_DOUBLE_EQ(c.steps_per_period, 20.0);
   EXPECT_TRUE(c.resolved);
   EXPECT_DOUBLE_EQ(apply_step(galpha, c).step, 5e-4);
   // 10 Hz: the case's step already resolves it and is never made longer.
-  c = choose_step(10.0, galpha, {});
+  c = choose_step(10.0, galpha, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 1e-3);
   EXPECT_DOUBLE_EQ(c.steps_per_period, 100.0);
   EXPECT_TRUE(c.resolved);
   // 10 kHz would need 5 µs: the floor, 1 ms / 8, leaves 0.8 steps per period, not resolved.
-  c = choose_step(1e4, galpha, {});
+  c = choose_step(1e4, galpha, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 1.25e-4);
   EXPECT_DOUBLE_EQ(c.steps_per_period, 0.8);
   EXPECT_FALSE(c.resolved);
   // Kept: the case's step, and 10 steps per period at 100 Hz is said to be short.
-  c = choose_step(100.0, galpha, {true, 8});
+  c = choose_step(100.0, galpha, {true, 8}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 1e-3);
   EXPECT_FALSE(c.resolved);
   // Halved (the reference's check): half the chosen step, still resolved.
-  c = choose_step(100.0, galpha, {false, 8, 0.5});
+  c = choose_step(100.0, galpha, {false, 8, 0.5}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 2.5e-4);
   EXPECT_DOUBLE_EQ(c.steps_per_period, 40.0);
   EXPECT_TRUE(c.resolved);
   // No flexible modes: nothing to resolve.
-  c = choose_step(0.0, galpha, {});
+  c = choose_step(0.0, galpha, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 1e-3);
   EXPECT_TRUE(c.resolved);
   EXPECT_TRUE(std::isinf(c.steps_per_period));
 }
 
+TEST(StepChoice, RefinesGeneralizedAlphaOnlyInTheEventWindows) {
+  const integrate::IntegratorOptions galpha = integrate::IntegratorOptions::generalized_alpha(1e-3);
+  // 100 Hz with 0.3 s windows: 0.5 ms in the windows, the case's 1 ms between them.
+  StepChoice c = choose_step(100.0, galpha, {}, 0.3);
+  EXPECT_DOUBLE_EQ(c.step, 5e-4);
+  EXPECT_DOUBLE_EQ(c.window, 0.3);
+  EXPECT_DOUBLE_EQ(c.outside_step, 1e-3);
+  const integrate::IntegratorOptions applied = apply_step(galpha, c);
+  EXPECT_DOUBLE_EQ(applied.step, 1e-3);
+  EXPECT_DOUBLE_EQ(applied.event_step, 5e-4);
+  EXPECT_DOUBLE_EQ(applied.event_window, 0.3);
+  // Halved (the reference's check): both steps halved.
+  c = choose_step(100.0, galpha, {false, 8, 0.5}, 0.3);
+  EXPECT_DOUBLE_EQ(c.step, 2.5e-4);
+  EXPECT_DOUBLE_EQ(c.outside_step, 5e-4);
+  // The case's step already resolves 10 Hz: no windows. Asked for the whole run: none either.
+  EXPECT_EQ(choose_step(10.0, galpha, {}, 0.3).window, 0.0);
+  c = choose_step(100.0, galpha, {false, 8, 1.0, true}, 0.3);
+  EXPECT_EQ(c.window, 0.0);
+  EXPECT_DOUBLE_EQ(apply_step(galpha, c).step, 5e-4);
+  EXPECT_EQ(apply_step(galpha, c).event_step, 0.0);
+  // IDA adapts its step itself: its max_step bounds the whole run.
+  EXPECT_EQ(choose_step(100.0, integrate::IntegratorOptions::ida(1e-6, 1e-8), {}, 0.3).window, 0.0);
+}
+
 TEST(StepChoice, BoundsIdasLargestStep) {
   // IDA without a max_step in the case: 1 / (20 f_max), with no floor.
   const integrate::IntegratorOptions ida = integrate::IntegratorOptions::ida(1e-6, 1e-8);
-  StepChoice c = choose_step(100.0, ida, {});
+  StepChoice c = choose_step(100.0, ida, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 5e-4);
   EXPECT_TRUE(c.resolved);
   EXPECT_DOUBLE_EQ(apply_step(ida, c).max_step, 5e-4);
   EXPECT_DOUBLE_EQ(apply_step(ida, c).step, ida.step);
-  c = choose_step(1e4, ida, {});
+  c = choose_step(1e4, ida, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 5e-6);
   EXPECT_TRUE(c.resolved);
   // With a max_step of 1 ms in the case, floored at 1 ms / 8 like generalized-α's step.
   integrate::IntegratorOptions bounded = ida;
   bounded.max_step = 1e-3;
-  c = choose_step(1e4, bounded, {});
+  c = choose_step(1e4, bounded, {}, 0.0);
   EXPECT_DOUBLE_EQ(c.step, 1.25e-4);
   EXPECT_FALSE(c.resolved);
   // Kept: no max_step, so nothing says the modes are followed.
-  c = choose_step(100.0, ida, {true, 8});
+  c = choose_step(100.0, ida, {true, 8}, 0.0);
   EXPECT_EQ(c.step, 0.0);
   EXPECT_FALSE(c.resolved);
 }
