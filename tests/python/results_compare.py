@@ -33,3 +33,10 @@ def assert_same_results(a, b):
     for key in ("position_violation", "velocity_violation"):
         assert same_bits(a.constraints[key], b.constraints[key]), key
     assert a.constraints["redundant"] == b.constraints["redundant"]
+    assert a.hinge_limits.keys() == b.hinge_limits.keys()
+    for name, limit in a.hinge_limits.items():
+        for key in ("angle", "torque", "engaged"):
+            assert same_bits(limit[key], b.hinge_limits[name][key]), f"{name}.{key}"
+    assert a.events.keys() == b.events.keys()
+    for key, values in a.events.items():
+        assert values == b.events[key] if key == "limit" else same_bits(values, b.events[key]), f"events.{key}"

@@ -39,3 +39,13 @@ def test_galpha_step_override(cases, limber_cli, tmp_path):
                "--step", 1e-3, "-o", tmp_path / "cli")
     run = limber.run(cases / "slider_crank_rigid.yaml", integrator="galpha", step=1e-3, t_end=0.02)
     assert_same_results(run, limber.read_results(tmp_path / "cli"))
+
+
+def test_satellite_equals_the_command_bit_for_bit(cases, limber_cli, tmp_path):
+    # The deployment's start: static equilibrium on the hold-downs, four shell panels, latches
+    # and stops (their angles, torques and switches compared too); 0.05 s of it, a few seconds.
+    record = limber_cli("run", cases / "satellite_deployment.yaml", "--t-end", 0.05, "-o", tmp_path / "cli")
+    run = limber.run(cases / "satellite_deployment.yaml", t_end=0.05)
+    assert_same_results(run, limber.read_results(tmp_path / "cli"))
+    assert run.status == record["status"] and len(run.time) == record["samples"]
+    assert len(run.hinge_limits) > 0 and len(run.bodies) > 4
