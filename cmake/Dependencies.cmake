@@ -57,6 +57,18 @@ target_include_directories(limber_hdf5 SYSTEM INTERFACE ${HDF5_C_INCLUDE_DIRS})
 target_link_libraries(limber_hdf5 INTERFACE ${HDF5_C_LIBRARIES})
 target_compile_definitions(limber_hdf5 INTERFACE ${HDF5_C_DEFINITIONS})
 
+# The Python module (solver/python, docs/python.md): pybind11 for Debian's python3 (pybind11-dev,
+# python3-pybind11; numpy, python3-numpy, only at run time). /usr/bin/python3 first, not an
+# interpreter earlier on PATH (pyenv, a virtualenv) whose ABI or site folders differ;
+# -DPython3_EXECUTABLE=... chooses another. Found before pybind11, which then uses it.
+if(LIMBER_BUILD_PYTHON)
+  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "The Python the module is built for")
+  endif()
+  find_package(Python3 REQUIRED COMPONENTS Interpreter Development.Module)
+  find_package(pybind11 2.10 REQUIRED CONFIG)
+endif()
+
 if(LIMBER_BUILD_TESTS)
   find_package(GTest REQUIRED)
   include(GoogleTest)

@@ -1,5 +1,6 @@
 # `cmake --install build` and `cpack -G DEB` (docs/install.md): the `limber` command on PATH,
-# the example cases under share/limber/cases and the documentation under share/doc/limber.
+# the Python module `limber`, the example cases under share/limber/cases and the documentation
+# under share/doc/limber.
 # limber reads no data files at run time (fonts and colour maps come from VTK), so an installed
 # limber needs nothing else of the checkout.
 include(GNUInstallDirs)
@@ -11,6 +12,16 @@ install(TARGETS limber RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cases/ DESTINATION ${CMAKE_INSTALL_DATADIR}/limber/cases)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
+# The Python module, where Debian's python3 finds it under both /usr (the .deb) and /usr/local
+# (its site folders include lib/python3.X/dist-packages under each; lib/python3/dist-packages
+# only under /usr). The module is built for that one X (its file name says so).
+if(LIMBER_BUILD_PYTHON)
+  set(LIMBER_PYTHON_INSTALL_DIR "lib/python3.${Python3_VERSION_MINOR}/dist-packages" CACHE STRING
+      "Where `cmake --install` puts the Python module, relative to the prefix")
+  set_target_properties(limber_python PROPERTIES INSTALL_RPATH_USE_LINK_PATH TRUE)
+  install(TARGETS limber_python LIBRARY DESTINATION ${LIMBER_PYTHON_INSTALL_DIR})
+endif()
 
 # A Debian package whose dependencies dpkg-shlibdeps reads off the executable's shared
 # libraries (SUNDIALS, ARPACK, HDF5, VTK, ...), so that apt installs them with it.
@@ -30,6 +41,12 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # rendering) and dygraphs (the reports' charts, /usr/share/javascript/dygraphs); ffmpeg makes
 # the videos and is only recommended (without it, PNG frames only).
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libegl-mesa0, libgl1-mesa-dri, libjs-dygraphs")
+# The Python module: the python3 it was built for, and numpy for its arrays.
+if(LIMBER_BUILD_PYTHON)
+  math(EXPR next_minor "${Python3_VERSION_MINOR} + 1")
+  string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS
+         ", python3 (>= 3.${Python3_VERSION_MINOR}~), python3 (<< 3.${next_minor}), python3-numpy")
+endif()
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 include(CPack)

@@ -17,7 +17,8 @@ done
 
 # Build tools, the solver's libraries, rendering (VTK, headless EGL, PNG, ffmpeg for the videos)
 # and the report's plotting library. Open MPI: limber sweep's ranks, and Debian's VTK charts
-# module links it. hdf5-tools: h5dump and h5ls, to look into results.h5 and modes.h5.
+# module links it. hdf5-tools: h5dump and h5ls, to look into results.h5 and modes.h5. pybind11
+# and Debian's python3 headers (python3-dev): the Python module `limber`; numpy: its arrays.
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libopenblas-dev libarpack2-dev libsuitesparse-dev libsundials-dev
@@ -27,14 +28,17 @@ packages=(
   openmpi-bin libopenmpi-dev
   libjs-dygraphs
   ffmpeg
+  pybind11-dev python3-pybind11 python3-dev python3-numpy
 )
 # Only the tests and benchmarks: GoogleTest, Google Benchmark, and a headless browser that opens
 # a report (tests/report/browser_test.cpp). Not ParaView's pvpython (python3-paraview), which
 # tests/render/paraview_test.cpp uses when present: on Debian 12 it conflicts with python3-vtk9,
-# a dependency of libvtk9-dev, so installing it makes apt remove VTK's headers.
+# a dependency of libvtk9-dev, so installing it makes apt remove VTK's headers. pytest: the
+# Python module's tests (tests/python).
 test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   chromium
+  python3-pytest
 )
 [ "$with_tests" -eq 0 ] || packages+=("${test_packages[@]}")
 

@@ -22,8 +22,8 @@
 #include "io/case_reader.h"
 #include "multibody/joint_placement.h"
 #include "io/case_reduction.h"
-#include "io/mechanism_builder.h"
 #include "results/results_writer.h"
+#include "run/case_run.h"
 #include "run/run_driver.h"
 #include "results/results_layout.h"
 #include "results/shock_spectra_file.h"
@@ -39,21 +39,6 @@ struct RunOptions {
   std::optional<int> modes;  // normal modes of every flexible body (--modes)
   bool json = false;
 };
-
-// --modes N: every flexible body's request with N normal modes (its static modes kept, a
-// cut-off frequency dropped), so that `limber sweep` can vary the mode count of a case.
-io::ModeOverrides normal_mode_overrides(const io::Case& input, std::optional<int> modes) {
-  io::ModeOverrides overrides;
-  if (!modes) return overrides;
-  if (*modes < 0) throw InputError(fmt::format("expected --modes >= 0, got {}", *modes));
-  for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
-    modal::ModeRequest request = body.request;
-    request.normal_count = *modes;
-    request.max_frequency_hz.reset();
-    overrides[body.name] = request;
-  }
-  return overrides;
-}
 
 std::string describe_integrator(const integrate::IntegratorOptions& options) {
   if (options.method == integrate::Method::kIda) {
@@ -289,21 +274,12 @@ std::string json_report(const multibody::Model& model, const run::RunSummary& su
       json_event_peaks(summary.peaks), json_string(results_path));
 }
 
-// Thrown from the sample hook when a stop signal arrived: leaves the integration between samples.
-struct RunInterrupted {};
-
 int run_case(const RunOptions& options) {
   const io::Case input = io::read_case_file(options.case_file);
-  if (!input.mechanism) {
-    throw InputError("expected a mechanism (a 'bodies' section), got none",
-                     SourceLocation{options.case_file, 0, 0});
-  }
-  const io::RunSettings settings = options.overrides.apply(input.mechanism->run);
-  run::check_settings(settings);
-  const io::CaseReduction reduction =
-      io::reduce_case(input, io::ReductionScope::kMechanismBodies, normal_mode_overrides(input, options.modes));
-  const io::Mechanism mechanism = io::build_mechanism(input, reduction);
-  const multibody::Model& model = mechanism.model;
+  const run::CaseRun prepared = run::prepare_case_run(input, options.overrides, options.modes);
+  const io::RunSettings& settings = prepared.settings;
+  const io::CaseReduction& reduction = prepared.reduction;
+  const multibody::Model& model = prepared.mechanism.model;
 
   // Human-readable text on stdout, or on stderr when stdout carries JSON.
   std::FILE* text = options.json ? stderr : stdout;
@@ -328,16 +304,12 @@ int run_case(const RunOptions& options) {
           : std::filesystem::path(options.output_dir);
   // Signals are caught from before the file exists, so a stop at any moment closes it.
   const StopSignals stop_signals;
-  results::ResultsWriter writer(directory, input.title, input.file);
-  if (input.axis_names.size() == 3) {
-    writer.set_axis_names({input.axis_names[0], input.axis_names[1], input.axis_names[2]});
-  }
-  const std::string results_path = writer.path().string();
+  const std::unique_ptr<results::ResultsWriter> writer = run::open_case_results(directory, input);
+  const std::string results_path = writer->path().string();
 
   // The run, with a progress line on a terminal.
   std::optional<RunProgress> progress;
   run::RunHooks hooks;
-  hooks.writer = &writer;
   hooks.on_start = [&](const run::PreparedStart& start) {
     print_start(text, model, start);
     fmt::print(text, "integrator: {}; t_end {:g} s, output every {:g} s\n",
@@ -345,11 +317,11 @@ int run_case(const RunOptions& options) {
     std::fflush(text);
     progress.emplace(settings.t_end, true);
   };
-  double t_written = 0.0;
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
     if (progress) progress->update(sample.t, sample.statistics.steps);
-    t_written = sample.t;
-    if (StopSignals::received() != 0) throw RunInterrupted{};
+    if (StopSignals::received() != 0) {
+      throw run::RunStopped{fmt::format("interrupted by signal {} after t = {:g} s", StopSignals::received(), sample.t)};
+    }
   };
   hooks.on_warning = [&](const std::string& warning) {
     if (progress) progress->clear();
@@ -362,18 +334,14 @@ int run_case(const RunOptions& options) {
   // A signal or an error mid-run still closes the file, as "interrupted" or "failed".
   run::RunSummary summary;
   try {
-    summary = run::run_mechanism(model, mechanism.assembly, settings, hooks);
-  } catch (const RunInterrupted&) {
+    summary = run::run_case(prepared, *writer, hooks);
+  } catch (const run::RunStopped& stop) {
     progress.reset();
-    const std::string message =
-        fmt::format("interrupted by signal {} after t = {:g} s", StopSignals::received(), t_written);
-    writer.finish(results::RunStatus::kInterrupted, message);
-    fmt::print(stderr, "limber: {} ({} samples kept in {})\n", message, writer.sample_count(),
+    fmt::print(stderr, "limber: {} ({} samples kept in {})\n", stop.message, writer->sample_count(),
                results_path);
     return kExitInterrupted;
-  } catch (const std::exception& error) {
+  } catch (const std::exception&) {
     progress.reset();
-    writer.finish(results::RunStatus::kFailed, error.what());
     throw;
   }
   progress.reset();

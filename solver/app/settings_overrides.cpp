@@ -23,19 +23,4 @@ void SettingsOverrides::add_options(CLI::App& command) {
                      "limber run: 0, none; limber select: 0.3)");
 }
 
-io::RunSettings SettingsOverrides::apply(io::RunSettings settings) const {
-  integrate::IntegratorOptions& options = settings.integrator;
-  if (integrator == "ida") options.method = integrate::Method::kIda;
-  if (integrator == "galpha") options.method = integrate::Method::kGeneralizedAlpha;
-  if (rtol) options.rtol = *rtol;
-  if (atol) options.atol = *atol;
-  if (step) options.step = *step;
-  if (t_end) settings.t_end = *t_end;
-  if (max_wall) options.max_wall_seconds = *max_wall;
-  if (start == "assembly") settings.start = io::StartKind::kAssembly;
-  if (start == "statics") settings.start = io::StartKind::kStatics;
-  if (peak_window) settings.peak_window = *peak_window;
-  return settings;
-}
-
 }  // namespace limber::app

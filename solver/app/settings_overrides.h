@@ -1,25 +1,18 @@
 // Command-line options that override a case's run settings, shared by `limber run` and
 // `limber select`: --integrator, --rtol, --atol, --step, --t-end, --max-wall, --start,
-// --peak-window.
+// --peak-window, into run::SettingsOverrides (the Python module's keyword arguments fill the
+// same struct).
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <optional>
-#include <string>
 
-#include "io/mechanism_reader.h"
+#include "run/settings_overrides.h"
 
 namespace limber::app {
 
-struct SettingsOverrides {
-  std::string integrator;  // "" = the case's
-  std::string start;       // "" = the case's
-  std::optional<double> rtol, atol, step, t_end, max_wall, peak_window;
-
+struct SettingsOverrides : run::SettingsOverrides {
   // Adds the options to `command`; `this` must outlive it.
   void add_options(CLI::App& command);
-  // The case's settings with the given options applied.
-  io::RunSettings apply(io::RunSettings settings) const;
 };
 
 }  // namespace limber::app

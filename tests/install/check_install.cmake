@@ -28,3 +28,20 @@ execute_process(COMMAND ${PREFIX}/bin/limber run ${PREFIX}/share/limber/cases/sl
 if(NOT status EQUAL 0 OR NOT EXISTS ${work}/slider_crank/results.h5)
   message(FATAL_ERROR "installed limber run of an installed case failed (${status}): ${errors}")
 endif()
+
+# The installed Python module, imported by Debian's python3 from outside the checkout, runs the
+# same installed case (PYTHONPATH: the prefix is not one of python3's own).
+if(PYTHON)
+  set(module_dir ${PREFIX}/${PYTHON_DIR})
+  file(GLOB modules ${module_dir}/limber.*.so)
+  if(NOT modules)
+    message(FATAL_ERROR "not installed: the Python module in ${PYTHON_DIR}")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${module_dir}
+                          ${PYTHON} -c "import limber, sys; r = limber.run(sys.argv[1], t_end=0.01); print(limber.__file__, r.status, len(r.time))"
+                          ${PREFIX}/share/limber/cases/slider_crank.yaml
+                  WORKING_DIRECTORY ${work} RESULT_VARIABLE status OUTPUT_VARIABLE printed ERROR_VARIABLE errors)
+  if(NOT status EQUAL 0 OR NOT printed MATCHES "^${module_dir}/limber[^ ]* ok 11")
+    message(FATAL_ERROR "installed Python module: status ${status}, printed '${printed}': ${errors}")
+  endif()
+endif()

@@ -1,0 +1,20 @@
+// The Python module `limber` (docs/python.md): cases read and checked, runs and their results
+// as numpy arrays, over the libraries the `limber` command uses; no solver code of its own.
+#include <pybind11/pybind11.h>
+
+#include "python/case_binding.h"
+#include "python/results_binding.h"
+#include "python/run_binding.h"
+
+PYBIND11_MODULE(limber, module) {
+  module.doc() =
+      "limber: dynamics of mechanisms with flexible parts (docs/python.md).\n\n"
+      "  case = limber.load_case('cases/slider_crank.yaml')   # or limber.case_from_dict(d)\n"
+      "  results = limber.run(case, t_end=0.1)\n"
+      "  results.joints['R3'].force_joint    # numpy [ns, 3]\n"
+      "  limber.read_results('out/slider_crank')   # what `limber run` wrote";
+  module.attr("__version__") = LIMBER_VERSION;
+  limber::python::bind_case(module);
+  limber::python::bind_results(module);
+  limber::python::bind_run(module);
+}

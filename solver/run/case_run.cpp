@@ -1,0 +1,42 @@
+#include "run/case_run.h"
+
+#include "core/error.h"
+
+namespace limber::run {
+
+CaseRun prepare_case_run(const io::Case& input, const SettingsOverrides& overrides,
+                         std::optional<int> modes) {
+  if (!input.mechanism) {
+    throw InputError("expected a mechanism (a 'bodies' section), got none", SourceLocation{input.file, 0, 0});
+  }
+  CaseRun run;
+  run.settings = overrides.apply(input.mechanism->run);
+  check_settings(run.settings);
+  run.reduction = io::reduce_case(input, io::ReductionScope::kMechanismBodies, normal_mode_overrides(input, modes));
+  run.mechanism = io::build_mechanism(input, run.reduction);
+  return run;
+}
+
+std::unique_ptr<results::ResultsWriter> open_case_results(const std::filesystem::path& directory,
+                                                          const io::Case& input) {
+  auto writer = std::make_unique<results::ResultsWriter>(directory, input.title, input.file);
+  if (input.axis_names.size() == 3) {
+    writer->set_axis_names({input.axis_names[0], input.axis_names[1], input.axis_names[2]});
+  }
+  return writer;
+}
+
+RunSummary run_case(const CaseRun& run, results::ResultsWriter& writer, RunHooks hooks) {
+  hooks.writer = &writer;
+  try {
+    return run_mechanism(run.mechanism.model, run.mechanism.assembly, run.settings, hooks);
+  } catch (const RunStopped& stop) {
+    writer.finish(results::RunStatus::kInterrupted, stop.message);
+    throw;
+  } catch (const std::exception& error) {
+    writer.finish(results::RunStatus::kFailed, error.what());
+    throw;
+  }
+}
+
+}  // namespace limber::run
