@@ -2,8 +2,8 @@
 // equilibrium or the state a run reaches at T (run/linearize_run.h, run/linearize_at.h,
 // docs/linearize.md). Prints the system's natural
 // frequencies, damping ratios and rigid modes, the whole mechanism's mass properties and, with
-// --reference-body, the modes with that body held and their effective masses; writes the CSV
-// files to DIR.
+// --reference-body, the modes with that body held and their effective masses; writes linear.h5,
+// linear.mat (state space and tangent matrices) and the CSV files to DIR.
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 #include "io/linearize_reader.h"
 
 #include <algorithm>
+#include <iterator>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -33,14 +34,15 @@ std::pair<Kind, YamlValue> quantity(const std::string& what, const std::string& 
                                     const std::pair<std::string_view, Kind> (&keys)[N]) {
   std::optional<std::pair<Kind, YamlValue>> found;
   std::vector<std::string_view> names;
-  for (const auto& [key, kind] : keys) {
-    names.push_back(key);
-    const auto value = entry.find(key);
-    if (!value) continue;
+  for (const auto& key : keys) names.push_back(key.first);
+  // In file order: the second quantity is the error.
+  for (const auto& [key, value] : entry.entries()) {
+    const auto* known = std::find_if(std::begin(keys), std::end(keys), [&](const auto& k) { return k.first == key; });
+    if (known == std::end(keys)) continue;
     if (found) {
-      value->fail(fmt::format("expected one quantity for {} '{}', got a second ('{}')", what, name, key));
+      value.fail(fmt::format("expected one quantity for {} '{}', got a second ('{}')", what, name, key));
     }
-    found.emplace(kind, *value);
+    found.emplace(known->second, value);
   }
   if (!found) entry.fail(fmt::format("expected one of {} for {} '{}', got none", fmt::join(names, ", "), what, name));
   return *found;

@@ -1,6 +1,7 @@
 // `limber linearize`: the linearized mechanism about its assembled state at t = 0 or its static
-// equilibrium (multibody/linearization.h), its system modes, the whole mechanism's mass
-// properties and, with a reference body, the modes with that body held and their effective
+// equilibrium (multibody/linearization.h), its system modes, its state-space model with the
+// case's inputs and outputs (multibody/state_space.h), the whole mechanism's mass properties
+// and, with a reference body, the modes with that body held and their effective
 // masses (multibody/hybrid_coordinates.h); CSV files of them (docs/linearize.md).
 // Numerical failures (assembly, statics, a singular linearization point) are returned (ok
 // false, failure and message), never thrown; a reference body the model lacks throws InputError.
