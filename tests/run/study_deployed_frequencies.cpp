@@ -11,7 +11,9 @@
 // Each linearized elastic frequency below F_MAX (default 30 Hz) is matched to the nearest local
 // maximum of that spectrum (parabolic peak interpolation on the log power).
 // Not a test (it runs the satellite for T_END s of simulated time): prints the table of
-// docs/linearize.md. Usage: limber_study_deployed_frequencies [T_END] [F_MAX]
+// docs/linearize.md. Usage: limber_study_deployed_frequencies [T_END] [F_MAX] [sharp]
+// (sharp: the latches' damping share a step, damping_depth 0, to test whether the share's
+// dependence on the penetration is what moves the strongly damped modes).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -48,7 +50,7 @@ std::string inserted(std::string text, const std::string& before, const std::str
   return text.insert(at, what);
 }
 
-std::string edited_case(const std::string& path, double t_end) {
+std::string edited_case(const std::string& path, double t_end, bool sharp) {
   std::ifstream file(path);
   std::stringstream text;
   text << file.rdbuf();
@@ -57,6 +59,10 @@ std::string edited_case(const std::string& path, double t_end) {
                     fmt::format("  impulse: {{type: point_load, marker: bus_center, force: [0, 0, 20], torque: [2, 0, 0],\n"
                                 "            scale: {{type: table, x: [{0}, {1}, {2}], y: [0, 1, 0]}}}}\n",
                                 kLinearizeAt, kLinearizeAt + 0.01, kLinearizeAt + 0.02));
+  for (std::size_t depth = edited.find("damping_depth: 1.0e-3"); sharp && depth != std::string::npos;
+       depth = edited.find("damping_depth: 1.0e-3")) {
+    edited.replace(depth, 21, "damping_depth: 0");
+  }
   const std::size_t at = edited.find("t_end: 6.0");
   if (at == std::string::npos) throw std::runtime_error("no t_end: 6.0 in the case");
   return edited.replace(at, 10, fmt::format("t_end: {}", t_end));
@@ -80,7 +86,8 @@ int main(int argc, char** argv) {
   const double t_end = argc > 1 ? std::atof(argv[1]) : 36.0;
   const double f_max = argc > 2 ? std::atof(argv[2]) : 30.0;
   const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
-  const io::Case input = io::read_case_text(edited_case(path, t_end), path);
+  const bool sharp = argc > 3 && std::string(argv[3]) == "sharp";
+  const io::Case input = io::read_case_text(edited_case(path, t_end, sharp), path);
   const io::Mechanism mechanism =
       io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   const multibody::Model& model = mechanism.model;
