@@ -9,7 +9,8 @@
 // (log(R_busᵀ R_panel), 3 components) and its modal coordinates, each with its mean removed
 // and scaled to unit RMS; Hann window, zero-padded FFT (Eigen's), the channels' power summed.
 // Each linearized elastic frequency below F_MAX (default 30 Hz) is matched to the nearest local
-// maximum of that spectrum (parabolic peak interpolation on the log power).
+// maximum of that spectrum (parabolic peak interpolation on the log power), and to that of the
+// same estimator run on the state-space model's own response to the impulse (its check).
 // Not a test (it runs the satellite for T_END s of simulated time): prints the table of
 // docs/linearize.md. Usage: limber_study_deployed_frequencies [T_END] [F_MAX] [sharp]
 // (sharp: the latches' damping share a step, damping_depth 0, to test whether the share's
