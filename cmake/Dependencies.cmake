@@ -25,6 +25,14 @@ target_include_directories(limber_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR
 target_link_libraries(limber_cholmod INTERFACE
   ${CHOLMOD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY} LAPACK::LAPACK BLAS::BLAS)
 
+# MATLAB .mat v5 files of `limber linearize` (run/linear_mat_file.h). matio ships no CMake
+# package on Debian 12 (only a pkg-config file): located directly.
+find_path(MATIO_INCLUDE_DIR matio.h REQUIRED)
+find_library(MATIO_LIBRARY NAMES matio REQUIRED)
+add_library(limber_matio INTERFACE)
+target_include_directories(limber_matio SYSTEM INTERFACE ${MATIO_INCLUDE_DIR})
+target_link_libraries(limber_matio INTERFACE ${MATIO_LIBRARY})
+
 # Rendering (render/ only; the solver links nothing graphical). VTK 9.1's named modules, each
 # linked by name where it is used, never ${VTK_LIBRARIES}. OpenGL::EGL: the headless context
 # (docs/rendering.md). libdeflate and Threads: the PNG writer threads (render/png_encoding.h);

@@ -24,7 +24,7 @@ if(LIMBER_BUILD_PYTHON)
 endif()
 
 # A Debian package whose dependencies dpkg-shlibdeps reads off the executable's shared
-# libraries (SUNDIALS, ARPACK, HDF5, VTK, ...), so that apt installs them with it.
+# libraries (SUNDIALS, ARPACK, HDF5, matio, VTK, ...), so that apt installs them with it.
 set(CPACK_PACKAGE_NAME limber)
 set(CPACK_PACKAGE_VENDOR "limber")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "dynamics of mechanisms with flexible parts")

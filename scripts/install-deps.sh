@@ -17,12 +17,13 @@ done
 
 # Build tools, the solver's libraries, rendering (VTK, headless EGL, PNG, ffmpeg for the videos)
 # and the report's plotting library. Open MPI: limber sweep's ranks, and Debian's VTK charts
-# module links it. hdf5-tools: h5dump and h5ls, to look into results.h5 and modes.h5. pybind11
-# and Debian's python3 headers (python3-dev): the Python module `limber`; numpy: its arrays.
+# module links it. hdf5-tools: h5dump and h5ls, to look into results.h5 and modes.h5. matio:
+# limber linearize's MATLAB .mat files. pybind11 and Debian's python3 headers (python3-dev): the
+# Python module `limber`; numpy: its arrays.
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libopenblas-dev libarpack2-dev libsuitesparse-dev libsundials-dev
-  libhdf5-dev hdf5-tools
+  libhdf5-dev hdf5-tools libmatio-dev
   libyaml-cpp-dev libcli11-dev libfmt-dev
   libvtk9-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libdeflate-dev
   openmpi-bin libopenmpi-dev

@@ -2,8 +2,8 @@
 // equilibrium or the state a run reaches at T (run/linearize_run.h, run/linearize_at.h,
 // docs/linearize.md). Prints the system's natural
 // frequencies, damping ratios and rigid modes, the whole mechanism's mass properties and, with
-// --reference-body, the modes with that body held and their effective masses; writes the CSV
-// files to DIR.
+// --reference-body, the modes with that body held and their effective masses; writes linear.h5,
+// linear.mat (state space and tangent matrices) and the CSV files to DIR.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,6 +18,7 @@
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
 #include "run/linear_file.h"
+#include "run/linear_mat_file.h"
 #include "run/linearize_at.h"
 #include "run/linearize_run.h"
 
@@ -47,6 +48,12 @@ std::string json_matrix(const Eigen::MatrixXd& m) {
   return text + "]";
 }
 
+std::string json_strings(const std::vector<std::string>& values) {
+  std::string text = "[";
+  for (std::size_t k = 0; k < values.size(); ++k) text += (k ? ", " : "") + json_string(values[k]);
+  return text + "]";
+}
+
 std::string json_report(const run::LinearizeSummary& s, const std::vector<std::filesystem::path>& files) {
   std::string cantilevered = "null";
   if (s.cantilevered) {
@@ -59,20 +66,25 @@ std::string json_report(const run::LinearizeSummary& s, const std::vector<std::f
         json_matrix(c.participation.leftCols(3).transpose()), json_matrix(c.participation.rightCols(3).transpose()),
         json_matrix(c.effective_mass), json_array(c.effective_sum), json_matrix(c.rigid_mass));
   }
-  std::string paths = "[";
-  for (std::size_t k = 0; k < files.size(); ++k) paths += (k ? ", " : "") + json_string(files[k].string());
+  const multibody::StateSpace& ss = s.state_space;
+  const std::string state_space =
+      fmt::format("{{\"states\": {}, \"inputs\": {}, \"outputs\": {}}}", ss.A.rows(), json_strings(ss.input_names),
+                  json_strings(ss.output_names));
+  std::vector<std::string> paths;
+  for (const auto& file : files) paths.push_back(file.string());
   return fmt::format(
       "{{\"status\": {}, \"failure\": {}, \"message\": {}, \"about\": {}, \"t\": {}, \"free_motions\": {}, "
       "\"frequencies_hz\": {}, \"damping\": {}, \"undamped_hz\": {}, \"rigid_modes\": {}, \"unstable_modes\": {}, "
       "\"approximate_damping\": {}, \"zero_threshold_hz\": {}, \"largest_rigid_hz\": {}, \"mass\": {}, "
       "\"center_of_mass\": {}, \"inertia_about_com\": {}, "
-      "\"cantilevered\": {}, \"files\": {}], \"wall_s\": {}}}",
+      "\"state_space\": {}, \"cantilevered\": {}, \"files\": {}, \"wall_s\": {}}}",
       json_string(s.ok ? "ok" : "failed"), json_string(s.failure), json_string(s.message),
-      json_string(s.at >= 0.0 ? "run" : s.statics ? "statics" : "assembly"), json_number(s.point.t), s.free_motions, json_array(s.modes.frequencies_hz),
+      json_string(run::linearization_point_kind(s)), json_number(s.point.t), s.free_motions, json_array(s.modes.frequencies_hz),
       json_array(s.modes.damping), json_array(s.modes.undamped_hz), s.modes.rigid_modes, s.modes.unstable_modes,
       s.modes.approximate_damping, json_number(s.modes.zero_threshold_hz), json_number(s.modes.largest_rigid_hz),
       json_number(s.mass.mass), json_array(s.mass.com_W),
-      json_matrix(s.mass.inertia_com_W), cantilevered, paths, json_number(s.wall_seconds));
+      json_matrix(s.mass.inertia_com_W), state_space, cantilevered, json_strings(paths),
+      json_number(s.wall_seconds));
 }
 
 // The first `count` entries of a mode list, "f Hz (ζ)" each.
@@ -100,6 +112,8 @@ int linearize_case(const LinearizeOptions& options) {
   settings.statics = options.statics;
   settings.reference_body = options.reference_body;
   settings.zero_threshold_hz = options.zero_hz;
+  settings.inputs = io::linear_inputs(input.mechanism->linearize, model);
+  settings.outputs = io::linear_outputs(input.mechanism->linearize, model);
   if (options.at >= 0.0 && options.statics) {
     throw InputError("expected one of --at and --statics, got both");
   }
@@ -116,6 +130,7 @@ int linearize_case(const LinearizeOptions& options) {
           ? std::filesystem::path("out") / (std::filesystem::path(options.case_file).stem().string() + "_linear")
           : std::filesystem::path(options.output_dir);
   std::vector<std::filesystem::path> files = run::write_linear_csv(model, s, directory);
+  files.insert(files.begin(), run::write_linear_mat(model, s, directory));
   files.insert(files.begin(), run::write_linear_h5(model, s, directory, input.title, input.file));
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
@@ -142,6 +157,9 @@ int linearize_case(const LinearizeOptions& options) {
   }
   fmt::print(text, "first natural frequencies:\n");
   print_modes(text, s.modes, 10);
+  const multibody::StateSpace& ss = s.state_space;
+  fmt::print(text, "state space: {} states, {} inputs, {} outputs (the case's linearize section)\n", ss.A.rows(),
+             ss.B.cols(), ss.C.rows());
   const multibody::MassProperties& m = s.mass;
   fmt::print(text, "mass {:.6g} kg, centre of mass [{:.5g} {:.5g} {:.5g}] m, inertia about it (ground axes, kg m^2):\n",
              m.mass, m.com_W.x(), m.com_W.y(), m.com_W.z());
@@ -183,8 +201,12 @@ Command add_linearize_command(CLI::App& app) {
       "held; latches act in their current mode. Rigid-body modes are reported as zero frequencies.\n"
       "About the assembled start at t = 0 (default), the static equilibrium (--statics) or the\n"
       "state a run of the case reaches at T (--at T: hold-downs released, latches as switched).\n"
-      "Writes DIR/linear.h5 (tangent matrices, null-space basis, modes, mass properties, held\n"
-      "modes), DIR/linear_modes.csv, DIR/mode_shapes.csv, DIR/mass_properties.csv and, with\n"
+      "The state-space model A, B, C, D has the inputs and outputs of the case's `linearize`\n"
+      "section (forces, torques at markers, RSDA actuator torques; marker motions).\n"
+      "Writes DIR/linear.h5 (tangent matrices, null-space basis, modes, state space, mass\n"
+      "properties, held modes), DIR/linear.mat (MATLAB v5: A, B, C, D, M, C_damping, K, ...),\n"
+      "DIR/linear_modes.csv, DIR/mode_shapes.csv, DIR/mass_properties.csv,\n"
+      "DIR/state_space_{A,B,C,D}.csv and, with\n"
       "--reference-body, DIR/cantilevered_modes.csv (modes with that body held, participation\n"
       "factors and effective masses T1-T3, R1-R3).\n"
       "Exit codes: 0 done, 1 bad input, 2 numerical failure (assembly, statics, the run to T, singular\n"
@@ -206,7 +228,8 @@ Command add_linearize_command(CLI::App& app) {
                 "(\"assembly\", \"statics\" or \"run\"), \"t\", "
                 "\"free_motions\", \"frequencies_hz\", \"damping\", \"undamped_hz\", \"rigid_modes\", "
                 "\"unstable_modes\", \"approximate_damping\", \"zero_threshold_hz\", \"largest_rigid_hz\", \"mass\", "
-                "\"center_of_mass\", \"inertia_about_com\", "
+                "\"center_of_mass\", \"inertia_about_com\", \"state_space\" ({\"states\", \"inputs\", \"outputs\"}: the "
+                "number of states and the input and output names), "
                 "\"cantilevered\" (null or {\"reference_point\", \"frequencies_hz\", \"damping\", \"rigid_modes\", "
                 "\"translational_coupling\", \"rotational_coupling\", \"effective_mass\", \"effective_mass_sum\", "
                 "\"rigid_mass\"}), \"files\", \"wall_s\"}; the text goes to stderr");

@@ -20,13 +20,13 @@ namespace {
 const std::initializer_list<std::string_view> kCaseSections = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
     "markers", "joints",   "drivers",  "forces",          "acceleration_probes", "shock_spectrum",
-    "assembly", "run", "axis_names"};
+    "linearize", "assembly", "run", "axis_names"};
 // A case may also name a `base` case whose sections it takes where it has none: a variant
 // (another mode set, other settings) without copying the mechanism.
 const std::initializer_list<std::string_view> kCaseSectionsAndBase = {
     "title",  "materials", "sections", "flexible_bodies", "gravity", "bodies",
     "markers", "joints",   "drivers",  "forces",          "acceleration_probes", "shock_spectrum",
-    "assembly", "run", "base", "axis_names"};
+    "linearize", "assembly", "run", "base", "axis_names"};
 
 // A case's `base`: the file (relative to the case's folder) whose sections this case takes
 // where it has none of its own. One level only: a base has no base.

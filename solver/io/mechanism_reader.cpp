@@ -15,7 +15,7 @@
 namespace limber::io {
 
 const std::initializer_list<std::string_view> kMechanismSections = {
-    "gravity", "bodies", "markers", "joints", "drivers", "forces", "acceleration_probes", "shock_spectrum",
+    "gravity", "bodies", "markers", "joints", "drivers", "forces", "acceleration_probes", "shock_spectrum", "linearize",
     "assembly", "run"};
 
 namespace {
@@ -361,6 +361,19 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
       check_name_text("force", name, entry.key_where());
       result.forces.push_back(read_force(name, entry));
     }
+  }
+
+  // The state-space model's inputs and outputs, on the markers and RSDAs above.
+  if (const auto linearize = root.find("linearize")) {
+    std::vector<std::string> markers, rsdas;
+    for (const MarkerEntry& marker : result.markers) markers.push_back(marker.name);
+    for (const JointEntry& joint : result.joints) {
+      for (const MarkerEntry& marker : joint.markers) markers.push_back(marker.name);
+    }
+    for (const ForceEntry& force : result.forces) {
+      if (const auto* rsda = std::get_if<multibody::RsdaSpec>(&force.spec)) rsdas.push_back(rsda->name);
+    }
+    result.linearize = read_linearize(*linearize, markers, rsdas);
   }
 
   // What to do with the model.

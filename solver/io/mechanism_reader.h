@@ -13,6 +13,7 @@
 //   run        integrator and its settings, end time, sample interval
 //   acceleration_probes, shock_spectrum   points whose acceleration and its shock response
 //              spectra are recorded (acceleration_probe_reader.h)
+//   linearize  inputs and outputs of `limber linearize`'s state-space model (linearize_reader.h)
 // No mode is computed here: the model is built from this data and the modes by
 // mechanism_builder.h. Every error is an InputError at file:line:col of the offending value
 // (expected/got).
@@ -28,6 +29,7 @@
 
 #include "integrate/integrator_options.h"
 #include "io/acceleration_probe_reader.h"
+#include "io/linearize_reader.h"
 #include "io/yaml_reader.h"
 #include "multibody/assembly.h"
 #include "multibody/model.h"
@@ -132,6 +134,7 @@ struct MechanismCase {
   std::vector<DriverEntry> drivers;
   std::vector<ForceEntry> forces;
   std::vector<AccelerationProbeEntry> acceleration_probes;
+  LinearizeCase linearize;  // the state-space inputs and outputs (none when the section is absent)
   // Each flexible body -> the `flexible_bodies` entry it uses (several bodies may share one
   // entry, and with it one mode set).
   std::map<std::string, std::string> flexible_components;

@@ -181,6 +181,15 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
   return LinearizationStatus::kOk;
 }
 
+Eigen::LLT<Eigen::MatrixXd> reduced_mass_factor(const Eigen::MatrixXd& M, const Eigen::MatrixXd& Z) {
+  const Eigen::MatrixXd Mr = Z.transpose() * M * Z;
+  Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mr + Mr.transpose()));
+  if (llt.info() != Eigen::Success) {
+    throw NumericalError("linearize: the mass matrix on the joints' free motions is not positive definite");
+  }
+  return llt;
+}
+
 SystemModes system_modes(const TangentMatrices& tangent, const Eigen::MatrixXd& Z, double zero_threshold_hz) {
   const Eigen::Index n = Z.cols();
   SystemModes modes;
@@ -191,11 +200,7 @@ SystemModes system_modes(const TangentMatrices& tangent, const Eigen::MatrixXd& 
   if (n == 0) return modes;
 
   // Mass-normalized coordinates x = Lᵀ y with Zᵀ M Z = L Lᵀ: ẍ + C̃ ẋ + K̃ x = 0.
-  const Eigen::MatrixXd Mr = Z.transpose() * tangent.M * Z;
-  const Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mr + Mr.transpose()));
-  if (llt.info() != Eigen::Success) {
-    throw NumericalError("linearize: the mass matrix on the joints' free motions is not positive definite");
-  }
+  const Eigen::LLT<Eigen::MatrixXd> llt = reduced_mass_factor(tangent.M, Z);
   const auto L = llt.matrixL();
   const auto tilde = [&](const Eigen::MatrixXd& X) {
     const Eigen::MatrixXd Y = L.solve(Z.transpose() * X * Z);

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "multibody/model.h"
@@ -48,6 +49,10 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
 // An orthonormal basis (nv x n) of the null space of G by SVD, rank at relative threshold
 // kRedundancyThreshold.
 Eigen::MatrixXd null_space_basis(const Eigen::MatrixXd& G, int nv);
+
+// The Cholesky factor of Mr = Zᵀ M Z (symmetrized). Throws NumericalError when Mr is not
+// positive definite (a free motion without inertia).
+Eigen::LLT<Eigen::MatrixXd> reduced_mass_factor(const Eigen::MatrixXd& M, const Eigen::MatrixXd& Z);
 
 struct SystemModes {
   // Entries in ascending frequencies_hz: unstable ones (negative) first, then the rigid zeros.

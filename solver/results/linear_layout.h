@@ -8,7 +8,7 @@ namespace limber::results::linear_layout {
 // Root attributes: format, version, title, case_file (results_layout.h's names) and these.
 inline constexpr const char* kFormat = "limber-linear";  // value of layout::kFormatAttribute
 inline constexpr int kVersion = 1;
-inline constexpr const char* kAboutAttribute = "about";  // string: "assembly" or "statics"
+inline constexpr const char* kAboutAttribute = "about";  // string: "assembly", "statics" or "run"
 inline constexpr const char* kTimeAttribute = "t";       // double [s]: the linearization time
 
 // The system: coordinates and tangent matrices.
@@ -26,6 +26,18 @@ inline constexpr const char* kUndamped = "undamped_hz";        // [n]
 inline constexpr const char* kShapes = "shapes";               // [nv, n], ΦᵀMΦ = I
 inline constexpr const char* kRigidModesAttribute = "rigid_modes";        // int
 inline constexpr const char* kZeroThresholdAttribute = "zero_threshold_hz";  // double
+
+// state_space/: ẋ = A x + B u, out = C x + D u (multibody/state_space.h), x = [y; ẏ] (2n)
+// with ξ = Z y; the inputs and outputs of the case's `linearize` section (B, C, D may have no
+// columns or rows).
+inline constexpr const char* kStateSpace = "state_space";
+inline constexpr const char* kStateMatrix = "A";           // [2n, 2n]
+inline constexpr const char* kInputMatrix = "B";           // [2n, ni]
+inline constexpr const char* kOutputMatrix = "C";          // [no, 2n]
+inline constexpr const char* kFeedthroughMatrix = "D";     // [no, ni]
+inline constexpr const char* kStateNames = "state_names";    // string [2n]: y1 ... yn, y1_dot ...
+inline constexpr const char* kInputNames = "input_names";    // string [ni]: wheels.x ... hinge_motor
+inline constexpr const char* kOutputNames = "output_names";  // string [no]: attitude.x ...
 
 // mass_properties/: the whole mechanism, ground axes.
 inline constexpr const char* kMassProperties = "mass_properties";

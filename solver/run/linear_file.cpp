@@ -82,7 +82,7 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
   root.attribute(results::layout::kVersionAttribute, L::kVersion);
   root.attribute(results::layout::kTitleAttribute, title);
   root.attribute(results::layout::kCaseFileAttribute, case_file);
-  root.attribute(L::kAboutAttribute, std::string(summary.statics ? "statics" : "assembly"));
+  root.attribute(L::kAboutAttribute, linearization_point_kind(summary));
   root.attribute(L::kTimeAttribute, summary.point.t);
   root.strings(L::kCoordinateNames, coordinate_names(model));
   root.matrix(L::kMass, summary.tangent.M);
@@ -100,6 +100,19 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
     modes.matrix(L::kShapes, summary.modes.shapes);
     modes.attribute(L::kRigidModesAttribute, summary.modes.rigid_modes);
     modes.attribute(L::kZeroThresholdAttribute, summary.modes.zero_threshold_hz);
+  }
+  // The state-space model.
+  {
+    const multibody::StateSpace& ss = summary.state_space;
+    const results::H5Handle group = create_group(h5.get(), L::kStateSpace, file);
+    GroupWriter state_space(group.get(), file);
+    state_space.matrix(L::kStateMatrix, ss.A);
+    state_space.matrix(L::kInputMatrix, ss.B);
+    state_space.matrix(L::kOutputMatrix, ss.C);
+    state_space.matrix(L::kFeedthroughMatrix, ss.D);
+    state_space.strings(L::kStateNames, ss.state_names);
+    state_space.strings(L::kInputNames, ss.input_names);
+    state_space.strings(L::kOutputNames, ss.output_names);
   }
   // The whole mechanism's mass properties.
   {

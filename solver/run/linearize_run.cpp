@@ -24,6 +24,19 @@ int reference_body_index(const multibody::Model& model, const std::string& name)
                                fmt::join(names, ", "), name));
 }
 
+// A matrix with named rows and columns: header "row,<columns...>", then one named row each.
+void write_named_matrix(std::ofstream out, const Eigen::MatrixXd& m, const std::vector<std::string>& rows,
+                        const std::vector<std::string>& columns) {
+  out << "row";
+  for (const std::string& column : columns) out << "," << column;
+  out << "\n";
+  for (Eigen::Index r = 0; r < m.rows(); ++r) {
+    out << rows[static_cast<std::size_t>(r)];
+    for (Eigen::Index c = 0; c < m.cols(); ++c) out << fmt::format(",{:.17g}", m(r, c));
+    out << "\n";
+  }
+}
+
 }  // namespace
 
 LinearizeSummary linearize_mechanism(const multibody::Model& model, const multibody::AssemblyOptions& assembly,
@@ -79,6 +92,8 @@ bool linearize_about(const multibody::Model& model, const multibody::ConstraintP
   summary.null_space = multibody::null_space_basis(summary.tangent.G, model.nv);
   summary.free_motions = static_cast<int>(summary.null_space.cols());
   summary.modes = multibody::system_modes(summary.tangent, summary.null_space, settings.zero_threshold_hz);
+  summary.state_space = multibody::state_space(model, point, summary.tangent, summary.null_space, settings.inputs,
+                                               settings.outputs);
   // Mass properties of the whole mechanism (about the ground origin), the held modes.
   const Eigen::MatrixXd Psi = multibody::rigid_motion_basis(model, point, Eigen::Vector3d::Zero());
   summary.mass = multibody::mass_properties(Psi.transpose() * summary.tangent.M * Psi, Eigen::Vector3d::Zero());
@@ -87,6 +102,10 @@ bool linearize_about(const multibody::Model& model, const multibody::ConstraintP
         multibody::cantilevered_modes(model, point, summary.tangent, reference, settings.zero_threshold_hz);
   }
   return true;
+}
+
+const char* linearization_point_kind(const LinearizeSummary& summary) {
+  return summary.at >= 0.0 ? "run" : summary.statics ? "statics" : "assembly";
 }
 
 std::vector<std::string> coordinate_names(const multibody::Model& model) {
@@ -143,6 +162,12 @@ std::vector<std::filesystem::path> write_linear_csv(const multibody::Model& mode
       }
     }
   }
+  // The state-space matrices (full precision: a controller design reads them back).
+  const multibody::StateSpace& ss = summary.state_space;
+  write_named_matrix(open("state_space_A.csv"), ss.A, ss.state_names, ss.state_names);
+  write_named_matrix(open("state_space_B.csv"), ss.B, ss.state_names, ss.input_names);
+  write_named_matrix(open("state_space_C.csv"), ss.C, ss.output_names, ss.state_names);
+  write_named_matrix(open("state_space_D.csv"), ss.D, ss.output_names, ss.input_names);
   if (summary.cantilevered) {
     const multibody::CantileveredModes& c = *summary.cantilevered;
     std::ofstream out = open("cantilevered_modes.csv");

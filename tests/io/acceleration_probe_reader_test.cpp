@@ -45,12 +45,7 @@ shock_spectrum: {min_frequency: 10, q: 20, window: 0.5}
 run: {t_end: 0.1, sample_interval: 1e-4}
 )";
 
-std::string edited(const std::string& from, const std::string& to) {
-  std::string text = kCase;
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
+std::string edited(const std::string& from, const std::string& to) { return test::replaced(kCase, from, to); }
 
 TEST(AccelerationProbeReader, ProbesAndSettingsLandInTheModel) {
   const Case input = read_case_text(kCase, test::kCaseName);

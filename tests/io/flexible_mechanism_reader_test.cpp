@@ -45,12 +45,7 @@ joints:
           orientation: {z_axis: [0, 1, 0], x_axis: [1, 0, 0]}}
 )";
 
-std::string edited(const std::string& from, const std::string& to) {
-  std::string text = kCase;
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
+std::string edited(const std::string& from, const std::string& to) { return test::replaced(kCase, from, to); }
 
 TEST(FlexibleMechanismReader, BodyMarkersDampingAndProbeLandInTheModel) {
   const Case input = read_case_text(kCase, "test.yaml");

@@ -34,6 +34,13 @@ inline std::string location_of(const std::string& text, const std::string& marke
          std::to_string(at - line_start + 1);
 }
 
+// `text` with the first `from` replaced by `to` (which must be there).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
 // Reads `text` (and reduces and builds its mechanism, if any); expects an InputError
 // located at `where` whose message holds `words`.
 inline ::testing::AssertionResult fails_at(const std::string& text, const std::string& where,

@@ -163,12 +163,7 @@ TEST(MechanismReader, DefaultsWithoutRunSection) {
 }
 
 // Replaces the first `from` in the mechanism text by `to`.
-std::string edited(const std::string& from, const std::string& to) {
-  std::string text = kMechanism;
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
+std::string edited(const std::string& from, const std::string& to) { return test::replaced(kMechanism, from, to); }
 
 TEST(MechanismReader, BadInputNamesFileLineAndWhatWasExpected) {
   // Unknown key in a body.

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "flexible_test_models.h"
+#include "linear_test_models.h"
 #include "multibody/assembly.h"
 #include "multibody/hybrid_coordinates.h"
 #include "multibody/linearization.h"
@@ -60,15 +61,7 @@ Linearized linearize(const Model& model, bool statics) {
 // ε = 1e-6, per entry of M⁻¹K) is left: measured 7e-11.
 TEST(Linearization, FloatingHingedPairHasSixRigidModesAndTheTorsionFrequency) {
   const double J1 = 3.0, J2 = 0.5, k = 20.0;
-  ModelBuilder builder;
-  builder.add_rigid_body(body_spec("bus", 50.0, Eigen::Vector3d(4.0, 5.0, J1), Eigen::Vector3d::Zero()));
-  builder.add_rigid_body(body_spec("panel", 2.0, Eigen::Vector3d(0.7, 0.9, J2), Eigen::Vector3d(0, 0, 1.0)));
-  builder.add_marker_at("H.bus", "bus", Eigen::Vector3d(0, 0, 0.5));
-  builder.add_marker_at("H.panel", "panel", Eigen::Vector3d(0, 0, 0.5));
-  builder.add_joint("H", JointType::kRevolute, "H.bus", "H.panel");
-  builder.add_rsda({"spring", "H.bus", "H.panel", k, 0.0, 0.0, {}, false, {}});
-  const Model model = builder.build();
-  const Linearized lin = linearize(model, false);
+  const Linearized lin = linearize(testing::floating_hinged_pair(J1, J2, k), false);
   EXPECT_EQ(lin.free_motions, 7);
   EXPECT_EQ(lin.modes.rigid_modes, 6);
   const double f = std::sqrt(k * (1.0 / J1 + 1.0 / J2)) / kTwoPi;
@@ -163,17 +156,7 @@ TEST(Linearization, InvertedPendulumIsOneUnstableModeWithANegativeFrequency) {
 // rounding (measured 1.3e-11 on both).
 TEST(Linearization, DampedSpringMassOnASliderHasTheClosedFormDampingRatio) {
   const double m = 4.0, k = 400.0, c = 8.0;
-  ModelBuilder builder;
-  builder.add_rigid_body(body_spec("mass", m, Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d(1, 0, 0)));
-  const Eigen::Matrix3d R_x = frame_from_axes(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
-  builder.add_marker_at("T.ground", "ground", Eigen::Vector3d(1, 0, 0), R_x);
-  builder.add_marker_at("T.mass", "mass", Eigen::Vector3d(1, 0, 0), R_x);
-  builder.add_joint("T", JointType::kTranslational, "T.ground", "T.mass");
-  builder.add_marker_at("S.ground", "ground", Eigen::Vector3d::Zero());
-  builder.add_marker_at("S.mass", "mass", Eigen::Vector3d(1, 0, 0));
-  builder.add_tsda({"spring", "S.ground", "S.mass", k, c, 1.0, {}});
-  const Model model = builder.build();
-  const Linearized lin = linearize(model, false);
+  const Linearized lin = linearize(testing::spring_mass_on_slider(m, k, c), false);
   ASSERT_EQ(lin.free_motions, 1);
   EXPECT_NEAR(lin.modes.frequencies_hz(0) / (std::sqrt(k / m) / kTwoPi), 1.0, 1e-9);
   EXPECT_NEAR(lin.modes.damping(0) / (c / (2.0 * std::sqrt(k * m))), 1.0, 1e-9);

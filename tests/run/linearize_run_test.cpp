@@ -8,11 +8,13 @@
 #include <numbers>
 
 #include <cmath>
+#include <complex>
 #include <string>
 
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
+#include "io/linearize_reader.h"
 #include "io/mechanism_builder.h"
 #include "../multibody/test_models.h"
 #include "multibody/model_builder.h"
@@ -94,6 +96,37 @@ TEST(LinearizeRun, StowedSatelliteHasSixRigidModesAndConsistentMassProperties) {
     const double f_hybrid = std::sqrt(hybrid.eigenvalues()(6 + i)) / (2.0 * std::numbers::pi);
     EXPECT_NEAR(f_hybrid / s.modes.undamped_hz(6 + i), 1.0, 1e-9) << "mode " << 6 + i;
   }
+}
+
+// The stowed satellite's plant (cases/satellite_linearized.yaml, about its statics) against
+// Euler's equations of the whole spacecraft: at frequencies far below the elastic modes
+// (ω = 0.01 rad/s against 813 rad/s) a torque τ on the bus spins the whole, so the bus rate
+// from the wheels' torque is G(s) → I⁻¹ / s with I the spacecraft's inertia about its centre
+// of mass (summary.mass; bus axes are ground axes here), and the hinge motor, an internal
+// torque on a wing the hold-downs lock, leaves no rate: s G(s) → 0. Tolerance 1e-4 relative:
+// the rigid roots' noise (|s| ≤ 4e-5 rad/s) enters as (4e-5 / 0.01)² = 2e-5, the elastic modes
+// as (0.01 / 813)² (and the hinge motor's as s² times a compliance). Measured: 5.4e-6 and
+// 3.6e-12.
+TEST(LinearizeRun, StowedSatellitePlantSpinsByEulersEquationAtLowFrequency) {
+  const io::Case input = io::read_case_file(std::string(LIMBER_CASES_DIR) + "/satellite_linearized.yaml");
+  const io::Mechanism m = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  LinearizeSettings settings;
+  settings.statics = true;
+  settings.inputs = io::linear_inputs(input.mechanism->linearize, m.model);
+  settings.outputs = io::linear_outputs(input.mechanism->linearize, m.model);
+  const LinearizeSummary s = linearize_mechanism(m.model, m.assembly, settings);
+  ASSERT_TRUE(s.ok) << s.message;
+  const multibody::StateSpace& ss = s.state_space;
+  ASSERT_EQ(ss.input_names[3], "hinge_motor");
+  ASSERT_EQ(ss.output_names[3], "rate.x");
+  const std::complex<double> jw(0.0, 0.01);
+  const Eigen::MatrixXcd sI_A = jw * Eigen::MatrixXcd::Identity(ss.A.rows(), ss.A.cols()) - ss.A.cast<std::complex<double>>();
+  const Eigen::MatrixXcd sG =
+      jw * ss.C.cast<std::complex<double>>() * sI_A.partialPivLu().solve(ss.B.cast<std::complex<double>>());
+  const Eigen::Matrix3d I_inv = s.mass.inertia_com_W.inverse();
+  const Eigen::Matrix3cd rate_from_wheels = sG.block(3, 0, 3, 3);
+  EXPECT_LT((rate_from_wheels - I_inv.cast<std::complex<double>>()).norm() / I_inv.norm(), 1e-4);
+  EXPECT_LT(sG.block(3, 3, 3, 1).norm() / I_inv.norm(), 1e-4);
 }
 
 // --at T: a pendulum with a hinge damper, released 0.3 rad from hanging and run for 12 s until

@@ -1,0 +1,54 @@
+// Reads the case section `linearize` (docs/linearize.md, "The linearize section"): the named
+// inputs and outputs of the state-space model that `limber linearize` writes.
+//   linearize:
+//     inputs:
+//       wheels: {torque: bus_center}                  # channels wheels.x/.y/.z [N m], ground axes
+//       thruster: {force: thruster_mount, axes: marker}   # [N], the marker's axes
+//       hinge_motor: {rsda: spring_R3}                # one channel [N m]: an actuator torque on the RSDA
+//     outputs:
+//       attitude: {rotation: bus_center, axes: marker}    # [rad]; also position [m], velocity,
+//       rate: {angular_velocity: bus_center, axes: marker}  # acceleration, angular_acceleration
+// Each entry names exactly one quantity and its marker (or RSDA force), and optionally `axes`
+// (ground, the default, or marker: the marker's axes at the linearization point). Every error is
+// an InputError at file:line:col: unknown keys, a marker or RSDA the case lacks (the names
+// there are listed), two quantities in one entry.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "io/yaml_reader.h"
+#include "multibody/model.h"
+#include "multibody/state_space.h"
+
+namespace limber::io {
+
+// One input or output as read: the spec without indices, the name it refers to.
+struct LinearInputEntry {
+  multibody::LinearInput spec;  // marker and force indices unset
+  std::string target;           // the marker, or the RSDA force for kRsdaTorque
+  SourceLocation where;         // the target's value
+};
+struct LinearOutputEntry {
+  multibody::LinearOutput spec;  // marker index unset
+  std::string target;            // the marker
+  SourceLocation where;
+};
+
+struct LinearizeCase {
+  std::vector<LinearInputEntry> inputs;
+  std::vector<LinearOutputEntry> outputs;
+};
+
+// The section; `markers` are the case's marker names (joints' own markers included) and
+// `rsdas` the names of its RSDA forces, each checked here.
+LinearizeCase read_linearize(const YamlValue& section, const std::vector<std::string>& markers,
+                             const std::vector<std::string>& rsdas);
+
+// The entries with their marker and force indices in `model` (built from the same case).
+// Throws InputError at the entry when a name is missing (a model built from other data).
+std::vector<multibody::LinearInput> linear_inputs(const LinearizeCase& section, const multibody::Model& model);
+std::vector<multibody::LinearOutput> linear_outputs(const LinearizeCase& section, const multibody::Model& model);
+
+}  // namespace limber::io

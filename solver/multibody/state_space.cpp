@@ -1,0 +1,122 @@
+#include "multibody/state_space.h"
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "multibody/body.h"
+#include "multibody/constraints.h"
+
+namespace limber::multibody {
+
+namespace {
+
+constexpr const char* kAxisSuffix[] = {".x", ".y", ".z"};
+
+// The unit vectors (columns, ground axes) the three channels of a marker point along.
+Eigen::Matrix3d channel_axes(const FrameKinematics& marker, ChannelAxes axes) {
+  return axes == ChannelAxes::kMarker ? marker.R_WF : Eigen::Matrix3d::Identity();
+}
+
+// B_ξ (nv x ni): the generalized forces of unit inputs, and the channel names.
+Eigen::MatrixXd input_forces(const Model& model, const Workspace& ws, const std::vector<LinearInput>& inputs,
+                             std::vector<std::string>& names) {
+  std::vector<Eigen::VectorXd> columns;
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  for (const LinearInput& input : inputs) {
+    if (input.kind == LinearInputKind::kRsdaTorque) {
+      // τ on body j about the axis, −τ on body i (dynamics.cpp's RSDA).
+      LIMBER_DEMAND(input.force >= 0 && input.force < static_cast<int>(model.forces.size()));
+      const Rsda* rsda = std::get_if<Rsda>(&model.forces[static_cast<std::size_t>(input.force)]);
+      LIMBER_DEMAND(rsda != nullptr);
+      const FrameKinematics& mi = ws.markers[static_cast<std::size_t>(rsda->marker_i)];
+      const FrameKinematics& mj = ws.markers[static_cast<std::size_t>(rsda->marker_j)];
+      const Eigen::Vector3d u = relative_angle(mi, mj, Stage::kPosition).u;
+      Eigen::VectorXd Q = Eigen::VectorXd::Zero(model.nv);
+      add_frame_load(mj, zero, u, Q);
+      add_frame_load(mi, zero, -u, Q);
+      columns.push_back(Q);
+      names.push_back(input.name);
+      continue;
+    }
+    LIMBER_DEMAND(input.marker >= 0 && input.marker < static_cast<int>(model.markers.size()));
+    const FrameKinematics& marker = ws.markers[static_cast<std::size_t>(input.marker)];
+    const Eigen::Matrix3d E = channel_axes(marker, input.axes);
+    for (int k = 0; k < 3; ++k) {
+      Eigen::VectorXd Q = Eigen::VectorXd::Zero(model.nv);
+      const bool force = input.kind == LinearInputKind::kForce;
+      add_frame_load(marker, force ? Eigen::Vector3d(E.col(k)) : zero, force ? zero : Eigen::Vector3d(E.col(k)), Q);
+      columns.push_back(Q);
+      names.push_back(input.name + kAxisSuffix[k]);
+    }
+  }
+  Eigen::MatrixXd B_xi(model.nv, static_cast<Eigen::Index>(columns.size()));
+  for (std::size_t c = 0; c < columns.size(); ++c) B_xi.col(static_cast<Eigen::Index>(c)) = columns[c];
+  return B_xi;
+}
+
+bool is_translational(LinearOutputKind kind) {
+  return kind == LinearOutputKind::kPosition || kind == LinearOutputKind::kVelocity ||
+         kind == LinearOutputKind::kAcceleration;
+}
+
+// 0: displacement or rotation (of y), 1: rate (of ẏ), 2: acceleration (of ÿ).
+int derivative_order(LinearOutputKind kind) {
+  switch (kind) {
+    case LinearOutputKind::kPosition:
+    case LinearOutputKind::kRotation: return 0;
+    case LinearOutputKind::kVelocity:
+    case LinearOutputKind::kAngularVelocity: return 1;
+    case LinearOutputKind::kAcceleration:
+    case LinearOutputKind::kAngularAcceleration: return 2;
+  }
+  return 0;
+}
+
+}  // namespace
+
+StateSpace state_space(const Model& model, const State& point, const TangentMatrices& tangent,
+                       const Eigen::MatrixXd& Z, const std::vector<LinearInput>& inputs,
+                       const std::vector<LinearOutput>& outputs) {
+  const Eigen::Index n = Z.cols();
+  StateSpace ss;
+  Workspace ws(model);
+  update_marker_kinematics(model, point, Stage::kPosition, ws);
+  const Eigen::MatrixXd B_xi = input_forces(model, ws, inputs, ss.input_names);
+  const Eigen::Index ni = B_xi.cols();
+
+  // ÿ = −Mr⁻¹Kr y − Mr⁻¹Cr ẏ + Mr⁻¹ Zᵀ B_ξ u: the second block row of A and B.
+  const Eigen::LLT<Eigen::MatrixXd> Mr = reduced_mass_factor(tangent.M, Z);
+  Eigen::MatrixXd accel_x(n, 2 * n);
+  accel_x << -Mr.solve(Z.transpose() * tangent.K * Z), -Mr.solve(Z.transpose() * tangent.C * Z);
+  const Eigen::MatrixXd accel_u = Mr.solve(Z.transpose() * B_xi);
+  ss.A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  ss.A.topRightCorner(n, n).setIdentity();
+  ss.A.bottomRows(n) = accel_x;
+  ss.B = Eigen::MatrixXd::Zero(2 * n, ni);
+  ss.B.bottomRows(n) = accel_u;
+  for (Eigen::Index i = 0; i < n; ++i) ss.state_names.push_back(fmt::format("y{}", i + 1));
+  for (Eigen::Index i = 0; i < n; ++i) ss.state_names.push_back(fmt::format("y{}_dot", i + 1));
+
+  // Each output: three rows of J Z applied to y, ẏ or ÿ, along the channel axes.
+  ss.C = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(outputs.size()), 2 * n);
+  ss.D = Eigen::MatrixXd::Zero(ss.C.rows(), ni);
+  for (std::size_t o = 0; o < outputs.size(); ++o) {
+    const LinearOutput& output = outputs[o];
+    LIMBER_DEMAND(output.marker >= 0 && output.marker < static_cast<int>(model.markers.size()));
+    const FrameKinematics& marker = ws.markers[static_cast<std::size_t>(output.marker)];
+    const Eigen::MatrixXd& J = is_translational(output.kind) ? marker.J_p : marker.J_w;
+    const Eigen::MatrixXd JZ = channel_axes(marker, output.axes).transpose() * J * Z;  // 3 x n
+    const auto rows = Eigen::seqN(3 * static_cast<Eigen::Index>(o), 3);
+    switch (derivative_order(output.kind)) {
+      case 0: ss.C(rows, Eigen::seqN(0, n)) = JZ; break;
+      case 1: ss.C(rows, Eigen::seqN(n, n)) = JZ; break;
+      default:
+        ss.C(rows, Eigen::all) = JZ * accel_x;
+        ss.D(rows, Eigen::all) = JZ * accel_u;
+    }
+    for (const char* suffix : kAxisSuffix) ss.output_names.push_back(output.name + suffix);
+  }
+  return ss;
+}
+
+}  // namespace limber::multibody
