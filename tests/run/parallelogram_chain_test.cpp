@@ -39,9 +39,9 @@ void expect_passages(const ChainRun& r, int n, double t_end) {
 
 // IDA at rtol 1e-9 (atol 1e-11): before the step-over (integrate/singular_step_over.h) the
 // 2-chain stopped at t = 0.1248 s, its corrector failing down to h = 4e-21 s; at rtol 1e-6 it
-// stopped at 2.625 s. Bound 1e-6 m: measured 4e-9 (N = 1) to 3e-8 m; the energy balance
-// measured 2e-5 - 9e-5 of the energy scale against the accuracy check's 1e-2 (the step-overs'
-// Taylor steps are exact in a driven chain's constrained coordinates after projection).
+// stopped at 2.625 s. Bound 1e-6 m: measured 8.5e-11 - 1.4e-10 m (a driven chain has no free
+// coordinate: the step-over's projection lands on the closed form); the energy balance measured
+// 1.2e-7 - 3.1e-7 of the energy scale, within the accuracy check's bound.
 TEST(ParallelogramChain, IdaStepsOverEverySingularPositionOnTheParallelogramBranch) {
   for (int n = 1; n <= 3; ++n) {
     const ChainRun r = run_parallelogram_chain(n, integrate::Method::kIda, 1e-9, 0.7);
@@ -55,7 +55,7 @@ TEST(ParallelogramChain, IdaStepsOverEverySingularPositionOnTheParallelogramBran
 
 // Generalized-α at h = 1 ms: its grid lands on the singular instants, which it steps over
 // (generalized_alpha.cpp). Bound 1e-6 m: measured 1.1e-8 m (its positions solve g = 0 to
-// Newton's tolerance), energy 2e-5 of the scale.
+// Newton's tolerance), energy 1.4e-5 of the scale.
 TEST(ParallelogramChain, GeneralizedAlphaRunsThroughEverySingularPositionOnTheParallelogramBranch) {
   for (int n = 1; n <= 3; ++n) {
     const ChainRun r = run_parallelogram_chain(n, integrate::Method::kGeneralizedAlpha, 1e-3, 0.7);
