@@ -41,8 +41,7 @@ std::string singular_failure_message(double t, double ratio, const std::string& 
   return fmt::format(
       "at t = {:.6g} s: {} at a singular configuration (the constraint equations lose rank "
       "there: smallest singular value {:.2g} of its start value), and stepping over it "
-      "failed. Remedies: the other integrator "
-      "(generalized-alpha steps over such instants at any h), another rtol or step, or a "
+      "failed. Remedies: the other integrator (--integrator), another rtol or step, or a "
       "start or geometry that keeps the mechanism off the singular path (e.g. a third, "
       "parallel crank in a parallelogram)",
       t, what_failed, ratio);
