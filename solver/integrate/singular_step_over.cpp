@@ -78,7 +78,7 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
   // Land as far past the singular instant as the failure stood before it; further when the
   // landing point is no better conditioned than the departure.
   double delta = 2.0 * sigma / rate;
-  for (int doubling = 0; doubling <= 4; ++doubling, delta *= 2.0) {
+  for (int doubling = 0; doubling <= kMaxStepOverDoublings; ++doubling, delta *= 2.0) {
     if (t + delta > t_limit) return fail("the stretch to step over reaches the end of the run or a jump");
     out.t = t + delta;
     if (!predict_across(system, t, q, v, vdot, out.t, out.q, out.v)) continue;
@@ -88,7 +88,8 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
     out.status = Status::success(out.t);
     return out;
   }
-  return fail("no state past it up to 32 times its distance is better conditioned");
+  return fail(fmt::format("no state past it up to 2^{} times its distance is better conditioned",
+                          kMaxStepOverDoublings));
 }
 
 }  // namespace limber::integrate

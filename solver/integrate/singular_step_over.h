@@ -22,9 +22,13 @@ namespace limber::integrate {
 
 // Below this fraction of its start value σ counts as near a singular configuration: IDA's
 // corrector failed at 1.3e-3 - 1.2e-2 of it on the parallelogram chains at rtol 1e-9 (before
-// and after the instant, tests/run/parallelogram_chain_test.cpp); a failure elsewhere is
-// reported as IDA's own.
-inline constexpr double kNearSingularRatio = 1e-1;
+// and after the instant, tests/run/parallelogram_chain_test.cpp), on the 3-chain at rtol 1e-10
+// 8 ms before the instant, above 0.1 of it; a failure elsewhere is reported as IDA's own.
+inline constexpr double kNearSingularRatio = 0.3;
+
+// Doublings of the stretch stepped over before giving up: a departure on the singular instant
+// itself (σ at 1e-6 of its start: the 3-chain at rtol 1e-8) measures a distance of ~0.
+inline constexpr int kMaxStepOverDoublings = 20;
 
 // The smallest singular value of the held rows' G(t, q) with unit rows (1 with no rows).
 double held_rows_margin(const MechanicalSystem& system, double t, const Eigen::VectorXd& q);
@@ -42,7 +46,8 @@ struct StepOver {
 // From the state (t, q, v) where the corrector failed (v̇ solved there afresh): the state 2 d later, no later than
 // `t_limit` (t_stop, a breakpoint). Precondition: σ(t, q) is below kNearSingularRatio of
 // `margin_start` (σ at the start). Fails (status, singular_failure_message) when the landing
-// point's σ stays below the departure's after 4 doublings of Δ, or when the accelerations fail.
+// point's σ stays below the departure's after kMaxStepOverDoublings doublings of Δ, or when
+// the accelerations fail.
 StepOver step_over_singular(const MechanicalSystem& system, double t, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double margin_start, double t_limit);
 
