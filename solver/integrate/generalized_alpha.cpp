@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "integrate/consistent_state.h"
+#include "integrate/singular_step_over.h"
 
 namespace limber::integrate {
 namespace {
@@ -85,6 +86,7 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
     failure_ = status;
     return status;
   }
+  margin_start_ = held_rows_margin(system, x0.t, curr_.q);
   curr_.a = curr_.vdot;
   curr_.integrals = Eigen::VectorXd::Zero(options.quadrature.size);
   evaluate_integrand(curr_);
@@ -587,6 +589,10 @@ void GeneralizedAlpha::interpolate(double t_out, Sample& out) const {
 Status GeneralizedAlpha::failure(StatusCode code, const std::string& why) {
   failed_ = true;
   failure_ = {code, curr_.t, fmt::format("at t = {:.6g} s: {}", curr_.t, why)};
+  if (code == StatusCode::kConvergenceFailures || code == StatusCode::kSingularJacobian) {
+    const double ratio = held_rows_margin(*system_, curr_.t, curr_.q) / margin_start_;
+    if (ratio < kNearSingularRatio) failure_.message = singular_failure_message(curr_.t, ratio, why);
+  }
   return failure_;
 }
 

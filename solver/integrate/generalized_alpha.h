@@ -149,6 +149,8 @@ class GeneralizedAlpha final : public Integrator {
   bool build_structured_jacobian(double h);
   void evaluate_integrand(StepState& s) const;
   void interpolate(double t_out, Sample& out) const;
+  // Fails with `why` at curr_; Newton's and the matrix's failures at a singular configuration
+  // say so, with what to change (singular_failure_message).
   Status failure(StatusCode code, const std::string& why);
 
   const MechanicalSystem* system_ = nullptr;
@@ -168,6 +170,7 @@ class GeneralizedAlpha final : public Integrator {
   double h_try_ = 0.0;
   int halvings_ = 0;
   bool stepped_over_ = false;  // a step onto a singular configuration was stretched past it
+  double margin_start_ = 1.0;  // the held rows' rank margin at the start (singular_step_over.h)
   bool failed_ = false;
   Status failure_;
   std::vector<int> pending_events_;  // located at curr_.t, applied before the next step

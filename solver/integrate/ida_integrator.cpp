@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "integrate/combined_statistics.h"
 #include "integrate/consistent_state.h"
 #include "integrate/dense_lu_solver.h"
+#include "integrate/singular_step_over.h"
 
 namespace limber::integrate {
 namespace {
@@ -36,6 +38,17 @@ constexpr double kMaxStepGrowth = 1.5;
 
 // Non-finite residuals IDA may recover from (by cutting the step) within one advance_to.
 constexpr int kMaxNonFiniteRetries = 10;
+
+// Step-overs of singular configurations (singular_step_over.h) without an accepted step between
+// them after which the run stops: each lands where the rank margin is at least the departure's.
+constexpr int kMaxStepOversInARow = 3;
+// Rejected attempts within one accepted step within kStruggleRatio of a singular
+// configuration after which IDA steps over it at once instead of crawling on to its
+// corrector's failure (at rtol 1e-8 the simple parallelogram took 200 rejected steps per
+// passage that way). At 0.1 the stretch stepped over, whose samples are predicted, was 10
+// times longer and its samples 2e-5 m off (docs/integrators.md).
+constexpr int kStruggle = 3;
+constexpr double kStruggleRatio = 1e-2;
 
 // Weighted RMS norm of x with IDA's weights 1/(rtol |y| + atol).
 double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double rtol, double atol) {
@@ -95,6 +108,19 @@ struct IdaIntegrator::Impl {
   std::vector<double> breakpoints;  // velocity breakpoints after t0, before t_stop, ascending
   std::size_t next_breakpoint = 0;  // the first not yet passed
   Eigen::VectorXd e_values;
+  // Singular configurations stepped over (singular_step_over.h): the held rows' rank margin at
+  // the start, the consecutive step-overs, and the last jump, whose inside samples are served by
+  // its prediction (v̇, λ and the integrals linear between its ends).
+  double margin_start = 1.0;
+  int step_overs_in_a_row = 0;
+  struct Jump {
+    double t0 = 0.0, t1 = 0.0;
+    Eigen::VectorXd q0, v0, vdot0, lambda0, z0;  // at t0
+    Eigen::VectorXd vdot1, lambda1, z1;          // at t1
+  };
+  std::optional<Jump> jump;
+  bool jumped = false;  // restarted past a singular configuration, not stepped since
+  long rejected_before = 0;  // rejected attempts before the last accepted step
 
   SUNContext context = nullptr;
   N_Vector y = nullptr, yp = nullptr, id = nullptr, atol_vec = nullptr;
@@ -327,28 +353,110 @@ struct IdaIntegrator::Impl {
         options.quadrature.jump(t, q_now, v_before, v_now, f);
         y_now.segment(iz, nz) += f;
       }
-      y_now.head(nq) = q_now;
-      y_now.segment(iv, nv) = v_now;
-      y_now.segment(ilambda, nc) = lambda_now;
-      y_now.segment(imu, nc + nh).setZero();
-      system->kinematic_matrix(q_now, N);
-      yp_now.head(nq) = N * v_now;
-      yp_now.segment(iv, nv) = vdot_now;
-      yp_now.segment(ilambda, 2 * nc + nh).setZero();
-      if (nz > 0) {
-        options.quadrature.integrand(t, q_now, v_now, vdot_now, lambda_now, f);
-        yp_now.segment(iz, nz) = f;
-      }
+      load_state(t, q_now, v_now, vdot_now, lambda_now);
     }
     double h_last = 0.0;
     IDAGetLastStep(ida, &h_last);
+    reinit(t, h_last);
+  }
+
+  // y = [q, v, λ, 0, z], y' = [N v, v̇, 0, 0, f] at t (z as it stands in y).
+  void load_state(double t, const Eigen::VectorXd& q_now, const Eigen::VectorXd& v_now,
+                  const Eigen::VectorXd& vdot_now, const Eigen::VectorXd& lambda_now) {
+    Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
+    Eigen::Map<Eigen::VectorXd> yp_now(N_VGetArrayPointer(yp), n);
+    y_now.head(nq) = q_now;
+    y_now.segment(iv, nv) = v_now;
+    y_now.segment(ilambda, nc) = lambda_now;
+    y_now.segment(imu, nc + nh).setZero();
+    system->kinematic_matrix(q_now, N);
+    yp_now.head(nq) = N * v_now;
+    yp_now.segment(iv, nv) = vdot_now;
+    yp_now.segment(ilambda, 2 * nc + nh).setZero();
+    if (nz > 0) {
+      options.quadrature.integrand(t, q_now, v_now, vdot_now, lambda_now, f);
+      yp_now.segment(iz, nz) = f;
+    }
+  }
+
+  // IDA restarted at t from y, y' at order 1, first step h0 (IDA's choice when 0).
+  void reinit(double t, double h0) {
     Statistics totals;
     read_statistics(totals, restart_statistics);
     restart_statistics = totals;
     LIMBER_DEMAND(IDAReInit(ida, t, y, yp) == IDA_SUCCESS);
     t_reached = t;
-    if (h_last > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h_last) == IDA_SUCCESS);
+    if (h0 > 0.0) LIMBER_DEMAND(IDASetInitStep(ida, h0) == IDA_SUCCESS);
     set_stop_time();
+  }
+
+  // After a failed step (or a struggling one): at a singular configuration (the held rows' rank
+  // margin below near_ratio of the start's), restart past it (singular_step_over.h). Returns nullopt
+  // when not at one (the caller reports IDA's failure), else success or the failure naming it.
+  std::optional<Status> step_over_singular_configuration(double near_ratio = kNearSingularRatio) {
+    LIMBER_DEMAND(IDAGetDky(ida, t_reached, 0, y) == IDA_SUCCESS);
+    Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
+    Jump j;
+    j.t0 = t_reached;
+    j.q0 = y_now.head(nq);
+    j.v0 = y_now.segment(iv, nv);
+    j.z0 = y_now.segment(iz, nz);
+    const double ratio = held_rows_margin(*system, j.t0, j.q0) / margin_start;
+    if (!(ratio < near_ratio)) return std::nullopt;
+    if (++step_overs_in_a_row > kMaxStepOversInARow) {
+      return Status{StatusCode::kConvergenceFailures, j.t0,
+                    singular_failure_message(j.t0, ratio, fmt::format("IDA's corrector failed after {} step-overs",
+                                                                      kMaxStepOversInARow))};
+    }
+    const double limit = next_breakpoint < breakpoints.size() ? breakpoints[next_breakpoint] : options.t_stop;
+    StepOver over = step_over_singular(*system, j.t0, j.q0, j.v0, margin_start, limit);
+    if (!over.status.ok()) return over.status;
+    j.vdot0 = over.vdot_from;
+    j.lambda0 = over.lambda_from;
+    // New rows may suit the landing point better (their multipliers then follow).
+    if (system->reselect_constraints(over.t, over.q)) {
+      const Status solved = solve_accelerations(*system, over.t, over.q, over.v, over.vdot, over.lambda);
+      if (!solved.ok()) return Status{solved.code, over.t, singular_failure_message(over.t, ratio, solved.message)};
+    }
+    // An event between the ends would be missed: refuse rather than skip it.
+    if (ne > 0) {
+      Eigen::VectorXd e0, e1;
+      system->event_functions(j.t0, j.q0, j.v0, e0);
+      system->event_functions(over.t, over.q, over.v, e1);
+      for (int k = 0; k < ne; ++k) {
+        if (e0(k) < 0.0 && e1(k) >= 0.0) {
+          return Status{StatusCode::kConvergenceFailures, j.t0,
+                        singular_failure_message(j.t0, ratio, "a hinge limit switches inside the stretch")};
+        }
+      }
+    }
+    // The integrals by the trapezoidal rule over the jump.
+    j.t1 = over.t;
+    j.vdot1 = over.vdot;
+    j.lambda1 = over.lambda;
+    j.z1 = j.z0;
+    if (nz > 0) {
+      Eigen::VectorXd f0(nz);
+      options.quadrature.integrand(j.t0, j.q0, j.v0, j.vdot0, j.lambda0, f0);
+      options.quadrature.integrand(over.t, over.q, over.v, over.vdot, over.lambda, f);
+      j.z1 += 0.5 * (over.t - j.t0) * (f0 + f);
+    }
+    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(y), n).segment(iz, nz) = j.z1;
+    load_state(over.t, over.q, over.v, over.vdot, over.lambda);
+    reinit(over.t, 0.1 * (over.t - j.t0));
+    jump = std::move(j);
+    jumped = true;
+    return Status::success(over.t);
+  }
+
+  // A sample inside the last jump (t0 < t < t1): its prediction, the rest linear.
+  void serve_from_jump(double t_out, Sample& out) const {
+    const Jump& j = *jump;
+    const double theta = (t_out - j.t0) / (j.t1 - j.t0);
+    predict_across(*system, j.t0, j.q0, j.v0, j.vdot0, t_out, out.q, out.v);
+    out.vdot = (1.0 - theta) * j.vdot0 + theta * j.vdot1;
+    out.lambda = (1.0 - theta) * j.lambda0 + theta * j.lambda1;
+    out.integrals = (1.0 - theta) * j.z0 + theta * j.z1;
   }
 
   // IntegratorOptions::on_step with the state IDA returned at t (the end of its step, or a
@@ -442,6 +550,10 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.restart_statistics = {};
   s.t_reached = x0.t;
   s.pending_events.clear();
+  s.step_overs_in_a_row = 0;
+  s.rejected_before = 0;
+  s.jump.reset();
+  s.jumped = false;
   s.ne = system.num_events();
   s.breakpoints.clear();
   s.next_breakpoint = 0;
@@ -483,6 +595,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
     s.failure = status;
     return status;
   }
+  s.margin_start = held_rows_margin(system, x0.t, q);
 
   // y0 = [q, v, λ, 0, 0], y0' = [N v, v̇, 0, 0, f]; id marks q, v, z differential.
   LIMBER_DEMAND(SUNContext_Create(nullptr, &s.context) == 0);
@@ -576,7 +689,8 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
     // (what IDA_NORMAL does); between steps events switch modes and the system may pick new
     // constraint rows. An event located past t_out is applied after t_out is served.
     while (s.t_reached < t_out - time_tolerance(t_out)) {
-      if (s.stepped) {
+      // (Right after a step-over IDA has no history to interpolate a restart from.)
+      if (s.stepped && !s.jumped) {
         s.apply_pending_events();
         s.apply_breakpoint();
         s.reselect_constraints(s.t_reached);
@@ -594,6 +708,13 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       }
       s.read_statistics(stats_, s.restart_statistics);
       if (flag < 0) {
+        // At a singular configuration: restart past it, or stop naming it.
+        if (const std::optional<Status> over = s.step_over_singular_configuration()) {
+          if (over->ok()) continue;
+          s.failed = true;
+          s.failure = *over;
+          return s.failure;
+        }
         double t_fail = t_out;
         IDAGetCurrentTime(s.ida, &t_fail);
         s.failed = true;
@@ -602,6 +723,10 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
                                  s.last_message)};
         return s.failure;
       }
+      s.jumped = false;
+      s.step_overs_in_a_row = 0;
+      const long rejected = stats_.rejected_steps - s.rejected_before;
+      s.rejected_before = stats_.rejected_steps;
       if (s.options.on_step) s.report_step(t_current);
       if (s.budget.spent()) {
         s.failed = true;
@@ -618,6 +743,16 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
                                  s.options.max_steps)};
         return s.failure;
       }
+      // Struggling near a singular configuration: step over it now (a failed try leaves IDA
+      // as it was, to go on or fail on its own).
+      if (rejected >= kStruggle && s.pending_events.empty()) s.step_over_singular_configuration(kStruggleRatio);
+    }
+    // A sample inside a stretch stepped over (before IDA's restart there).
+    if (s.jump && t_out < s.jump->t1 - time_tolerance(t_out)) {
+      out.t = t_out;
+      s.serve_from_jump(t_out, out);
+      out.statistics = stats_;
+      return Status::success(t_out);
     }
     // A sample on a velocity breakpoint: IDA stopped half a time tolerance before it.
     const double t_state = std::min(t_out, s.t_reached);

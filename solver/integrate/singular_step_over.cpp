@@ -1,0 +1,95 @@
+#include "integrate/singular_step_over.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/SVD>
+#include <fmt/format.h>
+
+#include "integrate/consistent_state.h"
+
+namespace limber::integrate {
+
+double held_rows_margin(const MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
+  if (system.nc() == 0) return 1.0;
+  Eigen::MatrixXd G;
+  system.constraint_jacobian_v(t, q, G);
+  // Unit rows: independent of units and of the mechanism's size (multibody/redundancy.h).
+  for (Eigen::Index k = 0; k < G.rows(); ++k) {
+    const double norm = G.row(k).norm();
+    if (norm > 0.0) G.row(k) /= norm;
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(G);
+  return svd.singularValues()(svd.singularValues().size() - 1);
+}
+
+bool predict_across(const MechanicalSystem& system, double t0, const Eigen::VectorXd& q0,
+                    const Eigen::VectorXd& v0, const Eigen::VectorXd& vdot0, double t,
+                    Eigen::VectorXd& q, Eigen::VectorXd& v) {
+  const double s = t - t0;
+  system.integrate_coordinates(q0, s * v0 + 0.5 * s * s * vdot0, q);
+  v = v0 + s * vdot0;
+  Eigen::VectorXd q_projected = q, v_projected = v;
+  if (!project_initial_state(system, t, q_projected, v_projected).ok()) return false;
+  q = q_projected;
+  v = v_projected;
+  return true;
+}
+
+std::string singular_failure_message(double t, double ratio, const std::string& what_failed) {
+  return fmt::format(
+      "at t = {:.6g} s: {} at a singular configuration (the constraint equations lose rank "
+      "there: smallest singular value {:.2g} of its start value), and stepping over it "
+      "failed. Remedies: the other integrator (--integrator), another rtol or step, or a "
+      "start or geometry that keeps the mechanism off the singular path (e.g. a third, "
+      "parallel crank in a parallelogram)",
+      t, what_failed, ratio);
+}
+
+StepOver step_over_singular(const MechanicalSystem& system, double t, const Eigen::VectorXd& q_failed,
+                            const Eigen::VectorXd& v_failed, double margin_start, double t_limit) {
+  StepOver out;
+  const Eigen::VectorXd& q = out.q_from = q_failed;
+  const Eigen::VectorXd& v = out.v_from = v_failed;
+  const Eigen::VectorXd& vdot = out.vdot_from;
+  const double sigma = held_rows_margin(system, t, q);
+  const double ratio = margin_start > 0.0 ? sigma / margin_start : 1.0;
+  const auto fail = [&](const std::string& why) {
+    out.status = {StatusCode::kConvergenceFailures, t, singular_failure_message(t, ratio, why)};
+    return out;
+  };
+  // The departure's accelerations from the saddle-point system: the integrator's own carry the
+  // corrector's trouble (IDA's v̇ reached 1e7 m/s² on the 2-chain, whose true one is 16).
+  if (const Status solved = solve_accelerations(system, t, out.q_from, out.v_from, out.vdot_from, out.lambda_from);
+      !solved.ok()) {
+    return fail("the accelerations there could not be solved: " + solved.message);
+  }
+  // σ's rate along the motion, by a difference over a displacement of 1e-7 of the coordinates.
+  Eigen::MatrixXd N;
+  system.kinematic_matrix(q, N);
+  const double speed = (N * v).lpNorm<Eigen::Infinity>();
+  if (!(speed > 0.0)) return fail("the mechanism rests");
+  const double epsilon = 1e-7 * std::max(1.0, q.lpNorm<Eigen::Infinity>()) / speed;
+  Eigen::VectorXd q_ahead;
+  system.integrate_coordinates(q, epsilon * v, q_ahead);
+  const double rate = std::abs(held_rows_margin(system, t + epsilon, q_ahead) - sigma) / epsilon;
+  if (!(rate > 0.0)) return fail("the rank margin does not change along the motion");
+  // Land as far past the singular instant as the failure stood before it; further when the
+  // landing point is no better conditioned than the departure.
+  double delta = 2.0 * sigma / rate;
+  for (int doubling = 0; doubling <= kMaxStepOverDoublings; ++doubling, delta *= 2.0) {
+    if (t + delta > t_limit) return fail("the stretch to step over reaches the end of the run or a jump");
+    out.t = t + delta;
+    if (!predict_across(system, t, q, v, vdot, out.t, out.q, out.v)) continue;
+    if (held_rows_margin(system, out.t, out.q) < sigma) continue;
+    const Status solved = solve_accelerations(system, out.t, out.q, out.v, out.vdot, out.lambda);
+    if (!solved.ok()) return fail("the accelerations past it could not be solved: " + solved.message);
+    out.status = Status::success(out.t);
+    return out;
+  }
+  return fail(fmt::format("no state past it up to 2^{} times its distance is better conditioned",
+                          kMaxStepOverDoublings));
+}
+
+}  // namespace limber::integrate
