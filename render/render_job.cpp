@@ -8,7 +8,9 @@
 #include "vtk_export.h"
 #include "xdmf_export.h"
 #include "xdmf_layout.h"
+#include "results/directory_lock.h"
 #include "results/file_names.h"
+#include "results/results_layout.h"
 
 #include <chrono>
 #include <cmath>
@@ -69,9 +71,22 @@ std::vector<double> frame_times(double t0, double t1, double fps) {
 
 RenderSummary render_results(const RenderOptions& options) {
   validate(options);
+  // One render at a time writes into a run directory (results/directory_lock.h).
+  std::error_code missing;
+  const results::DirectoryLock lock =
+      std::filesystem::is_directory(options.directory, missing)
+          ? results::DirectoryLock(options.directory, results::kRenderLock)
+          : results::DirectoryLock();
   const Results results = read_results(options.directory);
   RenderSummary summary;
   std::tie(summary.t0, summary.t1) = resolve_time_range(results, options);
+  // A run still being written (or killed) is drawn as far as its file was flushed.
+  if (results.status == results::layout::status::kRunning) {
+    summary.warnings.push_back(
+        "run not finished (status 'running': still being written, or killed): rendered the " +
+        std::to_string(results.sample_count()) + " samples written so far, up to t = " +
+        seconds(results.time(results.sample_count() - 1)));
+  }
   const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
 
   // Frames: render on this thread; FXAA and PNG encoding on the writer threads.

@@ -5,14 +5,13 @@
 #include <Eigen/Dense>
 
 #include "core/minimum_norm.h"
+#include "integrate/singular_test.h"
 
 namespace limber::integrate {
 namespace {
 
 constexpr int kMaxProjectionIterations = 25;
 constexpr double kProjectionTolerance = 1e-12;
-// Reciprocal condition number below which a factorisation counts as singular.
-constexpr double kSingularRcond = 1e-14;
 // Relative singular value below which a projection direction counts as dependent (the
 // redundancy analysis' threshold, multibody/redundancy.h).
 constexpr double kRankThreshold = 1e-6;
@@ -66,8 +65,9 @@ Status project_initial_state(const MechanicalSystem& system, double t, Eigen::Ve
     return failure(StatusCode::kSingularJacobian, t, "the mass matrix is not positive definite");
   }
   const Eigen::MatrixXd Minv_Gt = mass.solve(G.transpose());
-  const Eigen::PartialPivLU<Eigen::MatrixXd> schur(G * Minv_Gt);
-  if (!(schur.rcond() > kSingularRcond)) {
+  const Eigen::MatrixXd S = G * Minv_Gt;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> schur(S);
+  if (is_singular(S, schur)) {
     return failure(StatusCode::kSingularJacobian, t,
                    "G M⁻¹ Gᵀ is singular: the constraint equations are dependent");
   }
@@ -101,7 +101,7 @@ Status solve_accelerations(const MechanicalSystem& system, double t, const Eigen
     return failure(StatusCode::kNaN, t, "the mass matrix, forces or constraints are not finite");
   }
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
-  if (!(lu.rcond() > kSingularRcond)) {
+  if (is_singular(K, lu)) {
     return failure(StatusCode::kSingularJacobian, t,
                    "[M Gᵀ; G 0] is singular: dependent constraints or a singular mass matrix");
   }

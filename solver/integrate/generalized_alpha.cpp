@@ -9,12 +9,11 @@
 #include "core/error.h"
 #include "integrate/consistent_state.h"
 #include "integrate/singular_step_over.h"
+#include "integrate/singular_test.h"
 
 namespace limber::integrate {
 namespace {
 
-// Reciprocal condition number below which the scaled iteration matrix counts as singular.
-constexpr double kSingularRcond = 1e-14;
 // Newton contraction rate above which a reused iteration matrix is rebuilt.
 constexpr double kRefreshRate = 0.1;
 // Accepted steps after which the iteration matrix is rebuilt anyway (IDA uses 20 as well).
@@ -541,7 +540,7 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   jacobian_h_ = h;
   jacobian_age_ = 0;
   jacobian_structured_ = false;
-  return lu_.rcond() > kSingularRcond;
+  return !is_singular(J_, lu_);
 }
 
 bool GeneralizedAlpha::build_structured_jacobian(double h) {
@@ -558,7 +557,7 @@ bool GeneralizedAlpha::build_structured_jacobian(double h) {
   jacobian_age_ = 0;
   if (!J_.allFinite()) return false;
   lu_.compute(J_);
-  return lu_.rcond() > kSingularRcond;
+  return !is_singular(J_, lu_);
 }
 
 void GeneralizedAlpha::evaluate_integrand(StepState& s) const {

@@ -1,6 +1,7 @@
 #include "modal/rigid_body_modes.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Eigen/Geometry>
 #include <Eigen/QR>
@@ -111,10 +112,13 @@ std::vector<int> determinate_support(const Eigen::MatrixXd& psi_free,
     for (std::size_t i = 0; i < pool->size(); ++i) {
       rows_t.col(static_cast<Eigen::Index>(i)) = scaled.row((*pool)[i]).transpose();
     }
-    // Column-pivoted QR: the first r pivots are the best-conditioned DOF choice.
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rows_t);
-    qr.setThreshold(kRankTolerance);
-    if (qr.rank() < r) continue;
+    // Column-pivoted QR: the first r pivots are the best-conditioned DOF choice. They must be
+    // of the basis's order (its rows over all candidates have singular values 1), an absolute
+    // test: QR's own threshold is relative to the largest pivot, and took round-off for a
+    // support (a free beam held at both ends' translations along a skew axis: the rotation
+    // about it moves the nodes by ~1e-17, and a translation was chosen to stop it).
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rows_t);
+    if (std::abs(qr.matrixR()(r - 1, r - 1)) <= kRankTolerance) continue;
     std::vector<int> support;
     for (Eigen::Index i = 0; i < r; ++i) {
       support.push_back((*pool)[static_cast<std::size_t>(qr.colsPermutation().indices()[i])]);

@@ -13,8 +13,8 @@
 
 namespace limber::results {
 
-DirectoryLock::DirectoryLock(const std::filesystem::path& directory)
-    : path_(directory / kLockFileName) {
+DirectoryLock::DirectoryLock(const std::filesystem::path& directory, LockKind kind)
+    : path_(directory / kind.file_name) {
   fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) {
     throw InputError("cannot create the lock file '" + path_.string() + "': " + std::strerror(errno));
@@ -22,9 +22,10 @@ DirectoryLock::DirectoryLock(const std::filesystem::path& directory)
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd_);
     fd_ = -1;
-    throw InputError("expected a results directory no other run is writing, got '" +
-                     directory.string() + "' locked by a running limber (" + kLockFileName +
-                     "): wait for it or choose another output directory");
+    const std::string holder = kind.holder;
+    throw InputError("expected a results directory no other " + holder + " is writing, got '" +
+                     directory.string() + "' locked by a running limber " + holder + " (" +
+                     kind.file_name + "): " + kind.advice);
   }
 }
 

@@ -8,7 +8,12 @@ namespace limber::results {
 
 namespace {
 
-// Checks that `path` is an HDF5 file (a truncated file is not) and opens it read-only.
+// Checks that `path` is an HDF5 file (a truncated file is not) and opens it read-only, without
+// HDF5's file lock: the writer of a run still going holds an exclusive lock on results.h5 until
+// it closes the file, which made every reader fail to open it ("unable to lock file"). Unlocked,
+// a reader sees the file as of the writer's last flush (results_writer.h writes and flushes in
+// blocks) and cannot disturb the writer: it opens read-only and takes no lock the writer waits
+// for (docs/results-format.md, "Reading a file still being written").
 hid_t open_checked(const std::filesystem::path& path, const std::string& kind,
                    const std::string& missing_hint) {
   const std::string name = path.string();
@@ -20,7 +25,9 @@ hid_t open_checked(const std::filesystem::path& path, const std::string& kind,
     throw InputError("expected an HDF5 " + kind + " '" + name +
                      "', got a file HDF5 cannot open (truncated or not HDF5)");
   }
-  const hid_t file = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
+  H5Pset_file_locking(access.get(), /*use_file_locking=*/false, /*ignore_when_disabled=*/true);
+  const hid_t file = H5Fopen(name.c_str(), H5F_ACC_RDONLY, access.get());
   if (file < 0) {
     throw InputError("expected a readable " + kind + " '" + name + "', got an HDF5 open failure");
   }

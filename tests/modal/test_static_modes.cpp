@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "modal/dof_selection.h"
@@ -132,6 +133,49 @@ TEST(ConstraintModes, SingleHeldDofOfFreeRodGivesRigidTranslation) {
   const Eigen::VectorXd phi = modes.shapes.col(0);
   // Exactly psi's x translation up to solver round-off.
   EXPECT_LT((phi - psi.col(0)).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// A free rod of 4 elements from the origin along `axis` (unit), section local y along R e_y
+// where R turns e_x onto `axis`: the rod along x turned by R.
+FeModel turned_rod(const Eigen::Matrix3d& rotation) {
+  fe::FeModelBuilder builder;
+  fe::StraightBeamMesh mesh;
+  mesh.end = rotation * Eigen::Vector3d::UnitX();
+  mesh.elements = 4;
+  mesh.orientation = rotation * Eigen::Vector3d::UnitY();
+  mesh.property = builder.add_beam_property(testing::rod_property(true));
+  fe::add_straight_beam(builder, mesh);
+  return std::move(builder).build();
+}
+
+TEST(ConstraintModes, FreeRodHeldAtBothEndsAlongASkewAxisIsTheTurnedRod) {
+  // Translations held at both ends leave the rotation about the rod's axis free; a rotational
+  // DOF must stop it. Along a skew axis that rotation moves the nodes by round-off (~1e-17), and
+  // a translation with that coefficient was once taken as the support: the stiffness left was
+  // singular ("not positive definite", found by the mechanism fuzz, docs/fuzzing.md). The
+  // modes' stiffness Phi^T K Phi over the 6 held translations is that of the rod along x turned
+  // by R (blockdiag(R, R) K_c blockdiag(R, R)^T): the support chosen differs, the modes (free of
+  // rigid motion) do not. Tolerance kStaticTolerance: both are static solutions of the rod.
+  const Eigen::Matrix3d turn =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(),
+                                         Eigen::Vector3d(-0.2423, -0.0131, 0.9702))
+          .toRotationMatrix();
+  const auto held_stiffness = [](const FeModel& model) {
+    const fe::StructuralMatrices mats = fe::assemble(model);
+    const std::vector<int> chosen = {dof(0, Dof::kUx), dof(0, Dof::kUy), dof(0, Dof::kUz),
+                                     dof(4, Dof::kUx), dof(4, Dof::kUy), dof(4, Dof::kUz)};
+    const StaticModes modes = compute_constraint_modes(mats.stiffness, mats.mass, rigid_body_modes(model),
+                                                       fe::free_dofs(model), chosen);
+    EXPECT_EQ(modes.status, ModalStatus::kOk) << modes.message;
+    return Eigen::MatrixXd(modes.shapes.transpose() * mats.stiffness * modes.shapes);
+  };
+  const Eigen::MatrixXd along_x = held_stiffness(turned_rod(Eigen::Matrix3d::Identity()));
+  const Eigen::MatrixXd skew = held_stiffness(turned_rod(turn));
+  ASSERT_EQ(skew.rows(), 6);
+  Eigen::MatrixXd both_ends = Eigen::MatrixXd::Zero(6, 6);
+  both_ends.topLeftCorner(3, 3) = turn;
+  both_ends.bottomRightCorner(3, 3) = turn;
+  EXPECT_LT(relative_difference(skew, both_ends * along_x * both_ends.transpose()), kStaticTolerance);
 }
 
 TEST(AttachmentModes, RestrainedCantileverGivesFlexibilityColumns) {
