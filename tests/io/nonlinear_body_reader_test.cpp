@@ -114,7 +114,7 @@ TEST(NonlinearBodyReader, WhatItCannotHaveFailsAtItsKey) {
   text = kCase + "forces:\n  spring: {type: tsda, marker_i: end, marker_j: face, stiffness: 100}\n";
   EXPECT_TRUE(fails_at(text, location_of(text, "{type: tsda"), "TSDA \"spring\": expected its markers on rigid or modal bodies"));
   text = kCase + "acceleration_probes:\n  tip: {body: arm, node: tip}\n";
-  EXPECT_TRUE(fails_at(text, location_of(text, "{body: arm, node", 1), "got nonlinear body \"arm\""));
+  EXPECT_TRUE(fails_at(text, location_of(text, "arm, node", 1), "got nonlinear body \"arm\""));
   // Holding it during assembly.
   text = kCase + "assembly:\n  held: [{body: arm, component: x}]\n";
   EXPECT_TRUE(fails_at(text, location_of(text, "arm, component"), "got nonlinear body 'arm'"));
