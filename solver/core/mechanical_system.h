@@ -84,6 +84,14 @@ class MechanicalSystem {
     return false;
   }
 
+  // The coupled stiffness K ≈ −∂Q/∂q (nv x nv, in the velocity increments) of internal forces
+  // the diagonal above cannot carry: the co-rotational beams of a nonlinear body, whose nodes
+  // pull on their neighbours (multibody/nonlinear_body.h). The structured iteration matrix adds
+  // it to the diagonal k. Returns false (K untouched) when the system has none.
+  virtual bool coupled_stiffness(double /*t*/, const Eigen::VectorXd& /*q*/, Eigen::MatrixXd& /*K*/) const {
+    return false;
+  }
+
   // Which rows of a redundant constraint set are independent depends on the configuration:
   // a loop whose dependency coefficients turn with a crank makes a fixed choice of rows
   // singular twice a turn. A system that can, picks new independent rows (same nc) when its

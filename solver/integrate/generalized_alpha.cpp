@@ -549,6 +549,10 @@ bool GeneralizedAlpha::build_structured_jacobian(double h) {
   // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c; ∂g/∂ξ = G.
   J_.topLeftCorner(nv_, nv_) = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
   J_.topLeftCorner(nv_, nv_).diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
+  // Internal forces that couple velocities (a nonlinear body's beams), at the last state evaluated.
+  if (system_->coupled_stiffness(next_.t, next_.q, coupled_)) {
+    J_.topLeftCorner(nv_, nv_) += beta * h * h * coupled_;
+  }
   J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
   J_.bottomLeftCorner(nc_, nv_) = eval_.G;
   J_.bottomRightCorner(nc_, nc_).setZero();

@@ -20,9 +20,11 @@
 // such small steps are needed.)
 // Predictor: v̇ and λ extrapolated linearly from the last step. Convergence: see
 // IntegratorOptions::newton_tolerance; increments stalled at round-off level also end it.
-// Iteration matrix: first the structured one, [(1 − α_m)/(1 − α_f) M + βh² k + γh c, Gᵀ; G, 0]
+// Iteration matrix: first the structured one, [(1 − α_m)/(1 − α_f) M + βh² (k + K) + γh c, Gᵀ; G, 0]
 // with M, G of the last evaluation and the system's diagonal stiffness k and damping c
-// (MechanicalSystem::diagonal_stiffness_damping: the modes' ω² and c), which leaves out the
+// (MechanicalSystem::diagonal_stiffness_damping: the modes' ω² and c), plus its coupled
+// stiffness K where it has one (MechanicalSystem::coupled_stiffness: a nonlinear body's
+// beams, at the last state evaluated), which leaves out the
 // force derivatives of quadratic-velocity forces, force elements and the constraint forces'
 // change with q and costs no residual. When Newton converges slowly with it even fresh
 // (contraction rate > 0.1), a forward difference of the scaled residual in ξ (exact tangent
@@ -189,6 +191,7 @@ class GeneralizedAlpha final : public Integrator {
   bool has_structure_ = false;        // the system offers k and c (diagonal_stiffness_damping)
   int structured_pause_ = 0;  // accepted steps left on difference matrices after a slow structured one
   Eigen::VectorXd stiffness_, damping_;  // k and c of the system, nv each
+  Eigen::MatrixXd coupled_;              // the system's coupled stiffness (when it has one)
   Eigen::MatrixXd J_;
   SystemEvaluation eval_;  // the last evaluation of the system (M, Q, g, G at one state)
   Eigen::VectorXd r_perturbed_;

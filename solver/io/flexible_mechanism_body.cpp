@@ -60,6 +60,35 @@ void read_damping(const YamlValue& value, FlexibleBodyEntry& body) {
       multibody::ModalDamping::rayleigh(items[0].as_non_negative(), items[1].as_non_negative());
 }
 
+// `formulation: modal | nonlinear`. A nonlinear body is beams only, and what its path does not
+// treat yet fails at its key rather than being ignored (docs/nonlinear-beams.md, "Limits").
+void read_formulation(const YamlValue& value, const YamlValue& entry, const FlexibleBodyCase& component,
+                      FlexibleBodyEntry& body) {
+  body.nonlinear = value.as_choice({"modal", "nonlinear"}) == "nonlinear";
+  body.formulation_where = value.where();
+  if (!body.nonlinear) return;
+  const fe::FeModel& model = component.model;
+  if (!model.shells.empty() || !model.triangles.empty()) {
+    value.fail(fmt::format("expected a flexible body of beams only for 'formulation: nonlinear', got "
+                           "'{}' with {} shell element(s) (nonlinear shells are not available; use "
+                           "formulation: modal)",
+                           component.name, model.shells.size() + model.triangles.size()));
+  }
+  for (const char* key : {"modal_coordinates", "modal_velocities", "geometric_stiffening", "stress"}) {
+    if (const auto found = entry.find(key)) {
+      found->fail(fmt::format("'{}' is not available with 'formulation: nonlinear' (it has no modes, and "
+                              "no {} yet)", key, std::string(key) == "stress" ? "stress output" : "such input"));
+    }
+  }
+  // Undamped only, for now: Rayleigh damping of the beams is not wired into the mechanism.
+  if (const auto damping = entry.find("damping")) {
+    if (!damping->is_scalar() || damping->as_non_negative() != 0.0) {
+      damping->fail("expected 'damping: 0' with 'formulation: nonlinear' (the nonlinear body is "
+                    "undamped for now), got another value");
+    }
+  }
+}
+
 // `stress: {elements: all | [numbers from 1], every: N}`; every beam section involved must
 // know its extreme fibres (rectangles and circles do; general sections need fibre_y, fibre_z).
 multibody::StressOutput read_stress_output(const YamlValue& stress, const FlexibleBodyCase& component) {
@@ -104,7 +133,7 @@ FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const Ya
                                                const std::vector<FlexibleBodyCase>& components) {
   entry.allow_only({"flexible", "position", "orientation", "velocity", "angular_velocity",
                     "damping", "modal_coordinates", "modal_velocities", "deflection", "stress",
-                    "geometric_stiffening"});
+                    "geometric_stiffening", "formulation"});
   const FlexibleBodyCase& component = find_component(entry.at("flexible"), components);
   FlexibleBodyEntry body;
   body.name = name;
@@ -144,6 +173,7 @@ FlexibleBodyEntry read_flexible_mechanism_body(const std::string& name, const Ya
   }
   // Output: recovered stresses.
   if (const auto stress = entry.find("stress")) body.stress = read_stress_output(*stress, component);
+  if (const auto formulation = entry.find("formulation")) read_formulation(*formulation, entry, component, body);
   return body;
 }
 

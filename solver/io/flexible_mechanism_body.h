@@ -15,6 +15,11 @@
 //                                  # relative to the chord between two nodes (body axes)
 //     geometric_stiffening: inertia_only   # false | inertia_only (default) | true
 //                                  # (docs/geometric-stiffening.md)
+//     formulation: modal           # modal (default) | nonlinear: the FE beams unreduced and
+//                                  # geometrically nonlinear (docs/nonlinear-beams.md); beams
+//                                  # only, undamped (damping absent or 0), galpha only, and none
+//                                  # of modal_coordinates, modal_velocities,
+//                                  # geometric_stiffening, stress (InputError at the key)
 //     stress: {elements: all, every: 1}   # results: recovered stresses (docs/stress-recovery.md):
 //                                  # the mesh's peak at every sample, the history of `elements`
 //                                  # (all, or a list of element numbers from 1: beams, then

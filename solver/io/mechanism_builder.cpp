@@ -14,6 +14,8 @@
 #include "modal/geometric_stiffness.h"
 #include "modal/modal_stress.h"
 #include "multibody/model_builder.h"
+#include "nonlinear_beam/beam_inertia.h"
+#include "nonlinear_beam/beam_structure.h"
 
 namespace limber::io {
 
@@ -153,6 +155,33 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   builder.add_flexible_body(spec, entry.where);
 }
 
+// A body with `formulation: nonlinear`: its FE beams co-rotational, one rigid body per node
+// (multibody/model_builder.h). What the co-rotational structure cannot treat (springs, rigid
+// elements, general masses) and held FE DOFs fail at the formulation key.
+void add_nonlinear_body(const FlexibleBodyEntry& entry, const std::vector<FlexibleBodyCase>& components,
+                        ModelBuilder& builder) {
+  const FlexibleBodyCase& component = component_named(components, entry.component);
+  multibody::NonlinearBodySpec spec;
+  spec.name = entry.name;
+  try {
+    if (!component.model.fixed_dofs.empty()) {
+      throw InputError(fmt::format("expected no fixed DOFs in '{}' ({} given): a nonlinear body is held by "
+                                   "its joints only", component.name, component.model.fixed_dofs.size()));
+    }
+    spec.structure =
+        std::make_shared<const nonlinear_beam::BeamStructure>(nonlinear_beam::build_beam_structure(component.model));
+    spec.inertia = nonlinear_beam::lumped_inertia(component.model);
+  } catch (const InputError& e) {
+    throw InputError("formulation: nonlinear: " + e.message(), entry.formulation_where);
+  }
+  spec.initial_pose = entry.initial_pose;
+  spec.initial_velocity_W = entry.initial_velocity_W;
+  spec.initial_angular_velocity_B = entry.initial_angular_velocity_B;
+  spec.mesh = drawing_mesh(component.model);
+  spec.deflection_probe = entry.deflection_probe;
+  builder.add_nonlinear_body(spec, entry.where);
+}
+
 void add_marker(const MarkerEntry& marker, ModelBuilder& builder) {
   switch (marker.frame) {
     case MarkerEntry::Frame::kBody:
@@ -186,8 +215,10 @@ void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBod
   for (const BodyEntry& body : mechanism.bodies) {
     if (const auto* rigid = std::get_if<RigidBodyEntry>(&body)) {
       builder.add_rigid_body(rigid->spec, rigid->where);
+    } else if (const auto& flexible = std::get<FlexibleBodyEntry>(body); flexible.nonlinear) {
+      add_nonlinear_body(flexible, components, builder);
     } else {
-      add_flexible_body(std::get<FlexibleBodyEntry>(body), components, mechanism, reduction, builder);
+      add_flexible_body(flexible, components, mechanism, reduction, builder);
     }
   }
   for (const MarkerEntry& marker : mechanism.markers) add_marker(marker, builder);
@@ -205,6 +236,11 @@ void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBod
   }
 }
 
+const std::string& body_name(const BodyEntry& body) {
+  if (const auto* rigid = std::get_if<RigidBodyEntry>(&body)) return rigid->spec.name;
+  return std::get<FlexibleBodyEntry>(body).name;
+}
+
 }  // namespace
 
 Mechanism build_mechanism(const Case& input, const CaseReduction& reduction) {
@@ -212,7 +248,12 @@ Mechanism build_mechanism(const Case& input, const CaseReduction& reduction) {
   const MechanismCase& mechanism = *input.mechanism;
   ModelBuilder builder;
   add_mechanism(mechanism, input.flexible_bodies, &reduction, builder);
-  return {builder.build(), mechanism.flexible_components, mechanism.assembly, mechanism.run};
+  Mechanism built{builder.build(), mechanism.flexible_components, mechanism.assembly, mechanism.run};
+  // Held bodies by model index: a nonlinear body's node bodies shift the bodies after it.
+  for (multibody::HeldCoordinate& held : built.assembly.held) {
+    held.body = built.model.find_body(body_name(mechanism.bodies[static_cast<std::size_t>(held.body - 1)]));
+  }
+  return built;
 }
 
 void check_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBodyCase>& components) {

@@ -294,6 +294,11 @@ multibody::AssemblyOptions read_assembly(const YamlValue& entry, const std::vect
         body.fail("expected a moving body for 'body', got '" + body.as_string() + "'" +
                   (b == 0 ? " (ground does not move)" : " (no such body under 'bodies')"));
       }
+      if (const auto* flexible = std::get_if<FlexibleBodyEntry>(&bodies[static_cast<std::size_t>(b - 1)]);
+          flexible && flexible->nonlinear) {
+        body.fail("expected a rigid or modal body for 'body', got nonlinear body '" + body.as_string() +
+                  "' (holding a nonlinear body during assembly is not available yet)");
+      }
       const std::string component = item.at("component").as_choice(kComponents);
       int k = 0;
       for (std::string_view name : kComponents) {
@@ -330,7 +335,8 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
     if (entry.is_map() && entry.find("flexible")) {
       FlexibleBodyEntry body = read_flexible_mechanism_body(name, entry, components);
       flexible[name] = place(body, components);
-      result.flexible_components[name] = body.component;
+      // Modal bodies only: a nonlinear body has no modes to compute.
+      if (!body.nonlinear) result.flexible_components[name] = body.component;
       result.bodies.emplace_back(std::move(body));
     } else {
       result.bodies.emplace_back(read_body(name, entry));

@@ -86,6 +86,10 @@ struct FlexibleBodyEntry {
   // geometric_stiffening: false | inertia_only | true (docs/geometric-stiffening.md)
   multibody::GeometricStiffening stiffening = multibody::GeometricStiffening::kInertia;
   std::optional<multibody::StressOutput> stress;                // element numbers 0-based
+  // formulation: modal (default) | nonlinear: the FE beams unreduced, co-rotational
+  // (docs/nonlinear-beams.md); where the key is, for the errors of building that body.
+  bool nonlinear = false;
+  SourceLocation formulation_where;
 };
 
 using BodyEntry = std::variant<RigidBodyEntry, FlexibleBodyEntry>;
@@ -135,8 +139,8 @@ struct MechanismCase {
   std::vector<ForceEntry> forces;
   std::vector<AccelerationProbeEntry> acceleration_probes;
   LinearizeCase linearize;  // the state-space inputs and outputs (none when the section is absent)
-  // Each flexible body -> the `flexible_bodies` entry it uses (several bodies may share one
-  // entry, and with it one mode set).
+  // Each modal flexible body -> the `flexible_bodies` entry it uses (several bodies may share
+  // one entry, and with it one mode set); nonlinear bodies are not listed (no modes).
   std::map<std::string, std::string> flexible_components;
   multibody::AssemblyOptions assembly;  // held bodies as model body indices
   RunSettings run;

@@ -8,6 +8,7 @@
 #include "core/minimum_norm.h"
 #include "multibody/body.h"
 #include "multibody/constraints.h"
+#include "multibody/nonlinear_body.h"
 #include "multibody/dynamics.h"
 
 namespace limber::multibody {
@@ -123,10 +124,15 @@ double assemble_velocities(const Model& model, State& state, Workspace& ws,
   const auto residual = [&](const Eigen::VectorXd& v) {
     return model.num_equations() > 0 ? (ws.G * v + ws.g_t).cwiseAbs().maxCoeff() : 0.0;
   };
-  // Minimum-norm correction of the velocity residual G v + g_t, modal rates kept.
+  // Minimum-norm correction of the velocity residual G v + g_t, modal rates kept; a nonlinear
+  // body's nodes move as one rigid body in it, as a modal body's frame does (nonlinear_body.h).
   const auto project = [&](bool modes_free) {
     const Eigen::VectorXd mask = free_mask(model, options, modes_free);
-    return Eigen::VectorXd(state.v + minimum_norm_step(ws.G, mask, -(ws.G * state.v + ws.g_t)));
+    const Eigen::VectorXd rhs = -(ws.G * state.v + ws.g_t);
+    if (model.nonlinear_bodies.empty()) return Eigen::VectorXd(state.v + minimum_norm_step(ws.G, mask, rhs));
+    const Eigen::MatrixXd B = mask.asDiagonal() * rigid_nonlinear_velocity_basis(model, state.q);
+    const Eigen::VectorXd x = minimum_norm_step(ws.G * B, Eigen::VectorXd::Ones(B.cols()), rhs);
+    return Eigen::VectorXd(state.v + B * x);
   };
   Eigen::VectorXd v = project(false);
   // Rates the frames alone cannot meet (a driver deforming a body): let the modes move.

@@ -2,6 +2,7 @@
 
 #include "multibody/body.h"
 #include "multibody/constraints.h"
+#include "multibody/nonlinear_body.h"
 #include "multibody/flexible_body.h"
 #include "multibody/flexible_dynamics.h"
 #include "multibody/geometric_stiffening.h"
@@ -131,6 +132,8 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
       }
     }
   }
+  // The co-rotational beams of nonlinear bodies between their node bodies (conservative).
+  add_nonlinear_body_forces(model, state.q, ws.Q);
   // Force elements through marker kinematics.
   if (!model.forces.empty()) {
     update_marker_kinematics(model, state, Stage::kVelocity, ws);
@@ -151,6 +154,7 @@ EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
     e.gravity += body_gravity_potential(model, b, state.q);
     if (model.bodies[b].kind == BodyKind::kFlexible) e.strain += flexible_strain_energy(model.bodies[b], state.q);
   }
+  e.strain += nonlinear_body_strain_energy(model, state.q);
   update_marker_kinematics(model, state, Stage::kPosition, ws);
   for (size_t k = 0; k < model.forces.size(); ++k) {
     const ForceElement& force = model.forces[k];

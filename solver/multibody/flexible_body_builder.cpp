@@ -220,6 +220,19 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
 
 int ModelBuilder::add_node_marker(const std::string& name, const std::string& body, int node,
                                   const Eigen::Matrix3d& R_BM, const SourceLocation& where) {
+  if (const int k = model_.find_nonlinear_body(body); k >= 0) {
+    const NonlinearBody& nonlinear = model_.nonlinear_bodies[static_cast<std::size_t>(k)];
+    const int nodes = static_cast<int>(nonlinear.node_bodies.size());
+    if (node < 0 || node >= nodes) {
+      throw InputError(fmt::format("node marker \"{}\": expected a node index in [0, {}), got {}", name,
+                                   nodes, node), where);
+    }
+    // At the node body's origin, axes as given in the component axes (the node frame at t = 0).
+    const std::string& node_body = model_.bodies[static_cast<std::size_t>(nonlinear.node_bodies[node])].name;
+    const int b = check_new_marker(name, node_body, R_BM, where);
+    model_.markers.push_back(Marker{name, b, Eigen::Vector3d::Zero(), R_BM, -1});
+    return static_cast<int>(model_.markers.size()) - 1;
+  }
   const int b = check_new_marker(name, body, R_BM, where);
   const Body& owner = model_.bodies[b];
   if (owner.kind != BodyKind::kFlexible) {

@@ -47,6 +47,7 @@ int find_named(const std::vector<T>& items, const std::string& name) {
 }  // namespace
 
 int Model::find_body(const std::string& name) const { return find_named(bodies, name); }
+int Model::find_nonlinear_body(const std::string& name) const { return find_named(nonlinear_bodies, name); }
 int Model::find_joint(const std::string& name) const { return find_named(joints, name); }
 int Model::find_driver(const std::string& name) const { return find_named(drivers, name); }
 int Model::find_equation(const std::string& name) const { return find_named(equations, name); }

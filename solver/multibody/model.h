@@ -14,6 +14,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -22,6 +23,10 @@
 
 #include "multibody/flexible_body.h"
 #include "multibody/time_function.h"
+
+namespace limber::nonlinear_beam {
+struct BeamStructure;
+}
 
 namespace limber::multibody {
 
@@ -180,6 +185,21 @@ struct AccelerationProbe {
   int node = -1;                                  // flexible bodies: node index; else −1
 };
 
+// A flexible body with `formulation: nonlinear` (docs/nonlinear-beams.md): no modes; each FE
+// node is a rigid body of the model (node_bodies, with the node's lumped mass and rotary
+// inertia, its frame along the FE component axes at t = 0), and the co-rotational beams of
+// `structure` (FE component axes) are internal forces between them (nonlinear_body.h).
+// Joints, markers and probes on the body sit on its node bodies.
+struct NonlinearBody {
+  std::string name;
+  std::shared_ptr<const nonlinear_beam::BeamStructure> structure;
+  std::vector<int> node_bodies;                       // model body of each FE node
+  Eigen::Matrix3d R_WC = Eigen::Matrix3d::Identity();  // FE component axes in ground, t = 0
+  Eigen::Vector3d p_WC = Eigen::Vector3d::Zero();      // FE component origin in ground, t = 0 [m]
+  std::optional<DeflectionProbe> deflection_probe;     // output only; node indices
+  FlexibleMesh mesh;                                   // for drawing (results), as a modal body's
+};
+
 struct Model {
   std::vector<Body> bodies;  // bodies[0] is ground
   std::vector<Marker> markers;
@@ -188,12 +208,15 @@ struct Model {
   std::vector<ForceElement> forces;
   std::vector<ConstraintEquation> equations;  // full set, joints then drivers
   std::vector<AccelerationProbe> acceleration_probes;  // output only
+  std::vector<NonlinearBody> nonlinear_bodies;
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // [m/s²]
   int nq = 0, nv = 0;
 
   int num_equations() const { return static_cast<int>(equations.size()); }
   // Index by name, or -1.
   int find_body(const std::string& name) const;
+  // Index into nonlinear_bodies by name, or -1.
+  int find_nonlinear_body(const std::string& name) const;
   int find_joint(const std::string& name) const;
   int find_driver(const std::string& name) const;
   int find_equation(const std::string& name) const;

@@ -115,7 +115,7 @@ int ModelBuilder::add_rigid_body(const RigidBodySpec& spec, const SourceLocation
 
 void ModelBuilder::check_new_body(const std::string& name, const Pose& pose, const SourceLocation& where) const {
   check_name_text("body", name, where);
-  if (model_.find_body(name) >= 0) {
+  if (model_.find_body(name) >= 0 || model_.find_nonlinear_body(name) >= 0) {
     throw InputError(fmt::format("body \"{}\": expected a unique name, got a duplicate", name), where);
   }
   if (!(pose.orientation.norm() > 0.0)) {
@@ -261,6 +261,7 @@ int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
 
 void ModelBuilder::add_rsda(const RsdaSpec& spec, const SourceLocation& where) {
   const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
+  for (const int m : {mi, mj}) refuse_nonlinear_marker("RSDA", spec.name, m, where);
   if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0)) {
     throw InputError(fmt::format("RSDA \"{}\": expected stiffness and damping ≥ 0, got k = {}, c = {}",
                                  spec.name, spec.stiffness, spec.damping), where);
@@ -285,6 +286,7 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
                                  spec.name, spec.joint), where);
   }
   const Joint& joint = model_.joints[j];
+  for (const int m : {joint.marker_i, joint.marker_j}) refuse_nonlinear_marker(kind, spec.name, m, where);
   if (joint.type != JointType::kRevolute) {
     throw InputError(fmt::format("{} \"{}\": expected a revolute joint, got {} joint \"{}\"", kind,
                                  spec.name, to_string(joint.type), spec.joint), where);
@@ -326,10 +328,16 @@ void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, con
   if (!spec.marker.empty()) {
     // At a marker: its body, point and node.
     const Marker& marker = model_.markers[static_cast<std::size_t>(marker_index(spec.marker, where))];
+    refuse_nonlinear_marker("acceleration probe", spec.name, marker_index(spec.marker, where), where);
     probe.body = marker.body;
     probe.p_B = marker.p_BM;
     probe.node = marker.node;
   } else {
+    if (model_.find_nonlinear_body(spec.body) >= 0) {
+      throw InputError(fmt::format("acceleration probe \"{}\": expected a rigid or modal body, got nonlinear body "
+                                   "\"{}\" (acceleration probes on a nonlinear body are not available yet; "
+                                   "docs/nonlinear-beams.md, \"Limits\")", spec.name, spec.body), where);
+    }
     probe.body = model_.find_body(spec.body);
     if (probe.body < 0) {
       throw InputError(fmt::format("acceleration probe \"{}\": expected an existing body, got \"{}\"", spec.name,
@@ -357,6 +365,7 @@ void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, con
 
 void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
   const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
+  for (const int m : {mi, mj}) refuse_nonlinear_marker("TSDA", spec.name, m, where);
   if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0) || !(spec.free_length >= 0.0)) {
     throw InputError(fmt::format("TSDA \"{}\": expected stiffness, damping and free length ≥ 0, "
                                  "got k = {}, c = {}, l0 = {}", spec.name, spec.stiffness, spec.damping,
@@ -369,6 +378,7 @@ void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
 
 void ModelBuilder::add_point_load(const PointLoadSpec& spec, const SourceLocation& where) {
   const int m = marker_index(spec.marker, where);
+  refuse_nonlinear_marker("point load", spec.name, m, where);
   claim_element_name("point load", spec.name, where);
   model_.forces.push_back(PointLoad{spec.name, m, spec.force, spec.torque, spec.scale, spec.frame});
 }

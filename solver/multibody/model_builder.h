@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "multibody/model.h"
+#include "nonlinear_beam/beam_inertia.h"
 
 namespace limber::multibody {
 
@@ -52,6 +53,21 @@ struct FlexibleBodySpec {
   // the mesh (modal::modal_stress of the FE model and `modes`), needed when stress is set.
   std::optional<StressOutput> stress;
   modal::ModalStress modal_stress;
+};
+
+// A flexible body with `formulation: nonlinear` (model.h, NonlinearBody): its co-rotational
+// beams, the lumped inertia of its nodes (nonlinear_beam/beam_inertia.h), and the pose and
+// velocity of its FE component frame at t = 0 (the node bodies start there, moving rigidly
+// with it).
+struct NonlinearBodySpec {
+  std::string name;
+  std::shared_ptr<const nonlinear_beam::BeamStructure> structure;
+  nonlinear_beam::NodalInertia inertia;
+  Pose initial_pose;  // X_WC; quaternion normalised here
+  Eigen::Vector3d initial_velocity_W = Eigen::Vector3d::Zero();          // of the frame origin [m/s]
+  Eigen::Vector3d initial_angular_velocity_B = Eigen::Vector3d::Zero();  // component axes [rad/s]
+  FlexibleMesh mesh;                                // for drawing; node_ids name the node bodies
+  std::optional<DeflectionProbe> deflection_probe;  // output only; node indices
 };
 
 struct RsdaSpec {
@@ -120,6 +136,13 @@ class ModelBuilder {
   // markers, joints and forces on it can be checked before the modal reduction (the case
   // reader's check). A builder holding such a body cannot build() (it aborts).
   int add_flexible_body_outline(const FlexibleBodySpec& spec, const SourceLocation& where = {});
+  // One rigid body per FE node, "<name>.node<id>" (mesh.node_ids, else 1..n), with the node's
+  // mass and rotary inertia about the node (com at the node), its frame along the component
+  // axes; returns the index into Model::nonlinear_bodies. Throws InputError as add_rigid_body
+  // for each node body, for a name taken, and for a deflection probe's node out of range.
+  // Markers on it: add_node_marker. Force elements and acceleration probes on its markers are
+  // refused (InputError: not available yet).
+  int add_nonlinear_body(const NonlinearBodySpec& spec, const SourceLocation& where = {});
   // Marker given in the body frame; R_BM must be a rotation (orthonormal, det +1). Not on
   // flexible bodies (their markers sit on nodes: add_node_marker).
   int add_marker(const std::string& name, const std::string& body, const Eigen::Vector3d& p_BM,
@@ -131,7 +154,8 @@ class ModelBuilder {
                     const SourceLocation& where = {});
   // Marker on FE node `node` (0-based index into the body's node_positions_B) of flexible
   // body `body`, axes R_BM in body axes of the undeformed body; it follows the node's
-  // elastic translation and rotation.
+  // elastic translation and rotation. On a nonlinear body: a marker at the origin of the
+  // node's body (whose axes are the component axes at t = 0).
   int add_node_marker(const std::string& name, const std::string& body, int node,
                       const Eigen::Matrix3d& R_BM = Eigen::Matrix3d::Identity(),
                       const SourceLocation& where = {});
@@ -170,6 +194,9 @@ class ModelBuilder {
   int check_new_marker(const std::string& name, const std::string& body, const Eigen::Matrix3d& R_BM,
                        const SourceLocation& where) const;
   int append_body(Body body);
+  // Throws InputError naming `kind` and `name` when `marker` sits on a nonlinear body's node.
+  void refuse_nonlinear_marker(const char* kind, const std::string& name, int marker,
+                               const SourceLocation& where) const;
   // Checks the text of a joint/driver/force name (core/names.h; `kind` for messages, e.g.
   // "joint") and that no element has it yet.
   void claim_element_name(const char* kind, const std::string& name, const SourceLocation& where);

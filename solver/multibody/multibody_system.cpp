@@ -7,6 +7,7 @@
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
+#include "multibody/nonlinear_body.h"
 
 namespace limber::multibody {
 
@@ -114,6 +115,12 @@ bool MultibodySystem::diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::Vect
     c.segment(b.v_offset + 6, nm) = b.flexible->damping;
   }
   return true;
+}
+
+bool MultibodySystem::coupled_stiffness(double /*t*/, const Eigen::VectorXd& q, Eigen::MatrixXd& K) const {
+  if (model_.nonlinear_bodies.empty()) return false;
+  K.setZero(model_.nv, model_.nv);
+  return add_nonlinear_body_stiffness(model_, q, K);
 }
 
 void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,

@@ -48,6 +48,8 @@ class MultibodySystem final : public MechanicalSystem {
   // The modal stiffness ω_i² and damping c_i of every flexible body at its modal velocities,
   // zero elsewhere.
   bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
+  // The co-rotational beams of the nonlinear bodies (nonlinear_body.h); false without them.
+  bool coupled_stiffness(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& K) const override;
   // One pass: body terms, then the constraint set once (marker kinematics once).
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool with_g_q,
                 SystemEvaluation& out) const override;

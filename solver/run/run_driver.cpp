@@ -43,6 +43,22 @@ void check_settings(const io::RunSettings& settings) {
   }
 }
 
+void check_nonlinear_bodies(const multibody::Model& model, const io::RunSettings& settings) {
+  if (model.nonlinear_bodies.empty()) return;
+  const std::string& name = model.nonlinear_bodies.front().name;
+  // IDA's Newton matrix has no coupled stiffness (MechanicalSystem::coupled_stiffness), nor
+  // the statics solver: both would take differences over every node.
+  if (settings.integrator.method != integrate::Method::kGeneralizedAlpha) {
+    throw InputError(fmt::format("nonlinear body \"{}\": expected integrator galpha (a nonlinear body runs "
+                                 "with the generalized-α only, for now), got {}",
+                                 name, integrate::to_string(settings.integrator.method)));
+  }
+  if (settings.start == io::StartKind::kStatics) {
+    throw InputError(fmt::format("nonlinear body \"{}\": expected run start: assembly (a static start of a "
+                                 "nonlinear body is not available yet), got statics", name));
+  }
+}
+
 results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
                                           const Eigen::VectorXd& time,
                                           const std::vector<results::ProbeHistory>& histories,
@@ -60,6 +76,7 @@ RunSummary run_mechanism(const multibody::Model& model,
                          const io::RunSettings& settings, const RunHooks& hooks) {
   const auto wall_start = std::chrono::steady_clock::now();
   check_settings(settings);
+  check_nonlinear_bodies(model, settings);
   // The spectra's band, before anything is written.
   const bool probes = !model.acceleration_probes.empty();
   if (probes) results::shock_frequency_grid(settings.shock_spectrum, settings.sample_interval);

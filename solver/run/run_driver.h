@@ -108,6 +108,10 @@ inline constexpr double kMinimumAtol = 1e-14;
 // interval not positive, peak window negative, IDA tolerances below kMinimumRtol / kMinimumAtol).
 void check_settings(const io::RunSettings& settings);
 
+// Throws InputError when `model` has a nonlinear body and the settings ask for what its path
+// does not offer yet: IDA, or a start from static equilibrium.
+void check_nonlinear_bodies(const multibody::Model& model, const io::RunSettings& settings);
+
 // The spectra of the probes' accelerations `histories` (one row per sample at `time`) over the
 // whole run and the windows from t = 0 and from each latch that locked (results/shock_spectra.h).
 results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,

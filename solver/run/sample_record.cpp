@@ -13,6 +13,7 @@
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"
 #include "multibody/hinge_limit.h"
+#include "multibody/nonlinear_body.h"
 #include "multibody/reactions.h"
 #include "multibody/rotation.h"
 
@@ -58,25 +59,33 @@ results::BeamSections beam_sections(const multibody::FlexibleMesh& mesh) {
   return out;
 }
 
+// The mesh of a flexible body's declaration: undeformed nodes (3 x nn, body frame), elements,
+// sections (docs/results-format.md).
+results::FlexibleBodySpec mesh_spec(const std::string& name, const Eigen::MatrixXd& node_positions,
+                                    const multibody::FlexibleMesh& mesh) {
+  results::FlexibleBodySpec spec;
+  spec.name = name;
+  spec.nodes = node_positions.transpose();
+  spec.node_ids = mesh.node_ids;
+  spec.lines.resize(static_cast<Eigen::Index>(mesh.lines.size()), 2);
+  for (std::size_t e = 0; e < mesh.lines.size(); ++e) {
+    for (int k = 0; k < 2; ++k) spec.lines(static_cast<Eigen::Index>(e), k) = mesh.lines[e][k];
+  }
+  spec.quads.resize(static_cast<Eigen::Index>(mesh.quads.size()), 4);
+  for (std::size_t e = 0; e < mesh.quads.size(); ++e) {
+    for (int k = 0; k < 4; ++k) spec.quads(static_cast<Eigen::Index>(e), k) = mesh.quads[e][k];
+  }
+  spec.beam_radius = mesh.beam_radius;
+  spec.beam_sections = beam_sections(mesh);
+  return spec;
+}
+
 // Mesh, translational mode shapes and frequencies of a flexible body (docs/results-format.md).
 results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
                                              std::vector<results::ShapeSpec> shapes) {
   const multibody::FlexibleBody& flexible = *body.flexible;
   const int nn = flexible.node_count(), nm = flexible.mode_count();
-  results::FlexibleBodySpec spec;
-  spec.name = body.name;
-  spec.nodes = flexible.node_positions.transpose();
-  spec.node_ids = flexible.mesh.node_ids;
-  spec.lines.resize(static_cast<Eigen::Index>(flexible.mesh.lines.size()), 2);
-  for (std::size_t e = 0; e < flexible.mesh.lines.size(); ++e) {
-    for (int k = 0; k < 2; ++k) spec.lines(static_cast<Eigen::Index>(e), k) = flexible.mesh.lines[e][k];
-  }
-  spec.quads.resize(static_cast<Eigen::Index>(flexible.mesh.quads.size()), 4);
-  for (std::size_t e = 0; e < flexible.mesh.quads.size(); ++e) {
-    for (int k = 0; k < 4; ++k) spec.quads(static_cast<Eigen::Index>(e), k) = flexible.mesh.quads[e][k];
-  }
-  spec.beam_radius = flexible.mesh.beam_radius;
-  spec.beam_sections = beam_sections(flexible.mesh);
+  results::FlexibleBodySpec spec = mesh_spec(body.name, flexible.node_positions, flexible.mesh);
   spec.mode_translations.resize(3 * nn, nm);
   for (int n = 0; n < nn; ++n) spec.mode_translations.middleRows(3 * n, 3) = flexible.translation_shapes(n);
   spec.frequencies_hz = flexible.stiffness.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
@@ -90,6 +99,25 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
   return spec;
 }
 
+// A nonlinear body as a flexible body of no modes (docs/results-format.md): its mesh in the
+// component frame, and its deflection probe.
+results::FlexibleBodySpec nonlinear_body_spec(const multibody::NonlinearBody& body) {
+  const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
+  Eigen::MatrixXd nodes(3, static_cast<Eigen::Index>(X.size()));
+  for (std::size_t k = 0; k < X.size(); ++k) nodes.col(static_cast<Eigen::Index>(k)) = X[k];
+  results::FlexibleBodySpec spec = mesh_spec(body.name, nodes, body.mesh);
+  spec.mode_translations.resize(nodes.size(), 0);
+  spec.has_deflection = body.deflection_probe.has_value();
+  return spec;
+}
+
+// The results' name of a model body: a node body's is its nonlinear body's.
+const std::string& recorded_name(const multibody::Model& model, const std::vector<int>& nonlinear_of, int body) {
+  const int owner = nonlinear_of[static_cast<std::size_t>(body)];
+  return owner >= 0 ? model.nonlinear_bodies[static_cast<std::size_t>(owner)].name
+                    : model.bodies[static_cast<std::size_t>(body)].name;
+}
+
 // A marker's origin and orientation (ground <- marker) from its kinematics.
 results::MarkerPose marker_pose(const multibody::FrameKinematics& frame) {
   return {frame.p_W, Eigen::Quaterniond(frame.R_WF).normalized()};
@@ -98,9 +126,15 @@ results::MarkerPose marker_pose(const multibody::FrameKinematics& frame) {
 }  // namespace
 
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer) {
-  // Moving bodies (ground has no pose to record).
+  // Moving bodies (ground has no pose to record); a nonlinear body once, at its first node body.
+  const std::vector<int> nonlinear_of = multibody::nonlinear_body_of(model);
   for (std::size_t b = 1; b < model.bodies.size(); ++b) {
     const multibody::Body& body = model.bodies[b];
+    if (const int owner = nonlinear_of[b]; owner >= 0) {
+      const multibody::NonlinearBody& nonlinear = model.nonlinear_bodies[static_cast<std::size_t>(owner)];
+      if (nonlinear.node_bodies.front() == static_cast<int>(b)) writer.add_flexible_body(nonlinear_body_spec(nonlinear));
+      continue;
+    }
     std::vector<results::ShapeSpec> shapes;
     for (const multibody::Shape& shape : body.shapes) shapes.push_back(to_shape_spec(shape));
     if (body.kind == multibody::BodyKind::kFlexible) {
@@ -111,8 +145,8 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
   }
   for (const multibody::Joint& joint : model.joints) {
     writer.add_joint({joint.name, multibody::to_string(joint.type),
-                      model.bodies[model.markers[joint.marker_i].body].name,
-                      model.bodies[model.markers[joint.marker_j].body].name,
+                      recorded_name(model, nonlinear_of, model.markers[joint.marker_i].body),
+                      recorded_name(model, nonlinear_of, model.markers[joint.marker_j].body),
                       model.markers[joint.marker_i].name, model.markers[joint.marker_j].name});
   }
   for (const multibody::Driver& driver : model.drivers) {
@@ -224,7 +258,23 @@ SampleRecorder::SampleRecorder(const multibody::Model& model,
       partition_(partition),
       engaged_(engaged),
       workspace_(model),
-      check_clearance_(!multibody::clearance_pairs(model).empty()) {}
+      check_clearance_(!multibody::clearance_pairs(model).empty()),
+      nonlinear_of_(multibody::nonlinear_body_of(model)) {}
+
+results::BodySample SampleRecorder::record_nonlinear(const multibody::NonlinearBody& body,
+                                                     const Eigen::VectorXd& q) const {
+  // The component frame carried by the first node: its axes turned as that node's, through
+  // the node at its undeformed place (no modes: the mesh drawn undeformed there).
+  const multibody::Body& first = model_.bodies[static_cast<std::size_t>(body.node_bodies.front())];
+  const Eigen::Vector4d p = q.segment<4>(first.q_offset + 3).normalized();
+  results::BodySample pose;
+  pose.orientation = Eigen::Quaterniond(p(0), p(1), p(2), p(3));
+  pose.position = q.segment<3>(first.q_offset) - pose.orientation * body.structure->reference_positions.front();
+  pose.modal_coordinates.resize(0);
+  pose.modal_velocities.resize(0);
+  if (body.deflection_probe) pose.deflection = multibody::nonlinear_probe_deflection(model_, body, q);
+  return pose;
+}
 
 results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   LIMBER_DEMAND(sample.integrals.size() == kEnergyIntegrals);
@@ -238,6 +288,11 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   // Body poses: frame origin and quaternion (w, x, y, z), ground <- body.
   for (std::size_t b = 1; b < model_.bodies.size(); ++b) {
     const multibody::Body& body = model_.bodies[b];
+    if (const int owner = nonlinear_of_[b]; owner >= 0) {
+      const multibody::NonlinearBody& nonlinear = model_.nonlinear_bodies[static_cast<std::size_t>(owner)];
+      if (nonlinear.node_bodies.front() == static_cast<int>(b)) out.bodies.push_back(record_nonlinear(nonlinear, sample.q));
+      continue;
+    }
     const Eigen::Vector4d p = sample.q.segment<4>(body.q_offset + 3).normalized();
     results::BodySample pose;
     pose.position = sample.q.segment<3>(body.q_offset);

@@ -27,7 +27,9 @@ inline constexpr int kEnergyIntegrals = 3;
 
 // Declares every body (with its shapes; flexible bodies with their mesh and modes), joint,
 // driver, energy and clearance pair (when there are any) of `model` in `writer`,
-// in model order (the indices of results::Sample follow the model's).
+// in model order (the indices of results::Sample follow the model's). A nonlinear body's node
+// bodies are declared as that one body, a flexible body of no modes with its mesh and probe,
+// at the place of its first node body; joints on its nodes name it.
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer);
 
 // The quadrature the integrator accumulates for the energies: ∫ dissipation, ∫ driver power,
@@ -56,6 +58,9 @@ class SampleRecorder {
   const Eigen::VectorXd& constraint_residuals() const { return workspace_.g; }
 
  private:
+  // A nonlinear body's sample: its component frame carried by its first node, its probe.
+  results::BodySample record_nonlinear(const multibody::NonlinearBody& body, const Eigen::VectorXd& q) const;
+
   const multibody::Model& model_;
   const multibody::ConstraintPartition& partition_;
   const std::vector<unsigned char>& engaged_;
@@ -63,6 +68,7 @@ class SampleRecorder {
   multibody::FrameKinematics probe_frame_;  // scratch of the acceleration probes
   bool check_clearance_ = false;  // two or more bodies with surfaces
   std::int64_t recorded_ = 0;     // samples recorded so far (stress history's `every`)
+  std::vector<int> nonlinear_of_;  // per model body: the nonlinear body of its node, or −1
 };
 
 }  // namespace limber::run

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "../multibody/corotational_beam.h"
@@ -63,6 +64,23 @@ inline std::vector<double> corotational_midspan_deflection(const CorotationalRod
     out.push_back((pm - p0).dot(Eigen::Vector2d(-e.y(), e.x())));
   });
   return out;
+}
+
+// The rod of the seed's set-up (cases/slider_crank_seed_setup*.yaml): steel (E 206.8 GPa,
+// ρ 7820 kg/m³), 0.01 x 0.02 m, bending in the plane about the stiff axis, the slider's 1 kg
+// at its end, the crank at 20 rev/s.
+inline CorotationalRodSetup seed_setup_rod(int elements, double step) {
+  CorotationalRodSetup p;
+  const double E = 206.8e9, rho = 7820, A = 0.01 * 0.02, I = 0.01 * 0.02 * 0.02 * 0.02 / 12;
+  p.omega = 2.0 * std::numbers::pi * 20.0;
+  p.EA = E * A;
+  p.EI = E * I;
+  p.rho_A = rho * A;
+  p.rho_I = rho * I;
+  p.slider_mass = 1.0;
+  p.elements = elements;
+  p.step = step;
+  return p;
 }
 
 }  // namespace limber::test

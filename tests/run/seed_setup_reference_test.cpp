@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -21,7 +20,6 @@
 namespace limber::run {
 namespace {
 
-constexpr double kOmega = 2.0 * std::numbers::pi * 20.0;  // [rad/s]
 constexpr double kTEnd = 0.3;                              // [s], as docs/benchmarks.md
 constexpr double kSample = 1e-3;                           // [s]
 
@@ -44,22 +42,6 @@ std::vector<double> limber_deflection(const std::string& case_name) {
   return deflection;
 }
 
-// The rod of the cases: steel (E 206.8 GPa, ρ 7820 kg/m³), 0.01 x 0.02 m, bending in the plane
-// about the stiff axis; the slider's 1 kg at its end.
-test::CorotationalRodSetup seed_rod(int elements, double step) {
-  test::CorotationalRodSetup p;
-  const double E = 206.8e9, rho = 7820, A = 0.01 * 0.02, I = 0.01 * 0.02 * 0.02 * 0.02 / 12;
-  p.omega = kOmega;
-  p.EA = E * A;
-  p.EI = E * I;
-  p.rho_A = rho * A;
-  p.rho_I = rho * I;
-  p.slider_mass = 1.0;
-  p.elements = elements;
-  p.step = step;
-  return p;
-}
-
 double peak(const std::vector<double>& x) {
   double m = 0.0;
   for (double v : x) m = std::max(m, std::abs(v));
@@ -68,9 +50,9 @@ double peak(const std::vector<double>& x) {
 
 TEST(SeedSetupReference, StiffenedModalRodFollowsTheCorotationalBeamTheLinearOneDoesNot) {
   const std::vector<double> reference =
-      test::corotational_midspan_deflection(seed_rod(50, 2e-5), kTEnd, kSample);
+      test::corotational_midspan_deflection(test::seed_setup_rod(50, 2e-5), kTEnd, kSample);
   const std::vector<double> finer =
-      test::corotational_midspan_deflection(seed_rod(100, 1e-5), kTEnd, kSample);
+      test::corotational_midspan_deflection(test::seed_setup_rod(100, 1e-5), kTEnd, kSample);
   const std::vector<double> stiffened = limber_deflection("slider_crank_seed_setup_stiffened.yaml");
   const std::vector<double> linear = limber_deflection("slider_crank_seed_setup.yaml");
   ASSERT_EQ(reference.size(), stiffened.size());

@@ -1,0 +1,162 @@
+#include "multibody/nonlinear_body.h"
+
+#include "multibody/rotation.h"
+#include "nonlinear_beam/corotational_beam.h"
+
+namespace limber::multibody {
+namespace {
+
+using nonlinear_beam::Matrix12d;
+using nonlinear_beam::Vector12d;
+
+Eigen::Matrix3d body_rotation(const Model& model, int body, const Eigen::VectorXd& q) {
+  return rotation_matrix(q.segment<4>(model.bodies[static_cast<std::size_t>(body)].q_offset + 3));
+}
+
+// One element's force f_b = T_eᵀ f and stiffness T_eᵀ (∂f/∂(δx, δw)) T_e in the body velocities
+// of its two node bodies (header), with T_e = diag(R_WCᵀ, R_a, R_WCᵀ, R_b).
+struct ElementInBodies {
+  Vector12d force;
+  Matrix12d stiffness;
+};
+
+ElementInBodies element_in_bodies(const NonlinearBody& body, const nonlinear_beam::CorotationalBeam& element,
+                                  const nonlinear_beam::BeamState& state,
+                                  const std::vector<Eigen::Matrix3d>& rotations, bool with_stiffness) {
+  const int a = element.nodes[0], b = element.nodes[1];
+  const nonlinear_beam::ElementResponse response = nonlinear_beam::corotational_beam_response(
+      element, state.positions[a], state.positions[b], rotations[a], rotations[b]);
+  Matrix12d t_e = Matrix12d::Zero();
+  t_e.block<3, 3>(0, 0) = body.R_WC.transpose();
+  t_e.block<3, 3>(3, 3) = rotations[a];
+  t_e.block<3, 3>(6, 6) = body.R_WC.transpose();
+  t_e.block<3, 3>(9, 9) = rotations[b];
+  ElementInBodies out;
+  out.force = t_e.transpose() * response.force;
+  if (with_stiffness) out.stiffness = t_e.transpose() * response.tangent * t_e;
+  return out;
+}
+
+// The node rotations of the state as matrices, once per node.
+std::vector<Eigen::Matrix3d> rotation_matrices(const nonlinear_beam::BeamState& state) {
+  std::vector<Eigen::Matrix3d> out;
+  out.reserve(state.rotations.size());
+  for (const Eigen::Quaterniond& r : state.rotations) out.push_back(r.toRotationMatrix());
+  return out;
+}
+
+}  // namespace
+
+nonlinear_beam::BeamState nonlinear_body_state(const Model& model, const NonlinearBody& body,
+                                               const Eigen::VectorXd& q) {
+  nonlinear_beam::BeamState state;
+  const Eigen::Matrix3d R_CW = body.R_WC.transpose();
+  for (const int b : body.node_bodies) {
+    const Body& node = model.bodies[static_cast<std::size_t>(b)];
+    state.positions.push_back(R_CW * (q.segment<3>(node.q_offset) - body.p_WC));
+    state.rotations.push_back(Eigen::Quaterniond(R_CW * body_rotation(model, b, q)).normalized());
+  }
+  return state;
+}
+
+void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eigen::VectorXd& Q) {
+  for (const NonlinearBody& body : model.nonlinear_bodies) {
+    const nonlinear_beam::BeamState state = nonlinear_body_state(model, body, q);
+    const std::vector<Eigen::Matrix3d> rotations = rotation_matrices(state);
+    for (const nonlinear_beam::CorotationalBeam& element : body.structure->elements) {
+      const ElementInBodies e = element_in_bodies(body, element, state, rotations, false);
+      for (int end = 0; end < 2; ++end) {
+        const Body& node = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[end]])];
+        Q.segment<6>(node.v_offset) -= e.force.segment<6>(6 * end);
+      }
+    }
+  }
+}
+
+bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::MatrixXd& K) {
+  for (const NonlinearBody& body : model.nonlinear_bodies) {
+    const nonlinear_beam::BeamState state = nonlinear_body_state(model, body, q);
+    const std::vector<Eigen::Matrix3d> rotations = rotation_matrices(state);
+    // Material internal moment per node, for the turning of its axes.
+    std::vector<Eigen::Vector3d> moments(body.node_bodies.size(), Eigen::Vector3d::Zero());
+    for (const nonlinear_beam::CorotationalBeam& element : body.structure->elements) {
+      const ElementInBodies e = element_in_bodies(body, element, state, rotations, true);
+      for (int i = 0; i < 2; ++i) {
+        moments[static_cast<std::size_t>(element.nodes[i])] += e.force.segment<3>(6 * i + 3);
+        const int row = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[i]])].v_offset;
+        for (int j = 0; j < 2; ++j) {
+          const int col = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[j]])].v_offset;
+          K.block<6, 6>(row, col) += e.stiffness.block<6, 6>(6 * i, 6 * j);
+        }
+      }
+    }
+    for (std::size_t k = 0; k < body.node_bodies.size(); ++k) {
+      const int offset = model.bodies[static_cast<std::size_t>(body.node_bodies[k])].v_offset;
+      K.block<3, 3>(offset + 3, offset + 3) += skew(moments[k]);
+    }
+  }
+  return !model.nonlinear_bodies.empty();
+}
+
+double nonlinear_body_strain_energy(const Model& model, const Eigen::VectorXd& q) {
+  double energy = 0.0;
+  for (const NonlinearBody& body : model.nonlinear_bodies) {
+    energy += nonlinear_beam::strain_energy(*body.structure, nonlinear_body_state(model, body, q));
+  }
+  return energy;
+}
+
+Eigen::Vector3d nonlinear_probe_deflection(const Model& model, const NonlinearBody& body,
+                                           const Eigen::VectorXd& q) {
+  const DeflectionProbe& probe = *body.deflection_probe;
+  const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
+  // The node's place along the undeformed chord, and its offset from it.
+  const Eigen::Vector3d E = X[probe.chord_end] - X[probe.chord_start];
+  const double s = (X[probe.node] - X[probe.chord_start]).dot(E) / E.squaredNorm();
+  const Eigen::Vector3d offset_0 = X[probe.node] - (X[probe.chord_start] + s * E);
+  // The same now, in axes turned with the chord.
+  const nonlinear_beam::BeamState state = nonlinear_body_state(model, body, q);
+  const std::vector<Eigen::Vector3d>& x = state.positions;
+  const Eigen::Vector3d e = x[probe.chord_end] - x[probe.chord_start];
+  const Eigen::Vector3d offset = x[probe.node] - (x[probe.chord_start] + s * e);
+  const Eigen::Matrix3d R_chord = Eigen::Quaterniond::FromTwoVectors(E, e).toRotationMatrix();
+  return R_chord.transpose() * offset - offset_0;
+}
+
+std::vector<int> nonlinear_body_of(const Model& model) {
+  std::vector<int> owner(model.bodies.size(), -1);
+  for (std::size_t k = 0; k < model.nonlinear_bodies.size(); ++k) {
+    for (const int b : model.nonlinear_bodies[k].node_bodies) owner[static_cast<std::size_t>(b)] = static_cast<int>(k);
+  }
+  return owner;
+}
+
+Eigen::MatrixXd rigid_nonlinear_velocity_basis(const Model& model, const Eigen::VectorXd& q) {
+  const std::vector<int> owner = nonlinear_body_of(model);
+  // Columns: the own velocities of every other body, then 6 per nonlinear body.
+  int columns = 6 * static_cast<int>(model.nonlinear_bodies.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (owner[b] < 0) columns += model.bodies[b].nv;
+  }
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(model.nv, columns);
+  int column = 0;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (owner[b] >= 0) continue;
+    const Body& body = model.bodies[b];
+    B.block(body.v_offset, column, body.nv, body.nv).setIdentity();
+    column += body.nv;
+  }
+  // Node k: ṙ_k = v_C + ω × (r_k − p_C) = v_C − S(r_k − p_C) ω, ω_B,k = R_WBᵀ ω.
+  for (const NonlinearBody& nonlinear : model.nonlinear_bodies) {
+    for (const int b : nonlinear.node_bodies) {
+      const Body& node = model.bodies[static_cast<std::size_t>(b)];
+      B.block<3, 3>(node.v_offset, column).setIdentity();
+      B.block<3, 3>(node.v_offset, column + 3) = -skew(q.segment<3>(node.q_offset) - nonlinear.p_WC);
+      B.block<3, 3>(node.v_offset + 3, column + 3) = body_rotation(model, b, q).transpose();
+    }
+    column += 6;
+  }
+  return B;
+}
+
+}  // namespace limber::multibody

@@ -1,0 +1,56 @@
+// The co-rotational beams of a nonlinear body (model.h, NonlinearBody) as internal forces
+// between the rigid bodies that carry its FE nodes (docs/nonlinear-beams.md, "In a mechanism").
+//
+// Node body k of a nonlinear body has q = [r_WB, p_WB] and v = [ṙ_WB, ω_B] like any rigid
+// body; its frame is along the FE component axes C at t = 0, so the node's configuration in
+// the structure's own terms (beam_structure.h: component axes, rotation from the undeformed
+// state) is
+//   x_k = R_WCᵀ (r_WB − p_WC),   R_k = R_WCᵀ R_WB.
+// A material spin δθ_B of the node body is the spatial spin R_k δθ_B of the structure's node, a
+// ground translation δr_W its translation R_WCᵀ δr_W; with T = diag(R_WCᵀ, R_k) per node,
+// the beams' generalized force and its stiffness in the body velocities are
+//   Q = −Tᵀ f_int,   K = −∂Q/∂(δr_W, δθ_B) = Tᵀ (∂f_int/∂(δx, δw)) T + diag(0, S(R_kᵀ m_k))
+// (the second term: the node's axes turning under the internal moment m_k; the same as
+// nonlinear_beam/dynamic_solver.h's K_rot).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "multibody/model.h"
+#include "nonlinear_beam/beam_structure.h"
+
+namespace limber::multibody {
+
+// The structure's configuration at q (above).
+nonlinear_beam::BeamState nonlinear_body_state(const Model& model, const NonlinearBody& body,
+                                               const Eigen::VectorXd& q);
+
+// Q += −Tᵀ f_int over every nonlinear body of the model (Q: nv).
+void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eigen::VectorXd& Q);
+
+// K += the beams' stiffness above (K: nv x nv). Returns false when the model has no nonlinear body.
+bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::MatrixXd& K);
+
+// Strain energy of the beams of every nonlinear body [J] (f_int is its gradient).
+double nonlinear_body_strain_energy(const Model& model, const Eigen::VectorXd& q);
+
+// The body's deflection probe at q: the probe node's displacement from the chord between the
+// two chord nodes (interpolated at the node's projection on the undeformed chord), in the
+// component axes turned by the smallest rotation that takes the undeformed chord onto the
+// current one, minus its undeformed value [m]. The modal body's probe (flexible_body.h) in
+// the nonlinear body's terms. Precondition: body.deflection_probe is set.
+Eigen::Vector3d nonlinear_probe_deflection(const Model& model, const NonlinearBody& body,
+                                           const Eigen::VectorXd& q);
+
+// For every model body: the nonlinear body whose node it carries, or −1.
+std::vector<int> nonlinear_body_of(const Model& model);
+
+// The velocities in which every nonlinear body moves rigidly (nv x n): each body outside them
+// keeps its own columns; each nonlinear body gets 6, the velocity of its FE component origin and
+// its angular velocity (ground axes). Used to start a nonlinear body moving as a rigid one when
+// the velocities are projected onto the constraints (assembly.h), as the modal body's frame does.
+Eigen::MatrixXd rigid_nonlinear_velocity_basis(const Model& model, const Eigen::VectorXd& q);
+
+}  // namespace limber::multibody

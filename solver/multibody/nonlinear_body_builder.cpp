@@ -1,0 +1,62 @@
+// ModelBuilder's nonlinear bodies (model_builder.h, model.h NonlinearBody).
+#include <fmt/format.h>
+
+#include "core/names.h"
+#include "multibody/model_builder.h"
+#include "multibody/nonlinear_body.h"
+#include "multibody/rotation.h"
+
+namespace limber::multibody {
+
+int ModelBuilder::add_nonlinear_body(const NonlinearBodySpec& spec, const SourceLocation& where) {
+  check_new_body(spec.name, spec.initial_pose, where);
+  const nonlinear_beam::BeamStructure& structure = *spec.structure;
+  const int nodes = structure.node_count();
+  LIMBER_DEMAND(static_cast<int>(spec.inertia.mass.size()) == nodes);
+  LIMBER_DEMAND(spec.mesh.node_ids.empty() || static_cast<int>(spec.mesh.node_ids.size()) == nodes);
+  if (const auto& probe = spec.deflection_probe) {
+    for (const int node : {probe->node, probe->chord_start, probe->chord_end}) {
+      if (node < 0 || node >= nodes) {
+        throw InputError(fmt::format("body \"{}\" deflection: expected node indices in [0, {}), got {}",
+                                     spec.name, nodes, node), where);
+      }
+    }
+  }
+  NonlinearBody body;
+  body.name = spec.name;
+  body.structure = spec.structure;
+  body.R_WC = rotation_matrix(spec.initial_pose.orientation.normalized());
+  body.p_WC = spec.initial_pose.position;
+  body.deflection_probe = spec.deflection_probe;
+  body.mesh = spec.mesh;
+  // Node bodies: at the nodes, along the component axes, moving rigidly with the frame.
+  const Eigen::Vector3d w_W = body.R_WC * spec.initial_angular_velocity_B;
+  for (int k = 0; k < nodes; ++k) {
+    const int id = spec.mesh.node_ids.empty() ? k + 1 : spec.mesh.node_ids[static_cast<std::size_t>(k)];
+    RigidBodySpec node;
+    node.name = fmt::format("{}.node{}", spec.name, id);
+    node.mass = spec.inertia.mass[static_cast<std::size_t>(k)];
+    node.inertia_com_B = spec.inertia.inertia[static_cast<std::size_t>(k)];
+    const Eigen::Vector3d arm_W = body.R_WC * structure.reference_positions[static_cast<std::size_t>(k)];
+    node.initial_pose = Pose{body.p_WC + arm_W, spec.initial_pose.orientation.normalized()};
+    node.initial_velocity_W = spec.initial_velocity_W + w_W.cross(arm_W);
+    node.initial_angular_velocity_B = spec.initial_angular_velocity_B;
+    body.node_bodies.push_back(add_rigid_body(node, where));
+  }
+  model_.nonlinear_bodies.push_back(std::move(body));
+  return static_cast<int>(model_.nonlinear_bodies.size()) - 1;
+}
+
+void ModelBuilder::refuse_nonlinear_marker(const char* kind, const std::string& name, int marker,
+                                           const SourceLocation& where) const {
+  const int owner = nonlinear_body_of(model_)[static_cast<std::size_t>(model_.markers[static_cast<std::size_t>(marker)].body)];
+  if (owner < 0) return;
+  throw InputError(fmt::format("{} \"{}\": expected its markers on rigid or modal bodies, got marker \"{}\" on "
+                               "nonlinear body \"{}\" ({}s on a nonlinear body are not available yet; "
+                               "docs/nonlinear-beams.md, \"Limits\")",
+                               kind, name, model_.markers[static_cast<std::size_t>(marker)].name,
+                               model_.nonlinear_bodies[static_cast<std::size_t>(owner)].name, kind),
+                   where);
+}
+
+}  // namespace limber::multibody

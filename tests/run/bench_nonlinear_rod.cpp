@@ -1,0 +1,109 @@
+// limber_bench_nonlinear_rod: the nonlinear rod in a mechanism (issue 27), through the run driver
+// (no file). (1) The seed set-up (cases/slider_crank_seed_setup_nonlinear.yaml) for `t_end`
+// seconds: wall time, steps, Newton iterations and iteration matrices, and the peak mid-span
+// deflection over the first 0.3 s. (2) The small-deformation limit on cases/slider_crank.yaml
+// (0.05 m crank, spin-up ramp): the modal rod (5 modes) and the nonlinear rod, both undamped and
+// without stress output (the case's text edited in memory), compared in the peak deflection and
+// the peak |R3| reaction. Not a test: prints figures for docs/nonlinear-beams.md.
+//   limber_bench_nonlinear_rod [t_end of the seed run, default 1] [t_end of the comparison, default 0.5]
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
+#include "run/run_driver.h"
+
+namespace {
+
+using namespace limber;
+
+struct Histories {
+  run::RunSummary summary;
+  std::vector<double> time, deflection, r3;  // rod deflection z [m], |R3 force| [N]
+};
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) {
+    fmt::print(stderr, "not in the case: {}\n", from);
+    std::exit(1);
+  }
+  return text.replace(at, from.size(), to);
+}
+
+Histories run_text(const std::string& text, double t_end) {
+  const io::Case input = io::read_case_text(text, "bench.yaml");
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  io::RunSettings settings = built.run;
+  settings.t_end = t_end;
+  settings.sample_interval = 1e-3;
+  const int r3 = built.model.find_joint("R3");
+  Histories out;
+  run::RunHooks hooks;
+  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
+    out.time.push_back(sample.t);
+    out.deflection.push_back(record.bodies[1].deflection.z());  // crank, rod, slider
+    out.r3.push_back(record.joints[static_cast<std::size_t>(r3)].force_ground.norm());
+  };
+  out.summary = run::run_mechanism(built.model, built.assembly, settings, hooks);
+  if (!out.summary.ok) fmt::print("  run failed: {}\n", out.summary.message);
+  return out;
+}
+
+double peak(const std::vector<double>& x, const std::vector<double>& t, double until) {
+  double m = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (t[k] <= until + 1e-12) m = std::max(m, std::abs(x[k]));
+  }
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double seed_end = argc > 1 ? std::atof(argv[1]) : 1.0;
+  const double limit_end = argc > 2 ? std::atof(argv[2]) : 0.5;
+  const std::string cases = LIMBER_CASES_DIR;
+
+  // (1) The seed set-up with the rod nonlinear.
+  const Histories seed = run_text(read_text(cases + "/slider_crank_seed_setup_nonlinear.yaml"), seed_end);
+  const auto& s = seed.summary;
+  fmt::print("seed set-up, nonlinear rod, {} s: {:.1f} s wall, {} steps (h = 1e-4 s), {} Newton iterations, "
+             "{} iteration matrices, {} rejected steps, status {}, energy error {:.2e}\n",
+             seed_end, s.wall_seconds, s.statistics.steps, s.statistics.newton_iterations,
+             s.statistics.jacobian_evaluations, s.statistics.rejected_steps, s.accurate() ? "ok" : "inaccurate",
+             s.accuracy.energy_relative);
+  fmt::print("  peak mid-span deflection over [0, 0.3] s: {:.3f} mm (unreduced co-rotational reference 38.5 mm)\n",
+             1e3 * peak(seed.deflection, seed.time, 0.3));
+
+  // (2) The small-deformation limit: modal and nonlinear rods, both undamped, no stress output.
+  if (limit_end <= 0.0) return 0;
+  std::string modal = read_text(cases + "/slider_crank.yaml");
+  modal = replaced(modal, "    damping: 0.01                   # ratio of critical, every mode\n", "    damping: 0\n");
+  modal = replaced(modal, "    stress: {elements: all, every: 10}", "   ");
+  const std::string nonlinear = replaced(modal, "    damping: 0\n", "    damping: 0\n    formulation: nonlinear\n");
+  const Histories m = run_text(modal, limit_end), n = run_text(nonlinear, limit_end);
+  const double dm = peak(m.deflection, m.time, limit_end), dn = peak(n.deflection, n.time, limit_end);
+  const double rm = peak(m.r3, m.time, limit_end), rn = peak(n.r3, n.time, limit_end);
+  fmt::print("slider_crank.yaml, 0 to {} s, undamped: modal rod {:.1f} s wall, nonlinear rod {:.1f} s wall\n", limit_end,
+             m.summary.wall_seconds, n.summary.wall_seconds);
+  fmt::print("  peak deflection: modal {:.4f} mm, nonlinear {:.4f} mm ({:+.2f} %)\n", 1e3 * dm, 1e3 * dn,
+             100.0 * (dn - dm) / dm);
+  fmt::print("  peak |R3|: modal {:.3f} N, nonlinear {:.3f} N ({:+.2f} %)\n", rm, rn, 100.0 * (rn - rm) / rm);
+  return 0;
+}

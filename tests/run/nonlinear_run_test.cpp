@@ -1,0 +1,102 @@
+// The seed's set-up with the rod nonlinear (cases/slider_crank_seed_setup_nonlinear.yaml): the
+// mechanism's co-rotational rod (multibody/nonlinear_body.h, run by `limber run`'s driver)
+// against the independent planar co-rotational rod of corotational_rod.h (a second method: its
+// own element, its own Newmark integrator, the crank pin prescribed), and what the nonlinear
+// path refuses.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "corotational_rod.h"
+#include "core/error.h"
+#include "io/case_reader.h"
+#include "io/case_reduction.h"
+#include "io/mechanism_builder.h"
+#include "run/run_driver.h"
+
+namespace limber::run {
+namespace {
+
+constexpr double kSample = 1e-3;  // [s]
+// The window of the peak deflection [s]. The is 0.3 s; its peak is the first one, at
+// 0.014 s in both rods (measured over 0.3 s: 38.44 mm at 0.014 s here, 38.50 mm at 0.014 s in
+// the planar rod), so 30 ms hold it at a tenth of the cost (0.3 s took 130-250 s wall on the
+// shared 2 cores).
+constexpr double kSeedWindow = 0.03;
+
+io::Mechanism nonlinear_seed_setup() {
+  const io::Case input = io::read_case_file(std::string(LIMBER_CASES_DIR) + "/slider_crank_seed_setup_nonlinear.yaml");
+  return io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+}
+
+double peak(const std::vector<double>& x) {
+  double m = 0.0;
+  for (double v : x) m = std::max(m, std::abs(v));
+  return m;
+}
+
+TEST(NonlinearRun, SeedSetupPeakDeflectionAgreesWithTheUnreducedPlanarRod) {
+  const double t_end = kSeedWindow;
+  io::Mechanism built = nonlinear_seed_setup();
+  io::RunSettings settings = built.run;
+  settings.t_end = t_end;
+  settings.sample_interval = kSample;
+  // The rod is the second body of the results (crank, rod, slider): its node bodies are recorded
+  // as the one body "rod".
+  std::vector<double> deflection;
+  RunHooks hooks;
+  hooks.on_sample = [&](const integrate::Sample&, const results::Sample& record) {
+    ASSERT_EQ(record.bodies.size(), 3u);
+    deflection.push_back(record.bodies[1].deflection.z());
+  };
+  const RunSummary summary = run_mechanism(built.model, built.assembly, settings, hooks);
+  ASSERT_TRUE(summary.ok) << summary.message;
+  const std::vector<double> reference =
+      test::corotational_midspan_deflection(test::seed_setup_rod(50, 2e-5), t_end, kSample);
+  ASSERT_EQ(reference.size(), deflection.size());
+  const auto at_peak = [](const std::vector<double>& x) {
+    return kSample * static_cast<double>(std::max_element(x.begin(), x.end(), [](double a, double b) {
+                                           return std::abs(a) < std::abs(b);
+                                         }) - x.begin());
+  };
+  std::printf("  peaks over %.3g s [mm]: mechanism's nonlinear rod %.3f at %.3f s, planar co-rotational rod %.3f "
+              "at %.3f s; %ld steps, %ld Newton iterations, %ld iteration matrices, %.1f s wall\n",
+              t_end, 1e3 * peak(deflection), at_peak(deflection), 1e3 * peak(reference), at_peak(reference),
+              summary.statistics.steps, summary.statistics.newton_iterations, summary.statistics.jacobian_evaluations,
+              summary.wall_seconds);
+  // Tolerance 3 % (the issue's): both are unreduced co-rotational rods of the same section;
+  // they differ by the mesh (100 against 50 elements: 0.03 % on the peak at 100 elements, 2e-5
+  // s, seed_setup_reference_test), the mass (lumped nodal against the planar rod's) and the
+  // integrator (generalized-α h = 1e-4 s, ρ∞ = 0.8, against the reference's 2e-5 s), each
+  // below 1 % on the peak as measured in docs/nonlinear-beams.md.
+  EXPECT_NEAR(peak(deflection), peak(reference), 0.03 * peak(reference));
+  // Undamped and conservative: the run's own energy balance holds (accuracy_check.h).
+  EXPECT_TRUE(summary.accurate()) << summary.accuracy.energy_relative;
+}
+
+// The InputError's message of a run with these settings, or "" when it ran.
+std::string refusal(const io::Mechanism& built, const io::RunSettings& settings) {
+  try {
+    run_mechanism(built.model, built.assembly, settings);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(NonlinearRun, IdaAndAStaticStartAreRefused) {
+  const io::Mechanism built = nonlinear_seed_setup();
+  io::RunSettings settings = built.run;
+  settings.integrator.method = integrate::Method::kIda;
+  EXPECT_NE(refusal(built, settings).find("nonlinear body \"rod\": expected integrator galpha"), std::string::npos);
+  settings = built.run;
+  settings.start = io::StartKind::kStatics;
+  EXPECT_NE(refusal(built, settings).find("expected run start: assembly"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace limber::run
