@@ -37,7 +37,9 @@ std::pair<Kind, YamlValue> quantity(const std::string& what, const std::string& 
   for (const auto& key : keys) names.push_back(key.first);
   // In file order: the second quantity is the error.
   for (const auto& [key, value] : entry.entries()) {
-    const auto* known = std::find_if(std::begin(keys), std::end(keys), [&](const auto& k) { return k.first == key; });
+    const std::string_view wanted = key;  // a structured binding cannot be captured before C++20
+    const auto* known =
+        std::find_if(std::begin(keys), std::end(keys), [wanted](const auto& k) { return k.first == wanted; });
     if (known == std::end(keys)) continue;
     if (found) {
       value.fail(fmt::format("expected one quantity for {} '{}', got a second ('{}')", what, name, key));
