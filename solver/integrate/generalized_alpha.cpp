@@ -536,6 +536,11 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
   J_.bottomRightCorner(nc_, nc_).setZero();
   if (!J_.allFinite()) return false;
+  if (has_structure_) {
+    structured_block(h, correction_);
+    correction_ = J_.topLeftCorner(nv_, nv_) - correction_;
+    correction_h_ = h;
+  }
   lu_.compute(J_);
   jacobian_h_ = h;
   jacobian_age_ = 0;
@@ -543,16 +548,23 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   return !is_singular(J_, lu_);
 }
 
-bool GeneralizedAlpha::build_structured_jacobian(double h) {
+void GeneralizedAlpha::structured_block(double h, Eigen::MatrixXd& block) {
   const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
-  ++stats_.jacobian_evaluations;
-  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c; ∂g/∂ξ = G.
-  J_.topLeftCorner(nv_, nv_) = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
-  J_.topLeftCorner(nv_, nv_).diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
+  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c.
+  block = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
+  block.diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
   // Internal forces that couple velocities (a nonlinear body's beams), at the last state evaluated.
-  if (system_->coupled_stiffness(next_.t, next_.q, coupled_)) {
-    J_.topLeftCorner(nv_, nv_) += beta * h * h * coupled_;
-  }
+  if (system_->coupled_stiffness(next_.t, next_.q, coupled_)) block += beta * h * h * coupled_;
+}
+
+bool GeneralizedAlpha::build_structured_jacobian(double h) {
+  ++stats_.jacobian_evaluations;
+  Eigen::MatrixXd block;
+  structured_block(h, block);
+  // What the last matrix of differences held beyond the structured one (force elements and
+  // constraint forces through the joints' node rotations), scaled to this h as a stiffness.
+  if (correction_h_ > 0.0) block += (h / correction_h_) * (h / correction_h_) * correction_;
+  J_.topLeftCorner(nv_, nv_) = block;
   J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
   J_.bottomLeftCorner(nc_, nv_) = eval_.G;
   J_.bottomRightCorner(nc_, nc_).setZero();

@@ -103,6 +103,10 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
 
 void evaluate_constraints(const Model& model, const State& state, Stage stage, Workspace& ws) {
   update_marker_kinematics(model, state, stage, ws);
+  evaluate_constraint_rows(model, state, stage, ws);
+}
+
+void evaluate_constraint_rows(const Model& model, const State& state, Stage stage, Workspace& ws) {
   for (int row = 0; row < model.num_equations(); ++row) {
     const ConstraintEquation& e = model.equations[row];
     // Drivers supply f(t); joint equations have f = 0.

@@ -27,6 +27,10 @@ void update_marker_kinematics(const Model& model, const State& state, Stage stag
 // Updates ws.markers first.
 void evaluate_constraints(const Model& model, const State& state, Stage stage, Workspace& ws);
 
+// The same from ws.markers as they are: updated at `state` at `stage` or the velocity stage
+// (e.g. by mass_matrix_and_forces, dynamics.h), so that one pass computes them once.
+void evaluate_constraint_rows(const Model& model, const State& state, Stage stage, Workspace& ws);
+
 // Largest residuals over all rows but those flagged in `released` (rows of released joints,
 // redundancy.h's rows_released_by; empty: none): max |g| [m or rad] and max |G v + g_t|
 // [m/s or rad/s] (the results file's constraint-violation norms). Updates ws.

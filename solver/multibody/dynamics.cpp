@@ -113,6 +113,26 @@ void force_element_loads(const Model& model, const State& state, Workspace& ws, 
   }
 }
 
+namespace {
+
+// The forces between bodies: nonlinear bodies' beams, force elements (from ws.markers, updated
+// at the velocity stage by the caller when there are force elements) and the geometric
+// stiffening from joint loads and frame accelerations.
+void add_interaction_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
+  // The co-rotational beams of nonlinear bodies between their node bodies (conservative).
+  add_nonlinear_body_forces(model, state.q, ws.Q);
+  if (!model.forces.empty()) {
+    ForceVisitor visitor{state, ws, powers};
+    for (size_t k = 0; k < model.forces.size(); ++k) {
+      visitor.mode = mode_of(state, k);
+      std::visit(visitor, model.forces[k]);
+    }
+  }
+  add_load_geometric_stiffness(model, state, ws, powers ? &powers->geometric : nullptr);
+}
+
+}  // namespace
+
 void generalized_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
   ws.Q.setZero(model.nv);
   if (powers) *powers = PowerTerms{};
@@ -132,19 +152,24 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
       }
     }
   }
-  // The co-rotational beams of nonlinear bodies between their node bodies (conservative).
-  add_nonlinear_body_forces(model, state.q, ws.Q);
-  // Force elements through marker kinematics.
-  if (!model.forces.empty()) {
-    update_marker_kinematics(model, state, Stage::kVelocity, ws);
-    ForceVisitor visitor{state, ws, powers};
-    for (size_t k = 0; k < model.forces.size(); ++k) {
-      visitor.mode = mode_of(state, k);
-      std::visit(visitor, model.forces[k]);
+  if (!model.forces.empty()) update_marker_kinematics(model, state, Stage::kVelocity, ws);
+  add_interaction_forces(model, state, ws, powers);
+}
+
+void mass_matrix_and_forces(const Model& model, const State& state, Workspace& ws) {
+  ws.M.setZero(model.nv, model.nv);
+  ws.Q.setZero(model.nv);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind == BodyKind::kFlexible) {
+      add_flexible_mass_matrix_and_forces(body, model.gravity_W, state.q, state.v, ws.M, ws.Q);
+    } else {
+      add_body_mass_matrix(model, b, state.q, ws.M);
+      add_body_inertial_and_gravity_forces(model, b, state.q, state.v, ws.Q);
     }
   }
-  // Geometric stiffening from joint loads and frame accelerations (bodies asking for it).
-  add_load_geometric_stiffness(model, state, ws, powers ? &powers->geometric : nullptr);
+  update_marker_kinematics(model, state, model.forces.empty() ? Stage::kPosition : Stage::kVelocity, ws);
+  add_interaction_forces(model, state, ws, nullptr);
 }
 
 EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {

@@ -30,6 +30,12 @@ struct PowerTerms {
 void generalized_forces(const Model& model, const State& state, Workspace& ws,
                         PowerTerms* powers = nullptr);
 
+// ws.M and ws.Q as mass_matrix and generalized_forces give them, in one pass: each flexible
+// body's deformed inertia computed once, and ws.markers updated once (velocity stage when the
+// model has force elements, else position stage), so that evaluate_constraint_rows
+// (constraints.h) can follow without updating them again.
+void mass_matrix_and_forces(const Model& model, const State& state, Workspace& ws);
+
 // A force element's load at one of its markers: force and torque about the marker's origin,
 // ground axes [N, N·m] (an RSDA or TSDA gives one per marker, equal and opposite).
 struct MarkerLoad {

@@ -45,12 +45,10 @@ Eigen::VectorXd modal_coordinates(const Body& b, const Eigen::VectorXd& q) {
   return q.segment(b.q_offset + 7, b.flexible->mode_count());
 }
 
-// M_b of the header, (6 + nm) square.
-Eigen::MatrixXd mass_block(const Body& b, const Eigen::VectorXd& q) {
+// M_b of the header, (6 + nm) square, with A the frame's rotation and `in` at the body's η.
+Eigen::MatrixXd mass_block(const Body& b, const Eigen::Matrix3d& A, const DeformedInertia& in) {
   const FlexibleBody& f = *b.flexible;
   const int nm = f.mode_count();
-  const Eigen::Matrix3d A = frame_rotation(b, q);
-  const DeformedInertia in = deformed_inertia(f, modal_coordinates(b, q));
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(6 + nm, 6 + nm);
   const Eigen::Matrix3d r_w = -A * skew(in.first_moment);
   const Eigen::MatrixXd r_eta = A * f.invariants.translation_coupling;
@@ -66,24 +64,20 @@ Eigen::MatrixXd mass_block(const Body& b, const Eigen::VectorXd& q) {
   return M;
 }
 
-}  // namespace
-
-void add_flexible_mass_matrix(const Body& body, const Eigen::VectorXd& q, Eigen::MatrixXd& M) {
-  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
-  M.block(body.v_offset, body.v_offset, body.nv, body.nv) += mass_block(body, q);
+Eigen::MatrixXd mass_block(const Body& b, const Eigen::VectorXd& q) {
+  return mass_block(b, frame_rotation(b, q), deformed_inertia(*b.flexible, modal_coordinates(b, q)));
 }
 
-void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,
-                         const Eigen::VectorXd& v, Eigen::VectorXd& Q) {
-  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
+// The forces of add_flexible_forces, with A and `in` at the body's q.
+void add_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::Matrix3d& A,
+                const DeformedInertia& in, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                Eigen::VectorXd& Q) {
   const FlexibleBody& f = *body.flexible;
   const modal::ModalInvariants& inv = f.invariants;
   const int nm = f.mode_count(), o = body.v_offset;
-  const Eigen::Matrix3d A = frame_rotation(body, q);
   const Eigen::VectorXd eta = modal_coordinates(body, q);
   const Eigen::Vector3d w = v.segment<3>(o + 3);
   const Eigen::VectorXd eta_dot = v.segment(o + 6, nm);
-  const DeformedInertia in = deformed_inertia(f, eta);
   // Rates of the invariants along the motion: ḋ, J̇, Ṡ.
   const Eigen::Vector3d d_dot = inv.translation_coupling * eta_dot;
   Eigen::Matrix3d J_dot = Eigen::Matrix3d::Zero();
@@ -115,6 +109,30 @@ void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, con
   if (f.stiffening != GeometricStiffening::kOff) {
     Q.segment(o + 6, nm) -= centrifugal_geometric_force(f.geometric, w, eta);
   }
+}
+
+}  // namespace
+
+void add_flexible_mass_matrix(const Body& body, const Eigen::VectorXd& q, Eigen::MatrixXd& M) {
+  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
+  M.block(body.v_offset, body.v_offset, body.nv, body.nv) += mass_block(body, q);
+}
+
+void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,
+                         const Eigen::VectorXd& v, Eigen::VectorXd& Q) {
+  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
+  add_forces(body, gravity_W, frame_rotation(body, q), deformed_inertia(*body.flexible, modal_coordinates(body, q)),
+             q, v, Q);
+}
+
+void add_flexible_mass_matrix_and_forces(const Body& body, const Eigen::Vector3d& gravity_W,
+                                         const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                         Eigen::MatrixXd& M, Eigen::VectorXd& Q) {
+  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
+  const Eigen::Matrix3d A = frame_rotation(body, q);
+  const DeformedInertia in = deformed_inertia(*body.flexible, modal_coordinates(body, q));
+  M.block(body.v_offset, body.v_offset, body.nv, body.nv) += mass_block(body, A, in);
+  add_forces(body, gravity_W, A, in, q, v, Q);
 }
 
 double flexible_kinetic_energy(const Body& body, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {

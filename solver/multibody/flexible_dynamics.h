@@ -32,6 +32,11 @@ void add_flexible_mass_matrix(const Body& body, const Eigen::VectorXd& q, Eigen:
 void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,
                          const Eigen::VectorXd& v, Eigen::VectorXd& Q);
 
+// Both of the above, the deformed inertia computed once (the evaluation pass of a residual).
+void add_flexible_mass_matrix_and_forces(const Body& body, const Eigen::Vector3d& gravity_W,
+                                         const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                         Eigen::MatrixXd& M, Eigen::VectorXd& Q);
+
 // ½ v_bᵀ M_b v_b [J]; −g·(m r + A d(η)) [J]; strain energy ½ Σ ω_k² η_k² [J].
 double flexible_kinetic_energy(const Body& body, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
 double flexible_gravity_potential(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q);

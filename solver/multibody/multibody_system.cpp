@@ -128,9 +128,8 @@ void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::
   state_.t = t;
   state_.q = q;
   state_.v = v;
-  multibody::mass_matrix(model_, state_, workspace_);
-  multibody::generalized_forces(model_, state_, workspace_);
-  evaluate_constraints(model_, state_, Stage::kPosition, workspace_);
+  multibody::mass_matrix_and_forces(model_, state_, workspace_);
+  evaluate_constraint_rows(model_, state_, Stage::kPosition, workspace_);
   out.M = workspace_.M;
   out.Q = workspace_.Q;
   select_rows(workspace_.g, out.g);

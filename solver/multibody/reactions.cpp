@@ -23,28 +23,30 @@ void frame_wrench(const Body& body, const FrameKinematics& frame, const Eigen::V
   tau_W = wrench.tail<3>();
 }
 
-}  // namespace
-
-Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
-                            const ConstraintPartition& partition, Workspace& ws) {
-  evaluate_constraints(model, state, Stage::kVelocity, ws);
-  mass_matrix(model, state, ws);
-  generalized_forces(model, state, ws);
-  Reactions out;
-  // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇, the rank decided
-  // with the redundancy analysis' threshold (core/minimum_norm.h says why not Eigen's COD).
-  // Released joints (hold-downs after their release) are out of the equations: their
-  // multipliers are zero, and so are their reactions. The solve takes the rows in force only:
-  // its eigen-solve costs m³, and the satellite's 48 released rows made it 5 times dearer.
-  const Eigen::MatrixXd& G = ws.G;
+// Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = b, the rank decided with the
+// redundancy analysis' threshold (core/minimum_norm.h says why not Eigen's COD). Released
+// joints (hold-downs after their release) are out of the equations: their multipliers are
+// zero, and so are their reactions. The solve takes the rows in force only: its eigen-solve
+// costs m³, and the satellite's 48 released rows made it 5 times dearer. ws.G evaluated.
+Eigen::VectorXd all_multipliers(const Model& model, const Eigen::VectorXd& b,
+                                const ConstraintPartition& partition, const Workspace& ws) {
   std::vector<int> active;
   for (int row = 0; row < model.num_equations(); ++row) {
     if (!partition.released(row)) active.push_back(row);
   }
-  const Eigen::VectorXd lambda_active = minimum_norm_solve(G(active, Eigen::all).transpose(), ws.Q - ws.M * v_dot,
-                                                           partition.relative_threshold);
-  out.lambda = Eigen::VectorXd::Zero(model.num_equations());
-  for (std::size_t k = 0; k < active.size(); ++k) out.lambda(active[k]) = lambda_active(static_cast<Eigen::Index>(k));
+  const Eigen::VectorXd lambda_active =
+      minimum_norm_solve(ws.G(active, Eigen::all).transpose(), b, partition.relative_threshold);
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(model.num_equations());
+  for (std::size_t k = 0; k < active.size(); ++k) lambda(active[k]) = lambda_active(static_cast<Eigen::Index>(k));
+  return lambda;
+}
+
+// Joint wrenches and driver efforts from the multipliers of all rows (ws: markers and G at state).
+Reactions reactions_of(const Model& model, const State& state, Eigen::VectorXd lambda,
+                       const ConstraintPartition& partition, const Workspace& ws) {
+  Reactions out;
+  out.lambda = std::move(lambda);
+  const Eigen::MatrixXd& G = ws.G;
   // Joints: generalized constraint force of their rows, turned into a wrench at a marker.
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const Joint& joint = model.joints[k];
@@ -81,6 +83,30 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
     out.driver_power += effort * d.motion.evaluate(state.t).first;
   }
   return out;
+}
+
+}  // namespace
+
+Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
+                            const ConstraintPartition& partition, Workspace& ws) {
+  evaluate_constraints(model, state, Stage::kVelocity, ws);
+  mass_matrix(model, state, ws);
+  generalized_forces(model, state, ws);
+  return reactions_of(model, state, all_multipliers(model, ws.Q - ws.M * v_dot, partition, ws), partition, ws);
+}
+
+Reactions reactions_from_multipliers(const Model& model, const State& state,
+                                     const Eigen::VectorXd& lambda_independent,
+                                     const ConstraintPartition& partition, Workspace& ws) {
+  evaluate_constraints(model, state, Stage::kPosition, ws);
+  // Without redundant rows the multipliers are unique: the integrator's.
+  if (partition.redundant.empty()) {
+    Eigen::VectorXd lambda = Eigen::VectorXd::Zero(model.num_equations());
+    lambda(partition.independent) = lambda_independent;
+    return reactions_of(model, state, std::move(lambda), partition, ws);
+  }
+  const Eigen::VectorXd b = ws.G(partition.independent, Eigen::all).transpose() * lambda_independent;
+  return reactions_of(model, state, all_multipliers(model, b, partition, ws), partition, ws);
 }
 
 }  // namespace limber::multibody

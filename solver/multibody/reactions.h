@@ -48,4 +48,12 @@ struct Reactions {
 Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
                             const ConstraintPartition& partition, Workspace& ws);
 
+// The same from an integrator's multipliers of the independent rows (ordered as
+// partition.independent): G_indᵀ λ_ind stands for Q − M v̇, so neither the mass matrix nor the
+// forces are evaluated (half the cost of compute_reactions, for reactions at every step).
+// Equal to compute_reactions to the integrator's convergence of the equations of motion.
+Reactions reactions_from_multipliers(const Model& model, const State& state,
+                                     const Eigen::VectorXd& lambda_independent,
+                                     const ConstraintPartition& partition, Workspace& ws);
+
 }  // namespace limber::multibody

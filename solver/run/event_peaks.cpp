@@ -57,14 +57,14 @@ void EventPeakTracker::on_event(const multibody::HingeEvent& event) {
 }
 
 void EventPeakTracker::observe(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                               const Eigen::VectorXd& vdot) {
+                               const Eigen::VectorXd& lambda) {
   // Reactions only where a window wants them.
   bool inside = false;
   for (const results::PeakWindow& window : peaks_.windows) inside = inside || (t >= window.start.t && t <= window.end);
   if (!inside) return;
   // The samples' reactions (sample_record.cpp): on body j, joint frame.
   const multibody::Reactions reactions =
-      multibody::compute_reactions(model_, multibody::State{t, q, v, engaged_}, vdot, partition_, workspace_);
+      multibody::reactions_from_multipliers(model_, multibody::State{t, q, v, engaged_}, lambda, partition_, workspace_);
   for (results::PeakWindow& window : peaks_.windows) {
     if (t < window.start.t || t > window.end) continue;
     ++window.states;

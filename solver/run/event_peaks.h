@@ -38,9 +38,10 @@ class EventPeakTracker {
   // A located hinge event: a latch engaging opens a window at its time, "latch <name>" (its
   // n-th engagement: "latch <name> #n"); other events open none.
   void on_event(const multibody::HingeEvent& event);
-  // One integrator state (t ascending over the calls): reactions computed when t lies inside
-  // an open window, each such window's peaks raised.
-  void observe(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot);
+  // One integrator state (t ascending over the calls) with its multipliers of the independent
+  // rows: reactions computed when t lies inside an open window (from the multipliers:
+  // multibody::reactions_from_multipliers), each such window's peaks raised.
+  void observe(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& lambda);
 
   const results::EventPeaks& peaks() const { return peaks_; }
 

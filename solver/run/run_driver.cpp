@@ -191,10 +191,10 @@ RunSummary run_mechanism(const multibody::Model& model,
   if (settings.peak_window > 0.0) {
     peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
     peaks->open({0.0, "start"});
-    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
-                          const Eigen::VectorXd&) {
+    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd&,
+                          const Eigen::VectorXd& lambda) {
       for (; events_seen < system.events().size(); ++events_seen) peaks->on_event(system.events()[events_seen]);
-      peaks->observe(t, q, v, vdot);
+      peaks->observe(t, q, v, lambda);
     };
   }
   const std::vector<multibody::ClearancePair> clearance_pairs = multibody::clearance_pairs(model);

@@ -46,6 +46,53 @@ void Oscillator::acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::V
   gamma.resize(0);
 }
 
+// Coupled oscillators.
+void CoupledOscillators::kinematic_matrix(const Eigen::VectorXd&, Eigen::MatrixXd& N) const {
+  N = Eigen::MatrixXd::Identity(2, 2);
+}
+void CoupledOscillators::integrate_coordinates(const Eigen::VectorXd& q, const Eigen::VectorXd& dv,
+                                               Eigen::VectorXd& q_out) const {
+  q_out = q + dv;
+}
+void CoupledOscillators::coordinate_invariants(const Eigen::VectorXd&, Eigen::VectorXd& h,
+                                               Eigen::MatrixXd& h_q) const {
+  h.resize(0);
+  h_q.resize(0, 2);
+}
+void CoupledOscillators::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const {
+  M = Eigen::MatrixXd::Identity(2, 2);
+}
+void CoupledOscillators::generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd&,
+                                            Eigen::VectorXd& Q) const {
+  Q = -k_ * q;
+  Q(0) -= k_c_ * (q(0) - q(1));
+  Q(1) -= k_c_ * (q(1) - q(0));
+}
+void CoupledOscillators::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const {
+  g.resize(0);
+}
+void CoupledOscillators::constraint_jacobian_q(double, const Eigen::VectorXd&,
+                                               Eigen::MatrixXd& g_q) const {
+  g_q.resize(0, 2);
+}
+void CoupledOscillators::constraint_jacobian_v(double, const Eigen::VectorXd&,
+                                               Eigen::MatrixXd& G) const {
+  G.resize(0, 2);
+}
+void CoupledOscillators::constraint_time_derivative(double, const Eigen::VectorXd&,
+                                                    Eigen::VectorXd& g_t) const {
+  g_t.resize(0);
+}
+void CoupledOscillators::acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                          Eigen::VectorXd& gamma) const {
+  gamma.resize(0);
+}
+bool CoupledOscillators::diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const {
+  k = Eigen::VectorXd::Constant(2, k_);
+  c = Eigen::VectorXd::Zero(2);
+  return true;
+}
+
 // Cartesian pendulum.
 void CartesianPendulum::kinematic_matrix(const Eigen::VectorXd&, Eigen::MatrixXd& N) const {
   N = Eigen::MatrixXd::Identity(2, 2);

@@ -37,6 +37,39 @@ class Oscillator final : public MechanicalSystem {
   double m_, k_;
 };
 
+// Two unit masses on springs k to ground, joined by a spring k_c: x'' = −K x with
+// K = [[k + k_c, −k_c], [−k_c, k + k_c]]; x1 + x2 moves as one oscillator of ω² = k, x1 − x2 as
+// one of ω² = k + 2 k_c. It offers k alone as its diagonal stiffness, as a modal body offers
+// its modes' ω² but not a force element between two of its coordinates, so a structured
+// iteration matrix misses k_c.
+class CoupledOscillators final : public MechanicalSystem {
+ public:
+  CoupledOscillators(double stiffness, double coupling) : k_(stiffness), k_c_(coupling) {}
+  int nq() const override { return 2; }
+  int nv() const override { return 2; }
+  int nc() const override { return 0; }
+  int nh() const override { return 0; }
+  void kinematic_matrix(const Eigen::VectorXd&, Eigen::MatrixXd& N) const override;
+  void integrate_coordinates(const Eigen::VectorXd& q, const Eigen::VectorXd& dv,
+                             Eigen::VectorXd& q_out) const override;
+  void coordinate_invariants(const Eigen::VectorXd&, Eigen::VectorXd& h,
+                             Eigen::MatrixXd& h_q) const override;
+  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const override;
+  void generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd&,
+                          Eigen::VectorXd& Q) const override;
+  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const override;
+  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) const override;
+  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) const override;
+  void constraint_time_derivative(double, const Eigen::VectorXd&,
+                                  Eigen::VectorXd& g_t) const override;
+  void acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                        Eigen::VectorXd& gamma) const override;
+  bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
+
+ private:
+  double k_, k_c_;
+};
+
 // Planar pendulum in Cartesian coordinates: point mass m at q = (x, y) [m], pivot at the origin,
 // gravity −g0 ŷ, viscous damping force −c v; one constraint g = ½(x² + y² − L²) = 0 with
 // λ = rod tension / L [N/m]. θ is measured from the downward vertical: (x, y) = L (sin θ, −cos θ).
