@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "app/json_text.h"
+#include "core/json_text.h"
 
 namespace limber::app {
 

@@ -14,7 +14,7 @@
 
 #include "app/command.h"
 #include "app/event_peaks_text.h"
-#include "app/json_text.h"
+#include "core/json_text.h"
 #include "app/run_progress.h"
 #include "app/settings_overrides.h"
 #include "app/stop_signal.h"

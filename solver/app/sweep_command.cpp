@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "app/command.h"
-#include "app/json_text.h"
+#include "core/json_text.h"
 #include "app/stop_signal.h"
 #include "app/sweep_ranks.h"
 #include "core/error.h"

@@ -1,9 +1,6 @@
 #include "sweep/flat_json.h"
 
-#include <cmath>
 #include <cstdlib>
-
-#include <fmt/format.h>
 
 namespace limber::sweep {
 
@@ -57,22 +54,5 @@ std::optional<std::string> json_string_field(const std::string& text, const std:
   }
   return value;
 }
-
-std::string json_quote(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      quoted += '\\';
-      quoted += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      quoted += fmt::format("\\u{:04x}", static_cast<int>(c));
-    } else {
-      quoted += c;
-    }
-  }
-  return quoted + "\"";
-}
-
-std::string json_value(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
 
 }  // namespace limber::sweep

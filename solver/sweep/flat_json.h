@@ -1,4 +1,4 @@
-// Fields of the flat JSON objects `limber sweep` reads back: `limber run --json`'s output and
+// Fields of the flat JSON objects (written with core/json_text.h) `limber sweep` reads back: `limber run --json`'s output and
 // the sweep's own process.json. A field is found by its key anywhere in the text, so only keys
 // that occur once in the object may be read (true of every key read here: "status", "wall_s",
 // "steps", ..., "energy_relative" inside "accuracy").
@@ -14,11 +14,5 @@ std::optional<double> json_number_field(const std::string& text, const std::stri
 
 // The string after `"key": `, unescaped (\uXXXX above ASCII becomes '?'); nullopt when absent.
 std::optional<std::string> json_string_field(const std::string& text, const std::string& key);
-
-// `text` as a quoted JSON string.
-std::string json_quote(const std::string& text);
-
-// `value` in the shortest form that reads back exactly; null when not finite.
-std::string json_value(double value);
 
 }  // namespace limber::sweep

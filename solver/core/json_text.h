@@ -1,9 +1,10 @@
-// Pieces of JSON text (RFC 8259) for machine-readable output.
+// Pieces of JSON text (RFC 8259) for machine-readable output: the commands' --json, the run
+// record (run/run_record.h), the sweep's and the selection's documents.
 #pragma once
 
 #include <string>
 
-namespace limber::app {
+namespace limber {
 
 // `text` as a quoted JSON string (quotes, backslashes and control characters escaped).
 std::string json_string(const std::string& text);
@@ -11,4 +12,4 @@ std::string json_string(const std::string& text);
 // `value` in the shortest form that reads back exactly; null when not finite.
 std::string json_number(double value);
 
-}  // namespace limber::app
+}  // namespace limber

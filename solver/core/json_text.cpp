@@ -1,10 +1,10 @@
-#include "app/json_text.h"
+#include "core/json_text.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-namespace limber::app {
+namespace limber {
 
 std::string json_string(const std::string& text) {
   std::string out = "\"";
@@ -42,4 +42,4 @@ std::string json_number(double value) {
   return fmt::format("{}", value);
 }
 
-}  // namespace limber::app
+}  // namespace limber
