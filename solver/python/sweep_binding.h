@@ -1,0 +1,23 @@
+// limber.sweep: `limber sweep` run as a child process of the `limber` executable, its --json
+// document returned as a dict. Every grid point of a sweep is already a `limber run` child
+// process (single-threaded, its peak memory measured by the kernel, a crash costing one point:
+// sweep/process_pool.h), so the sweep itself runs as one more: the numbers are the command's.
+// The executable is found in this order: $LIMBER_EXECUTABLE; <prefix>/bin/limber beside an
+// installed module (<prefix>/lib/python3/dist-packages); the build tree's, when the module is
+// the build tree's; `limber` on PATH.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <filesystem>
+
+namespace limber::python {
+
+// The `limber` executable, found as above. Throws std::runtime_error naming the places looked
+// at when there is none.
+std::filesystem::path limber_executable();
+
+// Adds sweep to `module`.
+void bind_sweep(pybind11::module_& module);
+
+}  // namespace limber::python
