@@ -8,17 +8,14 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
 #include "python/case_binding.h"
 #include "python/interruptible.h"
-#include "python/temporary_folder.h"
-#include "sweep/process_pool.h"
+#include "sweep/sweep_study.h"
 
 namespace py = pybind11;
 
@@ -26,69 +23,69 @@ namespace limber::python {
 
 namespace {
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The last non-empty line of `text`, without the command's "limber: error: " prefix.
-std::string last_line(const std::string& text) {
-  std::string line;
-  std::istringstream lines(text);
-  for (std::string next; std::getline(lines, next);) {
-    if (!next.empty()) line = next;
+// The children's threads: one each (as `limber sweep` sets them) unless the user set a
+// number; restored when the sweep ends.
+class SingleThreadedChildren {
+ public:
+  SingleThreadedChildren() {
+    for (const char* name : {"OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"}) {
+      if (std::getenv(name) == nullptr && setenv(name, "1", 0) == 0) set_.push_back(name);
+    }
   }
-  const std::string prefix = "limber: error: ";
-  return line.rfind(prefix, 0) == 0 ? line.substr(prefix.size()) : line;
-}
+  ~SingleThreadedChildren() {
+    for (const char* name : set_) unsetenv(name);
+  }
+  SingleThreadedChildren(const SingleThreadedChildren&) = delete;
+  SingleThreadedChildren& operator=(const SingleThreadedChildren&) = delete;
 
-std::string option_value(double value) { return fmt::format("{}", value); }
+ private:
+  std::vector<const char*> set_;
+};
 
 py::object sweep(const py::object& case_or_path, const std::vector<std::string>& over,
                  std::optional<std::filesystem::path> output, const std::string& reference,
                  std::optional<double> target, const std::string& norm, const std::vector<std::string>& quantities,
                  int jobs, bool fresh, std::optional<double> t_end, std::optional<double> atol,
-                 std::optional<double> max_wall) {
-  // The child reads the case file itself.
+                 std::optional<double> max_wall, std::optional<py::function> log) {
+  // The points' `limber run` children read the case file themselves.
   const std::string case_file = case_of(case_or_path)->file;
   if (case_file == "<dict>") throw InputError("expected a case file (a path or limber.load_case's Case), got a dict case");
-  if (over.empty()) throw InputError("expected over=['integrator', 'rtol', ...] (the axes), got none");
-  std::vector<std::string> argv = {limber_executable().string(), "sweep", case_file, "--over"};
-  argv.insert(argv.end(), over.begin(), over.end());
-  if (output) argv.insert(argv.end(), {"-o", output->string()});
-  argv.insert(argv.end(), {"--reference", reference, "--norm", norm, "--jobs", std::to_string(jobs)});
-  if (target) argv.insert(argv.end(), {"--target", option_value(*target)});
-  if (!quantities.empty()) argv.insert(argv.end(), {"--quantities", fmt::format("{}", fmt::join(quantities, ","))});
-  if (fresh) argv.push_back("--fresh");
-  if (t_end) argv.insert(argv.end(), {"--t-end", option_value(*t_end)});
-  if (atol) argv.insert(argv.end(), {"--atol", option_value(*atol)});
-  if (max_wall) argv.insert(argv.end(), {"--max-wall", option_value(*max_wall)});
-  argv.push_back("--json");
+  if (norm != "rms" && norm != "peak") throw InputError("expected norm 'rms' or 'peak', got '" + norm + "'");
+  sweep::SweepRequest request;
+  request.case_file = case_file;
+  request.root = output ? *output
+                        : std::filesystem::path("out") / (std::filesystem::path(case_file).stem().string() + "_sweep");
+  request.over = over;
+  request.reference = reference;
+  request.target = target;
+  request.rms = norm == "rms";
+  request.quantities = quantities;
+  request.jobs = jobs;
+  request.fresh = fresh;
+  request.t_end = t_end;
+  request.atol = atol;
+  request.max_wall = max_wall;
+  request.executable = limber_executable();
 
-  const TemporaryFolder streams;
-  const sweep::ChildJob job{argv, streams.path() / "stdout.json", streams.path() / "stderr.txt"};
-  sweep::ChildOutcome outcome;
+  const SingleThreadedChildren single_threaded;
+  std::optional<sweep::SweepOutcome> outcome;
   run_interruptible([&](const std::atomic<bool>& stop) {
-    sweep::PoolHooks hooks;
-    hooks.on_finish = [&](std::size_t, const sweep::ChildOutcome& o) { outcome = o; };
-    // SIGTERM: the sweep stops its points, keeps the finished ones and writes its table.
+    sweep::SweepHooks hooks;
+    if (log) {
+      hooks.text = hooks.log = [&](const std::string& line) {
+        py::gil_scoped_acquire acquired;
+        (*log)(line);
+      };
+    }
+    // SIGTERM to the running points: each closes its file as "interrupted"; a rerun resumes.
     hooks.should_stop = [&] { return stop.load(); };
-    sweep::run_processes({job}, 1, hooks);
+    outcome = sweep::run_sweep(request, sweep::RankGroup{}, hooks);
   });
-  const std::string errors = read_text(job.stderr_file);
-  if (!outcome.spawn_error.empty()) throw std::runtime_error("cannot start " + argv[0] + ": " + outcome.spawn_error);
-  if (outcome.exit_code == 0) return py::module_::import("json").attr("loads")(read_text(job.stdout_file));
-  if (outcome.exit_code == 1) throw InputError(last_line(errors));
-  if (outcome.exit_code == 4) {  // interrupted from outside (SIGTERM to the child)
-    PyErr_SetNone(PyExc_KeyboardInterrupt);
+  if (outcome->interrupted) {
+    PyErr_SetString(PyExc_KeyboardInterrupt, "the sweep was stopped; finished points are kept and a rerun resumes");
     throw py::error_already_set();
   }
-  throw std::runtime_error(fmt::format("limber sweep ended with {}: {}",
-                                       outcome.signal ? fmt::format("signal {}", outcome.signal)
-                                                      : fmt::format("exit code {}", outcome.exit_code),
-                                       last_line(errors)));
+  return py::module_::import("json").attr("loads")(outcome->document);
 }
 
 }  // namespace
@@ -126,7 +123,8 @@ void bind_sweep(py::module_& module) {
              py::arg("reference") = "tight", py::arg("target") = py::none(), py::arg("norm") = "rms",
              py::arg("quantities") = std::vector<std::string>{}, py::arg("jobs") = 0, py::arg("fresh") = false,
              py::arg("t_end") = py::none(), py::arg("atol") = py::none(), py::arg("max_wall") = py::none(),
-             R"(sweep(case_or_path, *, over, output=None, reference='tight', target=None, norm='rms', quantities=[], jobs=0, fresh=False, t_end=None, atol=None, max_wall=None) -> dict
+             py::arg("log") = py::none(),
+             R"(sweep(case_or_path, *, over, output=None, reference='tight', target=None, norm='rms', quantities=[], jobs=0, fresh=False, t_end=None, atol=None, max_wall=None, log=None) -> dict
 
 Runs a case over a grid of settings and measures each point's cost and error against a
 reference, as `limber sweep` does (docs/sweep.md), and returns what its --json prints:
@@ -134,9 +132,10 @@ reference, as `limber sweep` does (docs/sweep.md), and returns what its --json p
 'target_met', 'chosen', 'run_options', 'points' (one dict per grid point: its setting, status,
 wall_s, steps, errors, ...), 'directory'.
 
-`limber sweep` runs as a child process of the `limber` executable (each grid point is a child
-`limber run` of it, single-threaded, its peak memory measured); found at $LIMBER_EXECUTABLE,
-beside the installed module (<prefix>/bin/limber), in the build tree, or on PATH.
+The sweep runs in this process, through the library `limber sweep` uses; each grid point, as
+in the command, is a child `limber run` process (single-threaded, its peak memory measured, a
+crash costing one point) of the `limber` executable, found at $LIMBER_EXECUTABLE, beside the
+installed module (<prefix>/bin/limber), in the build tree, or on PATH.
 
 Arguments (the options of `limber sweep` of the same names):
   case_or_path  a case file's path, or a Case read from one (limber.load_case)
@@ -155,10 +154,11 @@ Arguments (the options of `limber sweep` of the same names):
   t_end         end time of every run [s]
   atol          IDA absolute tolerance of every IDA run
   max_wall      wall-clock budget of each point's run [s]
+  log           a callable log(line) given the command's progress lines (GIL held)
 
 Ctrl-C stops the sweep (finished points are kept; the same call resumes) and raises
-KeyboardInterrupt. Raises CaseError for bad input (the command's message), RuntimeError
-when the reference run fails or the command ends otherwise.)");
+KeyboardInterrupt. Raises CaseError for bad input, RuntimeError when the reference run fails
+or its own accuracy check does.)");
 }
 
 }  // namespace limber::python

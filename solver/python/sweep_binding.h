@@ -1,8 +1,7 @@
-// limber.sweep: `limber sweep` run as a child process of the `limber` executable, its --json
-// document returned as a dict. Every grid point of a sweep is already a `limber run` child
-// process (single-threaded, its peak memory measured by the kernel, a crash costing one point:
-// sweep/process_pool.h), so the sweep itself runs as one more: the numbers are the command's.
-// The executable is found in this order: $LIMBER_EXECUTABLE; <prefix>/bin/limber beside an
+// limber.sweep: `limber sweep`'s study (sweep/sweep_study.h) in this process, its --json
+// document returned as a dict. Every grid point stays a `limber run` child process, as in the
+// command (single-threaded, its peak memory measured by the kernel, a crash costing one point:
+// sweep/process_pool.h), of the `limber` executable, found in this order: $LIMBER_EXECUTABLE; <prefix>/bin/limber beside an
 // installed module (<prefix>/lib/python3/dist-packages); the build tree's, when the module is
 // the build tree's; `limber` on PATH.
 #pragma once

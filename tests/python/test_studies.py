@@ -1,6 +1,9 @@
-# limber.modes, limber.select and limber.sweep against their commands' --json: the same
-# library writes both documents (modes, select) or the command itself runs (sweep), so every
-# field is equal except wall times and the folders given.
+# limber.modes, limber.select and limber.sweep against their commands' --json: the module and
+# the command make the same library call and the same library writes both documents, so every
+# field is equal except wall times and the folders given; Ctrl-C stops a study.
+import os
+import signal
+
 import pytest
 
 import limber
@@ -86,3 +89,36 @@ def test_sweep_equals_the_command(cases, limber_cli, tmp_path):
 def test_sweep_bad_input_raises_case_error(cases, tmp_path):
     with pytest.raises(limber.CaseError, match="mesh"):
         limber.sweep(cases / "slider_crank_rigid.yaml", over=["mesh"], output=tmp_path)
+
+
+def test_ctrl_c_stops_a_selection_and_closes_its_run(coarse_slider_crank, tmp_path):
+    sent = []
+
+    def progress(t, t_end):
+        if t >= 0.02 and not sent:  # once: a second Ctrl-C would stop pytest itself
+            sent.append(t)
+            os.kill(os.getpid(), signal.SIGINT)  # what Ctrl-C sends
+
+    # The selection runs on a thread of its own; Python's main thread sees the signal.
+    with pytest.raises(KeyboardInterrupt):
+        limber.select(coarse_slider_crank, output=tmp_path, progress=progress)
+    normal = limber.read_results(tmp_path / "runs" / "normal")
+    assert normal.status == "interrupted"
+    # Seen within the main thread's 0.1 s look at its signals: a run of ~0.5 s for its 0.3 s
+    # stops well before its end.
+    assert 0.02 <= normal.time[-1] < 0.3
+
+
+def test_ctrl_c_stops_a_sweep(cases, tmp_path):
+    sent = []
+
+    def log(line):
+        if line.startswith("reference:") and not sent:
+            sent.append(line)
+            os.kill(os.getpid(), signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt):
+        limber.sweep(cases / "slider_crank_rigid.yaml", over=["integrator=galpha", "step=1e-3"],
+                     output=tmp_path, log=log)
+    # Nothing after the reference ran: no point, no table.
+    assert not (tmp_path / "sweep" / "work_precision.json").exists()
