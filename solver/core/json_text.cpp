@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace limber {
 
@@ -40,6 +41,33 @@ std::string json_string(const std::string& text) {
 std::string json_number(double value) {
   if (!std::isfinite(value)) return "null";
   return fmt::format("{}", value);
+}
+
+std::string json_read_string(const std::string& text, std::size_t& at) {
+  std::string value;
+  for (++at; at < text.size() && text[at] != '"'; ++at) {
+    if (text[at] != '\\' || at + 1 >= text.size()) {
+      value += text[at];
+      continue;
+    }
+    const char escaped = text[++at];
+    switch (escaped) {
+      case 'n': value += '\n'; break;
+      case 't': value += '\t'; break;
+      case 'r': value += '\r'; break;
+      case 'b': value += '\b'; break;
+      case 'f': value += '\f'; break;
+      case 'u': {
+        const long code = at + 4 < text.size() ? std::strtol(text.substr(at + 1, 4).c_str(), nullptr, 16) : 0;
+        value += code > 0 && code < 128 ? static_cast<char>(code) : '?';
+        at += 4;
+        break;
+      }
+      default: value += escaped;  // \" \\ \/
+    }
+  }
+  if (at < text.size()) ++at;
+  return value;
 }
 
 }  // namespace limber

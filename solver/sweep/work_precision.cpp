@@ -10,6 +10,7 @@
 #include "select/selection_files.h"
 #include "select/series_error.h"
 #include "core/json_text.h"
+#include "run/run_record.h"
 #include "sweep/flat_json.h"
 #include "results/file_names.h"
 #include "results/results_layout.h"
@@ -81,19 +82,26 @@ SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_di
   row.peak_rss_mib = json_number_field(process, "peak_rss_kib").value_or(kNaN) / 1024.0;
   const std::string spawn_error = json_string_field(process, "spawn_error").value_or("");
 
-  // The child's report; its status is that of results.h5.
+  // The child's run record (run/run_record.h); its status is that of results.h5. A record cut
+  // short by a crash counts as none.
   const std::string report = read_text(point_directory / results::kRunJsonFileName);
-  row.status = json_string_field(report, "status").value_or("");
-  row.message = json_string_field(report, "message").value_or("");
-  row.wall_s = json_number_field(report, "wall_s").value_or(kNaN);
-  row.steps = static_cast<long>(json_number_field(report, "steps").value_or(0));
-  row.rejected_steps = static_cast<long>(json_number_field(report, "rejected_steps").value_or(0));
-  row.newton_iterations = static_cast<long>(json_number_field(report, "newton_iterations").value_or(0));
-  row.jacobian_evaluations = static_cast<long>(json_number_field(report, "jacobian_evaluations").value_or(0));
-  row.residual_evaluations = static_cast<long>(json_number_field(report, "residual_evaluations").value_or(0));
-  row.energy_relative = json_number_field(report, "energy_relative").value_or(kNaN);
-  row.local_error = json_number_field(report, "local_error").value_or(kNaN);
-  row.drift_relative = json_number_field(report, "drift_relative").value_or(kNaN);
+  run::RunRecord record;
+  try {
+    if (!report.empty()) record = run::read_run_record(report);
+  } catch (const InputError&) {
+    record = {};
+  }
+  row.status = record.status;
+  row.message = record.message;
+  row.wall_s = record.wall_s;
+  row.steps = record.steps;
+  row.rejected_steps = record.rejected_steps;
+  row.newton_iterations = record.newton_iterations;
+  row.jacobian_evaluations = record.jacobian_evaluations;
+  row.residual_evaluations = record.residual_evaluations;
+  row.energy_relative = record.energy_relative;
+  row.local_error = record.local_error;
+  row.drift_relative = record.drift_relative;
 
   // No report: the child ended on bad input (exit 1), a signal, or never started.
   if (row.status.empty()) {
