@@ -139,12 +139,9 @@ select::SelectionRequest request_of(const SelectOptions& options) {
                      : std::filesystem::path(options.output_dir);
   request.keep = options.keep;
   request.target = options.target;
-  request.rank_by = options.rank_by == "rms" ? select::RankBy::kRms : select::RankBy::kPeak;
-  request.norm = options.norm == "rms"    ? select::ErrorNorm::kRms
-                 : options.norm == "peak" ? select::ErrorNorm::kPeak
-                                          : select::ErrorNorm::kEvent;
-  request.candidates.static_kind =
-      options.static_kind == "constraint" ? select::StaticModeKind::kConstraint : select::StaticModeKind::kAttachment;
+  request.rank_by = select::rank_by_from(options.rank_by);
+  request.norm = select::error_norm_from(options.norm);
+  request.candidates.static_kind = select::static_kind_from(options.static_kind);
   request.candidates.max_single = options.max_single;
   request.candidates.reference_normal = options.reference_normal;
   request.policy = {options.keep_step, options.max_refinement, 1.0, options.whole_run};

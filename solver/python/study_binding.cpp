@@ -74,23 +74,13 @@ py::object select(const py::object& case_or_path, std::optional<std::filesystem:
                   std::optional<double> step, std::optional<double> rtol, std::optional<double> t_end,
                   std::optional<py::function> progress) {
   const std::shared_ptr<const io::Case> input = case_of(case_or_path);
-  const auto one_of = [](const std::string& name, const std::string& value, std::vector<std::string> allowed) {
-    for (const std::string& a : allowed) {
-      if (value == a) return;
-    }
-    throw InputError("expected " + name + " one of " + allowed.front() + ", " + allowed.back() + ", got '" + value + "'");
-  };
-  one_of("rank_by", rank_by, {"peak", "rms"});
-  one_of("norm", norm, {"event", "peak", "rms"});
-  one_of("static_modes", static_modes, {"attachment", "constraint"});
   select::SelectionRequest request;
   request.root = output_folder(*input, output, "_select");
   request.keep = keep;
   request.target = target;
-  request.rank_by = rank_by == "rms" ? select::RankBy::kRms : select::RankBy::kPeak;
-  request.norm = norm == "rms" ? select::ErrorNorm::kRms : norm == "peak" ? select::ErrorNorm::kPeak : select::ErrorNorm::kEvent;
-  request.candidates.static_kind =
-      static_modes == "constraint" ? select::StaticModeKind::kConstraint : select::StaticModeKind::kAttachment;
+  request.rank_by = select::rank_by_from(rank_by, "rank_by");
+  request.norm = select::error_norm_from(norm, "norm");
+  request.candidates.static_kind = select::static_kind_from(static_modes, "static_modes");
   request.candidates.max_single = max_single;
   request.candidates.reference_normal = reference_normal;
   request.policy = {keep_step, max_refinement, 1.0, whole_run};

@@ -120,6 +120,29 @@ std::string to_string(ErrorNorm norm) {
   return norm == ErrorNorm::kRms ? "rms" : norm == ErrorNorm::kPeak ? "peak" : "event";
 }
 
+namespace {
+
+[[noreturn]] void refuse(const std::string& option, const std::string& expected, const std::string& word) {
+  throw InputError(fmt::format("expected {} {}, got '{}'", option, expected, word));
+}
+
+}  // namespace
+
+RankBy rank_by_from(const std::string& word, const std::string& option) {
+  if (word != "peak" && word != "rms") refuse(option, "peak or rms", word);
+  return word == "rms" ? RankBy::kRms : RankBy::kPeak;
+}
+
+ErrorNorm error_norm_from(const std::string& word, const std::string& option) {
+  if (word != "event" && word != "peak" && word != "rms") refuse(option, "event, peak or rms", word);
+  return word == "rms" ? ErrorNorm::kRms : word == "peak" ? ErrorNorm::kPeak : ErrorNorm::kEvent;
+}
+
+StaticModeKind static_kind_from(const std::string& word, const std::string& option) {
+  if (word != "attachment" && word != "constraint") refuse(option, "attachment or constraint", word);
+  return word == "constraint" ? StaticModeKind::kConstraint : StaticModeKind::kAttachment;
+}
+
 void check_request(const SelectionRequest& request) {
   if (!(request.keep > 0.0 && request.keep <= 1.0)) {
     throw InputError(fmt::format("expected --keep in (0, 1], got {:g}", request.keep));

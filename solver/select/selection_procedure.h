@@ -42,6 +42,12 @@ struct SelectionRequest {
 // "event", "peak" or "rms".
 std::string to_string(ErrorNorm norm);
 
+// The options' words as values: "peak" | "rms"; "event" | "peak" | "rms"; "attachment" |
+// "constraint". Throw InputError naming `option` for another word.
+RankBy rank_by_from(const std::string& word, const std::string& option = "--rank-by");
+ErrorNorm error_norm_from(const std::string& word, const std::string& option = "--norm");
+StaticModeKind static_kind_from(const std::string& word, const std::string& option = "--static-modes");
+
 // Throws InputError (naming the option as `limber select` spells it) for a value out of range.
 void check_request(const SelectionRequest& request);
 
