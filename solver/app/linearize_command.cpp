@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "app/command.h"
-#include "app/json_text.h"
+#include "core/json_text.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "app/command.h"
-#include "app/json_text.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/modes_file.h"
+#include "io/modes_json.h"
 #include "io/vtu_writer.h"
 #include "modal/component_modes.h"
 #include "mode_animation.h"
@@ -70,39 +70,6 @@ void print_table(std::FILE* out, const BodyOutcome& outcome) {
   for (const std::string& notice : outcome.result.notices) {
     fmt::print(out, "  notice: {}\n", notice);
   }
-}
-
-// {"bodies": {"<name>": {"dofs": N, "modes": [...]}}}, rigid modes included.
-std::string json_report(const std::vector<BodyOutcome>& outcomes,
-                        const std::vector<std::string>& failures) {
-  std::string text = "{\"bodies\": {";
-  for (std::size_t b = 0; b < outcomes.size(); ++b) {
-    const BodyOutcome& outcome = outcomes[b];
-    text += (b ? ", " : "") + json_string(outcome.body->name) +
-            ": {\"dofs\": " + std::to_string(outcome.body->model.dof_count()) + ", \"modes\": [";
-    bool first = true;
-    auto add_modes = [&](const std::vector<modal::ModeInfo>& modes) {
-      for (const modal::ModeInfo& mode : modes) {
-        text += std::string(first ? "" : ", ") +
-                "{\"kind\": " + json_string(modal::to_string(mode.kind)) +
-                ", \"frequency_hz\": " + json_number(mode.frequency_hz) +
-                ", \"label\": " + json_string(mode.label) + "}";
-        first = false;
-      }
-    };
-    add_modes(outcome.result.mode_set.rigid_modes);
-    add_modes(outcome.result.mode_set.modes);
-    text += "]}";
-  }
-  text += "}";
-  // Bodies whose computation failed (only present after a numerical failure).
-  if (!failures.empty()) {
-    text += ", \"failures\": [";
-    for (std::size_t i = 0; i < failures.size(); ++i)
-      text += (i ? ", " : "") + json_string(failures[i]);
-    text += "]";
-  }
-  return text + "}";
 }
 
 // One PNG loop (and GIF) per body and mode. A machine without an offscreen OpenGL context
@@ -185,7 +152,7 @@ int run_modes(const ModesOptions& options) {
   // Mode-shape animations, drawn from the modes.h5 just written (render/ reads files only).
   if (options.animate && !outcomes.empty()) animate(animation, h5_path, directory, table);
 
-  if (options.json) fmt::print(stdout, "{}\n", json_report(outcomes, failures));
+  if (options.json) fmt::print(stdout, "{}\n", io::modes_json(written, failures));
   for (const std::string& failure : failures) fmt::print(stderr, "limber: error: {}\n", failure);
   return failures.empty() ? kExitOk : kExitNumerical;
 }

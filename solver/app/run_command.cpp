@@ -14,7 +14,6 @@
 
 #include "app/command.h"
 #include "app/event_peaks_text.h"
-#include "app/json_text.h"
 #include "app/run_progress.h"
 #include "app/settings_overrides.h"
 #include "app/stop_signal.h"
@@ -25,6 +24,7 @@
 #include "results/results_writer.h"
 #include "run/case_run.h"
 #include "run/run_driver.h"
+#include "run/run_record.h"
 #include "results/results_layout.h"
 #include "results/shock_spectra_file.h"
 
@@ -117,12 +117,6 @@ void print_start(std::FILE* out, const multibody::Model& model, const run::Prepa
   }
 }
 
-std::string json_string_list(const std::vector<std::string>& values) {
-  std::string text = "[";
-  for (std::size_t k = 0; k < values.size(); ++k) text += (k ? ", " : "") + json_string(values[k]);
-  return text + "]";
-}
-
 // The run's accuracy estimate on `out`, each warning on stderr.
 void print_accuracy(std::FILE* out, const run::AccuracyEstimate& accuracy) {
   fmt::print(out, "accuracy: energy balance {:.2g} of the energy scale, local error {:.2g}, "
@@ -141,29 +135,6 @@ std::string describe_event(const multibody::Model& model, const multibody::Hinge
   return fmt::format("{} {} (joint {}) {} at t = {:.9g} s: angle {:.4f} deg, rate {:.4g} deg/s",
                      multibody::to_string(limit.kind), limit.name, model.joints[limit.joint].name,
                      what, event.t, event.angle * kDegrees, event.rate * kDegrees);
-}
-
-std::string json_events(const multibody::Model& model, const std::vector<multibody::HingeEvent>& events) {
-  std::string text = "[";
-  for (std::size_t k = 0; k < events.size(); ++k) {
-    const multibody::HingeEvent& e = events[k];
-    const auto& limit = std::get<multibody::HingeLimit>(model.forces[e.force]);
-    text += fmt::format("{}{{\"t\": {}, \"name\": {}, \"kind\": {}, \"joint\": {}, \"engaged\": {}, "
-                        "\"angle\": {}, \"rate\": {}}}",
-                        k ? ", " : "", json_number(e.t), json_string(limit.name),
-                        json_string(multibody::to_string(limit.kind)),
-                        json_string(model.joints[limit.joint].name), e.engaged ? "true" : "false",
-                        json_number(e.angle), json_number(e.rate));
-  }
-  return text + "]";
-}
-
-// {"minimum", "time", "pair": [body_a, body_b]}, or null when no clearance was checked.
-std::string json_clearance(const run::ClearanceMinimum& clearance) {
-  if (!clearance.checked) return "null";
-  return fmt::format("{{\"minimum\": {}, \"time\": {}, \"pair\": {}}}",
-                     json_number(clearance.distance), json_number(clearance.time),
-                     json_string_list({clearance.body_a, clearance.body_b}));
 }
 
 // The run's minimum clearance on `out`, and a warning on stderr when two bodies interfere.
@@ -206,36 +177,6 @@ void print_shock_spectra(std::FILE* out, const results::ShockSpectra& spectra, c
   }
 }
 
-// {"energy_relative", "energy_residual", "energy_scale", "local_error", "drift_relative",
-// "warnings": [...]}.
-std::string json_accuracy(const run::AccuracyEstimate& a) {
-  return fmt::format("{{\"energy_relative\": {}, \"energy_residual\": {}, \"energy_scale\": {}, "
-                     "\"local_error\": {}, \"drift_relative\": {}, \"warnings\": {}}}",
-                     json_number(a.energy_relative), json_number(a.energy_residual),
-                     json_number(a.energy_scale), json_number(a.local_error),
-                     json_number(a.drift_relative), json_string_list(a.warnings));
-}
-
-// {"iterations", "force_residual", "force_scale", "unstable_directions"} of the static start, or null.
-std::string json_statics(const run::RunSummary& summary) {
-  if (!summary.statics) return "null";
-  const multibody::StaticsResult& s = *summary.statics;
-  return fmt::format("{{\"iterations\": {}, \"force_residual\": {}, \"force_scale\": {}, "
-                     "\"unstable_directions\": {}}}",
-                     s.iterations, json_number(s.force_residual), json_number(s.force_scale),
-                     s.unstable_directions);
-}
-
-// [{"t", "joints": [...]}] of the hold-downs released.
-std::string json_releases(const run::RunSummary& summary) {
-  std::string text = "[";
-  for (std::size_t k = 0; k < summary.releases.size(); ++k) {
-    text += fmt::format("{}{{\"t\": {}, \"joints\": {}}}", k ? ", " : "",
-                        json_number(summary.releases[k].t), json_string_list(summary.releases[k].joints));
-  }
-  return text + "]";
-}
-
 // The static start and the releases, on `out`.
 void print_start_and_releases(std::FILE* out, const run::RunSummary& summary) {
   if (summary.statics && summary.statics->status == multibody::StaticsStatus::kOk) {
@@ -245,33 +186,6 @@ void print_start_and_releases(std::FILE* out, const run::RunSummary& summary) {
   for (const run::JointRelease& release : summary.releases) {
     fmt::print(out, "released: {} at t = {:g} s\n", fmt::join(release.joints, ", "), release.t);
   }
-}
-
-std::string json_report(const multibody::Model& model, const run::RunSummary& summary,
-                        const std::string& results_path) {
-  std::vector<std::string> names, details;
-  for (const run::RedundantEquationReport& r : summary.redundant) {
-    names.push_back(r.name);
-    details.push_back(r.description);
-  }
-  const integrate::Statistics& s = summary.statistics;
-  return fmt::format(
-      "{{\"status\": {}, \"message\": {}, \"integrator\": {}, \"t_end\": {}, \"t_reached\": {}, "
-      "\"samples\": {}, \"steps\": {}, \"rejected_steps\": {}, \"newton_failures\": {}, "
-      "\"newton_iterations\": {}, \"jacobian_evaluations\": {}, \"residual_evaluations\": {}, "
-      "\"wall_s\": {}, \"max_constraint_violation\": {}, \"max_velocity_violation\": {}, "
-      "\"redundant\": {}, \"redundant_details\": {}, \"events\": {}, \"statics\": {}, "
-      "\"releases\": {}, \"clearance\": {}, \"accuracy\": {}, \"event_peaks\": {}, \"results\": {}}}",
-      json_string(!summary.ok ? results::layout::status::kFailed : summary.accurate() ? results::layout::status::kOk : results::layout::status::kInaccurate),
-      json_string(summary.message),
-      json_string(summary.integrator), json_number(summary.t_end), json_number(summary.t_reached),
-      summary.samples, s.steps, s.rejected_steps, s.newton_failures, s.newton_iterations,
-      s.jacobian_evaluations, s.residual_evaluations, json_number(summary.wall_seconds),
-      json_number(summary.max_position_violation),
-      json_number(summary.max_velocity_violation), json_string_list(names),
-      json_string_list(details), json_events(model, summary.events), json_statics(summary),
-      json_releases(summary), json_clearance(summary.clearance), json_accuracy(summary.accuracy),
-      json_event_peaks(summary.peaks), json_string(results_path));
 }
 
 int run_case(const RunOptions& options) {
@@ -363,7 +277,7 @@ int run_case(const RunOptions& options) {
     if (summary.shock_spectra) print_shock_spectra(text, *summary.shock_spectra, directory.string());
   }
   fmt::print(text, "wrote {}\n", results_path);
-  if (options.json) fmt::print(stdout, "{}\n", json_report(model, summary, results_path));
+  if (options.json) fmt::print(stdout, "{}\n", run::run_record_json(model, summary, results_path));
   if (!summary.ok) {
     fmt::print(stderr, "limber: error: run failed: {} ({} samples kept in {})\n", summary.message,
                summary.samples, results_path);

@@ -5,6 +5,7 @@
 #include "python/case_binding.h"
 #include "python/results_binding.h"
 #include "python/run_binding.h"
+#include "python/study_binding.h"
 
 PYBIND11_MODULE(limber, module) {
   module.doc() =
@@ -12,9 +13,11 @@ PYBIND11_MODULE(limber, module) {
       "  case = limber.load_case('cases/slider_crank.yaml')   # or limber.case_from_dict(d)\n"
       "  results = limber.run(case, t_end=0.1)\n"
       "  results.joints['R3'].force_joint    # numpy [ns, 3]\n"
-      "  limber.read_results('out/slider_crank')   # what `limber run` wrote";
+      "  limber.read_results('out/slider_crank')   # what `limber run` wrote\n"
+      "  limber.modes(case), limber.select(case), limber.sweep(path, over=[...])   # their --json";
   module.attr("__version__") = LIMBER_VERSION;
   limber::python::bind_case(module);
   limber::python::bind_results(module);
   limber::python::bind_run(module);
+  limber::python::bind_studies(module);
 }

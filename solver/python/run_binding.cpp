@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "python/case_binding.h"
+#include "python/interruptible.h"
+#include "python/temporary_folder.h"
 #include "python/results_binding.h"
 #include "run/case_run.h"
 
@@ -22,31 +24,6 @@ namespace py = pybind11;
 namespace limber::python {
 
 namespace {
-
-// A folder of its own under the system's temporary folder, removed with this object.
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "limber-run-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder for the run");
-    path_ = pattern;
-  }
-  ~TemporaryFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TemporaryFolder(const TemporaryFolder&) = delete;
-  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
-bool in_main_thread() {
-  const py::module_ threading = py::module_::import("threading");
-  return threading.attr("current_thread")().is(threading.attr("main_thread")());
-}
 
 py::object run(const py::object& case_or_path, std::optional<std::string> integrator, std::optional<double> step,
                std::optional<double> rtol, std::optional<double> t_end, std::optional<std::filesystem::path> output,

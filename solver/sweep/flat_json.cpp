@@ -1,9 +1,8 @@
 #include "sweep/flat_json.h"
 
-#include <cmath>
-#include <cstdlib>
+#include "core/json_text.h"
 
-#include <fmt/format.h>
+#include <cstdlib>
 
 namespace limber::sweep {
 
@@ -33,46 +32,7 @@ std::optional<double> json_number_field(const std::string& text, const std::stri
 std::optional<std::string> json_string_field(const std::string& text, const std::string& key) {
   std::size_t at = value_start(text, key);
   if (at == std::string::npos || at >= text.size() || text[at] != '"') return std::nullopt;
-  std::string value;
-  for (++at; at < text.size() && text[at] != '"'; ++at) {
-    if (text[at] != '\\' || at + 1 >= text.size()) {
-      value += text[at];
-      continue;
-    }
-    const char escaped = text[++at];
-    switch (escaped) {
-      case 'n': value += '\n'; break;
-      case 't': value += '\t'; break;
-      case 'r': value += '\r'; break;
-      case 'b': value += '\b'; break;
-      case 'f': value += '\f'; break;
-      case 'u': {
-        const long code = at + 4 < text.size() ? std::strtol(text.substr(at + 1, 4).c_str(), nullptr, 16) : 0;
-        value += code > 0 && code < 128 ? static_cast<char>(code) : '?';
-        at += 4;
-        break;
-      }
-      default: value += escaped;  // \" \\ \/
-    }
-  }
-  return value;
+  return json_read_string(text, at);
 }
-
-std::string json_quote(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      quoted += '\\';
-      quoted += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      quoted += fmt::format("\\u{:04x}", static_cast<int>(c));
-    } else {
-      quoted += c;
-    }
-  }
-  return quoted + "\"";
-}
-
-std::string json_value(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
 
 }  // namespace limber::sweep

@@ -1,7 +1,8 @@
-// Fields of the flat JSON objects `limber sweep` reads back: `limber run --json`'s output and
-// the sweep's own process.json. A field is found by its key anywhere in the text, so only keys
-// that occur once in the object may be read (true of every key read here: "status", "wall_s",
-// "steps", ..., "energy_relative" inside "accuracy").
+// Fields of the flat JSON objects (written with core/json_text.h) `limber sweep` reads back:
+// its own process.json and the rows MPI ranks send (the run record has its own reader,
+// run/run_record.h). A field is found by its key anywhere in the text, so only keys
+// that occur once in the object may be read (true of process.json's keys and of a row's
+// scalar fields, read before its "errors" list).
 #pragma once
 
 #include <optional>
@@ -14,11 +15,5 @@ std::optional<double> json_number_field(const std::string& text, const std::stri
 
 // The string after `"key": `, unescaped (\uXXXX above ASCII becomes '?'); nullopt when absent.
 std::optional<std::string> json_string_field(const std::string& text, const std::string& key);
-
-// `text` as a quoted JSON string.
-std::string json_quote(const std::string& text);
-
-// `value` in the shortest form that reads back exactly; null when not finite.
-std::string json_value(double value);
 
 }  // namespace limber::sweep

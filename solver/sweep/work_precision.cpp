@@ -9,6 +9,8 @@
 #include "core/error.h"
 #include "select/selection_files.h"
 #include "select/series_error.h"
+#include "core/json_text.h"
+#include "run/run_record.h"
 #include "sweep/flat_json.h"
 #include "results/file_names.h"
 #include "results/results_layout.h"
@@ -53,8 +55,8 @@ void write_process_record(const std::filesystem::path& point_directory, const Ch
   std::ofstream(point_directory / results::kProcessJsonFileName, std::ios::binary)
       << fmt::format("{{\"exit_code\": {}, \"signal\": {}, \"process_s\": {}, \"peak_rss_kib\": {}, "
                      "\"spawn_error\": {}}}\n",
-                     outcome.exit_code, outcome.signal, json_value(outcome.wall_seconds), outcome.peak_rss_kib,
-                     json_quote(outcome.spawn_error));
+                     outcome.exit_code, outcome.signal, json_number(outcome.wall_seconds), outcome.peak_rss_kib,
+                     json_string(outcome.spawn_error));
 }
 
 bool point_finished(const std::filesystem::path& point_directory) {
@@ -80,19 +82,26 @@ SweepRow read_row(const SweepPoint& point, const std::filesystem::path& point_di
   row.peak_rss_mib = json_number_field(process, "peak_rss_kib").value_or(kNaN) / 1024.0;
   const std::string spawn_error = json_string_field(process, "spawn_error").value_or("");
 
-  // The child's report; its status is that of results.h5.
+  // The child's run record (run/run_record.h); its status is that of results.h5. A record cut
+  // short by a crash counts as none.
   const std::string report = read_text(point_directory / results::kRunJsonFileName);
-  row.status = json_string_field(report, "status").value_or("");
-  row.message = json_string_field(report, "message").value_or("");
-  row.wall_s = json_number_field(report, "wall_s").value_or(kNaN);
-  row.steps = static_cast<long>(json_number_field(report, "steps").value_or(0));
-  row.rejected_steps = static_cast<long>(json_number_field(report, "rejected_steps").value_or(0));
-  row.newton_iterations = static_cast<long>(json_number_field(report, "newton_iterations").value_or(0));
-  row.jacobian_evaluations = static_cast<long>(json_number_field(report, "jacobian_evaluations").value_or(0));
-  row.residual_evaluations = static_cast<long>(json_number_field(report, "residual_evaluations").value_or(0));
-  row.energy_relative = json_number_field(report, "energy_relative").value_or(kNaN);
-  row.local_error = json_number_field(report, "local_error").value_or(kNaN);
-  row.drift_relative = json_number_field(report, "drift_relative").value_or(kNaN);
+  run::RunRecord record;
+  try {
+    if (!report.empty()) record = run::read_run_record(report);
+  } catch (const InputError&) {
+    record = {};
+  }
+  row.status = record.status;
+  row.message = record.message;
+  row.wall_s = record.wall_s;
+  row.steps = record.steps;
+  row.rejected_steps = record.rejected_steps;
+  row.newton_iterations = record.newton_iterations;
+  row.jacobian_evaluations = record.jacobian_evaluations;
+  row.residual_evaluations = record.residual_evaluations;
+  row.energy_relative = record.energy_relative;
+  row.local_error = record.local_error;
+  row.drift_relative = record.drift_relative;
 
   // No report: the child ended on bad input (exit 1), a signal, or never started.
   if (row.status.empty()) {
@@ -248,14 +257,14 @@ SweepRow row_from_json(const std::string& object) {
 }
 
 std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size_t> chosen) {
-  const auto optional_value = [](const std::optional<double>& v) { return v ? json_value(*v) : std::string("null"); };
+  const auto optional_value = [](const std::optional<double>& v) { return v ? json_number(*v) : std::string("null"); };
   std::string text = "[";
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const SweepRow& r = rows[k];
     std::string errors = "[";
     for (std::size_t q = 0; q < r.errors.size(); ++q) {
       errors += fmt::format("{}{{\"quantity\": {}, \"peak\": {}, \"rms\": {}}}", q ? ", " : "",
-                            json_quote(r.errors[q].quantity), json_value(r.errors[q].peak), json_value(r.errors[q].rms));
+                            json_string(r.errors[q].quantity), json_number(r.errors[q].peak), json_number(r.errors[q].rms));
     }
     errors += "]";
     text += fmt::format(
@@ -265,14 +274,14 @@ std::string rows_json(const std::vector<SweepRow>& rows, std::optional<std::size
         "\"residual_evaluations\": {}, \"peak_rss_mib\": {}, \"energy_relative\": {}, \"local_error\": {}, "
         "\"drift_relative\": {}, \"error_peak\": {}, \"error_rms\": {}, \"worst_quantity\": {}, \"errors\": {}, "
         "\"resumed\": {}, \"rank\": {}, \"chosen\": {}, \"f_max_hz\": {}, \"steps_per_period\": {}}}",
-        k ? ", " : "", json_quote(r.point.name()), json_quote(r.point.curve()), json_quote(r.point.integrator),
+        k ? ", " : "", json_string(r.point.name()), json_string(r.point.curve()), json_string(r.point.integrator),
         optional_value(r.point.rtol), optional_value(r.point.step),
-        r.point.modes ? std::to_string(*r.point.modes) : "null", json_quote(r.status), json_quote(r.message),
-        r.exit_code, json_value(r.wall_s), json_value(r.process_s), r.steps, r.rejected_steps, r.newton_iterations,
-        r.jacobian_evaluations, r.residual_evaluations, json_value(r.peak_rss_mib), json_value(r.energy_relative),
-        json_value(r.local_error), json_value(r.drift_relative), json_value(r.error_peak), json_value(r.error_rms),
-        json_quote(r.worst_quantity), errors, r.resumed ? "true" : "false", r.rank,
-        chosen && *chosen == k ? "true" : "false", json_value(r.f_max_hz), json_value(r.steps_per_period));
+        r.point.modes ? std::to_string(*r.point.modes) : "null", json_string(r.status), json_string(r.message),
+        r.exit_code, json_number(r.wall_s), json_number(r.process_s), r.steps, r.rejected_steps, r.newton_iterations,
+        r.jacobian_evaluations, r.residual_evaluations, json_number(r.peak_rss_mib), json_number(r.energy_relative),
+        json_number(r.local_error), json_number(r.drift_relative), json_number(r.error_peak), json_number(r.error_rms),
+        json_string(r.worst_quantity), errors, r.resumed ? "true" : "false", r.rank,
+        chosen && *chosen == k ? "true" : "false", json_number(r.f_max_hz), json_number(r.steps_per_period));
   }
   return text + "]";
 }

@@ -44,4 +44,13 @@ if(PYTHON)
   if(NOT status EQUAL 0 OR NOT printed MATCHES "^${module_dir}/limber[^ ]* ok 11")
     message(FATAL_ERROR "installed Python module: status ${status}, printed '${printed}': ${errors}")
   endif()
+  # limber.sweep's points are children of the installed executable, found beside the module
+  # (<prefix>/bin/limber) with nothing on PATH.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=LIMBER_EXECUTABLE PATH= PYTHONPATH=${module_dir}
+                          ${PYTHON} -c "import limber, sys; s = limber.sweep(sys.argv[1], over=['integrator=galpha', 'step=1e-3'], t_end=0.01, output='sweep', jobs=1); print(s['status'], [p['status'] for p in s['points']])"
+                          ${PREFIX}/share/limber/cases/slider_crank_rigid.yaml
+                  WORKING_DIRECTORY ${work} RESULT_VARIABLE status OUTPUT_VARIABLE printed ERROR_VARIABLE errors)
+  if(NOT status EQUAL 0 OR NOT printed MATCHES "^ok \\['ok'\\]")
+    message(FATAL_ERROR "installed Python module's sweep: status ${status}, printed '${printed}': ${errors}")
+  endif()
 endif()

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "select/series_error.h"
+#include "core/json_text.h"
 #include "sweep/flat_json.h"
 #include "sweep/work_precision.h"
 
@@ -47,8 +48,8 @@ TEST(FlatJson, FieldsOfLimberRunJson) {
   EXPECT_EQ(sweep::json_number_field(text, "energy_relative"), 1.5e-5);
   EXPECT_FALSE(sweep::json_number_field(text, "local_error").has_value());
   EXPECT_FALSE(sweep::json_number_field(text, "absent").has_value());
-  // What json_quote writes reads back.
-  const std::string quoted = "{\"m\": " + sweep::json_quote("a \"b\" \\ c\n") + "}";
+  // What json_string writes reads back.
+  const std::string quoted = "{\"m\": " + json_string("a \"b\" \\ c\n") + "}";
   EXPECT_EQ(sweep::json_string_field(quoted, "m"), "a \"b\" \\ c\n");
 }
 

@@ -1,0 +1,232 @@
+#include "select/selection_procedure.h"
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "results/directory_lock.h"
+#include "results/file_names.h"
+#include "select/selection_files.h"
+
+namespace limber::select {
+
+namespace {
+
+// A mode set's name as a folder name: letters, digits, '.', '+', '-', '_' kept.
+std::string folder_name(const std::string& name) {
+  std::string folder;
+  for (char c : name) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' || c == '_';
+    folder += plain ? c : '_';
+  }
+  return folder;
+}
+
+// One set into DIR/runs/<folder>, its step scaled by `scale`.
+CandidateRun run_set(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
+                     const SelectionHooks& hooks, const ModeSetCandidate& candidate, const std::string& folder,
+                     double scale, bool alone) {
+  StepPolicy scaled = request.policy;
+  scaled.scale = scale;
+  return run_candidate(input, candidate, request.adjust, scaled,
+                       request.root / results::kRunsFolder / folder_name(folder),
+                       [&](const integrate::Sample& sample) {
+                         if (hooks.on_sample) hooks.on_sample(sample, alone);
+                       });
+}
+
+// The sets after `normal` (candidates[0]) and the reference at half its step, `jobs` at a
+// time, the longest first (the reference, then its twin); appended to `runs` in the candidates'
+// order. Returns the halved-step reference run.
+std::optional<CandidateRun> run_sets(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
+                                     const SelectionHooks& hooks, const std::vector<ModeSetCandidate>& candidates,
+                                     std::vector<CandidateRun>& runs) {
+  struct Job {
+    std::size_t candidate;
+    std::string folder;
+    double scale;
+  };
+  std::vector<Job> order;
+  for (std::size_t k = 1; k < candidates.size(); ++k) {
+    if (candidates[k].reference) {
+      order.insert(order.begin(), {{k, candidates[k].name, 1.0}, {k, candidates[k].name + "_half_step", 0.5}});
+    } else {
+      order.push_back({k, candidates[k].name, 1.0});
+    }
+  }
+  std::vector<std::optional<CandidateRun>> done(order.size());
+  run_parallel(order.size(), request.jobs, [&](std::size_t j) {
+    const ModeSetCandidate& candidate = candidates[order[j].candidate];
+    if (hooks.on_set_start) {
+      hooks.on_set_start({j + 2, order.size() + 1, order[j].folder, candidate.description, order[j].scale});
+    }
+    done[j] = run_set(input, request, hooks, candidate, order[j].folder, order[j].scale, request.jobs <= 1);
+    if (hooks.on_set_done) hooks.on_set_done(*done[j], order[j].folder);
+  });
+  std::optional<CandidateRun> half_step;
+  for (std::size_t k = 1; k < candidates.size(); ++k) {
+    for (std::size_t j = 0; j < order.size(); ++j) {
+      if (order[j].candidate != k) continue;
+      if (order[j].scale == 1.0) runs.push_back(std::move(*done[j]));
+      else half_step = std::move(done[j]);
+    }
+  }
+  return half_step;
+}
+
+// Why a reference is refused, and what to change.
+std::string refusal(const CandidateRun& reference, int max_refinement, const std::filesystem::path& root) {
+  std::string why = reference.ok() ? fmt::format("finished, but its own accuracy check failed ({})",
+                                                 fmt::join(reference.summary.accuracy.warnings, "; "))
+                                   : "failed: " + reference.summary.message;
+  return fmt::format(
+      "the reference set ({} modes, f_max {:.0f} Hz, {}, steps per period: {}) {}, so differences to it "
+      "mean nothing; run select with a shorter step (--max-refinement {} allows one {} times shorter than the "
+      "case's, or --step) or fewer reference modes (--reference-normal); its run is in {}",
+      reference.modes, reference.step.f_max, step_text(reference.step), resolution(reference.step), why, 2 * max_refinement,
+      2 * max_refinement, reference.directory.lexically_relative(root).generic_string());
+}
+
+ReferenceCheck check_reference(const CandidateRun& reference, const CandidateRun& half_step) {
+  ReferenceCheck check{reference.step.step, half_step.step.step, half_step.status(), {}, false};
+  if (!half_step.ok()) return check;
+  check.change = compare_peaks(half_step.summary.peaks, reference.summary.peaks,
+                               joint_release_times(reference.mechanism.model));
+  check.converged = check.change.error < kConvergedChange;
+  return check;
+}
+
+// The chosen set's fragment in DIR/selected_modes.yaml and its results as DIR/results.h5.
+std::string write_choice(const SelectionRequest& request, const CandidateRun& run) {
+  const std::string why =
+      request.target ? fmt::format("The fewest modes whose {} error against 'reference' is at most {:g} ({}).",
+                                   to_string(request.norm), *request.target, percent(run.error(request.norm)))
+                     : fmt::format("The procedure's answer: static modes where the reactions are large ({} {} "
+                                   "error against 'reference').", percent(run.error(request.norm)),
+                                   to_string(request.norm));
+  const std::string fragment = selected_modes_yaml(run, why);
+  std::ofstream(request.root / "selected_modes.yaml", std::ios::binary) << fragment;
+  std::filesystem::copy_file(run.directory / results::kResultsFileName, request.root / results::kResultsFileName,
+                             std::filesystem::copy_options::overwrite_existing);
+  return fragment;
+}
+
+}  // namespace
+
+std::string to_string(ErrorNorm norm) {
+  return norm == ErrorNorm::kRms ? "rms" : norm == ErrorNorm::kPeak ? "peak" : "event";
+}
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& option, const std::string& expected, const std::string& word) {
+  throw InputError(fmt::format("expected {} {}, got '{}'", option, expected, word));
+}
+
+}  // namespace
+
+RankBy rank_by_from(const std::string& word, const std::string& option) {
+  if (word != "peak" && word != "rms") refuse(option, "peak or rms", word);
+  return word == "rms" ? RankBy::kRms : RankBy::kPeak;
+}
+
+ErrorNorm error_norm_from(const std::string& word, const std::string& option) {
+  if (word != "event" && word != "peak" && word != "rms") refuse(option, "event, peak or rms", word);
+  return word == "rms" ? ErrorNorm::kRms : word == "peak" ? ErrorNorm::kPeak : ErrorNorm::kEvent;
+}
+
+StaticModeKind static_kind_from(const std::string& word, const std::string& option) {
+  if (word != "attachment" && word != "constraint") refuse(option, "attachment or constraint", word);
+  return word == "constraint" ? StaticModeKind::kConstraint : StaticModeKind::kAttachment;
+}
+
+void check_request(const SelectionRequest& request) {
+  if (!(request.keep > 0.0 && request.keep <= 1.0)) {
+    throw InputError(fmt::format("expected --keep in (0, 1], got {:g}", request.keep));
+  }
+  if (request.target && !(*request.target > 0.0)) {
+    throw InputError(fmt::format("expected --target > 0 (a fraction, 0.02 = 2 %), got {:g}", *request.target));
+  }
+  if (request.candidates.max_single < 0) {
+    throw InputError(fmt::format("expected --max-single >= 0, got {}", request.candidates.max_single));
+  }
+  if (request.candidates.reference_normal < 0) {
+    throw InputError(fmt::format("expected --reference-normal >= 0, got {}", request.candidates.reference_normal));
+  }
+  if (request.policy.max_refinement < 1) {
+    throw InputError(fmt::format("expected --max-refinement >= 1, got {}", request.policy.max_refinement));
+  }
+  if (request.jobs < 1) throw InputError(fmt::format("expected --jobs >= 1, got {}", request.jobs));
+}
+
+Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRequest& request,
+                        const SelectionHooks& hooks) {
+  check_request(request);
+  if (!input->mechanism || input->mechanism->flexible_components.empty()) {
+    throw InputError("expected a mechanism with at least one flexible body, got none",
+                     SourceLocation{input->file, 0, 0});
+  }
+  std::filesystem::create_directories(request.root);
+  const results::DirectoryLock lock(request.root);
+  Selection selection;
+
+  // Steps 1-3: normal modes only, then the ranking.
+  const ModeSetCandidate normal{"normal", "normal modes only", normal_only(*input), false};
+  if (hooks.on_set_start) hooks.on_set_start({1, 0, "normal", normal.description, 1.0});
+  selection.runs.push_back(run_set(input, request, hooks, normal, "normal", 1.0, true));
+  if (hooks.on_set_done) hooks.on_set_done(selection.runs.front(), "");
+  const CandidateRun& first = selection.runs.front();
+  if (!first.ok()) {
+    throw NumericalError("the normal-mode run failed, so there is nothing to rank: " + first.summary.message);
+  }
+  selection.ranking =
+      rank_reactions(first.mechanism.model, first.reactions, first.indeterminate, request.rank_by, request.keep);
+  if (hooks.on_ranking) hooks.on_ranking(selection.ranking);
+
+  // Step 4: the other sets and the reference at half its step, then the comparison.
+  const std::vector<ModeSetCandidate> candidates =
+      mode_set_candidates(*input, first.reduction, selection.ranking, request.candidates);
+  std::optional<CandidateRun> half_step = run_sets(input, request, hooks, candidates, selection.runs);
+  const CandidateRun& reference = selection.runs.back();
+  const std::vector<KeyQuantity> keys =
+      key_quantities(selection.ranking, reference.ok() ? reference : selection.runs.front());
+  const std::filesystem::path folder = request.root / results::kSelectionFolder;
+  write_ranking_csv(folder / results::kRankingFileName, selection.ranking);
+  // A reference that failed or whose own accuracy check failed is refused: differences to it
+  // mean nothing (the runs and the table stay).
+  if (!reference.summary.accurate()) {
+    write_comparison_csv(folder / results::kComparisonFileName, selection.runs, std::nullopt, request.root);
+    selection.refusal = refusal(reference, request.policy.max_refinement, request.root);
+    return selection;
+  }
+  selection.check = check_reference(reference, *half_step);
+  compare_runs(selection.runs, keys);
+  selection.chosen = choose_run(selection.runs, request.target, request.norm);
+
+  // Step 5: files for the user and the report.
+  write_comparison_csv(folder / results::kComparisonFileName, selection.runs, selection.chosen, request.root);
+  write_key_series_csv(folder / results::kKeySeriesFileName, selection.runs, keys);
+  write_peaks_csv(folder / results::kEventPeaksFileName, selection.runs);
+  if (selection.chosen) selection.fragment = write_choice(request, selection.runs[*selection.chosen]);
+  return selection;
+}
+
+std::string percent(double fraction) {
+  return std::isnan(fraction) ? std::string("-") : fmt::format("{:.3g} %", 100.0 * fraction);
+}
+
+std::string resolution(const StepChoice& step) {
+  if (!std::isfinite(step.steps_per_period)) return "-";
+  return fmt::format("{:.1f}{}", step.steps_per_period, step.resolved ? "" : " (not resolved)");
+}
+
+std::string step_text(const StepChoice& step) {
+  if (step.window == 0.0) return fmt::format("step {:.3g} s", step.step);
+  return fmt::format("step {:.3g} s in the {:g} s event windows ({:.3g} s between)", step.step, step.window,
+                     step.outside_step);
+}
+
+}  // namespace limber::select
