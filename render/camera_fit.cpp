@@ -52,9 +52,11 @@ CameraPlacement fit_camera(const std::vector<Eigen::Vector3d>& points_C, const C
   for (const Eigen::Vector3d& p : points_C) all.add(p);
   const double ty = std::tan(0.5 * view_angle_deg * M_PI / 180.0);
   const double tx = ty * aspect;
-  const double ax = 2.0 * window.x0 - 1.0, bx = 2.0 * window.x1 - 1.0;
-  const double ay = 2.0 * window.y0 - 1.0, by = 2.0 * window.y1 - 1.0;
-  LIMBER_DEMAND(ax < 0.0 && bx > 0.0 && ay < 0.0 && by > 0.0);
+  // The window about its centre, where the view axis is drawn.
+  const Eigen::Vector2d centre(window.x0 + window.x1 - 1.0, window.y0 + window.y1 - 1.0);
+  const double bx = window.x1 - window.x0, ax = -bx;
+  const double by = window.y1 - window.y0, ay = -by;
+  LIMBER_DEMAND(bx > 0.0 && by > 0.0);
   const double extent = std::max((all.hi - all.lo).norm(), 1e-9);
 
   // Both intervals widen as the eye backs away (a < 0 < b); bisect on the eye's depth between
@@ -80,6 +82,7 @@ CameraPlacement fit_camera(const std::vector<Eigen::Vector3d>& points_C, const C
   placement.eye = eye_C.x() * axes.right + eye_C.y() * axes.up + eye_C.z() * axes.back;
   placement.focal = placement.eye - (far - 0.5 * (all.lo.z() + all.hi.z())) * axes.back;
   placement.eye_back = far;
+  placement.axis_at = centre;
   return placement;
 }
 

@@ -6,8 +6,9 @@
 //
 // Perspective projection, VTK's conventions: the view angle is vertical; a point at camera
 // coordinates (r, u, d) (right, up, back = towards the eye) seen from the eye at (er, eu, ed)
-// lands at x = (r - er) / ((ed - d) tan(angle / 2) aspect), y = (u - eu) / ((ed - d) tan(angle / 2))
-// in normalised device coordinates [-1, 1].
+// lands at x = cx + (r - er) / ((ed - d) tan(angle / 2) aspect),
+// y = cy + (u - eu) / ((ed - d) tan(angle / 2)) in normalised device coordinates [-1, 1], where
+// (cx, cy) is where the view axis appears (the centre of the fitted window).
 #pragma once
 
 #include <Eigen/Core>
@@ -47,8 +48,13 @@ struct ViewWindow {
   double x0 = 0.0, x1 = 1.0, y0 = 0.0, y1 = 1.0;
 };
 
+// The eye sits on the line through the content along the view direction (so a front view
+// stays square to the front: no top face shows), and the image is shifted to the window's
+// centre instead: the view axis appears at `axis_at` (normalised device coordinates,
+// vtkCamera::SetWindowCenter(-axis_at) draws it there).
 struct CameraPlacement {
   Eigen::Vector3d eye, focal;  // ground [m]; focal on the view axis at the content's mid depth
+  Eigen::Vector2d axis_at = Eigen::Vector2d::Zero();  // the window's centre, device coordinates
   double eye_back = 0.0;       // the eye's camera coordinate along back: smaller is closer
 };
 

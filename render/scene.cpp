@@ -670,6 +670,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     camera->SetPosition(placement.eye.data());
     camera->SetFocalPoint(placement.focal.data());
     camera->SetViewUp(axes.up.data());
+    camera->SetWindowCenter(-placement.axis_at.x(), -placement.axis_at.y());
   }
   // The ground is flat and matte under the light kit's directional lights, and the camera's
   // direction is fixed: one colour, drawn unlit (flat_shading.h; the same pixels, cheaper).

@@ -19,7 +19,8 @@ Eigen::Vector2d project(const CameraPlacement& placement, const CameraAxes& axes
   const Eigen::Vector3d q = axes.of(p - placement.eye);
   const double t = std::tan(0.5 * kAngle * M_PI / 180.0);
   const double z = -q.z();
-  return {0.5 + 0.5 * q.x() / (z * t * kAspect), 0.5 + 0.5 * q.y() / (z * t)};
+  return {0.5 + 0.5 * (placement.axis_at.x() + q.x() / (z * t * kAspect)),
+          0.5 + 0.5 * (placement.axis_at.y() + q.y() / (z * t))};
 }
 
 TEST(CameraFit, EveryCornerInsideAndTwoSidesTouched) {
@@ -58,7 +59,9 @@ TEST(CameraFit, EveryCornerInsideAndTwoSidesTouched) {
   const bool spans_x = std::abs(x0 - window.x0) < 1e-6 && std::abs(x1 - window.x1) < 1e-6;
   const bool spans_y = std::abs(y0 - window.y0) < 1e-6 && std::abs(y1 - window.y1) < 1e-6;
   EXPECT_TRUE(spans_x || spans_y) << x0 << " " << x1 << " " << y0 << " " << y1;
-  // The focal point lies on the view axis.
+  // The view axis is drawn at the window's centre; the focal point lies on it.
+  EXPECT_NEAR(placement.axis_at.x(), window.x0 + window.x1 - 1.0, 1e-15);
+  EXPECT_NEAR(placement.axis_at.y(), window.y0 + window.y1 - 1.0, 1e-15);
   const Eigen::Vector3d axis = (placement.eye - placement.focal).normalized();
   EXPECT_NEAR(axis.dot(axes.back), 1.0, 1e-12);
 }
