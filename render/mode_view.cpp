@@ -1,6 +1,9 @@
 #include "mode_view.h"
 
+#include "core/error.h"
+
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <cmath>
 
@@ -50,6 +53,36 @@ std::optional<ModeView> mode_view(const FlexibleMesh& mesh, Eigen::Index mode) {
   if ((-view.direction).cross(up).dot(a) < 0.0) view.direction = -view.direction;
   view.plane = plane_name(view.direction);
   return view;
+}
+
+Eigen::Vector3d mode_plane_direction(const FlexibleMesh& mesh, Eigen::Index mode) {
+  if (const std::optional<ModeView> view = mode_view(mesh, mode)) return view->direction;
+  LIMBER_DEMAND(mesh.nodes.rows() >= 1);
+  const RowMatrix3d centred = mesh.nodes.rowwise() - mesh.nodes.colwise().mean();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> spread(centred.transpose() * centred);
+  Eigen::Vector3d n = spread.eigenvectors().col(0);  // smallest spread first
+  // The side towards +z, else +y, else +x (the first component that is not ~0).
+  for (int c = 2; c >= 0; --c) {
+    if (std::abs(n(c)) > 1e-6) {
+      if (n(c) < 0.0) n = -n;
+      break;
+    }
+  }
+  return n.normalized();
+}
+
+RenderOptions mode_image_options(const BodyTrack& body, Eigen::Index mode, int width, int height) {
+  RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.ground = false;
+  options.world_triad = false;
+  options.time_stamp = false;
+  const Eigen::Quaterniond q_WB(body.orientation(0, 0), body.orientation(0, 1), body.orientation(0, 2),
+                                body.orientation(0, 3));
+  const Eigen::Vector3d direction_W = q_WB.normalized() * mode_plane_direction(body.mesh, mode);
+  options.camera_direction = std::array<double, 3>{direction_W.x(), direction_W.y(), direction_W.z()};
+  return options;
 }
 
 }  // namespace limber::render

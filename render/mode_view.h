@@ -9,6 +9,7 @@
 // plane and the oblique view shows it.
 #pragma once
 
+#include "render_options.h"
 #include "results_reader.h"
 
 #include <Eigen/Core>
@@ -27,5 +28,16 @@ struct ModeView {
 
 // The view of mode `mode` of `mesh`; nothing for non-slender meshes or a zero mode.
 std::optional<ModeView> mode_view(const FlexibleMesh& mesh, Eigen::Index mode);
+
+// The view square to the plane of a mode for a still picture (the report's mode images, issue
+// 28): a slender body's mode_view(), else the least-spread principal direction of the mesh's
+// nodes (a panel's normal), from its side towards body +z (+y, +x when the normal lies in a
+// plane of those). Body axes, unit length. Precondition: at least one node.
+Eigen::Vector3d mode_plane_direction(const FlexibleMesh& mesh, Eigen::Index mode);
+
+// Options for a still picture of one mode of `body` drawn at its first sample's pose: the view
+// square to the mode's plane (mode_plane_direction, turned into ground axes), no ground, no
+// world triad, no time stamp; width x height pixels.
+RenderOptions mode_image_options(const BodyTrack& body, Eigen::Index mode, int width, int height);
 
 }  // namespace limber::render

@@ -45,10 +45,25 @@ def option(name, default=None):
     return default
 
 
-try:
-    HERE = os.path.dirname(os.path.abspath(__file__))
-except NameError:  # paraview --script= runs the text without __file__
-    HERE = DIRECTORY
+def script_folder():
+    """The folder of this script, so that a moved or mailed folder still opens: __file__
+    (pvpython, pvbatch); without it (paraview --script= runs the text without __file__) the
+    argument naming this script (--script=PATH or PATH); else the current directory when it
+    holds scene.xmf; else the folder the script was written in."""
+    try:
+        return os.path.dirname(os.path.abspath(__file__))
+    except NameError:
+        pass
+    for argument in ARGUMENTS:
+        path = argument.split("=", 1)[1] if argument.startswith("--script=") else argument
+        if os.path.basename(path) == SCRIPT_NAME and os.path.isfile(path):
+            return os.path.dirname(os.path.abspath(path))
+    if os.path.isfile(os.path.join(os.getcwd(), "scene.xmf")):
+        return os.getcwd()
+    return DIRECTORY
+
+
+HERE = script_folder()
 scene_file = os.path.join(HERE, "scene.xmf")
 screenshot = option("--screenshot")
 
@@ -97,7 +112,7 @@ for display in displays:
     else:
         ColorBy(display, ("POINTS", COLOR_BY))
 colors = GetColorTransferFunction(COLOR_BY)
-colors.ApplyPreset("Cool to Warm", True)
+colors.ApplyPreset(COLOR_MAP, True)
 colors.RescaleTransferFunction(0.0, max(COLOR_MAX, 1e-300))
 colors.AutomaticRescaleRangeMode = "Never"
 shown.SetScalarBarVisibility(view, True)
@@ -166,12 +181,15 @@ std::string paraview_script(const ParaViewView& view, const std::filesystem::pat
       "# The settings below are the render's; docs/rendering.md describes the data.\n"
       "import os\nimport sys\n\nfrom paraview.simple import *\n\n";
   text += fmt::format("TITLE = {}\n", python_string(view.title));
-  text += fmt::format("DIRECTORY = {}\n", python_string(directory.string()));
+  text += fmt::format("DIRECTORY = {}  # where it was written (a fallback)\n", python_string(directory.string()));
+  text += fmt::format("SCRIPT_NAME = {}\n", python_string(xdmf::kScriptName));
   text += fmt::format("SCALE = {:.17g}  # deformation scale of the relative deflection\n", view.scale);
   text += fmt::format("COLOR_BY = \"{}\"\n", view.color_by_stress ? xdmf::sample::kStress
                                                                    : xdmf::sample::kRelativeDeflectionMagnitude);
   text += fmt::format("COLOR_TITLE = \"{}\"\n", view.color_by_stress ? "stress [Pa]" : "|u rel.| [m]");
   text += fmt::format("COLOR_MAX = {:.17g}  # largest value over the samples\n", view.color_max);
+  // ParaView's presets of the video's maps (render/color_map.h).
+  text += fmt::format("COLOR_MAP = \"{}\"\n", view.viridis ? "Viridis (matplotlib)" : "Blue to Red Rainbow");
   text += fmt::format("VIEW_DIRECTION = {}  # focal point -> eye\n", triple(view.view_direction));
   text += fmt::format("VIEW_UP = {}\n", triple(up));
   text += fmt::format("FOCAL_POINT = {}  # [m]\n", triple(view.focal_point));

@@ -20,7 +20,8 @@ namespace limber::render {
 struct ParaViewView {
   std::string title;                        // the run's title (shown top left)
   double scale = 1.0;                       // deformation scale s
-  bool color_by_stress = false;             // cell data "stress" instead of |u_rel|
+  bool color_by_stress = false;             // cell data "stress" instead of |u_rel| (as the video: --color)
+  bool viridis = true;                      // the video's colour map (--color-map), else the rainbow
   double color_max = 0.0;                   // colour range [0, color_max] [m] or [Pa]
   std::array<double, 3> view_direction{0.0, 0.0, 1.0};  // focal point -> eye, unit
   std::array<double, 3> focal_point{0.0, 0.0, 0.0};     // [m]
@@ -35,7 +36,10 @@ struct ParaViewView {
 ParaViewView fit_view(const std::array<double, 3>& direction, const std::array<double, 3>& lo,
                       const std::array<double, 3>& hi);
 
-// The script's text for `view`; `directory` is its folder (used when __file__ is unknown).
+// The script's text for `view`. It finds scene.xmf beside itself: through __file__ (pvpython,
+// pvbatch), else (paraview --script=, which runs the text without __file__) through a command
+// line argument naming the script ("--script=PATH" or PATH), else in the current directory when
+// scene.xmf is there, else in `directory`, the folder it was written in.
 std::string paraview_script(const ParaViewView& view, const std::filesystem::path& directory);
 
 // Writes `directory`/open_in_paraview.py; throws std::runtime_error naming it on failure.

@@ -22,6 +22,7 @@ cli::Command add_render_command(CLI::App& app) {
   auto anti_aliasing = std::make_shared<std::string>("fxaa");
   auto no_fxaa = std::make_shared<bool>(false);
   auto color = std::make_shared<std::string>("deflection");
+  auto color_map = std::make_shared<std::string>("viridis");
   auto paraview = std::make_shared<std::string>("xdmf");
   auto no_vtk = std::make_shared<bool>(false);
 
@@ -50,6 +51,9 @@ cli::Command add_render_command(CLI::App& app) {
                       "colour flexible bodies by: deflection (|u| [m]) or von_mises (recovered "
                       "element stress [MPa]: shells' von Mises, beams' extreme-fibre stress; needs "
                       "a run whose bodies have 'stress' output)")
+      ->capture_default_str();
+  command->add_option("--color-map", *color_map,
+                      "viridis (perceptually uniform) or rainbow (blue to red, the map before)")
       ->capture_default_str();
   CLI::Option* t0_option = command->add_option("--t0", *t0, "first time rendered [s]");
   CLI::Option* t1_option = command->add_option("--t1", *t1, "last time rendered [s]");
@@ -86,6 +90,7 @@ cli::Command add_render_command(CLI::App& app) {
     parse_frame_size(*size, options->width, options->height);
     options->camera = parse_camera_preset(*camera);
     options->color = parse_color_by(*color);
+    options->color_map = parse_color_map(*color_map);
     options->paraview = *no_vtk ? ParaViewOutput::kNone : parse_paraview_output(*paraview);
     options->anti_aliasing = *no_fxaa ? AntiAliasing::kNone : parse_anti_aliasing(*anti_aliasing);
     if (fps_option->count() == 0) options->fps = *slow_motion * options->playback_fps;

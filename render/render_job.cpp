@@ -140,9 +140,11 @@ RenderSummary render_results(const RenderOptions& options) {
       ParaViewView view = fit_view(view_direction(options), scene.lo, scene.hi);
       view.title = results.title;
       view.scale = options.scale;
-      view.color_by_stress = scene.stress;
+      // Coloured as the video: by stress only with --color von_mises, in the same map.
+      view.color_by_stress = options.color == ColorBy::kVonMises && scene.stress;
+      view.viridis = options.color_map == ColorMap::kViridis;
       view.beams = scene.beams;
-      view.color_max = scene.stress ? scene.stress_max : scene.relative_deflection_max;
+      view.color_max = view.color_by_stress ? scene.stress_max : scene.relative_deflection_max;
       view.width = options.width;
       view.height = options.height;
       write_paraview_script(view, std::filesystem::absolute(vtk));

@@ -1,6 +1,8 @@
 // Options of `limber render` and their validation (docs/rendering.md).
 #pragma once
 
+#include "color_map.h"
+
 #include <array>
 #include <filesystem>
 #include <optional>
@@ -42,6 +44,7 @@ struct RenderOptions {
   bool follow = false;        // camera focal point follows the bodies' centroid
   double scale = 1.0;         // deformation scale factor (shown on the frame when != 1)
   ColorBy color = ColorBy::kDeflection;
+  ColorMap color_map = ColorMap::kViridis;  // color_map.h; rainbow: limber's map before issue 28
   std::optional<double> t0;   // time range [s]; default: the whole run
   std::optional<double> t1;
   bool ground = true;         // draw a ground plane under the scene

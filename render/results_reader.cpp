@@ -166,6 +166,35 @@ Results read_results(const std::filesystem::path& directory) {
     }
     results.joints.push_back(std::move(track));
   }
+
+  // Hinge events, each named by its limit (attributes of /hinge_limits/<link>, found by index).
+  if (r.exists(layout::kEvents)) {
+    std::vector<HingeEvent> limits;
+    for (const std::string& link : r.members(layout::kHingeLimits)) {
+      const std::string g = layout::at(layout::kHingeLimits, link);
+      const int index = static_cast<int>(r.doubles_attribute(g, layout::hinge_limit::kIndexAttribute, 1)[0]);
+      if (index < 0) r.fail("a hinge limit index >= 0 on " + g, std::to_string(index));
+      limits.resize(std::max(limits.size(), static_cast<std::size_t>(index) + 1));
+      HingeEvent& limit = limits[static_cast<std::size_t>(index)];
+      limit.limit = r.string_attribute(g, results::kNameAttribute, false, link);
+      limit.kind = r.string_attribute(g, layout::hinge_limit::kKindAttribute, false);
+      limit.joint = r.string_attribute(g, layout::hinge_limit::kJointAttribute, false);
+    }
+    const std::string time_path = layout::at(layout::kEvents, layout::events::kTime);
+    const hsize_t ne = r.rows(time_path, 0);
+    const std::vector<double> time = r.read<double>(time_path, H5T_NATIVE_DOUBLE, ne);
+    const std::vector<int> limit = r.read<int>(layout::at(layout::kEvents, layout::events::kLimit), H5T_NATIVE_INT, ne);
+    const std::vector<int> engaged = r.read<int>(layout::at(layout::kEvents, layout::events::kEngaged), H5T_NATIVE_INT, ne);
+    for (hsize_t k = 0; k < ne; ++k) {
+      if (limit[k] < 0 || static_cast<std::size_t>(limit[k]) >= limits.size()) {
+        r.fail("event limits in 0.." + std::to_string(limits.size()) + " (/hinge_limits)", std::to_string(limit[k]));
+      }
+      HingeEvent event = limits[static_cast<std::size_t>(limit[k])];
+      event.time = time[k];
+      event.engaged = engaged[k] != 0;
+      results.events.push_back(std::move(event));
+    }
+  }
   return results;
 }
 

@@ -71,12 +71,23 @@ struct JointTrack {
   bool has_markers() const { return marker_i.orientation.rows() == position.rows(); }
 };
 
+// A hinge limit's mode switch (results.h5 /events with its /hinge_limits/<limit> attributes): a
+// latch locking (engaged) or letting go, a stop reached or left.
+struct HingeEvent {
+  double time = 0.0;   // [s]
+  std::string limit;   // the limit's name ("latch_R1")
+  std::string kind;    // "latch" or "stop"
+  std::string joint;   // the revolute it acts on ("R1")
+  bool engaged = false;
+};
+
 struct Results {
   std::filesystem::path file;
   std::string title, case_file, status, message;
   Eigen::VectorXd time;  // ns sample times [s], non-decreasing
   std::vector<BodyTrack> bodies;
   std::vector<JointTrack> joints;
+  std::vector<HingeEvent> events;  // in the file's order (by time); empty in files without /events
 
   Eigen::Index sample_count() const { return time.size(); }
 };

@@ -2,6 +2,10 @@
 
 #include "beam_solids.h"
 #include "body_pose.h"
+#include "camera_fit.h"
+#include "color_map.h"
+#include "event_stamp.h"
+#include "length_unit.h"
 #include "flat_shading.h"
 #include "stress_reader.h"
 #include "core/error.h"
@@ -46,6 +50,11 @@ namespace limber::render {
 namespace {
 
 constexpr double kViewAngleDeg = 30.0;
+
+// The camera's up: ground z, or y when looking along z.
+Eigen::Vector3d up_hint(const Eigen::Vector3d& direction) {
+  return std::abs(direction.z()) > 0.99 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+}
 
 // 4x4 homogeneous matrix of a pose (position, rotation).
 void set_pose(vtkMatrix4x4* matrix, const Eigen::Vector3d& p, const Eigen::Matrix3d& R) {
@@ -125,15 +134,8 @@ void draw_labels_last_and_opaque(vtkRenderer* renderer) {
   }
 }
 
-// Axis-aligned bounds accumulated from points and spheres.
-struct Bounds {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300);
-  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-1e300);
-  void add(const Eigen::Vector3d& p, double r = 0.0) {
-    lo = lo.cwiseMin((p.array() - r).matrix());
-    hi = hi.cwiseMax((p.array() + r).matrix());
-  }
-  bool empty() const { return lo.x() > hi.x(); }
+// Axis-aligned bounds accumulated from points and spheres, ground axes.
+struct Bounds : CameraBox {
   Eigen::Vector3d center() const { return 0.5 * (lo + hi); }
   double radius() const { return 0.5 * (hi - lo).norm(); }
 };
@@ -178,10 +180,14 @@ struct Scene::Impl {
   std::vector<vtkSmartPointer<vtkActor>> joints;
   std::unique_ptr<SceneExtras> extras;  // joint axes, rails, ghost, force arrows
   vtkSmartPointer<vtkTextActor> time_text = vtkSmartPointer<vtkTextActor>::New();
+  vtkSmartPointer<vtkTextActor> event_text = vtkSmartPointer<vtkTextActor>::New();
+  double event_hold = 0.0;  // simulated time an event stays stamped [s] (event_stamp.h)
   std::vector<vtkSmartPointer<vtkTextActor>> texts;  // every text drawn (title, note, time)
   vtkSmartPointer<vtkScalarBarActor> bar;            // null without flexible bodies
   int bar_font = 10;                                 // colour bar label size [pixels]
   double umax = 0.0;
+  LengthUnit unit;        // of the colour bar and the coloured values (stress: MPa)
+  double per_unit = 1.0;  // coloured value = metres x per_unit
   std::vector<std::optional<StressTrack>> stresses;  // per body, with --color von_mises
   double follow_distance = 1.0;
   Eigen::Vector3d direction;
@@ -216,9 +222,17 @@ struct Scene::Impl {
     u_norm = u_rel.rowwise().norm();
   }
 
-  // Bounds of everything drawn at one time.
-  Bounds bounds_at(const SampleBracket& at) const {
-    Bounds b;
+  // Bounds of everything drawn at one time, in ground and in camera axes (`view`).
+  Bounds bounds_at(const SampleBracket& at, const CameraAxes& axes, CameraBox& view) const {
+    struct {
+      Bounds ground;
+      CameraBox* view;
+      const CameraAxes* axes;
+      void add(const Eigen::Vector3d& p, double r = 0.0) {
+        ground.add(p, r);
+        view->add(axes->of(p), r);
+      }
+    } b{Bounds{}, &view, &axes};
     for (std::size_t index = 0; index < results.bodies.size(); ++index) {
       const BodyTrack& body = results.bodies[index];
       const BodyState state = body_state(body, at);
@@ -237,7 +251,7 @@ struct Scene::Impl {
       if (body.shapes.empty() && !body.flexible) b.add(state.position);
     }
     for (const JointTrack& joint : results.joints) b.add(joint_position(joint, at));
-    return b;
+    return b.ground;
   }
 
   bool by_stress() const { return options.color == ColorBy::kVonMises; }
@@ -354,7 +368,7 @@ struct Scene::Impl {
     if (data != nullptr) mapper->SetInputData(data);
     if (port != nullptr) mapper->SetInputConnection(port);
     mapper->SetLookupTable(lut);
-    mapper->SetScalarRange(0.0, umax);
+    mapper->SetScalarRange(0.0, per_unit * umax);
     // Stresses are per element (cell data, which the tube filter passes on); |u| per node.
     if (by_stress()) mapper->SetScalarModeToUseCellData();
     else mapper->SetScalarModeToUsePointData();
@@ -394,8 +408,7 @@ struct Scene::Impl {
     vtkCamera* camera = renderer->GetActiveCamera();
     const Eigen::Vector3d eye = focal + distance * direction;
     // Up is ground z, or y when looking along z.
-    const Eigen::Vector3d up =
-        std::abs(direction.z()) > 0.99 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d up = up_hint(direction);
     camera->SetViewAngle(kViewAngleDeg);
     camera->SetFocalPoint(focal.x(), focal.y(), focal.z());
     camera->SetPosition(eye.x(), eye.y(), eye.z());
@@ -408,17 +421,23 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   Impl& s = *impl_;
   LIMBER_DEMAND(results.sample_count() >= 1);
   s.direction = Eigen::Vector3d(view_direction(options).data());
+  const CameraAxes axes = camera_axes(s.direction, up_hint(s.direction));
 
   // Colour range and camera extent from the samples in [t0, t1] (at least one sample).
   Bounds all;
   double frame_radius = 0.0;
+  // Per sample, two boxes holding what is drawn, in camera and in ground axes: the fixed
+  // camera fits the tighter of their hulls (a wing along ground y is tight in ground axes).
+  std::vector<CameraBox> frame_boxes, ground_boxes;
   std::vector<SampleBracket> samples;
   for (Eigen::Index i = 0; i < results.sample_count(); ++i) {
     if (results.time(i) >= t0 && results.time(i) <= t1) samples.push_back({i, 0.0});
   }
   if (samples.empty()) samples.push_back(bracket(results.time, t0));
   for (const SampleBracket& at : samples) {
-    const Bounds b = s.bounds_at(at);
+    CameraBox& view = frame_boxes.emplace_back();
+    const Bounds b = s.bounds_at(at, axes, view);
+    ground_boxes.push_back(b);
     if (b.empty()) continue;
     all.add(b.lo);
     all.add(b.hi);
@@ -451,24 +470,27 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   }
   if (all.empty()) all.add(Eigen::Vector3d::Zero(), 1.0);
   // The world triad (also the length scale) beside the motion, below its lowest corner, inside
-  // the camera's fit.
+  // the camera's fit: close, so that it takes little of the frame from the motion.
   const double triad_length = round_length(0.25 * std::max(all.radius(), 1e-6));
   const Eigen::Vector3d triad_origin =
-      all.lo - Eigen::Vector3d(1.5 * triad_length, 0.0, 0.0);
+      all.lo - Eigen::Vector3d(0.75 * triad_length, 0.0, 0.0);
   if (options.world_triad) {
-    all.add(triad_origin, 0.4 * triad_length);
-    all.add(triad_origin + 1.3 * triad_length * Eigen::Vector3d::Ones());
+    CameraBox& view = frame_boxes.emplace_back();
+    CameraBox& ground = ground_boxes.emplace_back();
+    for (const Eigen::Vector3d& p : {triad_origin, Eigen::Vector3d(triad_origin + 1.3 * triad_length * Eigen::Vector3d::Ones())}) {
+      all.add(p, 0.25 * triad_length);
+      view.add(axes.of(p), 0.25 * triad_length);
+      ground.add(p, 0.25 * triad_length);
+    }
   }
   const double radius = std::max(all.radius(), 1e-6);
   frame_radius = std::max(frame_radius, 1e-6);
   const double range_max = s.umax > 0.0 ? s.umax : 1.0;
-
-  // Lookup table: blue (no displacement) to red (largest).
-  s.lut->SetHueRange(0.667, 0.0);
-  s.lut->SetTableRange(0.0, range_max);
-  s.lut->SetNanColor(0.6, 0.6, 0.6, 1.0);  // elements without a stress history
-  s.lut->Build();
   s.umax = range_max;
+  // Lengths in the unit their largest value reads best in (mm for millimetres); stresses in MPa.
+  s.unit = s.by_stress() ? LengthUnit{"MPa", 1.0} : length_unit_for(range_max);
+  s.per_unit = s.unit.per_metre;
+  fill_lookup_table(s.lut, options.color_map, s.per_unit * range_max);
 
   // Bodies: meshes, primitives; joints as small spheres.
   for (std::size_t b = 0; b < results.bodies.size(); ++b) {
@@ -494,6 +516,13 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // Joint axes and rails, ghost outlines, force arrows (scene_extras.h).
   s.extras = std::make_unique<SceneExtras>(results, options, s.renderer, radius, t0, t1);
   for (const auto& text : s.extras->texts()) s.texts.push_back(text);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    s.extras->update(samples[k]);
+    for (const Eigen::Vector3d& corner : s.extras->glyph_corners()) {
+      frame_boxes[k].add(axes.of(corner));
+      ground_boxes[k].add(corner);
+    }
+  }
 
   // Ground: a plane under the whole motion, +z up.
   if (options.ground) {
@@ -516,7 +545,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   }
 
   if (options.world_triad) {
-    add_world_triad(s.renderer, triad_origin, triad_length, std::max(10, options.height / 45));
+    add_world_triad(s.renderer, triad_origin, triad_length, std::max(kMinFontSize, options.height / 45));
   }
 
   // Colour bar with units, only when something is coloured.
@@ -525,8 +554,9 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     bar->SetLookupTable(s.lut);
     bool relative = false;
     for (const RigidFitBasis& fit : s.fits) relative = relative || !fit.anchors.empty();
-    bar->SetTitle(s.by_stress() ? "von Mises [MPa]" : relative ? "|u rel.| [m]" : "|u| [m]");
-    bar->SetLabelFormat(s.by_stress() ? "%.3g" : "%.2e");
+    const std::string title = s.by_stress() ? "von Mises" : relative ? "|u rel.|" : "|u|";
+    bar->SetTitle((title + " [" + s.unit.name + "]").c_str());
+    bar->SetLabelFormat("%.3g");
     bar->SetNumberOfLabels(5);
     bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     bar->GetPositionCoordinate()->SetValue(kColorBarBox[0], kColorBarBox[1]);
@@ -535,7 +565,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     bar->SetBarRatio(0.3);
     bar->SetTextPositionToSucceedScalarBar();
     bar->UnconstrainedFontSizeOn();
-    s.bar_font = std::max(10, options.height / 50);
+    s.bar_font = std::max(kMinFontSize, options.height / 45);
     // Labels clear of the bar and the title clear of the top label (VTK's defaults let them
     // touch).
     bar->SetTextPad(std::max(4, s.bar_font / 2));
@@ -552,8 +582,8 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   }
 
   // Title, deformation scale note, time stamp.
-  const int font = std::max(10, options.height / 36);
-  s.add_text(results.title, font, 0.02, 0.93, false);
+  const int font = std::max(kMinFontSize, options.height / 36);
+  s.add_text(results.title, std::max(kMinFontSize, options.height / 30), 0.02, 0.93, false);
   // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
   // fit through each flexible body's joint nodes (those without joints: relative to their
   // floating frame).
@@ -565,14 +595,22 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     if (!results.bodies[b].flexible) continue;
     std::string joints;
     for (const std::string& name : s.fit_joints[b]) joints += (joints.empty() ? "" : ", ") + name;
-    legend += "\n" + results.bodies[b].name + ": elastic displacement " +
-              (joints.empty() ? "in its floating frame" : "relative to a rigid fit through " + joints);
+    legend += "\n" + results.bodies[b].name + ": " +
+              (joints.empty() ? "u in its floating frame" : "u relative to a rigid fit through " + joints);
   }
+  // Under the title, right-aligned: the content is fitted below its last line.
+  const int legend_font = std::max(kMinFontSize, options.height / 40);
+  double content_top = 0.88;
   if (options.scale != 1.0 || !legend.empty()) {
     char note[64];
-    std::snprintf(note, sizeof note, "deformation x %g", options.scale);
-    s.add_text(note + legend, std::max(10, font * 2 / 3), 0.98, 0.975, true);
+    std::snprintf(note, sizeof note, legend.empty() ? "deformation x %g" : "deformation x %g of the elastic displacement u",
+                  options.scale);
+    constexpr double kLegendTop = 0.905;
+    s.add_text(note + legend, legend_font, 0.98, kLegendTop, true);
     s.texts.back()->GetTextProperty()->SetVerticalJustificationToTop();
+    // VTK spaces lines by 1.1 font sizes (vtkTextProperty's LineSpacing); 1.25 leaves a gap.
+    const auto lines = 1 + std::count(legend.begin(), legend.end(), '\n');
+    content_top = kLegendTop - 1.25 * static_cast<double>(lines * legend_font) / options.height;
   }
   s.time_text->GetTextProperty()->SetFontSize(font);
   s.time_text->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
@@ -581,6 +619,17 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   if (options.time_stamp) {
     s.renderer->AddViewProp(s.time_text);
     s.texts.push_back(s.time_text);
+  }
+  // Hinge events, right of the time stamp, dark red (event_stamp.h).
+  s.event_hold = event_hold(options.fps, options.playback_fps);
+  if (options.time_stamp && !results.events.empty()) {
+    s.event_text->GetTextProperty()->SetFontSize(font);
+    s.event_text->GetTextProperty()->SetColor(0.6, 0.05, 0.05);
+    s.event_text->GetTextProperty()->BoldOn();
+    s.event_text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    s.event_text->GetPositionCoordinate()->SetValue(0.36, 0.03);
+    s.renderer->AddViewProp(s.event_text);
+    s.texts.push_back(s.event_text);
   }
 
   // Background, lighting; VTK's FXAA pass only when asked for (the default FXAA runs on the
@@ -594,7 +643,35 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // The scene is put at t0 first: clipping ranges read the actors' bounds.
   const double fit = 1.0 / std::sin(0.5 * kViewAngleDeg * M_PI / 180.0);
   s.follow_distance = 1.05 * fit * frame_radius;
-  s.place_camera(all.center(), 1.05 * fit * radius);
+  if (options.follow) {
+    s.place_camera(all.center(), 1.05 * fit * radius);
+  } else {
+    // The whole motion inside the frame less its texts: left of the colour bar, above the
+    // time and event stamps, under the title and legend (camera_fit.h).
+    ViewWindow window;
+    window.x0 = 0.02;
+    window.x1 = s.bar ? kColorBarBox[0] - 0.02 : 0.98;
+    window.y0 = options.time_stamp ? 0.03 + 1.6 * font / options.height : 0.03;
+    if (options.forces) window.y0 = 0.17;  // above the arrow legends (scene_extras.h)
+    window.y1 = content_top;
+    std::vector<Eigen::Vector3d> view_hull, ground_hull;
+    for (const CameraBox& box : frame_boxes) {
+      for (const Eigen::Vector3d& p : box.corners()) view_hull.push_back(p);
+    }
+    for (const CameraBox& box : ground_boxes) {
+      for (const Eigen::Vector3d& p : box.corners()) ground_hull.push_back(axes.of(p));
+    }
+    const double aspect = static_cast<double>(options.width) / options.height;
+    const CameraPlacement by_view = fit_camera(view_hull, axes, kViewAngleDeg, aspect, window);
+    const CameraPlacement by_ground = fit_camera(ground_hull, axes, kViewAngleDeg, aspect, window);
+    const CameraPlacement& placement = by_view.eye_back <= by_ground.eye_back ? by_view : by_ground;
+    vtkCamera* camera = s.renderer->GetActiveCamera();
+    camera->SetViewAngle(kViewAngleDeg);
+    camera->SetPosition(placement.eye.data());
+    camera->SetFocalPoint(placement.focal.data());
+    camera->SetViewUp(axes.up.data());
+    camera->SetWindowCenter(-placement.axis_at.x(), -placement.axis_at.y());
+  }
   // The ground is flat and matte under the light kit's directional lights, and the camera's
   // direction is fixed: one colour, drawn unlit (flat_shading.h; the same pixels, cheaper).
   if (s.ground) {
@@ -616,42 +693,68 @@ const SceneExtras& Scene::extras() const { return *impl_->extras; }
 
 double Scene::color_range_max() const { return impl_->umax; }
 
+namespace {
+
+// Display coordinates (pixels, x right, y up) to columns and rows from the top, widened by
+// `margin` pixels and clipped to the frame.
+PixelBox pixel_box(int width, int height, double x_min, double x_max, double y_min, double y_max,
+                   int margin) {
+  PixelBox b;
+  b.x0 = std::max(0, static_cast<int>(std::floor(x_min)) - margin);
+  b.x1 = std::min(width, static_cast<int>(std::ceil(x_max)) + 1 + margin);
+  b.y0 = std::max(0, height - 1 - static_cast<int>(std::ceil(y_max)) - margin);
+  b.y1 = std::min(height, height - static_cast<int>(std::floor(y_min)) + margin);
+  return b;
+}
+
+// A text's pixels: its bounding box about the anchor (justification included) moved to the
+// anchor's pixel, widened by `margin`; nothing for an empty text.
+std::optional<PixelBox> text_box(vtkTextActor* text, vtkRenderer* renderer, int width, int height,
+                                 int margin) {
+  double b[4];  // x min, x max, y min, y max
+  text->GetBoundingBox(renderer, b);
+  const int* anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(renderer);
+  if (b[1] < b[0] || b[3] < b[2]) return std::nullopt;  // nothing drawn
+  return pixel_box(width, height, anchor[0] + b[0], anchor[0] + b[1], anchor[1] + b[2],
+                   anchor[1] + b[3], margin);
+}
+
+}  // namespace
+
 std::vector<PixelBox> Scene::overlay_boxes() const {
   const Impl& s = *impl_;
   const int width = s.options.width;
   const int height = s.options.height;
-  // Display coordinates (pixels, x right, y up) to columns and rows from the top, widened by
-  // `margin` pixels and clipped to the frame.
-  auto box = [&](double x_min, double x_max, double y_min, double y_max, int margin) {
-    PixelBox b;
-    b.x0 = std::max(0, static_cast<int>(std::floor(x_min)) - margin);
-    b.x1 = std::min(width, static_cast<int>(std::ceil(x_max)) + 1 + margin);
-    b.y0 = std::max(0, height - 1 - static_cast<int>(std::ceil(y_max)) - margin);
-    b.y1 = std::min(height, height - static_cast<int>(std::floor(y_min)) + margin);
-    return b;
-  };
   std::vector<PixelBox> boxes;
 
-  // Texts: bounding box about the anchor (justification included) moved to the anchor's
-  // pixel, plus 2 pixels (FXAA reads the neighbours).
+  // Texts, plus 2 pixels (FXAA reads the neighbours).
   for (const auto& text : s.texts) {
-    double b[4];  // x min, x max, y min, y max
-    text->GetBoundingBox(s.renderer, b);
-    const int* anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(s.renderer);
-    if (b[1] < b[0] || b[3] < b[2]) continue;  // nothing drawn
-    boxes.push_back(
-        box(anchor[0] + b[0], anchor[0] + b[1], anchor[1] + b[2], anchor[1] + b[3], 2));
+    if (const auto b = text_box(text, s.renderer, width, height, 2)) boxes.push_back(*b);
   }
 
   // Colour bar: its box, plus one label height, which its title and labels may overrun.
   if (s.bar) {
     const double x = kColorBarBox[0] * width;
     const double y = kColorBarBox[1] * height;
-    boxes.push_back(box(x, x + kColorBarBox[2] * width, y, y + kColorBarBox[3] * height,
-                        s.bar_font));
+    boxes.push_back(pixel_box(width, height, x, x + kColorBarBox[2] * width, y,
+                              y + kColorBarBox[3] * height, s.bar_font));
   }
   return boxes;
 }
+
+std::vector<Scene::DrawnText> Scene::drawn_texts() const {
+  const Impl& s = *impl_;
+  std::vector<DrawnText> drawn;
+  for (const auto& text : s.texts) {
+    const auto b = text_box(text, s.renderer, s.options.width, s.options.height, 0);
+    if (!b) continue;
+    const std::string input = text->GetInput() != nullptr ? text->GetInput() : "";
+    drawn.push_back({input, 1 + static_cast<int>(std::count(input.begin(), input.end(), '\n')), *b});
+  }
+  return drawn;
+}
+
+const std::string& Scene::color_unit() const { return impl_->unit.name; }
 
 void Scene::update(double t) {
   Impl& s = *impl_;
@@ -665,7 +768,7 @@ void Scene::update(double t) {
     s.deformed_nodes(view.index, state, x_W, u_norm);
     for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
       view.points->SetPoint(k, x_W(k, 0), x_W(k, 1), x_W(k, 2));
-      view.magnitude->SetValue(k, u_norm(k));
+      view.magnitude->SetValue(k, s.per_unit * u_norm(k));
     }
     view.points->Modified();
     view.magnitude->Modified();
@@ -678,7 +781,7 @@ void Scene::update(double t) {
         const int node = view.solid_mesh.node[static_cast<std::size_t>(k)];
         points->SetPoint(k, x_W(node, 0) + offset_W(k, 0), x_W(node, 1) + offset_W(k, 1),
                          x_W(node, 2) + offset_W(k, 2));
-        view.solid_magnitude->SetValue(k, u_norm(node));
+        view.solid_magnitude->SetValue(k, s.per_unit * u_norm(node));
       }
       points->Modified();
       view.solid_magnitude->Modified();
@@ -735,6 +838,7 @@ void Scene::update(double t) {
     std::snprintf(stamp, sizeof stamp, "t = %.4f s  (%.3gx slow motion)", t, slow);
   }
   s.time_text->SetInput(stamp);
+  s.event_text->SetInput(event_stamp(s.results.events, t, s.event_hold).c_str());
   if (s.options.follow && !s.results.bodies.empty()) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (const BodyTrack& body : s.results.bodies) centroid += body_state(body, at).position;

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 class vtkRenderer;
@@ -23,8 +24,12 @@ inline constexpr std::array<double, 3> kBackgroundColor{0.86, 0.89, 0.93};
 inline constexpr std::array<double, 3> kJointColor{0.25, 0.25, 0.30};
 inline constexpr std::array<double, 3> kGroundColor{0.72, 0.72, 0.68};
 // Colour bar placement in normalised viewport coordinates (x, y, width, height).
-// Wide enough that the labels ("7.51e-03" at height/50 pixels) fit beside the bar with a gap.
-inline constexpr std::array<double, 4> kColorBarBox{0.85, 0.10, 0.12, 0.74};
+// Wide enough that the labels ("0.942" at height/45 pixels) fit beside the bar with a gap; low
+// enough that its title stays under the top-right legend (five lines at 720 px).
+inline constexpr std::array<double, 4> kColorBarBox{0.85, 0.10, 0.12, 0.60};
+// Smallest font size of any text [pixels], for small frames; sizes grow with the frame height
+// (the smallest, height / 45, draws glyph boxes over 14 px tall at 720p: issue 28).
+inline constexpr int kMinFontSize = 10;
 
 class SceneExtras;
 
@@ -54,6 +59,17 @@ class Scene {
   // Pixels of the texts and the colour bar (with a margin) as last drawn: anti-aliased by
   // FreeType or flat, so the CPU FXAA leaves them alone. Valid after a render.
   std::vector<PixelBox> overlay_boxes() const;
+  // Every 2D text as last drawn (title, legend, time and event stamps, arrow legends) with its
+  // pixel box (no margin) and its number of lines. Valid after a render.
+  struct DrawnText {
+    std::string text;
+    int lines = 1;
+    PixelBox box;
+  };
+  std::vector<DrawnText> drawn_texts() const;
+  // The colour bar's unit: a length unit by magnitude (length_unit.h), or "MPa" with
+  // --color von_mises.
+  const std::string& color_unit() const;
 
  private:
   struct Impl;

@@ -264,7 +264,7 @@ struct SceneExtras::Impl {
   void add_legend(const std::string& text, const std::array<double, 3>& color, double y) {
     auto legend = vtkSmartPointer<vtkTextActor>::New();
     legend->SetInput(text.c_str());
-    legend->GetTextProperty()->SetFontSize(std::max(10, options.height / 54));
+    legend->GetTextProperty()->SetFontSize(std::max(10, options.height / 45));  // >= 14 px tall at 720p
     legend->GetTextProperty()->SetColor(color[0] * 0.8, color[1] * 0.8, color[2] * 0.8);
     legend->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     legend->GetPositionCoordinate()->SetValue(0.02, y);
@@ -356,6 +356,18 @@ SceneExtras::SceneExtras(const Results& results, const RenderOptions& options, v
 }
 
 SceneExtras::~SceneExtras() = default;
+
+std::vector<Eigen::Vector3d> SceneExtras::glyph_corners() const {
+  std::vector<Eigen::Vector3d> corners;
+  for (const auto* actors : {&impl_->glyphs, &impl_->rails}) {
+    for (const vtkSmartPointer<vtkActor>& actor : *actors) {
+      if (!actor) continue;
+      const double* b = actor->GetBounds();  // x min, x max, y min, ..., user matrix applied
+      for (int c = 0; c < 8; ++c) corners.emplace_back(b[c & 1], b[2 + ((c >> 1) & 1)], b[4 + ((c >> 2) & 1)]);
+    }
+  }
+  return corners;
+}
 
 void SceneExtras::update(const SampleBracket& at) {
   Impl& s = *impl_;

@@ -61,6 +61,9 @@ class SceneExtras {
 
   // Moves every glyph, rail, outline and arrow to the time `at`.
   void update(const SampleBracket& at);
+  // Corners of the joint glyphs' and rails' boxes (ground) as last updated: what the fixed
+  // camera must also hold (a slider's rail reaches past the bodies).
+  std::vector<Eigen::Vector3d> glyph_corners() const;
   // The legend texts added (for the overlay boxes FXAA leaves alone).
   std::vector<vtkSmartPointer<vtkTextActor>> texts() const;
   // Newtons per metre of force arrow and newton metres per metre of torque arrow (0 without

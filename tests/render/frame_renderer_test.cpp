@@ -79,18 +79,22 @@ TEST_F(FrameRendererTest, BackgroundBoxAndColorBar) {
   EXPECT_GT(p[0], 3 * p[1]);
   EXPECT_GT(p[0], 3 * p[2]);
 
-  // Colour bar: both ends of the blue-to-red table appear in its box.
-  int blue = 0, red = 0;
+  // Colour bar: both ends of the viridis table appear in its box (dark purple (68, 1, 84) and
+  // yellow (253, 231, 37) in 8 bits; 20 levels cover the ends' neighbouring table entries).
+  int purple = 0, yellow = 0;
   for (int y = static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * kHeight);
        y < static_cast<int>((1.0 - kColorBarBox[1]) * kHeight); ++y) {
     for (int x = static_cast<int>(kColorBarBox[0] * kWidth); x < kWidth; ++x) {
       const auto c = image.pixel(x, y);
-      if (c[2] > 200 && c[0] < 40 && c[1] < 40) ++blue;
-      if (c[0] > 200 && c[1] < 40 && c[2] < 40) ++red;
+      auto near = [&](int r, int g, int b) {
+        return std::abs(c[0] - r) < 20 && std::abs(c[1] - g) < 20 && std::abs(c[2] - b) < 20;
+      };
+      purple += near(68, 1, 84);
+      yellow += near(253, 231, 37);
     }
   }
-  EXPECT_GT(blue, 10);
-  EXPECT_GT(red, 10);
+  EXPECT_GT(purple, 10);
+  EXPECT_GT(yellow, 10);
 
   // No VTK message at all (GLEW, shaders, framebuffers).
   EXPECT_EQ(std::string(messages_->GetOutput()), "");
@@ -127,20 +131,22 @@ TEST_F(FrameRendererTest, ColorBarLabelsAndTitleKeepClearOfTheBar) {
   const int x0 = static_cast<int>(kColorBarBox[0] * o.width);
   const int y0 = static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * o.height) - o.height / 20;
   const int y1 = static_cast<int>((1.0 - kColorBarBox[1]) * o.height) + o.height / 50;
-  int bar_right = -1, label_left = o.width;
+  int bar_right = -1, bar_top = o.height, label_left = o.width;
   std::vector<bool> dark_row(static_cast<std::size_t>(o.height), false);
   // The bar: saturated colours (its colour table); then text: near black (0.1, 0.1, 0.15),
-  // anti-aliased, anywhere in the box (labels on the bar's left would count as overlapping).
+  // anti-aliased over the grey-blue background, so dark and unsaturated (viridis's dark purple
+  // end is saturated), anywhere in the box (labels on the bar's left would count as overlapping).
   for (int pass = 0; pass < 2; ++pass) {
     for (int y = std::max(0, y0); y < std::min(o.height, y1); ++y) {
       for (int x = x0; x < o.width; ++x) {
         const auto c = image.pixel(x, y);
         const int lo = std::min({c[0], c[1], c[2]}), hi = std::max({c[0], c[1], c[2]});
-        if (pass == 0 && hi - lo > 120) bar_right = std::max(bar_right, x);
-        if (pass == 1 && hi < 110) {
+        if (pass == 0 && hi - lo > 120) bar_right = std::max(bar_right, x), bar_top = std::min(bar_top, y);
+        if (pass == 1 && hi < 110 && hi - lo < 40) {
           dark_row[static_cast<std::size_t>(y)] = true;
-          // The title sits above the bar, centred over it: only rows beside the bar count.
-          const bool beside = y >= static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * o.height);
+          // The title sits above the bar, centred over it: only rows beside the bar's colours
+          // count (the bar's top rows are viridis's yellow end, saturated).
+          const bool beside = y >= bar_top;
           if (beside) label_left = std::min(label_left, x);
         }
       }
@@ -161,14 +167,16 @@ TEST_F(FrameRendererTest, NoColorBarWithoutFlexibleBodies) {
   const Results results = scene_results(scene, "no_bar");
   FrameRenderer renderer(results, options(CameraPreset::kIso), 0.0, 1.0);
   const Image image = renderer.render(0.5);
-  // The colour bar's box holds neither end of the colour table (same criterion as above).
+  // The colour bar's box holds neither end of the colour table (viridis: (68, 1, 84) and
+  // (253, 231, 37) in 8 bits; 30 levels cover the bar's shading-free blend with its edges).
   int saturated = 0;
   for (int y = static_cast<int>((1.0 - kColorBarBox[1] - kColorBarBox[3]) * kHeight);
        y < static_cast<int>((1.0 - kColorBarBox[1]) * kHeight); ++y) {
     for (int x = static_cast<int>(kColorBarBox[0] * kWidth); x < kWidth; ++x) {
       const auto c = image.pixel(x, y);
-      if (c[2] > 200 && c[0] < 40 && c[1] < 40) ++saturated;
-      if (c[0] > 200 && c[1] < 40 && c[2] < 40) ++saturated;
+      for (const std::array<int, 3>& end : {std::array<int, 3>{68, 1, 84}, std::array<int, 3>{253, 231, 37}}) {
+        if (std::abs(c[0] - end[0]) < 30 && std::abs(c[1] - end[1]) < 30 && std::abs(c[2] - end[2]) < 30) ++saturated;
+      }
     }
   }
   EXPECT_EQ(saturated, 0);
@@ -275,15 +283,21 @@ TEST_F(FrameRendererTest, ScaleFactorAmplifiesTheDeformation) {
     const Eigen::Vector2d high = plain.project({0.5, 0.3, 0.46});
     EXPECT_TRUE(is_background(image.pixel(static_cast<int>(high.x()), static_cast<int>(high.y()))));
   }
-  // Scaled by 2: the plate covers that point; the note "deformation x 2" is drawn top right.
+  // Scaled by 2: the plate covers that point; the note "deformation x 2" is drawn top right,
+  // under the title.
   o.scale = 2.0;
   FrameRenderer scaled(results, o, 0.0, 1.0);
   const Image image = scaled.render(0.25);
   const Eigen::Vector2d high = scaled.project({0.5, 0.3, 0.46});
   EXPECT_FALSE(is_background(image.pixel(static_cast<int>(high.x()), static_cast<int>(high.y()))));
   int note = 0;
-  for (int y = 0; y < kHeight / 10; ++y) {
-    for (int x = kWidth / 2; x < kWidth; ++x) note += is_background(image.pixel(x, y)) ? 0 : 1;
+  for (const Scene::DrawnText& text : scaled.scene().drawn_texts()) {
+    if (text.text.rfind("deformation x 2", 0) != 0) continue;
+    EXPECT_GE(text.box.x0, kWidth / 2);
+    EXPECT_LT(text.box.y1, kHeight / 4);
+    for (int y = text.box.y0; y < text.box.y1; ++y) {
+      for (int x = text.box.x0; x < text.box.x1; ++x) note += is_background(image.pixel(x, y)) ? 0 : 1;
+    }
   }
   EXPECT_GT(note, 20);
 }

@@ -123,6 +123,35 @@ TEST(ParaView, BothXdmfReadersReadEveryStepAsTheVtuSeries) {
   }
 }
 
+// The screenshot of the test scene: the frame size asked for; the bodies in the colour map's
+// low end, as the video: at the last sample (t = 1 s) the plate is flat (sin 2 pi = 0) and the
+// box rigid, both drawn in viridis's lowest colour, RGB (68, 1, 84), shaded by the lights (red
+// and blue well above green), on over 1 % of the pixels; over a quarter the render's
+// background (219, 227, 237).
+void expect_bodies_on_background(const std::filesystem::path& png, const RenderOptions& options) {
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(png.c_str());
+  reader->Update();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], options.width);
+  EXPECT_EQ(dims[1], options.height);
+  vtkUnsignedCharArray* pixels =
+      vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
+  ASSERT_NE(pixels, nullptr);
+  const int channels = pixels->GetNumberOfComponents();
+  long body = 0, background = 0;
+  for (vtkIdType p = 0; p < pixels->GetNumberOfTuples(); ++p) {
+    const int r = pixels->GetValue(p * channels), g = pixels->GetValue(p * channels + 1),
+              b = pixels->GetValue(p * channels + 2);
+    if (b > 40 && b > g + 40 && r > g + 30) ++body;
+    if (std::abs(r - 219) <= 2 && std::abs(g - 227) <= 2 && std::abs(b - 237) <= 2) ++background;
+  }
+  const long total = static_cast<long>(dims[0]) * dims[1];
+  EXPECT_GT(body, total / 100) << "body pixels";
+  EXPECT_GT(background, total / 4) << "background pixels";
+}
+
 TEST(ParaView, StateScriptSavesTheViewUnderPvbatch) {
   REQUIRE_PROGRAM(pvbatch, "pvbatch");
   // Debian's ParaView draws through X: without a display, in a virtual one (package xvfb).
@@ -141,37 +170,50 @@ TEST(ParaView, StateScriptSavesTheViewUnderPvbatch) {
   options.scale = 5.0;
   render_results(options);
 
-  const auto png = dir / "view.png";
-  ASSERT_EQ(run(xvfb_run->string() + " -a " + pvbatch->string() + " " + (dir / "vtk" / "open_in_paraview.py").string() +
+  // The folder moved (as when mailed): the script finds scene.xmf beside itself, not where it
+  // was written (now gone).
+  const auto moved = testing::fresh_directory("paraview_script_moved");
+  std::filesystem::remove_all(moved);
+  std::filesystem::rename(dir, moved);
+  const auto png = moved / "view.png";
+  ASSERT_EQ(run(xvfb_run->string() + " -a " + pvbatch->string() + " " + (moved / "vtk" / "open_in_paraview.py").string() +
                     " --screenshot " + png.string(),
-                dir / "pvbatch.log"),
+                moved / "pvbatch.log"),
             "");
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(png.c_str());
-  reader->Update();
-  int dims[3];
-  reader->GetOutput()->GetDimensions(dims);
-  EXPECT_EQ(dims[0], options.width);
-  EXPECT_EQ(dims[1], options.height);
+  expect_bodies_on_background(png, options);
+}
 
-  // The bodies in the colour map's low end: at the last sample (t = 1 s) the plate is flat
-  // (sin 2 pi = 0) and the box rigid, both drawn in "Cool to Warm"'s lowest colour, RGB
-  // (59, 76, 192), shaded by the lights (a blue well above red and green); the rest is mostly
-  // the render's background (219, 227, 237).
-  vtkUnsignedCharArray* pixels =
-      vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
-  ASSERT_NE(pixels, nullptr);
-  const int channels = pixels->GetNumberOfComponents();
-  long body = 0, background = 0;
-  for (vtkIdType p = 0; p < pixels->GetNumberOfTuples(); ++p) {
-    const int r = pixels->GetValue(p * channels), g = pixels->GetValue(p * channels + 1),
-              b = pixels->GetValue(p * channels + 2);
-    if (b > 100 && b > r + 60 && b > g + 40) ++body;
-    if (std::abs(r - 219) <= 2 && std::abs(g - 227) <= 2 && std::abs(b - 237) <= 2) ++background;
-  }
-  const long total = static_cast<long>(dims[0]) * dims[1];
-  EXPECT_GT(body, total / 100) << "body pixels";
-  EXPECT_GT(background, total / 4) << "background pixels";
+TEST(ParaView, StateScriptFindsItsFolderWithoutFile) {
+  // As under `paraview --script=PATH`: the script's text run without __file__, from another
+  // directory, with "--script=PATH" on the command line; the folder moved after the render.
+  REQUIRE_PROGRAM(pvbatch, "pvbatch");
+  const auto xvfb_run = find_program("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run not on PATH: pvbatch has no display to draw in";
+  const auto written = testing::fresh_directory("paraview_no_file");
+  testing::write_test_results(written, testing::TestScene{});
+  RenderOptions options;
+  options.directory = written;
+  options.write_png = false;
+  options.write_video = false;
+  options.progress = false;
+  options.width = 200;
+  options.height = 150;
+  render_results(options);
+  const auto moved = testing::fresh_directory("paraview_no_file_moved");
+  std::filesystem::remove_all(moved);
+  std::filesystem::rename(written, moved);
+
+  const auto script = moved / "vtk" / "open_in_paraview.py";
+  const auto png = moved / "view.png";
+  const auto runner = moved / "runner.py";
+  std::ofstream(runner) << "import sys\n"
+                           "sys.argv = ['paraview', '--script=" << script.string() << "', '--screenshot', '"
+                        << png.string() << "']\n"
+                           "exec(compile(open(sys.argv[1].split('=', 1)[1]).read(), 'script', 'exec'), "
+                           "{'__name__': '__main__'})\n";
+  ASSERT_EQ(run(xvfb_run->string() + " -a " + pvbatch->string() + " " + runner.string(), moved / "pvbatch.log"), "");
+  // Without its folder the view would be empty: the bodies show.
+  expect_bodies_on_background(png, options);
 }
 
 }  // namespace

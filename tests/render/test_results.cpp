@@ -116,6 +116,8 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
   if (scene.with_beam) writer.add_flexible_body(beam_spec(scene.beam_tube_section));
   if (scene.with_box) writer.add_joint({"pin", "spherical", "ground", "box"});
   if (scene.with_beam && scene.beam_mid_joint) writer.add_joint({"mid", "revolute", "ground", "beam"});
+  const bool latch = scene.with_box && scene.latch_time >= 0.0;
+  if (latch) writer.add_hinge_limit({"latch_pin", "latch", "pin", 0.0});
 
   // Samples: closed-form poses and modal coordinates.
   for (int s = 0; s < scene.samples; ++s) {
@@ -152,8 +154,14 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
                      beam_displacement(scene, 0.5 * kBeamLength, t);
       sample.joints.push_back(mid);
     }
+    if (latch) {
+      sample.hinge_limit_angles = {0.0};
+      sample.hinge_limit_torques = {0.0};
+      sample.hinge_limits_engaged = {static_cast<std::int8_t>(t >= scene.latch_time)};
+    }
     writer.append_sample(sample);
   }
+  if (latch) writer.append_event({scene.latch_time, 0, true, 0.0, 0.0});
   writer.finish(results::RunStatus::kOk);
 }
 

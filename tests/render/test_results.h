@@ -35,6 +35,9 @@ struct TestScene {
   // beam's relative deflection is then u(x) - u(L/2) (one joint node: the rigid fit is a
   // translation).
   bool beam_mid_joint = false;
+  // >= 0: a latch "latch_pin" on joint "pin" (with the box) that locks at this time [s]: one
+  // /events row.
+  double latch_time = -1.0;
   std::string title = "render test scene";
 };
 
