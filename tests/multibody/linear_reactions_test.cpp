@@ -18,20 +18,13 @@
 #include "multibody/redundancy.h"
 #include "multibody/state_space.h"
 #include "multibody/statics.h"
-#include "test_models.h"
+#include "linear_test_models.h"
 
 namespace limber::multibody {
 namespace {
 
 using testing::body_spec;
-
-int marker_index(const Model& model, const std::string& name) {
-  for (std::size_t m = 0; m < model.markers.size(); ++m) {
-    if (model.markers[m].name == name) return static_cast<int>(m);
-  }
-  ADD_FAILURE() << "no marker " << name;
-  return -1;
-}
+using testing::marker_index;
 
 int joint_index(const Model& model, const std::string& name) {
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
@@ -66,21 +59,8 @@ Point tangent_at(const Model& model, const State& state, const ConstraintPartiti
   return p;
 }
 
-// A body hinged to ground about y at its frame origin (markers P.ground, P.bob), centre of mass
-// l below: the pendulum of linearization_test.cpp.
-Model hanging_pendulum(double m, double l, double Jy, double g) {
-  ModelBuilder builder;
-  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
-  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
-                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, -l)));
-  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
-  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
-  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
-  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
-  return builder.build();
-}
-
-// Hand derivation, about the hanging equilibrium (θ about +y, torque τ about +y on the bob):
+// The hanging pendulum (linear_test_models.h) about its equilibrium. Hand derivation (θ about
+// +y, torque τ about +y on the bob):
 // the centre of mass c = (−l sin θ, 0, −l cos θ), J_p θ̈ = −m g l θ + τ (J_p = J_y + m l²), and
 // the pivot's force on the bob F = m c̈ − m g = (−m l θ̈, 0, m g) to first order (c̈_z is
 // second order), so in ground axes δF_x = (m² g l² / J_p) θ − (m l / J_p) τ and nothing else.
@@ -91,7 +71,7 @@ Model hanging_pendulum(double m, double l, double Jy, double g) {
 // rounding (1e-16/ε of forces ~ m g, ε = 1e-6) leaves 1e-10, statics' residual 1e-9 of m g.
 TEST(LinearReactions, PendulumPivotForceMatchesTheHandDerivation) {
   const double m = 2.0, l = 0.5, Jy = 0.2, g = 9.81, Jp = Jy + m * l * l;
-  const Model model = hanging_pendulum(m, l, Jy, g);
+  const Model model = testing::pendulum_builder(m, Jy, g, -l).build();
   State start = initial_state(model);
   Workspace ws(model);
   ASSERT_EQ(assemble_positions(model, start, ws).status, AssemblyStatus::kOk);

@@ -110,15 +110,7 @@ TEST(Linearization, FloatingHingedPairWithOffsetCentresMatchesTheHandDerivation)
 // stiffness m g l.
 TEST(Linearization, PendulumAboutItsHangingEquilibriumHasTheClosedFormFrequency) {
   const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2;
-  ModelBuilder builder;
-  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
-  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
-                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, -l)));
-  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
-  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
-  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
-  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
-  const Model model = builder.build();
+  const Model model = testing::pendulum_builder(m, Jy, g, -l).build();
   const Linearized lin = linearize(model, true);
   ASSERT_EQ(lin.free_motions, 1);
   EXPECT_EQ(lin.modes.rigid_modes, 0);
@@ -133,15 +125,7 @@ TEST(Linearization, PendulumAboutItsHangingEquilibriumHasTheClosedFormFrequency)
 // damping ratio rather than a NaN. Tolerance as above.
 TEST(Linearization, InvertedPendulumIsOneUnstableModeWithANegativeFrequency) {
   const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2;
-  ModelBuilder builder;
-  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
-  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
-                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, l)));
-  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
-  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
-  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
-  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
-  const Model model = builder.build();
+  const Model model = testing::pendulum_builder(m, Jy, g, l).build();
   const Linearized lin = linearize(model, true);
   ASSERT_EQ(lin.free_motions, 1);
   EXPECT_EQ(lin.modes.unstable_modes, 1);
