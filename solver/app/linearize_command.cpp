@@ -17,10 +17,12 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "multibody/hinge_limit.h"
 #include "run/linear_file.h"
 #include "run/linear_mat_file.h"
 #include "run/linearize_at.h"
 #include "run/linearize_run.h"
+#include "run/system_mode_files.h"
 
 namespace limber::app {
 
@@ -31,7 +33,9 @@ struct LinearizeOptions {
   std::string output_dir;
   std::string reference_body;
   double zero_hz = 0.0;
-  double at = -1.0;  // < 0: not given
+  int mode_files = 6;  // the first elastic system modes written as results files for render
+  double at = 0.0;
+  bool at_given = false;  // --at given (any value: linearize_at checks it against the run)
   bool statics = false;
   bool json = false;
 };
@@ -114,11 +118,11 @@ int linearize_case(const LinearizeOptions& options) {
   settings.zero_threshold_hz = options.zero_hz;
   settings.inputs = io::linear_inputs(input.mechanism->linearize, model);
   settings.outputs = io::linear_outputs(input.mechanism->linearize, model);
-  if (options.at >= 0.0 && options.statics) {
+  if (options.at_given && options.statics) {
     throw InputError("expected one of --at and --statics, got both");
   }
   const run::LinearizeSummary s =
-      options.at >= 0.0 ? run::linearize_at(model, mechanism.assembly, input.mechanism->run, options.at, settings)
+      options.at_given ? run::linearize_at(model, mechanism.assembly, input.mechanism->run, options.at, settings)
                         : run::linearize_mechanism(model, mechanism.assembly, settings);
   if (!s.ok) {
     fmt::print(stderr, "limber: error: {}\n", s.message);
@@ -132,12 +136,20 @@ int linearize_case(const LinearizeOptions& options) {
   std::vector<std::filesystem::path> files = run::write_linear_csv(model, s, directory);
   files.insert(files.begin(), run::write_linear_mat(model, s, directory));
   files.insert(files.begin(), run::write_linear_h5(model, s, directory, input.title, input.file));
+  run::SystemModeFileOptions mode_files;
+  mode_files.modes = options.mode_files;
+  for (const auto& path : run::write_system_mode_files(model, s, directory, input.title, input.file, mode_files)) {
+    files.push_back(path);
+  }
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
              s.at >= 0.0 ? "state the run reaches" : s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
   if (s.at >= 0.0) {
-    const auto engaged = std::count(s.point.engaged.begin(), s.point.engaged.end(), 1);
-    fmt::print(text, "hinge latches and stops engaged at t = {:g} s: {}\n", s.point.t, engaged);
+    // Engaged (a latch locked, a stop in contact) or seated (a locked latch, its damping in full).
+    const auto seated = std::count(s.point.engaged.begin(), s.point.engaged.end(), multibody::kLatchSeated);
+    const auto engaged = std::count(s.point.engaged.begin(), s.point.engaged.end(), multibody::kLimitEngaged);
+    fmt::print(text, "hinge latches and stops engaged at t = {:g} s: {} ({} of them latches seated)\n", s.point.t,
+               engaged + seated, seated);
   }
   fmt::print(text, "rigid-body modes (zero frequency, below {:.3g} Hz): {} (the largest of them {:.3g} Hz before "
                    "zeroing)\n", s.modes.zero_threshold_hz, s.modes.rigid_modes, s.modes.largest_rigid_hz);
@@ -202,11 +214,12 @@ Command add_linearize_command(CLI::App& app) {
       "About the assembled start at t = 0 (default), the static equilibrium (--statics) or the\n"
       "state a run of the case reaches at T (--at T: hold-downs released, latches as switched).\n"
       "The state-space model A, B, C, D has the inputs and outputs of the case's `linearize`\n"
-      "section (forces, torques at markers, RSDA actuator torques; marker motions).\n"
+      "section (forces, torques at markers, RSDA actuator torques; marker motions, joint reactions).\n"
       "Writes DIR/linear.h5 (tangent matrices, null-space basis, modes, state space, mass\n"
       "properties, held modes), DIR/linear.mat (MATLAB v5: A, B, C, D, M, C_damping, K, ...),\n"
       "DIR/linear_modes.csv, DIR/mode_shapes.csv, DIR/mass_properties.csv,\n"
-      "DIR/state_space_{A,B,C,D}.csv and, with\n"
+      "DIR/state_space_{A,B,C,D}.csv, DIR/system_modes/mode_<kk>/results.h5 (one period of each of\n"
+      "the first elastic modes, for `limber render`) and, with\n"
       "--reference-body, DIR/cantilevered_modes.csv (modes with that body held, participation\n"
       "factors and effective masses T1-T3, R1-R3).\n"
       "Exit codes: 0 done, 1 bad input, 2 numerical failure (assembly, statics, the run to T, singular\n"
@@ -215,11 +228,15 @@ Command add_linearize_command(CLI::App& app) {
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>_linear)");
   cli->add_flag("--statics", options->statics, "Linearize about the static equilibrium at t = 0 (docs/statics.md)");
-  cli->add_option("--at", options->at,
+  CLI::Option* at = cli->add_option("--at", options->at,
                   "Linearize about the state a run of the case reaches at this time [s] (0 < T <= run.t_end; "
                   "the case's run settings, no results.h5)");
   cli->add_option("--reference-body", options->reference_body,
                   "Body held for the cantilevered modes and effective masses (e.g. the satellite's bus)");
+  cli->add_option("--mode-files", options->mode_files,
+                  "Elastic system modes written as DIR/system_modes/mode_<kk>/results.h5, one period each, "
+                  "for `limber render` (default 6; 0: none)")
+      ->check(CLI::Range(0, 1000));
   cli->add_option("--zero-hz", options->zero_hz,
                   "Frequencies at or below this are rigid-body modes [Hz] (default: 1e-4 of the highest)")
       ->check(CLI::Range(0.0, 1e9));
@@ -233,7 +250,10 @@ Command add_linearize_command(CLI::App& app) {
                 "\"cantilevered\" (null or {\"reference_point\", \"frequencies_hz\", \"damping\", \"rigid_modes\", "
                 "\"translational_coupling\", \"rotational_coupling\", \"effective_mass\", \"effective_mass_sum\", "
                 "\"rigid_mass\"}), \"files\", \"wall_s\"}; the text goes to stderr");
-  return {cli, [options] { return linearize_case(*options); }};
+  return {cli, [options, at] {
+            options->at_given = at->count() > 0;
+            return linearize_case(*options);
+          }};
 }
 
 }  // namespace limber::app

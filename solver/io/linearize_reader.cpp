@@ -26,7 +26,13 @@ constexpr std::pair<std::string_view, LinearOutputKind> kOutputKeys[] = {
     {"acceleration", LinearOutputKind::kAcceleration},
     {"rotation", LinearOutputKind::kRotation},
     {"angular_velocity", LinearOutputKind::kAngularVelocity},
-    {"angular_acceleration", LinearOutputKind::kAngularAcceleration}};
+    {"angular_acceleration", LinearOutputKind::kAngularAcceleration},
+    {"reaction_force", LinearOutputKind::kReactionForce},
+    {"reaction_torque", LinearOutputKind::kReactionTorque}};
+
+bool is_reaction(LinearOutputKind kind) {
+  return kind == LinearOutputKind::kReactionForce || kind == LinearOutputKind::kReactionTorque;
+}
 
 // The one quantity key of `entry` among `keys`: its kind and value.
 template <typename Kind, std::size_t N>
@@ -50,12 +56,13 @@ std::pair<Kind, YamlValue> quantity(const std::string& what, const std::string& 
   return *found;
 }
 
-// `axes: ground | marker` (default ground).
-multibody::ChannelAxes read_axes(const YamlValue& entry) {
+// `axes: ground | <local>` (default ground): local is "marker" for a marker's channels and
+// "joint" for a joint's reaction (its marker j's axes).
+multibody::ChannelAxes read_axes(const YamlValue& entry, const std::string& local = "marker") {
   const auto axes = entry.find("axes");
   if (!axes) return multibody::ChannelAxes::kGround;
-  return axes->as_choice({"ground", "marker"}) == "marker" ? multibody::ChannelAxes::kMarker
-                                                           : multibody::ChannelAxes::kGround;
+  return axes->as_choice({"ground", local}) == local ? multibody::ChannelAxes::kMarker
+                                                     : multibody::ChannelAxes::kGround;
 }
 
 // The name in `value`, which must be one of `names` (listed in the message).
@@ -89,15 +96,21 @@ LinearInputEntry read_input(const std::string& name, const YamlValue& entry, con
   return input;
 }
 
-LinearOutputEntry read_output(const std::string& name, const YamlValue& entry, const std::vector<std::string>& markers) {
+LinearOutputEntry read_output(const std::string& name, const YamlValue& entry, const std::vector<std::string>& markers,
+                              const std::vector<std::string>& joints) {
   entry.allow_only({"position", "velocity", "acceleration", "rotation", "angular_velocity", "angular_acceleration",
-                    "axes"});
+                    "reaction_force", "reaction_torque", "axes"});
   const auto [kind, value] = quantity("linearize output", name, entry, kOutputKeys);
   LinearOutputEntry output;
   output.spec.name = name;
   output.spec.kind = kind;
-  output.spec.axes = read_axes(entry);
   output.where = value.where();
+  if (is_reaction(kind)) {
+    output.spec.axes = read_axes(entry, "joint");
+    output.target = known_name(value, joints, "a joint");
+    return output;
+  }
+  output.spec.axes = read_axes(entry);
   output.target = known_name(value, markers, "a marker");
   return output;
 }
@@ -112,7 +125,7 @@ int marker_index(const multibody::Model& model, const std::string& name, const S
 }  // namespace
 
 LinearizeCase read_linearize(const YamlValue& section, const std::vector<std::string>& markers,
-                             const std::vector<std::string>& rsdas) {
+                             const std::vector<std::string>& rsdas, const std::vector<std::string>& joints) {
   section.allow_only({"inputs", "outputs"});
   LinearizeCase result;
   if (const auto inputs = section.find("inputs")) {
@@ -124,7 +137,7 @@ LinearizeCase read_linearize(const YamlValue& section, const std::vector<std::st
   if (const auto outputs = section.find("outputs")) {
     for (const auto& [name, entry] : outputs->entries()) {
       check_name_text("linearize output", name, entry.key_where());
-      result.outputs.push_back(read_output(name, entry, markers));
+      result.outputs.push_back(read_output(name, entry, markers, joints));
     }
   }
   return result;
@@ -153,7 +166,14 @@ std::vector<multibody::LinearOutput> linear_outputs(const LinearizeCase& section
   std::vector<multibody::LinearOutput> outputs;
   for (const LinearOutputEntry& entry : section.outputs) {
     multibody::LinearOutput output = entry.spec;
-    output.marker = marker_index(model, entry.target, entry.where);
+    if (is_reaction(output.kind)) {
+      for (std::size_t k = 0; k < model.joints.size(); ++k) {
+        if (model.joints[k].name == entry.target) output.joint = static_cast<int>(k);
+      }
+      if (output.joint < 0) throw InputError("expected a joint of the model, got '" + entry.target + "'", entry.where);
+    } else {
+      output.marker = marker_index(model, entry.target, entry.where);
+    }
     outputs.push_back(output);
   }
   return outputs;

@@ -8,10 +8,13 @@
 //     outputs:
 //       attitude: {rotation: bus_center, axes: marker}    # [rad]; also position [m], velocity,
 //       rate: {angular_velocity: bus_center, axes: marker}  # acceleration, angular_acceleration
-// Each entry names exactly one quantity and its marker (or RSDA force), and optionally `axes`
-// (ground, the default, or marker: the marker's axes at the linearization point). Every error is
+//       root_load: {reaction_force: hinge_R1, axes: joint}  # [N] on the joint's body j; also
+//                                                           # reaction_torque [N m]
+// Each entry names exactly one quantity and its marker (or RSDA force, or joint), and optionally
+// `axes` (ground, the default, or marker: the marker's axes at the linearization point; for a
+// reaction, joint: its marker j's axes as they turn). Every error is
 // an InputError at file:line:col: unknown keys, a marker or RSDA the case lacks (the names
-// there are listed), two quantities in one entry.
+// there are listed), a joint the case lacks, two quantities in one entry.
 #pragma once
 
 #include <string>
@@ -31,8 +34,8 @@ struct LinearInputEntry {
   SourceLocation where;         // the target's value
 };
 struct LinearOutputEntry {
-  multibody::LinearOutput spec;  // marker index unset
-  std::string target;            // the marker
+  multibody::LinearOutput spec;  // marker and joint indices unset
+  std::string target;            // the marker, or the joint for a reaction
   SourceLocation where;
 };
 
@@ -41,12 +44,12 @@ struct LinearizeCase {
   std::vector<LinearOutputEntry> outputs;
 };
 
-// The section; `markers` are the case's marker names (joints' own markers included) and
-// `rsdas` the names of its RSDA forces, each checked here.
+// The section; `markers` are the case's marker names (joints' own markers included), `rsdas`
+// the names of its RSDA forces and `joints` of its joints, each checked here.
 LinearizeCase read_linearize(const YamlValue& section, const std::vector<std::string>& markers,
-                             const std::vector<std::string>& rsdas);
+                             const std::vector<std::string>& rsdas, const std::vector<std::string>& joints);
 
-// The entries with their marker and force indices in `model` (built from the same case).
+// The entries with their marker, force and joint indices in `model` (built from the same case).
 // Throws InputError at the entry when a name is missing (a model built from other data).
 std::vector<multibody::LinearInput> linear_inputs(const LinearizeCase& section, const multibody::Model& model);
 std::vector<multibody::LinearOutput> linear_outputs(const LinearizeCase& section, const multibody::Model& model);

@@ -371,15 +371,16 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
 
   // The state-space model's inputs and outputs, on the markers and RSDAs above.
   if (const auto linearize = root.find("linearize")) {
-    std::vector<std::string> markers, rsdas;
+    std::vector<std::string> markers, rsdas, joints;
     for (const MarkerEntry& marker : result.markers) markers.push_back(marker.name);
     for (const JointEntry& joint : result.joints) {
       for (const MarkerEntry& marker : joint.markers) markers.push_back(marker.name);
+      joints.push_back(joint.name);
     }
     for (const ForceEntry& force : result.forces) {
       if (const auto* rsda = std::get_if<multibody::RsdaSpec>(&force.spec)) rsdas.push_back(rsda->name);
     }
-    result.linearize = read_linearize(*linearize, markers, rsdas);
+    result.linearize = read_linearize(*linearize, markers, rsdas, joints);
   }
 
   // What to do with the model.

@@ -28,15 +28,6 @@ Eigen::MatrixXd rows_of(const Eigen::MatrixXd& G, const std::vector<int>& rows) 
   return out;
 }
 
-// q ⊕ ξ, body by body.
-Eigen::VectorXd moved(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& xi) {
-  Eigen::VectorXd out = q;
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    integrate_body_coordinates(model, static_cast<int>(b), q, xi, out);
-  }
-  return out;
-}
-
 // r = M(q) v̇0 + G_i(q)ᵀ λ0 − Q(t, q, v) at the state's q and v.
 Eigen::VectorXd residual(const Model& model, const std::vector<int>& rows, const State& state,
                          const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda, Workspace& ws) {
@@ -104,6 +95,14 @@ SystemModes sorted_by_frequency(const SystemModes& modes) {
 
 }  // namespace
 
+Eigen::VectorXd displaced_coordinates(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& xi) {
+  Eigen::VectorXd out = q;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    integrate_body_coordinates(model, static_cast<int>(b), q, xi, out);
+  }
+  return out;
+}
+
 Eigen::MatrixXd null_space_basis(const Eigen::MatrixXd& G, int nv) {
   if (G.rows() == 0) return Eigen::MatrixXd::Identity(nv, nv);
   Eigen::BDCSVD<Eigen::MatrixXd> svd(G, Eigen::ComputeFullV);
@@ -122,6 +121,7 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
   evaluate_constraints(model, state, Stage::kVelocity, ws);
   out.M = ws.M;
   out.G = rows_of(ws.G, rows);
+  out.rows = rows;
 
   // The independent rows must keep their rank here: a lost one frees a motion the joints forbid.
   if (nc > 0) {
@@ -163,10 +163,10 @@ LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartiti
   Eigen::VectorXd xi = Eigen::VectorXd::Zero(nv);
   for (int j = 0; j < nv; ++j) {
     xi(j) = kDifferenceStep;
-    s.q = moved(model, state.q, xi);
+    s.q = displaced_coordinates(model, state.q, xi);
     const Eigen::VectorXd plus = residual(model, rows, s, out.vdot, out.lambda, ws);
     xi(j) = -kDifferenceStep;
-    s.q = moved(model, state.q, xi);
+    s.q = displaced_coordinates(model, state.q, xi);
     out.K.col(j) = (plus - residual(model, rows, s, out.vdot, out.lambda, ws)) / (2.0 * kDifferenceStep);
     xi(j) = 0.0;
   }

@@ -35,6 +35,7 @@ inline constexpr double kRigidFrequencyFraction = 1e-4;
 struct TangentMatrices {
   Eigen::MatrixXd M, C, K;     // nv x nv [kg, kg m, kg m²; N s/m ...; N/m ...]
   Eigen::MatrixXd G;           // the constraint rows held (independent ones, plus any extra)
+  std::vector<int> rows;       // their indices among the model's equations
   Eigen::VectorXd vdot, lambda;  // v̇0 and λ0 of the state (zero v̇0 at an equilibrium)
 };
 
@@ -45,6 +46,9 @@ enum class LinearizationStatus { kOk, kSingularConstraints };
 // configuration) returns kSingularConstraints with the rows' joints in `message`.
 LinearizationStatus tangent_matrices(const Model& model, const ConstraintPartition& partition,
                                      const State& state, TangentMatrices& out, std::string& message);
+
+// q ⊕ ξ, body by body (body.h integrate_body_coordinates): the configuration displaced by ξ.
+Eigen::VectorXd displaced_coordinates(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& xi);
 
 // An orthonormal basis (nv x n) of the null space of G by SVD, rank at relative threshold
 // kRedundancyThreshold.

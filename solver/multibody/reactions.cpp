@@ -7,21 +7,44 @@
 #include "core/minimum_norm.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
+#include "multibody/rotation.h"
 
 namespace limber::multibody {
 
 namespace {
 
-// Force and torque at a frame equivalent to a generalized force on one body's velocities.
-void frame_wrench(const Body& body, const FrameKinematics& frame, const Eigen::VectorXd& Q,
-                  Eigen::Vector3d& f_W, Eigen::Vector3d& tau_W) {
+// Force and torque at a frame equivalent to generalized forces on one body's velocities:
+// the solution X of [J_p; J_w]ᵀ X = Q_b per column of Q (rows of the body's velocities).
+Eigen::MatrixXd frame_wrenches(const Body& body, const FrameKinematics& frame, const Eigen::MatrixXd& Q) {
   Eigen::MatrixXd J(body.nv, 6);
   J.leftCols<3>() = frame.J_p.middleCols(body.v_offset, body.nv).transpose();
   J.rightCols<3>() = frame.J_w.middleCols(body.v_offset, body.nv).transpose();
-  const Eigen::VectorXd wrench = J.colPivHouseholderQr().solve(Q.segment(body.v_offset, body.nv));
-  f_W = wrench.head<3>();
-  tau_W = wrench.tail<3>();
+  return J.colPivHouseholderQr().solve(Q.middleRows(body.v_offset, body.nv));
 }
+
+}  // namespace
+
+Eigen::Matrix<double, 6, Eigen::Dynamic> joint_wrench_map(const Model& model, const Workspace& ws, int joint_index) {
+  const Joint& joint = model.joints[static_cast<std::size_t>(joint_index)];
+  // Generalized constraint force of unit multipliers: Q_k = −G_kᵀ λ_k.
+  const Eigen::MatrixXd Q_k = -ws.G.middleRows(joint.first_row, joint.rows).transpose();
+  const int body_i = model.markers[static_cast<std::size_t>(joint.marker_i)].body;
+  const int body_j = model.markers[static_cast<std::size_t>(joint.marker_j)].body;
+  const FrameKinematics& mi = ws.markers[static_cast<std::size_t>(joint.marker_i)];
+  const FrameKinematics& mj = ws.markers[static_cast<std::size_t>(joint.marker_j)];
+  // Solve on body j when it moves; otherwise on body i, and body j's by equilibrium of the joint:
+  // F_j = −F_i, T_j = −T_i + (p_j − p_i) × F_i.
+  if (model.bodies[static_cast<std::size_t>(body_j)].kind != BodyKind::kGround) {
+    return frame_wrenches(model.bodies[static_cast<std::size_t>(body_j)], mj, Q_k);
+  }
+  const Eigen::MatrixXd on_i = frame_wrenches(model.bodies[static_cast<std::size_t>(body_i)], mi, Q_k);
+  Eigen::Matrix<double, 6, Eigen::Dynamic> on_j(6, joint.rows);
+  on_j.topRows<3>() = -on_i.topRows(3);
+  on_j.bottomRows<3>() = -on_i.bottomRows(3) + skew(mj.p_W - mi.p_W) * on_i.topRows(3);
+  return on_j;
+}
+
+namespace {
 
 // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = b, the rank decided with the
 // redundancy analysis' threshold (core/minimum_norm.h says why not Eigen's COD). Released
@@ -46,30 +69,20 @@ Reactions reactions_of(const Model& model, const State& state, Eigen::VectorXd l
                        const ConstraintPartition& partition, const Workspace& ws) {
   Reactions out;
   out.lambda = std::move(lambda);
-  const Eigen::MatrixXd& G = ws.G;
-  // Joints: generalized constraint force of their rows, turned into a wrench at a marker.
+  // Joints: the wrench of their rows' multipliers on body j, body i's by equilibrium of the joint.
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const Joint& joint = model.joints[k];
-    const Eigen::VectorXd Q_k = -G.middleRows(joint.first_row, joint.rows).transpose() *
-                                out.lambda.segment(joint.first_row, joint.rows);
-    const Marker& marker_i = model.markers[joint.marker_i];
-    const Marker& marker_j = model.markers[joint.marker_j];
     const FrameKinematics& mi = ws.markers[joint.marker_i];
     const FrameKinematics& mj = ws.markers[joint.marker_j];
-    const Eigen::Vector3d r_ij = mj.p_W - mi.p_W;
+    const Eigen::Matrix<double, 6, 1> wrench_j =
+        joint_wrench_map(model, ws, static_cast<int>(k)) * out.lambda.segment(joint.first_row, joint.rows);
     JointReaction r;
     r.point_W = mj.p_W;
     r.indeterminate = partition.joint_indeterminate[k];
-    // Solve on a moving body; the other side by equilibrium of the joint.
-    if (model.bodies[marker_j.body].kind != BodyKind::kGround) {
-      frame_wrench(model.bodies[marker_j.body], mj, Q_k, r.force_j_W, r.torque_j_W);
-      r.force_i_W = -r.force_j_W;
-      r.torque_i_W = -r.torque_j_W - r_ij.cross(r.force_j_W);
-    } else {
-      frame_wrench(model.bodies[marker_i.body], mi, Q_k, r.force_i_W, r.torque_i_W);
-      r.force_j_W = -r.force_i_W;
-      r.torque_j_W = -r.torque_i_W + r_ij.cross(r.force_i_W);
-    }
+    r.force_j_W = wrench_j.head<3>();
+    r.torque_j_W = wrench_j.tail<3>();
+    r.force_i_W = -r.force_j_W;
+    r.torque_i_W = -r.torque_j_W - (mj.p_W - mi.p_W).cross(r.force_j_W);
     r.force_j_J = mj.R_WF.transpose() * r.force_j_W;
     r.torque_j_J = mj.R_WF.transpose() * r.torque_j_W;
     r.force_i_I = mi.R_WF.transpose() * r.force_i_W;

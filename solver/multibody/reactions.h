@@ -43,6 +43,11 @@ struct Reactions {
   double driver_power = 0.0;            // Σ effort · ḟ(t) [W]
 };
 
+// The wrench of joint `joint` on body j about the origin of marker j, ground axes, [F; T]
+// (6 x the joint's rows) per unit multiplier of its rows: [F; T] = W λ_k. Linear in λ_k at
+// fixed kinematics, from ws.G and ws.markers (constraints evaluated at `state`'s positions).
+Eigen::Matrix<double, 6, Eigen::Dynamic> joint_wrench_map(const Model& model, const Workspace& ws, int joint);
+
 // Precondition: v_dot satisfies the equations of motion at `state` (e.g. from
 // solve_accelerations or an integrator). Updates ws.
 Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,

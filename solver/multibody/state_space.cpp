@@ -1,10 +1,13 @@
 #include "multibody/state_space.h"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "multibody/body.h"
 #include "multibody/constraints.h"
+#include "multibody/linear_reactions.h"
 
 namespace limber::multibody {
 
@@ -54,6 +57,10 @@ Eigen::MatrixXd input_forces(const Model& model, const Workspace& ws, const std:
   return B_xi;
 }
 
+bool is_reaction(LinearOutputKind kind) {
+  return kind == LinearOutputKind::kReactionForce || kind == LinearOutputKind::kReactionTorque;
+}
+
 bool is_translational(LinearOutputKind kind) {
   return kind == LinearOutputKind::kPosition || kind == LinearOutputKind::kVelocity ||
          kind == LinearOutputKind::kAcceleration;
@@ -67,7 +74,9 @@ int derivative_order(LinearOutputKind kind) {
     case LinearOutputKind::kVelocity:
     case LinearOutputKind::kAngularVelocity: return 1;
     case LinearOutputKind::kAcceleration:
-    case LinearOutputKind::kAngularAcceleration: return 2;
+    case LinearOutputKind::kAngularAcceleration:
+    case LinearOutputKind::kReactionForce:
+    case LinearOutputKind::kReactionTorque: return 2;
   }
   return 0;
 }
@@ -97,16 +106,27 @@ StateSpace state_space(const Model& model, const State& point, const TangentMatr
   for (Eigen::Index i = 0; i < n; ++i) ss.state_names.push_back(fmt::format("y{}", i + 1));
   for (Eigen::Index i = 0; i < n; ++i) ss.state_names.push_back(fmt::format("y{}_dot", i + 1));
 
-  // Each output: three rows of J Z applied to y, ẏ or ÿ, along the channel axes.
+  // Each output: three rows of J Z applied to y, ẏ or ÿ, along the channel axes; a reaction's
+  // from the linearized multipliers (solved once for all of them).
   ss.C = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(outputs.size()), 2 * n);
   ss.D = Eigen::MatrixXd::Zero(ss.C.rows(), ni);
+  std::optional<LinearMultipliers> multipliers;
   for (std::size_t o = 0; o < outputs.size(); ++o) {
     const LinearOutput& output = outputs[o];
+    const auto rows = Eigen::seqN(3 * static_cast<Eigen::Index>(o), 3);
+    for (const char* suffix : kAxisSuffix) ss.output_names.push_back(output.name + suffix);
+    if (is_reaction(output.kind)) {
+      if (!multipliers) multipliers = linear_multipliers(model, point, tangent, Z, B_xi);
+      Eigen::MatrixXd C_rows, D_rows;
+      reaction_rows(model, point, tangent, Z, *multipliers, output, C_rows, D_rows);
+      ss.C(rows, Eigen::all) = C_rows;
+      ss.D(rows, Eigen::all) = D_rows;
+      continue;
+    }
     LIMBER_DEMAND(output.marker >= 0 && output.marker < static_cast<int>(model.markers.size()));
     const FrameKinematics& marker = ws.markers[static_cast<std::size_t>(output.marker)];
     const Eigen::MatrixXd& J = is_translational(output.kind) ? marker.J_p : marker.J_w;
     const Eigen::MatrixXd JZ = channel_axes(marker, output.axes).transpose() * J * Z;  // 3 x n
-    const auto rows = Eigen::seqN(3 * static_cast<Eigen::Index>(o), 3);
     switch (derivative_order(output.kind)) {
       case 0: ss.C(rows, Eigen::seqN(0, n)) = JZ; break;
       case 1: ss.C(rows, Eigen::seqN(n, n)) = JZ; break;
@@ -114,7 +134,6 @@ StateSpace state_space(const Model& model, const State& point, const TangentMatr
         ss.C(rows, Eigen::all) = JZ * accel_x;
         ss.D(rows, Eigen::all) = JZ * accel_u;
     }
-    for (const char* suffix : kAxisSuffix) ss.output_names.push_back(output.name + suffix);
   }
   return ss;
 }

@@ -10,9 +10,11 @@
 // forces J_pᵀ f, J_wᵀ τ (virtual work, body.h add_frame_load). Outputs: a marker's
 // displacement, velocity and acceleration, small rotation, angular velocity and angular
 // acceleration (three channels each), from J_p Z and J_w Z; accelerations take ÿ from the
-// second block row of A and B, so only they have a D. All are deviations from the values at
-// the linearization point; about a state in motion the J̇ v terms of the accelerations are
-// left out (the linearization is then indicative only, as the modes are).
+// second block row of A and B, so they have a D; a joint's reaction force and torque on its
+// body j (linear_reactions.h: the multiplier solve linearized), which has one too. All are
+// deviations from the values at the linearization point; about a state in motion the J̇ v
+// terms of the accelerations are left out (the linearization is then indicative only, as the
+// modes are; the reactions are exact to first order there too).
 #pragma once
 
 #include <string>
@@ -27,9 +29,13 @@
 namespace limber::multibody {
 
 enum class LinearInputKind { kForce, kTorque, kRsdaTorque };
-enum class LinearOutputKind { kPosition, kVelocity, kAcceleration, kRotation, kAngularVelocity, kAngularAcceleration };
+enum class LinearOutputKind {
+  kPosition, kVelocity, kAcceleration, kRotation, kAngularVelocity, kAngularAcceleration,
+  kReactionForce, kReactionTorque  // of a joint on its body j (reactions.h), linear_reactions.h
+};
 
-// Components along ground axes or along the marker's axes at the linearization point.
+// Components along ground axes or along the marker's axes at the linearization point; for a
+// joint's reaction, along its marker j's axes as they move (the joint frame, reactions.h).
 enum class ChannelAxes { kGround, kMarker };
 
 struct LinearInput {
@@ -41,10 +47,11 @@ struct LinearInput {
 };
 
 struct LinearOutput {
-  std::string name;  // channels "<name>.x", ".y", ".z" [m, m/s, m/s², rad, rad/s, rad/s²]
+  std::string name;  // channels "<name>.x", ".y", ".z" [m, m/s, m/s², rad, rad/s, rad/s², N, N m]
   LinearOutputKind kind = LinearOutputKind::kPosition;
-  int marker = -1;
+  int marker = -1;  // the marker of a kinematic output
   ChannelAxes axes = ChannelAxes::kGround;
+  int joint = -1;   // kReactionForce, kReactionTorque: index in model.joints
 };
 
 struct StateSpace {
@@ -55,8 +62,10 @@ struct StateSpace {
 };
 
 // The model above at `point` with the tangent matrices and the basis Z (nv x n) of
-// linearization.h. Preconditions (DEMAND): markers and RSDA indices valid (the case reader
-// checks the names). Throws NumericalError when Zᵀ M Z is not positive definite.
+// linearization.h. Preconditions (DEMAND): markers, joints and RSDA indices valid (the case
+// reader checks the names). Throws NumericalError when Zᵀ M Z is not positive definite, and
+// InputError for the reaction of a joint whose equations are not all independent at the point
+// (redundant or released: its reaction is not determined).
 StateSpace state_space(const Model& model, const State& point, const TangentMatrices& tangent,
                        const Eigen::MatrixXd& Z, const std::vector<LinearInput>& inputs,
                        const std::vector<LinearOutput>& outputs);

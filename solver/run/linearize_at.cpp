@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "multibody/constraints.h"
+#include "multibody/hinge_limit.h"
 #include "multibody/redundancy.h"
 
 namespace limber::run {
@@ -23,11 +25,29 @@ LinearizeSummary linearize_at(const multibody::Model& model, const multibody::As
   io::RunSettings to_t = run;
   to_t.t_end = t_at;
   std::optional<integrate::Sample> last;
-  std::vector<unsigned char> engaged(model.forces.size(), 0);
+  std::vector<unsigned char> engaged(model.forces.size(), multibody::kLimitFree);
+  // A locked latch seats (its damping in full, hinge_limit.h) where its penetration reaches
+  // damping_depth, a switch the run does not report as an event: seen here at the samples.
+  multibody::Workspace sample_ws(model);
+  const auto seat_latches = [&](const integrate::Sample& sample) {
+    const multibody::State at{sample.t, sample.q, sample.v, {}};
+    bool updated = false;
+    for (std::size_t k = 0; k < model.forces.size(); ++k) {
+      const auto* limit = std::get_if<multibody::HingeLimit>(&model.forces[k]);
+      if (!limit || limit->kind != multibody::HingeLimitKind::kLatch || engaged[k] != multibody::kLimitEngaged) continue;
+      if (!updated) multibody::update_marker_kinematics(model, at, multibody::Stage::kVelocity, sample_ws);
+      updated = true;
+      const double theta = multibody::hinge_limit_state(*limit, sample_ws).theta;
+      if (limit->direction * (theta - limit->angle) >= limit->damping_depth) engaged[k] = multibody::kLatchSeated;
+    }
+  };
   RunHooks hooks;
-  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) { last = sample; };
+  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
+    last = sample;
+    seat_latches(sample);
+  };
   hooks.on_event = [&](const multibody::HingeEvent& event) {
-    engaged[static_cast<std::size_t>(event.force)] = event.engaged ? 1 : 0;
+    engaged[static_cast<std::size_t>(event.force)] = event.engaged ? multibody::kLimitEngaged : multibody::kLimitFree;
   };
   const RunSummary ran = run_mechanism(model, assembly, to_t, hooks);
   const auto finish = [&](bool ok) {

@@ -1,7 +1,9 @@
 // `limber linearize --at T`: the mechanism linearized about the state a run of the case reaches
 // at time T (run_driver.h, without results.h5): hold-downs released by T left out, hinge latches
-// and stops in the modes the run switched them to, the constraint rows re-analysed at that
-// state. The state is in motion in general (residual vibration, a driven crank): the
+// and stops in the modes the run switched them to (a locked latch seated, its damping in full,
+// once a sample shows its penetration at its damping_depth: the run seats it at a located
+// switch it does not report, which a latch-up that only grazes the depth between two samples
+// would escape), the constraint rows re-analysed at that state. The state is in motion in general (residual vibration, a driven crank): the
 // linearization then holds its velocity as linearize_run.h says (docs/linearize.md).
 #pragma once
 

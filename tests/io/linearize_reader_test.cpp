@@ -1,6 +1,6 @@
 // The case section `linearize` (io/linearize_reader.h): inputs and outputs on markers (a
-// joint's own markers included) and an RSDA land with their kinds, axes and indices in the
-// model; bad input names file:line:col and what was expected.
+// joint's own markers included), an RSDA and a joint's reaction land with their kinds, axes
+// and indices in the model; bad input names file:line:col and what was expected.
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/linearize_reader.h"
@@ -36,6 +36,7 @@ linearize:
   outputs:
     attitude: {rotation: hub_center}
     tip_acceleration: {acceleration: tip, axes: marker}
+    hinge_load: {reaction_torque: hinge, axes: joint}
 )";
 
 std::string edited(const std::string& from, const std::string& to) { return test::replaced(kCase, from, to); }
@@ -46,7 +47,7 @@ TEST(LinearizeReader, InputsAndOutputsLandWithTheirModelIndices) {
   const std::vector<multibody::LinearInput> inputs = linear_inputs(input.mechanism->linearize, built.model);
   const std::vector<multibody::LinearOutput> outputs = linear_outputs(input.mechanism->linearize, built.model);
   ASSERT_EQ(inputs.size(), 3u);
-  ASSERT_EQ(outputs.size(), 2u);
+  ASSERT_EQ(outputs.size(), 3u);
   const auto& markers = built.model.markers;
   EXPECT_EQ(inputs[0].name, "wheels");
   EXPECT_EQ(inputs[0].kind, multibody::LinearInputKind::kTorque);
@@ -61,6 +62,9 @@ TEST(LinearizeReader, InputsAndOutputsLandWithTheirModelIndices) {
   EXPECT_EQ(outputs[1].kind, multibody::LinearOutputKind::kAcceleration);
   EXPECT_EQ(outputs[1].axes, multibody::ChannelAxes::kMarker);
   EXPECT_EQ(markers[static_cast<std::size_t>(outputs[1].marker)].name, "tip");
+  EXPECT_EQ(outputs[2].kind, multibody::LinearOutputKind::kReactionTorque);
+  EXPECT_EQ(outputs[2].axes, multibody::ChannelAxes::kMarker);
+  EXPECT_EQ(built.model.joints[static_cast<std::size_t>(outputs[2].joint)].name, "hinge");
 }
 
 TEST(LinearizeReader, NoSectionIsNoChannels) {
@@ -88,6 +92,11 @@ TEST(LinearizeReader, BadEntriesAreLocated) {
   EXPECT_TRUE(fails_at(axes, location_of(axes, "body}"), "ground, marker"));
   const std::string rsda_axes = edited("{rsda: spring}", "{rsda: spring, axes: marker}");
   EXPECT_TRUE(fails_at(rsda_axes, location_of(rsda_axes, "marker}", 1), "expected no 'axes' for the RSDA torque"));
+  // A reaction of a joint the case lacks; a marker's axes on a reaction.
+  const std::string no_joint = edited("reaction_torque: hinge,", "reaction_torque: hinge_R1,");
+  EXPECT_TRUE(fails_at(no_joint, location_of(no_joint, "hinge_R1"), "expected a joint of the case (hinge), got 'hinge_R1'"));
+  const std::string marker_axes = edited("hinge, axes: joint}", "hinge, axes: marker}");
+  EXPECT_TRUE(fails_at(marker_axes, location_of(marker_axes, "marker}", 2), "ground, joint"));
   // A key of the section that is neither inputs nor outputs.
   const std::string section = edited("  outputs:", "  output:");
   EXPECT_TRUE(fails_at(section, location_of(section, "output:"), "output"));

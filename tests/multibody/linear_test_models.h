@@ -1,6 +1,11 @@
-// Small mechanisms with closed-form linearizations, shared by the modes' and the state-space
-// tests (linearization_test.cpp, state_space_test.cpp).
+// Small mechanisms with closed-form linearizations, shared by the modes', the state-space and
+// the reactions' tests (linearization_test.cpp, state_space_test.cpp, linear_reactions_test.cpp,
+// tests/run/system_mode_files_test.cpp).
 #pragma once
+
+#include <string>
+
+#include <gtest/gtest.h>
 
 #include "test_models.h"
 
@@ -34,6 +39,30 @@ inline Model floating_hinged_pair(double J1, double J2, double k) {
   builder.add_joint("H", JointType::kRevolute, "H.bus", "H.panel");
   builder.add_rsda({"spring", "H.bus", "H.panel", k, 0.0, 0.0, {}, false, {}});
   return builder.build();
+}
+
+// A body hinged to ground about y at its frame origin (markers P.ground, P.bob), its centre
+// of mass at z = com_z (−l: hanging, +l: balanced upside down), under gravity g along −z.
+// Add to the builder, then build().
+inline ModelBuilder pendulum_builder(double m, double Jy, double g, double com_z) {
+  ModelBuilder builder;
+  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
+  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
+                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, com_z)));
+  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
+  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
+  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
+  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
+  return builder;
+}
+
+// The index of the model's marker `name` (−1 and a test failure when there is none).
+inline int marker_index(const Model& model, const std::string& name) {
+  for (std::size_t m = 0; m < model.markers.size(); ++m) {
+    if (model.markers[m].name == name) return static_cast<int>(m);
+  }
+  ADD_FAILURE() << "no marker " << name;
+  return -1;
 }
 
 }  // namespace limber::multibody::testing

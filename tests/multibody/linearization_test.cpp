@@ -1,6 +1,7 @@
 // Linearization (multibody/linearization.h, hybrid_coordinates.h) against closed forms: a
 // free-floating hinged pair with a torsion spring (centres on and off the axis), a pendulum
-// about its hanging and its upside-down equilibrium,
+// about its hanging and its upside-down equilibrium, a preloaded spring held by a slider about
+// the equilibrium statics finds,
 // a damped spring–mass on a slider, a clamped flexible beam against its own component modes,
 // the effective masses' completeness on an appendage held by springs; and a singular
 // linearization point named.
@@ -109,15 +110,7 @@ TEST(Linearization, FloatingHingedPairWithOffsetCentresMatchesTheHandDerivation)
 // stiffness m g l.
 TEST(Linearization, PendulumAboutItsHangingEquilibriumHasTheClosedFormFrequency) {
   const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2;
-  ModelBuilder builder;
-  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
-  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
-                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, -l)));
-  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
-  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
-  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
-  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
-  const Model model = builder.build();
+  const Model model = testing::pendulum_builder(m, Jy, g, -l).build();
   const Linearized lin = linearize(model, true);
   ASSERT_EQ(lin.free_motions, 1);
   EXPECT_EQ(lin.modes.rigid_modes, 0);
@@ -132,15 +125,7 @@ TEST(Linearization, PendulumAboutItsHangingEquilibriumHasTheClosedFormFrequency)
 // damping ratio rather than a NaN. Tolerance as above.
 TEST(Linearization, InvertedPendulumIsOneUnstableModeWithANegativeFrequency) {
   const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2;
-  ModelBuilder builder;
-  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
-  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
-                                   Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, l)));
-  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
-  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
-  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
-  builder.add_joint("P", JointType::kRevolute, "P.ground", "P.bob");
-  const Model model = builder.build();
+  const Model model = testing::pendulum_builder(m, Jy, g, l).build();
   const Linearized lin = linearize(model, true);
   ASSERT_EQ(lin.free_motions, 1);
   EXPECT_EQ(lin.modes.unstable_modes, 1);
@@ -148,6 +133,44 @@ TEST(Linearization, InvertedPendulumIsOneUnstableModeWithANegativeFrequency) {
   EXPECT_NEAR(lin.modes.frequencies_hz(0) / -f, 1.0, 1e-8);
   EXPECT_EQ(lin.modes.damping(0), 0.0);
   EXPECT_EQ(lin.modes.approximate_damping, 0);
+}
+
+// A preloaded spring held in equilibrium by a joint, about the equilibrium from statics: a
+// mass m on a translational joint along y through (L, 0, 0), a spring k of free length L0 < L
+// from the ground origin to it. Its tension T = k (L − L0) is held by the joint; across the
+// joint only the spring's turning gives stiffness. Hand derivation: with the spring's length
+// l(y) = √(L² + y²), V(y) = ½ k (l − L0)², V'' = k (1 − L0 L² / l³), the equilibrium y = 0
+// and ω² = V''(0) / m = T / (m L) (a string's transverse stiffness). The run starts off the
+// equilibrium at y0, which statics must move to y = 0; about the assembled start instead the
+// frequency is √(V''(y0) / m) (M constant, so K = V''(y0) there although v̇0 ≠ 0), which the
+// second half checks. Tolerance 1e-8 relative: statics stops at a force residual of 1e-9 of
+// T, an error of ~1e-9 L in y that moves V'' by O(y²); the differences' rounding is 1e-10.
+TEST(Linearization, PreloadedSpringHeldByASliderHasTheStringStiffnessAboutItsEquilibrium) {
+  const double m = 2.0, k = 500.0, L = 1.0, L0 = 0.6, y0 = 0.3;
+  ModelBuilder builder;
+  builder.add_rigid_body(body_spec("mass", m, Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d(L, y0, 0)));
+  const Eigen::Matrix3d R_y = frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
+  builder.add_marker_at("T.ground", "ground", Eigen::Vector3d(L, 0, 0), R_y);
+  builder.add_marker_at("T.mass", "mass", Eigen::Vector3d(L, y0, 0), R_y);
+  builder.add_joint("T", JointType::kTranslational, "T.ground", "T.mass");
+  builder.add_marker_at("S.ground", "ground", Eigen::Vector3d::Zero());
+  builder.add_marker_at("S.mass", "mass", Eigen::Vector3d(L, y0, 0));
+  builder.add_tsda({"spring", "S.ground", "S.mass", k, 0.0, L0, {}});
+  const Model model = builder.build();
+  const auto V_yy = [&](double y) { return k * (1.0 - L0 * L * L / std::pow(L * L + y * y, 1.5)); };
+
+  const Linearized held = linearize(model, true);
+  ASSERT_EQ(held.free_motions, 1);
+  const int y_index = model.bodies[static_cast<std::size_t>(model.find_body("mass"))].q_offset + 1;
+  EXPECT_NEAR(held.point.q(y_index), 0.0, 1e-9);  // statics found the equilibrium
+  const double f = std::sqrt(k * (L - L0) / (m * L)) / kTwoPi;
+  EXPECT_NEAR(V_yy(0.0), k * (L - L0) / L, 1e-12 * k);
+  EXPECT_NEAR(held.modes.frequencies_hz(0) / f, 1.0, 1e-8);
+  EXPECT_NEAR(held.tangent.vdot.norm(), 0.0, 1e-9);
+
+  const Linearized start = linearize(model, false);
+  EXPECT_NEAR(start.modes.frequencies_hz(0) / (std::sqrt(V_yy(y0) / m) / kTwoPi), 1.0, 1e-8);
+  EXPECT_GT(start.tangent.vdot.norm(), 1.0);  // not an equilibrium: the spring pulls it back
 }
 
 // A mass on a translational joint along x, held by a spring–damper (k, c) to ground at its

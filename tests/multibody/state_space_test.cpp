@@ -23,14 +23,7 @@ namespace limber::multibody {
 namespace {
 
 using testing::body_spec;
-
-int marker_index(const Model& model, const std::string& name) {
-  for (std::size_t m = 0; m < model.markers.size(); ++m) {
-    if (model.markers[m].name == name) return static_cast<int>(m);
-  }
-  ADD_FAILURE() << "no marker " << name;
-  return -1;
-}
+using testing::marker_index;
 
 // The assembled start's state-space model with `inputs` and `outputs`.
 StateSpace linear_model(const Model& model, const std::vector<LinearInput>& inputs,

@@ -43,7 +43,10 @@ TEST(LinearizeCli, StowedSatelliteJsonAndFiles) {
   for (std::size_t i = 7; i < f.size(); ++i) EXPECT_GE(f[i].number(), f[i - 1].number());
   EXPECT_GT(f[6].number(), 10.0);
   EXPECT_EQ(json["cantilevered"]["translational_coupling"].array().size(), 3u);
-  EXPECT_EQ(json["files"].array().size(), 10u);
+  // Ten files and the first six elastic modes' results.h5 for `limber render`.
+  EXPECT_EQ(json["files"].array().size(), 16u);
+  EXPECT_EQ(json["files"].array().back().string(), (dir / "system_modes" / "mode_12" / "results.h5").string());
+  EXPECT_TRUE(std::filesystem::exists(dir / "system_modes" / "mode_07" / "results.h5"));
   // One CSV row per mode, and one per velocity coordinate in the shapes.
   EXPECT_EQ(count_lines(dir / "linear_modes.csv"), static_cast<int>(f.size()) + 1);
   EXPECT_EQ(count_lines(dir / "cantilevered_modes.csv"), static_cast<int>(f.size()) - 6 + 1);
@@ -102,7 +105,8 @@ std::vector<std::string> read_mat_strings(mat_t* mat, const char* name) {
 TEST(LinearizeCli, SatelliteStateSpaceInEveryFile) {
   const auto dir = test::fresh_directory("linearize_state_space");
   const test::CommandRun run = run_limber("linearize " + std::string(LIMBER_CASES_DIR) +
-                                          "/satellite_linearized.yaml --statics -o " + dir.string() + " --json");
+                                          "/satellite_linearized.yaml --statics --mode-files 0 -o " + dir.string() +
+                                          " --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const test::JsonValue json = test::parse_json(run.out);
   const std::size_t n = static_cast<std::size_t>(json["free_motions"].number());
@@ -115,7 +119,7 @@ TEST(LinearizeCli, SatelliteStateSpaceInEveryFile) {
   const auto& out = json["state_space"]["outputs"].array();
   ASSERT_EQ(out.size(), 9u);
   EXPECT_EQ(out[3].string(), "rate.x");
-  EXPECT_EQ(json["files"].array().size(), 9u);
+  EXPECT_EQ(json["files"].array().size(), 9u);  // no system modes' files with --mode-files 0
 
   // linear.h5: the matrices' shapes and A.
   const hid_t h5 = H5Fopen((dir / "linear.h5").string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -167,8 +171,9 @@ TEST(LinearizeCli, UnknownReferenceBodyIsBadInput) {
   EXPECT_NE(run.err.find("--reference-body: expected a moving body of the case"), std::string::npos) << run.err;
 }
 
-// --at beyond the case's run (the satellite runs 6 s), and --at with --statics: bad input,
-// before any run.
+// --at beyond the case's run (the satellite runs 6 s), at or before its start (a negative time
+// was once taken for "not given" and linearized about t = 0 without a word), and --at with
+// --statics: bad input, before any run.
 TEST(LinearizeCli, AtBeyondTheRunIsBadInput) {
   const std::string satellite = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml -o " +
                                 test::fresh_directory("linearize_at_bad").string();
@@ -177,6 +182,11 @@ TEST(LinearizeCli, AtBeyondTheRunIsBadInput) {
   EXPECT_NE(beyond.err.find("--at: expected a time within the case's run, 0 < T <= 6 s (run.t_end), got 7"),
             std::string::npos)
       << beyond.err;
+  for (const char* at : {"0", "-2"}) {
+    const test::CommandRun before = run_limber("linearize " + satellite + " --at " + at);
+    EXPECT_EQ(before.exit_code, 1) << at;
+    EXPECT_NE(before.err.find(std::string("0 < T <= 6 s (run.t_end), got ") + at), std::string::npos) << before.err;
+  }
   const test::CommandRun both = run_limber("linearize " + satellite + " --at 1 --statics");
   EXPECT_EQ(both.exit_code, 1);
   EXPECT_NE(both.err.find("expected one of --at and --statics"), std::string::npos) << both.err;

@@ -167,5 +167,37 @@ TEST(LinearizeRun, AtTimeTLinearizesAboutTheStateTheRunReaches) {
   EXPECT_THROW(linearize_at(model, {}, run, 0.0, {}), InputError);
 }
 
+// A disc on a hinge about z driven by a preloaded spring (k_s, free angle 3 rad) into a latch at
+// 1 rad (k_L, c_L, damping_depth d): it latches at ~3.2 rad/s, overshoots the depth d by far
+// (≈ 0.07 rad) and so seats, its damping in full from then on (hinge_limit.h), then rings down
+// to the preload's penetration k_s (3 − 1) / k_L = 2e-3 rad, a fifth of d. Linearized at 10 s the
+// locked hinge is the closed form ω² = (k_L + k_s)/J, ζ = c_L / (2 √((k_L + k_s) J)); a latch
+// left in its unseated mode (the run does not report seating as an event) would give the
+// damping's share at 2e-3 rad instead, 0.104 of it. Tolerance 1e-6: the ringing has decayed by
+// e^-18 at 10 s, so the point is the equilibrium to that.
+TEST(LinearizeRun, AtTimeTALatchThatSeatedKeepsItsFullDamping) {
+  using multibody::testing::body_spec;
+  const double J = 0.5, k_s = 1.0, k_L = 1000.0, c_L = 2.0, d = 1e-2;
+  multibody::ModelBuilder builder;
+  builder.add_rigid_body(body_spec("disc", 1.0, Eigen::Vector3d(0.3, 0.3, J), Eigen::Vector3d::Zero()));
+  builder.add_marker_at("H.ground", "ground", Eigen::Vector3d::Zero());
+  builder.add_marker_at("H.disc", "disc", Eigen::Vector3d::Zero());
+  builder.add_joint("H", multibody::JointType::kRevolute, "H.ground", "H.disc");
+  builder.add_rsda({"spring", "H.ground", "H.disc", k_s, 0.0, 3.0, {}, false, {}});
+  builder.add_hinge_limit({"latch", "H", multibody::HingeLimitKind::kLatch, 1.0, k_L, c_L, d});
+  const multibody::Model model = builder.build();
+  io::RunSettings run;
+  run.t_end = 10.0;
+  run.sample_interval = 1e-2;
+  run.integrator.rtol = 1e-8;
+  run.integrator.atol = 1e-10;
+  const LinearizeSummary s = linearize_at(model, {}, run, 10.0, {});
+  ASSERT_TRUE(s.ok) << s.message;
+  ASSERT_EQ(s.free_motions, 1);
+  const double w = std::sqrt((k_L + k_s) / J);
+  EXPECT_NEAR(s.modes.frequencies_hz(0) / (w / (2.0 * std::numbers::pi)), 1.0, 1e-6);
+  EXPECT_NEAR(s.modes.damping(0) / (c_L / (2.0 * std::sqrt((k_L + k_s) * J))), 1.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace limber::run

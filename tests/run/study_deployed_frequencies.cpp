@@ -7,14 +7,19 @@
 // which shakes the wings in and out of phase), run to T_END (default 36 s) with the case's own
 // integrator. Signals from 6 s on, every 2 ms: each panel's rotation relative to the bus
 // (log(R_busᵀ R_panel), 3 components) and its modal coordinates, each with its mean removed
-// and scaled to unit RMS; Hann window, zero-padded FFT (Eigen's), the channels' power summed.
+// and scaled to unit RMS; a window, zero-padded FFT (Eigen's), the channels' power summed.
 // Each linearized elastic frequency below F_MAX (default 30 Hz) is matched to the nearest local
 // maximum of that spectrum (parabolic peak interpolation on the log power), and to that of the
-// same estimator run on the state-space model's own response to the impulse (its check).
+// same estimator run on the state-space model's own response to the impulse (its check: the
+// same channels, the relative rotations to first order R_rel0 δθ_panel − δθ_bus).
+// The window: Hann (symmetric, zero at both ends) or, with `falling`, the falling half of one
+// (cos²(π t / 2T): one at the impulse, zero at the end of the record), the usual window for a
+// free decay (impact testing), which keeps the first second where strongly damped modes live.
 // Not a test (it runs the satellite for T_END s of simulated time): prints the table of
-// docs/linearize.md. Usage: limber_study_deployed_frequencies [T_END] [F_MAX] [sharp]
-// (sharp: the latches' damping share a step, damping_depth 0, to test whether the share's
-// dependence on the penetration is what moves the strongly damped modes).
+// docs/linearize.md. Usage: limber_study_deployed_frequencies [T_END] [F_MAX] [OPTION...]
+// with options sharp (the latches' damping share a step, damping_depth 0, to test whether the
+// share's dependence on the penetration is what moves the strongly damped modes), falling (the
+// window above) and linear (the linear response's check only, without the nonlinear run).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -44,6 +49,7 @@ using namespace limber;
 constexpr double kLinearizeAt = 6.0;     // [s]: the latches locked, as docs/linearize.md
 constexpr double kSignalInterval = 2e-3;  // [s]: every second 1 ms sample
 double kRecord = 30.0;                    // [s] from kLinearizeAt: T_END − 6
+bool kFallingWindow = false;              // the falling half-cosine instead of Hann
 constexpr const char* kPanels[] = {"panel_R1", "panel_R2", "panel_L1", "panel_L2"};
 
 // The case text with `what` inserted before `before` (which must be there).
@@ -84,7 +90,7 @@ std::vector<double> spectrum_peaks(const std::vector<double>& f, const std::vect
 }
 
 // The local maxima of the summed power spectrum of `channels` (sampled kSignalInterval apart):
-// each channel without its mean, scaled to unit RMS, Hann window, zero-padded FFT.
+// each channel without its mean, scaled to unit RMS, windowed (Hann or falling), zero-padded FFT.
 std::vector<double> summed_spectrum_peaks(std::vector<std::vector<double>> channels) {
   const std::size_t n = channels.front().size();
   std::size_t nfft = 1;
@@ -99,8 +105,9 @@ std::vector<double> summed_spectrum_peaks(std::vector<std::vector<double>> chann
     if (rms <= 0.0) continue;
     std::vector<double> padded(nfft, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
-      const double hann = 0.5 - 0.5 * std::cos(2.0 * M_PI * i / (n - 1));
-      padded[i] = hann * (x[i] - mean) / std::sqrt(rms);
+      const double window = kFallingWindow ? 0.5 + 0.5 * std::cos(M_PI * i / (n - 1))
+                                           : 0.5 - 0.5 * std::cos(2.0 * M_PI * i / (n - 1));
+      padded[i] = window * (x[i] - mean) / std::sqrt(rms);
     }
     std::vector<std::complex<double>> spectrum;
     fft.fwd(spectrum, padded);
@@ -111,10 +118,11 @@ std::vector<double> summed_spectrum_peaks(std::vector<std::vector<double>> chann
 }
 
 // The estimator's own check: the state-space model's response to the same impulse (its inputs
-// the bus force and torque; x(0+) = B J with J = 0.2 N s along z, 0.02 N m s about x), the
-// panels' modal coordinates (rows of ξ = Z y) over the same record.
-std::vector<std::vector<double>> linear_modal_response(const run::LinearizeSummary& linear,
-                                                       const multibody::Model& model) {
+// the bus force and torque; x(0+) = B J with J = 0.2 N s along z, 0.02 N m s about x), in the
+// nonlinear record's channels over the same record: per panel its rotation relative to the bus
+// to first order, R_rel0 δθ_panel − δθ_bus (bus axes; ξ's rotations are in body axes), and its
+// modal coordinates (rows of ξ = Z y).
+std::vector<std::vector<double>> linear_response(const run::LinearizeSummary& linear, const multibody::Model& model) {
   const multibody::StateSpace& ss = linear.state_space;
   Eigen::VectorXd impulse = Eigen::VectorXd::Zero(6);
   impulse(2) = 0.2;   // force.z
@@ -122,16 +130,29 @@ std::vector<std::vector<double>> linear_modal_response(const run::LinearizeSumma
   Eigen::VectorXd x = ss.B * impulse;
   const Eigen::MatrixXd step = (ss.A * kSignalInterval).exp();
   const Eigen::Index n = linear.null_space.cols();
-  std::vector<int> rows;
-  for (const char* name : kPanels) {
-    const multibody::Body& body = model.bodies[static_cast<std::size_t>(model.find_body(name))];
-    for (int k = 6; k < body.nv; ++k) rows.push_back(body.v_offset + k);
-  }
-  std::vector<std::vector<double>> channels(rows.size());
+  const auto orientation = [&](int body) {
+    multibody::FrameKinematics X;
+    multibody::body_frame_kinematics(model, body, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(),
+                                     linear.point.q, nullptr, X);
+    return X.R_WF;
+  };
+  const multibody::Body& bus = model.bodies[static_cast<std::size_t>(model.find_body("bus"))];
+  const Eigen::Matrix3d R_bus = orientation(model.find_body("bus"));
+  std::vector<std::vector<double>> channels;
   const int samples = static_cast<int>(std::lround(kRecord / kSignalInterval)) + 1;
   for (int i = 0; i < samples; ++i) {
     const Eigen::VectorXd xi = linear.null_space * x.head(n);
-    for (std::size_t c = 0; c < rows.size(); ++c) channels[c].push_back(xi(rows[c]));
+    std::vector<double> values;
+    for (const char* name : kPanels) {
+      const int p = model.find_body(name);
+      const multibody::Body& panel = model.bodies[static_cast<std::size_t>(p)];
+      const Eigen::Vector3d turn = R_bus.transpose() * orientation(p) * xi.segment<3>(panel.v_offset + 3) -
+                                   xi.segment<3>(bus.v_offset + 3);
+      for (int k = 0; k < 3; ++k) values.push_back(turn(k));
+      for (int k = 6; k < panel.nv; ++k) values.push_back(xi(panel.v_offset + k));
+    }
+    if (channels.empty()) channels.resize(values.size());
+    for (std::size_t c = 0; c < values.size(); ++c) channels[c].push_back(values[c]);
     x = step * x;
   }
   return channels;
@@ -144,7 +165,13 @@ int main(int argc, char** argv) {
   kRecord = t_end - kLinearizeAt;
   const double f_max = argc > 2 ? std::atof(argv[2]) : 30.0;
   const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
-  const bool sharp = argc > 3 && std::string(argv[3]) == "sharp";
+  bool sharp = false, linear_only = false;
+  for (int a = 3; a < argc; ++a) {
+    const std::string option = argv[a];
+    sharp = sharp || option == "sharp";
+    kFallingWindow = kFallingWindow || option == "falling";
+    linear_only = linear_only || option == "linear";
+  }
   const io::Case input = io::read_case_text(edited_case(path, t_end, sharp), path);
   const io::Mechanism mechanism =
       io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
@@ -163,6 +190,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  const std::vector<double> linear_peaks = summed_spectrum_peaks(linear_response(linear, model));
   // The free decay: panel rotations relative to the bus and modal coordinates from 6 s on.
   const int bus = model.find_body("bus");
   std::vector<int> panels;
@@ -188,19 +216,19 @@ int main(int argc, char** argv) {
     if (channels.empty()) channels.resize(values.size());
     for (std::size_t c = 0; c < values.size(); ++c) channels[c].push_back(values[c]);
   };
-  const run::RunSummary ran = run::run_mechanism(model, mechanism.assembly, mechanism.run, hooks);
-  if (!ran.ok) {
+  const run::RunSummary ran = linear_only ? run::RunSummary{} : run::run_mechanism(model, mechanism.assembly, mechanism.run, hooks);
+  if (!linear_only && !ran.ok) {
     fmt::print(stderr, "run failed at {} s: {}\n", ran.t_reached, ran.message);
     return 2;
   }
 
-  const std::vector<double> peaks = summed_spectrum_peaks(channels);
-  const std::vector<double> linear_peaks = summed_spectrum_peaks(linear_modal_response(linear, model));
-  const std::size_t n = channels.front().size();
+  const std::vector<double> peaks = linear_only ? std::vector<double>{} : summed_spectrum_peaks(channels);
+  const std::size_t n = static_cast<std::size_t>(std::lround(kRecord / kSignalInterval)) + 1;
 
   fmt::print("deployed satellite: linearized at t = {} s against the free decay {} to {} s ({} samples, "
-             "resolution 1/T = {:.3f} Hz), run {:.0f} s wall\n",
-             kLinearizeAt, kLinearizeAt, t_end, n, 1.0 / (t_end - kLinearizeAt), ran.wall_seconds);
+             "resolution 1/T = {:.3f} Hz, {} window{}), run {:.0f} s wall\n",
+             kLinearizeAt, kLinearizeAt, t_end, n, 1.0 / (t_end - kLinearizeAt), kFallingWindow ? "falling" : "Hann",
+             linear_only ? ", no nonlinear run" : "", ran.wall_seconds);
   fmt::print("{:>4} {:>12} {:>10} {:>14} {:>10} {:>20} {:>10}\n", "mode", "linear [Hz]", "damping", "spectrum [Hz]",
              "diff [%]", "linear response [Hz]", "diff [%]");
   double worst = 0.0;
@@ -215,8 +243,8 @@ int main(int argc, char** argv) {
       return best;
     };
     const double run_peak = nearest(peaks), linear_peak = nearest(linear_peaks);
-    const double diff = 100.0 * (run_peak - fl) / fl;
-    worst = std::max(worst, std::abs(diff));
+    const double diff = linear_only ? std::nan("") : 100.0 * (run_peak - fl) / fl;
+    if (!linear_only) worst = std::max(worst, std::abs(diff));
     fmt::print("{:>4} {:>12.4f} {:>10.4f} {:>14.4f} {:>10.3f} {:>20.4f} {:>10.3f}\n", i + 1, fl, linear.modes.damping(i),
                run_peak, diff, linear_peak, 100.0 * (linear_peak - fl) / fl);
   }
