@@ -2,24 +2,17 @@
 // issue 31) run through the run driver, measured against their closed form: on the
 // parallelogram branch every crank turns at the driven angle θ = ω t and every coupler
 // translates, coupler k's origin at (0.3 k + a sin θ, 0, a cos θ). Shared by the tests and the
-// settings table (bench_parallelogram_chain.cpp).
+// settings table (bench_singular_family.cpp).
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "io/case_reader.h"
-#include "io/case_reduction.h"
-#include "io/mechanism_builder.h"
-#include "run/run_driver.h"
-#include "run_test_support.h"
+#include "singular_family.h"
 
 namespace limber::test {
 
-inline std::string parallelogram_chain_path(int n) {
-  return std::string(LIMBER_TEST_DATA_DIR) + "/parallelogram_chain_" + std::to_string(n) + ".yaml";
-}
+inline std::string parallelogram_chain_stem(int n) { return "parallelogram_chain_" + std::to_string(n); }
 
 struct ChainRun {
   run::RunSummary summary;
@@ -27,23 +20,10 @@ struct ChainRun {
   double end_error = 0.0;  // the same at the last sample [m]
 };
 
-// Runs the N-chain to t_end with IDA at rtol (atol rtol/100, at least 1e-10: at rtol 1e-10 and
-// atol 1e-12 IDA fails at t = 8e-6 s, no singularity near) or generalized-α at step.
+// Runs the N-chain to t_end at the setting (singular_family.h).
 inline ChainRun run_parallelogram_chain(int n, integrate::Method method, double rtol_or_step, double t_end) {
   constexpr double kCrank = 0.1, kSpacing = 0.3, kOmega = 4.0 * M_PI;  // m, m, rad/s (2 rev/s)
-  const std::string path = parallelogram_chain_path(n);
-  const io::Case input = io::read_case_text(read_text(path), path);
-  const io::Mechanism built =
-      io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
-  io::RunSettings settings = built.run;
-  settings.t_end = t_end;
-  settings.integrator.method = method;
-  if (method == integrate::Method::kIda) {
-    settings.integrator.rtol = rtol_or_step;
-    settings.integrator.atol = std::max(1e-2 * rtol_or_step, 1e-10);  // tighter fails at the start (docs/integrators.md)
-  } else {
-    settings.integrator.step = rtol_or_step;
-  }
+  const io::Mechanism built = build_test_case(parallelogram_chain_stem(n));
   std::vector<int> couplers;
   for (int k = 0; k < n; ++k) {
     couplers.push_back(built.model.bodies[built.model.find_body("coupler" + std::to_string(k))].q_offset);
@@ -60,7 +40,7 @@ inline ChainRun run_parallelogram_chain(int n, integrate::Method method, double 
     out.max_error = std::max(out.max_error, error);
     out.end_error = error;
   };
-  out.summary = run::run_mechanism(built.model, built.assembly, settings, hooks);
+  out.summary = run_at_setting(built, method, rtol_or_step, t_end, hooks);
   return out;
 }
 

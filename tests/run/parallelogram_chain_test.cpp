@@ -2,7 +2,7 @@
 // (issue 31; tests/run/data/parallelogram_chain_N.yaml): every link collinear at t = 0.125 +
 // 0.25 k s, each loop free to fold into its anti-parallelogram there. 0.7 s here (three
 // passages) at one setting per integrator; the settings table over 10 s (IDA rtol 1e-4 … 1e-10,
-// generalized-α h 1e-3 … 1e-5) is limber_bench_parallelogram_chain's (docs/integrators.md).
+// generalized-α h 1e-3 … 1e-5) is limber_bench_singular_family's (docs/integrators.md).
 // Closed form on the parallelogram branch (parallelogram_chain.h); an anti-parallelogram
 // moves a coupler by up to 2 a = 0.2 m, so any change of branch is far above the bounds.
 #include <gtest/gtest.h>
