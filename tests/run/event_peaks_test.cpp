@@ -85,12 +85,14 @@ TEST(EventPeaks, StepTrackedPeaksBoundTheSamplesAndEqualARunSampledAtEveryStep) 
       const results::JointPeak& tracked = window.joints[j];
       const results::JointPeak sampled = sampled_peak(coarse, window, j);
       const results::JointPeak exact = sampled_peak(every_step, window, j);
-      // Samples on the step grid are step ends: the tracked peak is never below them; the
-      // reactions are recomputed from the interpolated state, equal to round-off (1e-9).
+      // Samples on the step grid are step ends: the tracked peak is never below them. The
+      // tracked reactions come from the integrator's multipliers, the samples' from Q − M v̇ at
+      // the same state: equal to Newton's convergence of the equations of motion (tolerance
+      // 1e-8 of the constraint forces; 6e-9 relative measured), bounded here at 1e-7.
       const double scale = std::max(tracked.force, 1.0);
-      EXPECT_GE(tracked.force, sampled.force - 1e-9 * scale) << joints[j] << ", " << window.start.label;
-      EXPECT_NEAR(tracked.force, exact.force, 1e-9 * scale) << joints[j] << ", " << window.start.label;
-      EXPECT_NEAR(tracked.torque, exact.torque, 1e-9 * std::max(tracked.torque, 1.0)) << joints[j];
+      EXPECT_GE(tracked.force, sampled.force - 1e-7 * scale) << joints[j] << ", " << window.start.label;
+      EXPECT_NEAR(tracked.force, exact.force, 1e-7 * scale) << joints[j] << ", " << window.start.label;
+      EXPECT_NEAR(tracked.torque, exact.torque, 1e-7 * std::max(tracked.torque, 1.0)) << joints[j];
       // The largest component is at most the magnitude, and the magnitude at most their norm.
       EXPECT_LE(tracked.force_component.maxCoeff(), tracked.force * (1 + 1e-12));
       EXPECT_LE(tracked.force, tracked.force_component.norm() * (1 + 1e-12));
