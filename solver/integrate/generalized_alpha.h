@@ -26,7 +26,9 @@
 // stiffness K where it has one (MechanicalSystem::coupled_stiffness: a nonlinear body's
 // beams, at the last state evaluated), which leaves out the
 // force derivatives of quadratic-velocity forces, force elements and the constraint forces'
-// change with q and costs no residual. When Newton converges slowly with it even fresh
+// change with q and costs no residual. A sparse system (MechanicalSystem::sparse: a nonlinear
+// body's node bodies) gets the same matrices assembled sparse and factorised by KLU
+// (sparse_lu.h), its residuals with the sparse M; others stay dense (PartialPivLU). When Newton converges slowly with it even fresh
 // (contraction rate > 0.1), a forward difference of the scaled residual in ξ (exact tangent
 // operator included, analytic in λ) replaces it for the next 20 steps. Either is kept across
 // steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old.
@@ -71,8 +73,10 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "integrate/integrator.h"
+#include "integrate/sparse_lu.h"
 #include "integrate/wall_clock_budget.h"
 
 namespace limber::integrate {
@@ -149,6 +153,12 @@ class GeneralizedAlpha final : public Integrator {
   // last evaluation (eval_) and the system's diagonal stiffness and damping: no residual.
   // Returns false when it is singular.
   bool build_structured_jacobian(double h);
+  // Factorises the iteration matrix (J_, or J_sparse_ for a sparse system); false when singular.
+  bool factorize_iteration_matrix();
+  // Δ = −J⁻¹ r with the factorised iteration matrix.
+  void solve_iteration_matrix(const Eigen::VectorXd& r, Eigen::VectorXd& delta);
+  // The largest entry of M in eval_ (dense or sparse).
+  double largest_mass_entry() const;
   void evaluate_integrand(StepState& s) const;
   void interpolate(double t_out, Sample& out) const;
   // Fails with `why` at curr_; Newton's and the matrix's failures at a singular configuration
@@ -183,15 +193,20 @@ class GeneralizedAlpha final : public Integrator {
   StepState prev_, curr_, next_;
   Eigen::VectorXd xi_last_;
 
-  // Factorised scaled iteration matrix, the step it was built for, and scratch space.
+  // Factorised scaled iteration matrix, the step it was built for, and scratch space; a sparse
+  // system's in J_sparse_ and sparse_lu_ (J_ then only for difference matrices).
+  bool sparse_ = false;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::SparseMatrix<double> J_sparse_;
+  SparseLu sparse_lu_;
+  std::vector<Eigen::Triplet<double>> entries_;  // J_sparse_'s entries while it is assembled
   double jacobian_h_ = 0.0;
   int jacobian_age_ = 0;  // steps accepted since it was built
   bool jacobian_structured_ = false;  // lu_ holds the structured matrix (else differences)
   bool has_structure_ = false;        // the system offers k and c (diagonal_stiffness_damping)
   int structured_pause_ = 0;  // accepted steps left on difference matrices after a slow structured one
   Eigen::VectorXd stiffness_, damping_;  // k and c of the system, nv each
-  Eigen::MatrixXd coupled_;              // the system's coupled stiffness (when it has one)
+  Eigen::SparseMatrix<double> coupled_;  // the system's coupled stiffness (when it has one)
   Eigen::MatrixXd J_;
   SystemEvaluation eval_;  // the last evaluation of the system (M, Q, g, G at one state)
   Eigen::VectorXd r_perturbed_;

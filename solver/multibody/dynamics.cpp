@@ -99,7 +99,35 @@ struct ForceVisitor {
 
 void mass_matrix(const Model& model, const State& state, Workspace& ws) {
   ws.M.setZero(model.nv, model.nv);
-  for (size_t b = 0; b < model.bodies.size(); ++b) add_body_mass_matrix(model, b, state.q, ws.M);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.nv > 0) ws.M.block(body.v_offset, body.v_offset, body.nv, body.nv) = body_mass_block(model, b, state.q);
+  }
+}
+
+void sparse_mass_matrix(const Model& model, const State& state, Eigen::SparseMatrix<double>& M) {
+  // The pattern, once: every body's full diagonal block.
+  if (M.rows() != model.nv || !M.isCompressed() || M.nonZeros() == 0) {
+    std::vector<Eigen::Triplet<double>> pattern;
+    for (const Body& body : model.bodies) {
+      for (int j = 0; j < body.nv; ++j) {
+        for (int i = 0; i < body.nv; ++i) pattern.emplace_back(body.v_offset + i, body.v_offset + j, 0.0);
+      }
+    }
+    M.resize(model.nv, model.nv);
+    M.setFromTriplets(pattern.begin(), pattern.end());
+    M.makeCompressed();
+  }
+  // Column j of a block starting at row o holds rows o … o + nv − 1 in order.
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.nv == 0) continue;
+    const Eigen::MatrixXd M_b = body_mass_block(model, b, state.q);
+    for (int j = 0; j < body.nv; ++j) {
+      double* column = M.valuePtr() + M.outerIndexPtr()[body.v_offset + j];
+      for (int i = 0; i < body.nv; ++i) column[i] = M_b(i, j);
+    }
+  }
 }
 
 void force_element_loads(const Model& model, const State& state, Workspace& ws, std::vector<MarkerLoad>& loads) {

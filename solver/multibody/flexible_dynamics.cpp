@@ -45,8 +45,10 @@ Eigen::VectorXd modal_coordinates(const Body& b, const Eigen::VectorXd& q) {
   return q.segment(b.q_offset + 7, b.flexible->mode_count());
 }
 
-// M_b of the header, (6 + nm) square.
-Eigen::MatrixXd mass_block(const Body& b, const Eigen::VectorXd& q) {
+}  // namespace
+
+Eigen::MatrixXd flexible_mass_block(const Body& b, const Eigen::VectorXd& q) {
+  LIMBER_DEMAND(b.kind == BodyKind::kFlexible);
   const FlexibleBody& f = *b.flexible;
   const int nm = f.mode_count();
   const Eigen::Matrix3d A = frame_rotation(b, q);
@@ -64,13 +66,6 @@ Eigen::MatrixXd mass_block(const Body& b, const Eigen::VectorXd& q) {
   M.block(6, 3, nm, 3) = in.rotation_coupling.transpose();
   M.bottomRightCorner(nm, nm).setIdentity();
   return M;
-}
-
-}  // namespace
-
-void add_flexible_mass_matrix(const Body& body, const Eigen::VectorXd& q, Eigen::MatrixXd& M) {
-  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
-  M.block(body.v_offset, body.v_offset, body.nv, body.nv) += mass_block(body, q);
 }
 
 void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,
@@ -119,7 +114,7 @@ void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, con
 
 double flexible_kinetic_energy(const Body& body, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   const Eigen::VectorXd v_b = v.segment(body.v_offset, body.nv);
-  return 0.5 * v_b.dot(mass_block(body, q) * v_b);
+  return 0.5 * v_b.dot(flexible_mass_block(body, q) * v_b);
 }
 
 double flexible_gravity_potential(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q) {

@@ -73,7 +73,14 @@ void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eig
   }
 }
 
-bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::MatrixXd& K) {
+bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q,
+                                  std::vector<Eigen::Triplet<double>>& K) {
+  // Appends the entries of a dense block at (row, col).
+  const auto add_block = [&K](int row, int col, const auto& block) {
+    for (int j = 0; j < block.cols(); ++j) {
+      for (int i = 0; i < block.rows(); ++i) K.emplace_back(row + i, col + j, block(i, j));
+    }
+  };
   for (const NonlinearBody& body : model.nonlinear_bodies) {
     const nonlinear_beam::BeamState state = nonlinear_body_state(model, body, q);
     const std::vector<Eigen::Matrix3d> rotations = rotation_matrices(state);
@@ -86,13 +93,13 @@ bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, 
         const int row = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[i]])].v_offset;
         for (int j = 0; j < 2; ++j) {
           const int col = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[j]])].v_offset;
-          K.block<6, 6>(row, col) += e.stiffness.block<6, 6>(6 * i, 6 * j);
+          add_block(row, col, e.stiffness.block<6, 6>(6 * i, 6 * j));
         }
       }
     }
     for (std::size_t k = 0; k < body.node_bodies.size(); ++k) {
       const int offset = model.bodies[static_cast<std::size_t>(body.node_bodies[k])].v_offset;
-      K.block<3, 3>(offset + 3, offset + 3) += skew(moments[k]);
+      add_block(offset + 3, offset + 3, skew(moments[k]));
     }
   }
   return !model.nonlinear_bodies.empty();
