@@ -105,6 +105,15 @@ void mass_matrix(const Model& model, const State& state, Workspace& ws) {
   }
 }
 
+Eigen::VectorXd mass_times(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& a) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(model.nv);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.nv > 0) out.segment(body.v_offset, body.nv) = body_mass_block(model, b, q) * a.segment(body.v_offset, body.nv);
+  }
+  return out;
+}
+
 void sparse_mass_matrix(const Model& model, const State& state, Eigen::SparseMatrix<double>& M) {
   // The pattern, once: every body's full diagonal block.
   if (M.rows() != model.nv || !M.isCompressed() || M.nonZeros() == 0) {

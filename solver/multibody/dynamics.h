@@ -18,6 +18,9 @@ namespace limber::multibody {
 // ws.M = M(q), nv x nv, symmetric positive definite.
 void mass_matrix(const Model& model, const State& state, Workspace& ws);
 
+// M(q) a, body block by body block (nv): no nv x nv matrix, for models of many bodies.
+Eigen::VectorXd mass_times(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& a);
+
 // M = M(q) as a sparse matrix: the bodies' diagonal blocks. A matrix from an earlier call on
 // the same model keeps its pattern and only its values are written (no allocation).
 void sparse_mass_matrix(const Model& model, const State& state, Eigen::SparseMatrix<double>& M);

@@ -25,14 +25,15 @@ ElementInBodies element_in_bodies(const NonlinearBody& body, const nonlinear_bea
                                   const std::vector<Eigen::Matrix3d>& rotations, bool with_stiffness) {
   const int a = element.nodes[0], b = element.nodes[1];
   const nonlinear_beam::ElementResponse response = nonlinear_beam::corotational_beam_response(
-      element, state.positions[a], state.positions[b], rotations[a], rotations[b]);
+      element, state.positions[a], state.positions[b], rotations[a], rotations[b], with_stiffness);
   Matrix12d t_e = Matrix12d::Zero();
   t_e.block<3, 3>(0, 0) = body.R_WC.transpose();
   t_e.block<3, 3>(3, 3) = rotations[a];
   t_e.block<3, 3>(6, 6) = body.R_WC.transpose();
   t_e.block<3, 3>(9, 9) = rotations[b];
   ElementInBodies out;
-  out.force = t_e.transpose() * response.force;
+  // T_e is block diagonal: its four 3 x 3 blocks, each transposed.
+  for (int k = 0; k < 4; ++k) out.force.segment<3>(3 * k) = t_e.block<3, 3>(3 * k, 3 * k).transpose() * response.force.segment<3>(3 * k);
   if (with_stiffness) out.stiffness = t_e.transpose() * response.tangent * t_e;
   return out;
 }

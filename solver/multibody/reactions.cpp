@@ -28,7 +28,6 @@ void frame_wrench(const Body& body, const FrameKinematics& frame, const Eigen::V
 Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
                             const ConstraintPartition& partition, Workspace& ws) {
   evaluate_constraints(model, state, Stage::kVelocity, ws);
-  mass_matrix(model, state, ws);
   generalized_forces(model, state, ws);
   Reactions out;
   // Multipliers of all rows: minimum-norm solution of G_fullᵀ λ = Q − M v̇, the rank decided
@@ -41,7 +40,7 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
   for (int row = 0; row < model.num_equations(); ++row) {
     if (!partition.released(row)) active.push_back(row);
   }
-  const Eigen::VectorXd lambda_active = minimum_norm_solve(G(active, Eigen::all).transpose(), ws.Q - ws.M * v_dot,
+  const Eigen::VectorXd lambda_active = minimum_norm_solve(G(active, Eigen::all).transpose(), ws.Q - mass_times(model, state.q, v_dot),
                                                            partition.relative_threshold);
   out.lambda = Eigen::VectorXd::Zero(model.num_equations());
   for (std::size_t k = 0; k < active.size(); ++k) out.lambda(active[k]) = lambda_active(static_cast<Eigen::Index>(k));
