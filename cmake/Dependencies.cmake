@@ -24,6 +24,15 @@ add_library(limber_cholmod INTERFACE)
 target_include_directories(limber_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(limber_cholmod INTERFACE
   ${CHOLMOD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY} LAPACK::LAPACK BLAS::BLAS)
+# KLU (the same SuiteSparse package): generalized-α's sparse iteration matrix (integrate/sparse_lu.h).
+find_library(KLU_LIBRARY NAMES klu REQUIRED)
+find_library(BTF_LIBRARY NAMES btf REQUIRED)
+find_library(AMD_LIBRARY NAMES amd REQUIRED)
+find_library(COLAMD_LIBRARY NAMES colamd REQUIRED)
+add_library(limber_klu INTERFACE)
+target_include_directories(limber_klu SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(limber_klu INTERFACE
+  ${KLU_LIBRARY} ${BTF_LIBRARY} ${AMD_LIBRARY} ${COLAMD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY})
 
 # MATLAB .mat v5 files of `limber linearize` (run/linear_mat_file.h). matio ships no CMake
 # package on Debian 12 (only a pkg-config file): located directly.

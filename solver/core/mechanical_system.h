@@ -9,18 +9,23 @@
 //
 // Rotations are carried as unit quaternions in q and angular velocities in v, so nq ≥ nv;
 // `integrate_coordinates` is the exact group update q ⊕ Δv used by Lie-group integrators.
-// Dense matrices: mechanisms have tens to a few hundred velocities.
+// Dense matrices: mechanisms have tens to a few hundred velocities. A system of many small
+// coupled bodies (a nonlinear body's hundreds of node bodies) says it is `sparse`: its M and
+// coupled stiffness then come as sparse matrices, so that an integrator's cost follows their
+// nonzeros, not nv².
 #pragma once
 
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 namespace limber {
 
 // Everything an implicit integrator's residual needs at one (t, q, v) (sizes as below).
 struct SystemEvaluation {
-  Eigen::MatrixXd M;    // nv x nv
+  Eigen::MatrixXd M;    // nv x nv; left empty by a sparse system (MechanicalSystem::sparse)
+  Eigen::SparseMatrix<double> M_sparse;  // nv x nv from a sparse system instead of M
   Eigen::VectorXd Q;    // nv
   Eigen::VectorXd g;    // nc
   Eigen::MatrixXd G;    // nc x nv
@@ -64,7 +69,7 @@ class MechanicalSystem {
   virtual void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                 Eigen::VectorXd& gamma) const = 0;
   // M, Q, g, G, g_t (and ∂g/∂q when `with_g_q`) at one (t, q, v), as the calls above return
-  // them. A system overrides it to share the work of one pass (the kinematics of every body
+  // them (M as M_sparse for a sparse system). A system overrides it to share the work of one pass (the kinematics of every body
   // and joint frame once); the default makes the separate calls.
   virtual void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                         bool with_g_q, SystemEvaluation& out) const {
@@ -88,9 +93,16 @@ class MechanicalSystem {
   // the diagonal above cannot carry: the co-rotational beams of a nonlinear body, whose nodes
   // pull on their neighbours (multibody/nonlinear_body.h). The structured iteration matrix adds
   // it to the diagonal k. Returns false (K untouched) when the system has none.
-  virtual bool coupled_stiffness(double /*t*/, const Eigen::VectorXd& /*q*/, Eigen::MatrixXd& /*K*/) const {
+  virtual bool coupled_stiffness(double /*t*/, const Eigen::VectorXd& /*q*/,
+                                 Eigen::SparseMatrix<double>& /*K*/) const {
     return false;
   }
+
+  // True when M and the coupled stiffness are sparse and large enough that dense algebra on
+  // them dominates a run: evaluate() then fills SystemEvaluation::M_sparse instead of M, and
+  // integrators that can factorise sparse matrices do (generalized-α; IDA refuses such a
+  // system). mass_matrix() stays dense for one-off uses (the consistent start).
+  virtual bool sparse() const { return false; }
 
   // Which rows of a redundant constraint set are independent depends on the configuration:
   // a loop whose dependency coefficients turn with a crank makes a fixed choice of rows

@@ -71,6 +71,7 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
   jacobian_h_ = 0.0;
   J_.resize(nv_ + nc_, nv_ + nc_);
   has_structure_ = system.diagonal_stiffness_damping(stiffness_, damping_);
+  sparse_ = system.sparse();
   structured_pause_ = 0;
 
   // Consistent start: projected q, v; v̇ and λ from the saddle-point system; a_0 = v̇_0.
@@ -266,7 +267,7 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
   double previous_norm = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < options_.max_newton_iterations; ++iteration) {
     if (!r.allFinite()) return Attempt::kNaN;
-    delta = -lu_.solve(r);
+    solve_iteration_matrix(r, delta);
     xi += delta.head(nv_);
     lambda_scaled += delta.tail(nc_);
     ++stats_.newton_iterations;
@@ -489,7 +490,7 @@ bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorX
   const double force_change = (eval_.G.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
   const double force = (eval_.G.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
   const bool lambda_converged =
-      force_change <= tol * force + eval_.M.lpNorm<Eigen::Infinity>() * xi_floor;
+      force_change <= tol * force + largest_mass_entry() * xi_floor;
   return xi_converged && lambda_converged;
 }
 
@@ -508,7 +509,11 @@ void GeneralizedAlpha::scaled_residual(double h, const StepState& s,
   const double bh2 = coef_.beta * h * h;
   ++stats_.residual_evaluations;
   system_->evaluate(s.t, s.q, s.v, false, eval_);
-  r.head(nv_).noalias() = bh2 * (eval_.M * s.vdot - eval_.Q);
+  if (sparse_) {
+    r.head(nv_).noalias() = bh2 * (eval_.M_sparse * s.vdot - eval_.Q);
+  } else {
+    r.head(nv_).noalias() = bh2 * (eval_.M * s.vdot - eval_.Q);
+  }
   r.head(nv_).noalias() += eval_.G.transpose() * lambda_scaled;
   r.tail(nc_) = eval_.g;
 }
@@ -536,44 +541,103 @@ bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
   J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
   J_.bottomRightCorner(nc_, nc_).setZero();
   if (!J_.allFinite()) return false;
-  if (has_structure_) {
-    structured_block(h, correction_);
+  if (sparse_) J_sparse_ = J_.sparseView();
+  if (has_structure_ && !sparse_) {
+    dense_structured_block(h, correction_);
     correction_ = J_.topLeftCorner(nv_, nv_) - correction_;
     correction_h_ = h;
   }
-  lu_.compute(J_);
   jacobian_h_ = h;
   jacobian_age_ = 0;
   jacobian_structured_ = false;
-  return !is_singular(J_, lu_);
+  return factorize_iteration_matrix();
 }
 
-void GeneralizedAlpha::structured_block(double h, Eigen::MatrixXd& block) {
+void GeneralizedAlpha::dense_structured_block(double h, Eigen::MatrixXd& block) {
   const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
-  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c.
   block = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
   block.diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
-  // Internal forces that couple velocities (a nonlinear body's beams), at the last state evaluated.
   if (system_->coupled_stiffness(next_.t, next_.q, coupled_)) block += beta * h * h * coupled_;
 }
 
 bool GeneralizedAlpha::build_structured_jacobian(double h) {
+  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
   ++stats_.jacobian_evaluations;
-  Eigen::MatrixXd block;
-  structured_block(h, block);
-  // What the last matrix of differences held beyond the structured one (force elements and
-  // constraint forces through the joints' node rotations), scaled to this h as a stiffness.
-  if (correction_h_ > 0.0) block += (h / correction_h_) * (h / correction_h_) * correction_;
-  J_.topLeftCorner(nv_, nv_) = block;
-  J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
-  J_.bottomLeftCorner(nc_, nv_) = eval_.G;
-  J_.bottomRightCorner(nc_, nc_).setZero();
   jacobian_structured_ = true;
   jacobian_h_ = h;
   jacobian_age_ = 0;
-  if (!J_.allFinite()) return false;
-  lu_.compute(J_);
-  return !is_singular(J_, lu_);
+  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c; ∂g/∂ξ = G;
+  // plus the internal forces that couple velocities (a nonlinear body's beams), at the last
+  // state evaluated.
+  if (!sparse_) {
+    Eigen::MatrixXd block;
+    dense_structured_block(h, block);
+    // What the last matrix of differences held beyond the structured one (force elements and
+    // constraint forces through the joints' node rotations), scaled to this h as a stiffness.
+    if (correction_h_ > 0.0) block += (h / correction_h_) * (h / correction_h_) * correction_;
+    J_.topLeftCorner(nv_, nv_) = block;
+    J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
+    J_.bottomLeftCorner(nc_, nv_) = eval_.G;
+    J_.bottomRightCorner(nc_, nc_).setZero();
+    if (!J_.allFinite()) return false;
+    return factorize_iteration_matrix();
+  }
+  // The same blocks as entries: M, k and c, K, then G's nonzeros in both places.
+  const double c_mass = (1.0 - alpha_m) / (1.0 - alpha_f);
+  const Eigen::VectorXd diagonal = beta * h * h * stiffness_ + gamma * h * damping_;
+  const bool coupled = system_->coupled_stiffness(next_.t, next_.q, coupled_);
+  entries_.clear();
+  const auto add = [this](const Eigen::SparseMatrix<double>& A, double scale) {
+    for (int j = 0; j < A.outerSize(); ++j) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+        entries_.emplace_back(static_cast<int>(it.row()), j, scale * it.value());
+      }
+    }
+  };
+  add(eval_.M_sparse, c_mass);
+  if (has_structure_) {
+    for (int i = 0; i < nv_; ++i) {
+      if (diagonal(i) != 0.0) entries_.emplace_back(i, i, diagonal(i));
+    }
+  }
+  if (coupled) add(coupled_, beta * h * h);
+  for (int j = 0; j < nv_; ++j) {
+    for (int i = 0; i < nc_; ++i) {
+      if (eval_.G(i, j) == 0.0) continue;
+      entries_.emplace_back(nv_ + i, j, eval_.G(i, j));
+      entries_.emplace_back(j, nv_ + i, eval_.G(i, j));
+    }
+  }
+  J_sparse_.resize(nv_ + nc_, nv_ + nc_);
+  J_sparse_.setFromTriplets(entries_.begin(), entries_.end());
+  if (!Eigen::Map<const Eigen::VectorXd>(J_sparse_.valuePtr(), J_sparse_.nonZeros()).allFinite()) return false;
+  return factorize_iteration_matrix();
+}
+
+bool GeneralizedAlpha::factorize_iteration_matrix() {
+  if (!sparse_) {
+    lu_.compute(J_);
+    return !is_singular(J_, lu_);
+  }
+  if (!sparse_lu_.factorize(J_sparse_)) return false;
+  if (sparse_lu_.rcond() > kSingularRcond) return true;
+  // A small estimate: judged as the dense matrices are, on the equilibrated matrix (rare).
+  const Eigen::MatrixXd dense(J_sparse_);
+  return !is_singular(dense, Eigen::PartialPivLU<Eigen::MatrixXd>(dense));
+}
+
+void GeneralizedAlpha::solve_iteration_matrix(const Eigen::VectorXd& r, Eigen::VectorXd& delta) {
+  if (sparse_) {
+    delta = -sparse_lu_.solve(r);
+  } else {
+    delta = -lu_.solve(r);
+  }
+}
+
+double GeneralizedAlpha::largest_mass_entry() const {
+  if (!sparse_) return eval_.M.lpNorm<Eigen::Infinity>();
+  return Eigen::Map<const Eigen::VectorXd>(eval_.M_sparse.valuePtr(), eval_.M_sparse.nonZeros())
+      .lpNorm<Eigen::Infinity>();
 }
 
 void GeneralizedAlpha::evaluate_integrand(StepState& s) const {

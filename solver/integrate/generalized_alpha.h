@@ -26,14 +26,16 @@
 // stiffness K where it has one (MechanicalSystem::coupled_stiffness: a nonlinear body's
 // beams, at the last state evaluated), which leaves out the
 // force derivatives of quadratic-velocity forces, force elements and the constraint forces'
-// change with q and costs no residual. When Newton converges slowly with it even fresh
+// change with q and costs no residual. A sparse system (MechanicalSystem::sparse: a nonlinear
+// body's node bodies) gets the same matrices assembled sparse and factorised by KLU
+// (sparse_lu.h), its residuals with the sparse M; others stay dense (PartialPivLU). When Newton converges slowly with it even fresh
 // (contraction rate > 0.1), a forward difference of the scaled residual in ξ (exact tangent
-// operator included, analytic in λ) replaces it for the next 20 steps, and what that matrix
-// holds beyond the structured one is kept and added to every structured matrix after it
-// (scaled by h², as a stiffness): on the satellite deployment's 148-mode reference those are
-// the hinge springs and constraint forces acting through the joint nodes' rotations in the
-// attachment modes, constant to six digits over time, and without them Newton contracts at
-// only 0.05 to 0.13 per iteration. Either is kept across
+// operator included, analytic in λ) replaces it for the next 20 steps, and (dense systems)
+// what that matrix holds beyond the structured one is kept and added to every structured
+// matrix after it (scaled by h², as a stiffness): on the satellite deployment's 148-mode
+// reference those are the hinge springs and constraint forces acting through the joint nodes'
+// rotations in the attachment modes, constant to six digits over time, and without them
+// Newton contracts at only 0.05 to 0.13 per iteration. Either is kept across
 // steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old.
 // A step whose Newton iteration fails (no convergence in max_newton_iterations, divergence or
 // non-finite values) is rejected and retried with h/2, at most max_step_halvings times, then the
@@ -76,8 +78,10 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "integrate/integrator.h"
+#include "integrate/sparse_lu.h"
 #include "integrate/wall_clock_budget.h"
 
 namespace limber::integrate {
@@ -152,11 +156,17 @@ class GeneralizedAlpha final : public Integrator {
                         const Eigen::VectorXd& r);
   // The structured iteration matrix [(1 − α_m)/(1 − α_f) M + βh² k + γh c + C, Gᵀ; G, 0] from
   // the last evaluation (eval_) and the system's diagonal stiffness and damping: no residual.
-  // C is what the last matrix of differences held beyond it, scaled by h² (see the header).
+  // C (dense systems) is what the last matrix of differences held beyond it, scaled by h².
   // Returns false when it is singular.
   bool build_structured_jacobian(double h);
-  // Its ξ block without C.
-  void structured_block(double h, Eigen::MatrixXd& block);
+  // Its ξ block without C, for a dense system.
+  void dense_structured_block(double h, Eigen::MatrixXd& block);
+  // Factorises the iteration matrix (J_, or J_sparse_ for a sparse system); false when singular.
+  bool factorize_iteration_matrix();
+  // Δ = −J⁻¹ r with the factorised iteration matrix.
+  void solve_iteration_matrix(const Eigen::VectorXd& r, Eigen::VectorXd& delta);
+  // The largest entry of M in eval_ (dense or sparse).
+  double largest_mass_entry() const;
   void evaluate_integrand(StepState& s) const;
   void interpolate(double t_out, Sample& out) const;
   // Fails with `why` at curr_; Newton's and the matrix's failures at a singular configuration
@@ -191,15 +201,20 @@ class GeneralizedAlpha final : public Integrator {
   StepState prev_, curr_, next_;
   Eigen::VectorXd xi_last_;
 
-  // Factorised scaled iteration matrix, the step it was built for, and scratch space.
+  // Factorised scaled iteration matrix, the step it was built for, and scratch space; a sparse
+  // system's in J_sparse_ and sparse_lu_ (J_ then only for difference matrices).
+  bool sparse_ = false;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::SparseMatrix<double> J_sparse_;
+  SparseLu sparse_lu_;
+  std::vector<Eigen::Triplet<double>> entries_;  // J_sparse_'s entries while it is assembled
   double jacobian_h_ = 0.0;
   int jacobian_age_ = 0;  // steps accepted since it was built
   bool jacobian_structured_ = false;  // lu_ holds the structured matrix (else differences)
   bool has_structure_ = false;        // the system offers k and c (diagonal_stiffness_damping)
   int structured_pause_ = 0;  // accepted steps left on difference matrices after a slow structured one
   Eigen::VectorXd stiffness_, damping_;  // k and c of the system, nv each
-  Eigen::MatrixXd coupled_;              // the system's coupled stiffness (when it has one)
+  Eigen::SparseMatrix<double> coupled_;  // the system's coupled stiffness (when it has one)
   // The last matrix of differences minus the structured one at its step correction_h_ (0: none).
   Eigen::MatrixXd correction_;
   double correction_h_ = 0.0;

@@ -564,6 +564,8 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
                            const IntegratorOptions& options) {
   options.validate();
   LIMBER_DEMAND(options.method == Method::kIda);
+  // Its residual uses the dense M, which a sparse system leaves empty (the run refuses IDA there).
+  LIMBER_DEMAND(!system.sparse());
   if (x0.q.size() != system.nq() || x0.v.size() != system.nv()) {
     throw InputError(fmt::format("initial state: expected {} coordinates and {} velocities, got "
                                  "{} and {}",

@@ -75,19 +75,18 @@ void body_frame_kinematics(const Model& model, int body, const Eigen::Vector3d& 
   out.alpha_bias.setZero();
 }
 
-void add_body_mass_matrix(const Model& model, int body, const Eigen::VectorXd& q,
-                          Eigen::MatrixXd& M) {
+Eigen::MatrixXd body_mass_block(const Model& model, int body, const Eigen::VectorXd& q) {
   const Body& b = model.bodies[body];
-  if (b.kind == BodyKind::kGround) return;
-  if (b.kind == BodyKind::kFlexible) return add_flexible_mass_matrix(b, q, M);
+  if (b.kind == BodyKind::kGround) return {};
+  if (b.kind == BodyKind::kFlexible) return flexible_mass_block(b, q);
   const Eigen::Matrix3d A = rotation_matrix(body_quaternion(b, q));
   const Eigen::Matrix3d c_x = skew(b.com_B);
-  const Eigen::Matrix3d J_o = b.inertia_com_B - b.mass * c_x * c_x;
-  const int o = b.v_offset;
-  M.block<3, 3>(o, o) += b.mass * Eigen::Matrix3d::Identity();
-  M.block<3, 3>(o, o + 3) += -b.mass * A * c_x;
-  M.block<3, 3>(o + 3, o) += b.mass * c_x * A.transpose();
-  M.block<3, 3>(o + 3, o + 3) += J_o;
+  Eigen::MatrixXd M_b(6, 6);
+  M_b.block<3, 3>(0, 0) = b.mass * Eigen::Matrix3d::Identity();
+  M_b.block<3, 3>(0, 3) = -b.mass * A * c_x;
+  M_b.block<3, 3>(3, 0) = b.mass * c_x * A.transpose();
+  M_b.block<3, 3>(3, 3) = b.inertia_com_B - b.mass * c_x * c_x;
+  return M_b;
 }
 
 void add_body_inertial_and_gravity_forces(const Model& model, int body, const Eigen::VectorXd& q,

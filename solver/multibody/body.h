@@ -36,9 +36,8 @@ void body_frame_kinematics(const Model& model, int body, const Eigen::Vector3d& 
                            const Eigen::Matrix3d& R_BF, const Eigen::VectorXd& q,
                            const Eigen::VectorXd* v, FrameKinematics& out);
 
-// Adds M_b into M (nv x nv) at the body's block.
-void add_body_mass_matrix(const Model& model, int body, const Eigen::VectorXd& q,
-                          Eigen::MatrixXd& M);
+// M_b, the body's own block of M (its nv x nv; empty for ground).
+Eigen::MatrixXd body_mass_block(const Model& model, int body, const Eigen::VectorXd& q);
 
 // Adds the quadratic-velocity forces Q_v and the gravity force (m g at the centre of mass)
 // into Q (nv); for a flexible body also its elastic and modal damping forces.

@@ -99,7 +99,44 @@ struct ForceVisitor {
 
 void mass_matrix(const Model& model, const State& state, Workspace& ws) {
   ws.M.setZero(model.nv, model.nv);
-  for (size_t b = 0; b < model.bodies.size(); ++b) add_body_mass_matrix(model, b, state.q, ws.M);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.nv > 0) ws.M.block(body.v_offset, body.v_offset, body.nv, body.nv) = body_mass_block(model, b, state.q);
+  }
+}
+
+Eigen::VectorXd mass_times(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& a) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(model.nv);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.nv > 0) out.segment(body.v_offset, body.nv) = body_mass_block(model, b, q) * a.segment(body.v_offset, body.nv);
+  }
+  return out;
+}
+
+void sparse_mass_matrix(const Model& model, const State& state, Eigen::SparseMatrix<double>& M) {
+  // The pattern, once: every body's full diagonal block.
+  if (M.rows() != model.nv || !M.isCompressed() || M.nonZeros() == 0) {
+    std::vector<Eigen::Triplet<double>> pattern;
+    for (const Body& body : model.bodies) {
+      for (int j = 0; j < body.nv; ++j) {
+        for (int i = 0; i < body.nv; ++i) pattern.emplace_back(body.v_offset + i, body.v_offset + j, 0.0);
+      }
+    }
+    M.resize(model.nv, model.nv);
+    M.setFromTriplets(pattern.begin(), pattern.end());
+    M.makeCompressed();
+  }
+  // Column j of a block starting at row o holds rows o … o + nv − 1 in order.
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.nv == 0) continue;
+    const Eigen::MatrixXd M_b = body_mass_block(model, b, state.q);
+    for (int j = 0; j < body.nv; ++j) {
+      double* column = M.valuePtr() + M.outerIndexPtr()[body.v_offset + j];
+      for (int i = 0; i < body.nv; ++i) column[i] = M_b(i, j);
+    }
+  }
 }
 
 void force_element_loads(const Model& model, const State& state, Workspace& ws, std::vector<MarkerLoad>& loads) {
@@ -164,7 +201,7 @@ void mass_matrix_and_forces(const Model& model, const State& state, Workspace& w
     if (body.kind == BodyKind::kFlexible) {
       add_flexible_mass_matrix_and_forces(body, model.gravity_W, state.q, state.v, ws.M, ws.Q);
     } else {
-      add_body_mass_matrix(model, b, state.q, ws.M);
+      if (body.nv > 0) ws.M.block(body.v_offset, body.v_offset, body.nv, body.nv) = body_mass_block(model, b, state.q);
       add_body_inertial_and_gravity_forces(model, b, state.q, state.v, ws.Q);
     }
   }

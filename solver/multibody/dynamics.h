@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "multibody/model.h"
 #include "multibody/state.h"
@@ -16,6 +17,13 @@ namespace limber::multibody {
 
 // ws.M = M(q), nv x nv, symmetric positive definite.
 void mass_matrix(const Model& model, const State& state, Workspace& ws);
+
+// M(q) a, body block by body block (nv): no nv x nv matrix, for models of many bodies.
+Eigen::VectorXd mass_times(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& a);
+
+// M = M(q) as a sparse matrix: the bodies' diagonal blocks. A matrix from an earlier call on
+// the same model keeps its pattern and only its values are written (no allocation).
+void sparse_mass_matrix(const Model& model, const State& state, Eigen::SparseMatrix<double>& M);
 
 // Rates of energy flow into the model at one instant [W].
 struct PowerTerms {

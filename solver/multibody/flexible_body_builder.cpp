@@ -205,8 +205,7 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
   // diagonal, must be positive definite (a mode holding rigid motion makes it singular).
   Eigen::VectorXd q0 = Eigen::VectorXd::Zero(body.nq);
   q0(3) = 1.0;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(body.nv, body.nv);
-  add_flexible_mass_matrix(body, q0, M);
+  const Eigen::MatrixXd M = flexible_mass_block(body, q0);
   const Eigen::VectorXd scale = M.diagonal().cwiseSqrt().cwiseInverse();
   const double lowest =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scale.asDiagonal() * M * scale.asDiagonal()).eigenvalues()(0);

@@ -64,10 +64,6 @@ Eigen::MatrixXd mass_block(const Body& b, const Eigen::Matrix3d& A, const Deform
   return M;
 }
 
-Eigen::MatrixXd mass_block(const Body& b, const Eigen::VectorXd& q) {
-  return mass_block(b, frame_rotation(b, q), deformed_inertia(*b.flexible, modal_coordinates(b, q)));
-}
-
 // The forces of add_flexible_forces, with A and `in` at the body's q.
 void add_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::Matrix3d& A,
                 const DeformedInertia& in, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
@@ -113,9 +109,9 @@ void add_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen:
 
 }  // namespace
 
-void add_flexible_mass_matrix(const Body& body, const Eigen::VectorXd& q, Eigen::MatrixXd& M) {
-  LIMBER_DEMAND(body.kind == BodyKind::kFlexible);
-  M.block(body.v_offset, body.v_offset, body.nv, body.nv) += mass_block(body, q);
+Eigen::MatrixXd flexible_mass_block(const Body& b, const Eigen::VectorXd& q) {
+  LIMBER_DEMAND(b.kind == BodyKind::kFlexible);
+  return mass_block(b, frame_rotation(b, q), deformed_inertia(*b.flexible, modal_coordinates(b, q)));
 }
 
 void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,
@@ -137,7 +133,7 @@ void add_flexible_mass_matrix_and_forces(const Body& body, const Eigen::Vector3d
 
 double flexible_kinetic_energy(const Body& body, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   const Eigen::VectorXd v_b = v.segment(body.v_offset, body.nv);
-  return 0.5 * v_b.dot(mass_block(body, q) * v_b);
+  return 0.5 * v_b.dot(flexible_mass_block(body, q) * v_b);
 }
 
 double flexible_gravity_potential(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q) {

@@ -25,8 +25,8 @@
 
 namespace limber::multibody {
 
-// Adds M_b into M (nv x nv) at the body's block. Precondition: body.kind == kFlexible.
-void add_flexible_mass_matrix(const Body& body, const Eigen::VectorXd& q, Eigen::MatrixXd& M);
+// M_b of the header, the body's own (6 + nm) square block. Precondition: body.kind == kFlexible.
+Eigen::MatrixXd flexible_mass_block(const Body& body, const Eigen::VectorXd& q);
 
 // Adds the quadratic-velocity, gravity, elastic and damping forces into Q (nv).
 void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,

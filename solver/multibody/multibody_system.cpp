@@ -117,10 +117,14 @@ bool MultibodySystem::diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::Vect
   return true;
 }
 
-bool MultibodySystem::coupled_stiffness(double /*t*/, const Eigen::VectorXd& q, Eigen::MatrixXd& K) const {
+bool MultibodySystem::coupled_stiffness(double /*t*/, const Eigen::VectorXd& q,
+                                        Eigen::SparseMatrix<double>& K) const {
   if (model_.nonlinear_bodies.empty()) return false;
-  K.setZero(model_.nv, model_.nv);
-  return add_nonlinear_body_stiffness(model_, q, K);
+  std::vector<Eigen::Triplet<double>> entries;
+  add_nonlinear_body_stiffness(model_, q, entries);
+  K.resize(model_.nv, model_.nv);
+  K.setFromTriplets(entries.begin(), entries.end());
+  return true;
 }
 
 void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
@@ -128,9 +132,16 @@ void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::
   state_.t = t;
   state_.q = q;
   state_.v = v;
-  multibody::mass_matrix_and_forces(model_, state_, workspace_);
-  evaluate_constraint_rows(model_, state_, Stage::kPosition, workspace_);
-  out.M = workspace_.M;
+  if (sparse()) {
+    out.M.resize(0, 0);
+    sparse_mass_matrix(model_, state_, out.M_sparse);
+    multibody::generalized_forces(model_, state_, workspace_);
+    evaluate_constraints(model_, state_, Stage::kPosition, workspace_);
+  } else {
+    multibody::mass_matrix_and_forces(model_, state_, workspace_);
+    evaluate_constraint_rows(model_, state_, Stage::kPosition, workspace_);
+    out.M = workspace_.M;
+  }
   out.Q = workspace_.Q;
   select_rows(workspace_.g, out.g);
   select_rows(workspace_.G, out.G);

@@ -49,7 +49,9 @@ class MultibodySystem final : public MechanicalSystem {
   // zero elsewhere.
   bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
   // The co-rotational beams of the nonlinear bodies (nonlinear_body.h); false without them.
-  bool coupled_stiffness(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& K) const override;
+  bool coupled_stiffness(double t, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& K) const override;
+  // With nonlinear bodies: their node bodies make M and K large and block sparse.
+  bool sparse() const override { return !model_.nonlinear_bodies.empty(); }
   // One pass: body terms, then the constraint set once (marker kinematics once).
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool with_g_q,
                 SystemEvaluation& out) const override;

@@ -25,14 +25,15 @@ ElementInBodies element_in_bodies(const NonlinearBody& body, const nonlinear_bea
                                   const std::vector<Eigen::Matrix3d>& rotations, bool with_stiffness) {
   const int a = element.nodes[0], b = element.nodes[1];
   const nonlinear_beam::ElementResponse response = nonlinear_beam::corotational_beam_response(
-      element, state.positions[a], state.positions[b], rotations[a], rotations[b]);
+      element, state.positions[a], state.positions[b], rotations[a], rotations[b], with_stiffness);
   Matrix12d t_e = Matrix12d::Zero();
   t_e.block<3, 3>(0, 0) = body.R_WC.transpose();
   t_e.block<3, 3>(3, 3) = rotations[a];
   t_e.block<3, 3>(6, 6) = body.R_WC.transpose();
   t_e.block<3, 3>(9, 9) = rotations[b];
   ElementInBodies out;
-  out.force = t_e.transpose() * response.force;
+  // T_e is block diagonal: its four 3 x 3 blocks, each transposed.
+  for (int k = 0; k < 4; ++k) out.force.segment<3>(3 * k) = t_e.block<3, 3>(3 * k, 3 * k).transpose() * response.force.segment<3>(3 * k);
   if (with_stiffness) out.stiffness = t_e.transpose() * response.tangent * t_e;
   return out;
 }
@@ -73,7 +74,14 @@ void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eig
   }
 }
 
-bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::MatrixXd& K) {
+bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q,
+                                  std::vector<Eigen::Triplet<double>>& K) {
+  // Appends the entries of a dense block at (row, col).
+  const auto add_block = [&K](int row, int col, const auto& block) {
+    for (int j = 0; j < block.cols(); ++j) {
+      for (int i = 0; i < block.rows(); ++i) K.emplace_back(row + i, col + j, block(i, j));
+    }
+  };
   for (const NonlinearBody& body : model.nonlinear_bodies) {
     const nonlinear_beam::BeamState state = nonlinear_body_state(model, body, q);
     const std::vector<Eigen::Matrix3d> rotations = rotation_matrices(state);
@@ -86,13 +94,13 @@ bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, 
         const int row = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[i]])].v_offset;
         for (int j = 0; j < 2; ++j) {
           const int col = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[j]])].v_offset;
-          K.block<6, 6>(row, col) += e.stiffness.block<6, 6>(6 * i, 6 * j);
+          add_block(row, col, e.stiffness.block<6, 6>(6 * i, 6 * j));
         }
       }
     }
     for (std::size_t k = 0; k < body.node_bodies.size(); ++k) {
       const int offset = model.bodies[static_cast<std::size_t>(body.node_bodies[k])].v_offset;
-      K.block<3, 3>(offset + 3, offset + 3) += skew(moments[k]);
+      add_block(offset + 3, offset + 3, skew(moments[k]));
     }
   }
   return !model.nonlinear_bodies.empty();

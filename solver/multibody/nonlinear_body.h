@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "multibody/model.h"
 #include "nonlinear_beam/beam_structure.h"
@@ -30,8 +31,10 @@ nonlinear_beam::BeamState nonlinear_body_state(const Model& model, const Nonline
 // Q += −Tᵀ f_int over every nonlinear body of the model (Q: nv).
 void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eigen::VectorXd& Q);
 
-// K += the beams' stiffness above (K: nv x nv). Returns false when the model has no nonlinear body.
-bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::MatrixXd& K);
+// The beams' stiffness above as (row, column, value) entries of the nv x nv K, appended to K
+// (an entry may repeat: they add). Returns false when the model has no nonlinear body.
+bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q,
+                                  std::vector<Eigen::Triplet<double>>& K);
 
 // Strain energy of the beams of every nonlinear body [J] (f_int is its gradient).
 double nonlinear_body_strain_energy(const Model& model, const Eigen::VectorXd& q);

@@ -103,9 +103,9 @@ Reactions reactions_of(const Model& model, const State& state, Eigen::VectorXd l
 Reactions compute_reactions(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
                             const ConstraintPartition& partition, Workspace& ws) {
   evaluate_constraints(model, state, Stage::kVelocity, ws);
-  mass_matrix(model, state, ws);
   generalized_forces(model, state, ws);
-  return reactions_of(model, state, all_multipliers(model, ws.Q - ws.M * v_dot, partition, ws), partition, ws);
+  return reactions_of(model, state, all_multipliers(model, ws.Q - mass_times(model, state.q, v_dot), partition, ws),
+                      partition, ws);
 }
 
 Reactions reactions_from_multipliers(const Model& model, const State& state,

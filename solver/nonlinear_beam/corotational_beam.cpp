@@ -73,7 +73,8 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
                                            const Eigen::Vector3d& x_a,
                                            const Eigen::Vector3d& x_b,
                                            const Eigen::Matrix3d& rotation_a,
-                                           const Eigen::Matrix3d& rotation_b) {
+                                           const Eigen::Matrix3d& rotation_b,
+                                           bool with_tangent) {
   // Chord: current length and direction r1.
   const Eigen::Vector3d chord = x_b - x_a;
   const double ln = chord.norm();
@@ -144,6 +145,11 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
   Vector7d f_a;
   f_a << axial, m_a, m_b;
   const Vector12d f_local = b_a.transpose() * f_a;
+  ElementResponse out;
+  out.frame = frame;
+  out.local_forces = f_l;
+  for (int bi = 0; bi < 4; ++bi) out.force.segment<3>(3 * bi) = frame * f_local.segment<3>(3 * bi);
+  if (!with_tangent) return out;
 
   // K_a = B_h^T K_l B_h + K_h.
   Matrix7d b_h = Matrix7d::Zero();
@@ -194,17 +200,13 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
   dh.row(10) = -0.5 * c(0) * d_eta21;
   k_local -= dh;
 
-  // Back to component axes block by block: f_g = E f, K_g = E K E^T, E = diag(R_r x 4).
-  ElementResponse out;
+  // Back to component axes block by block: K_g = E K E^T, E = diag(R_r x 4) (f_g = E f above).
   for (int bi = 0; bi < 4; ++bi) {
-    out.force.segment<3>(3 * bi) = frame * f_local.segment<3>(3 * bi);
     for (int bj = 0; bj < 4; ++bj) {
       out.tangent.block<3, 3>(3 * bi, 3 * bj) =
           frame * k_local.block<3, 3>(3 * bi, 3 * bj) * frame.transpose();
     }
   }
-  out.frame = frame;
-  out.local_forces = f_l;
   return out;
 }
 

@@ -65,11 +65,13 @@ double corotational_beam_energy(const CorotationalBeam& element, const Eigen::Ve
 // Response at node positions x_a, x_b [m] and nodal rotations rotation_a, rotation_b (from the
 // undeformed state, component axes). Precondition (LIMBER_DEMAND): the nodes do not coincide
 // and the mean y axis q is not parallel to the chord (a relative rotation of the two node
-// triads near pi, outside any beam's small-strain range).
+// triads near pi, outside any beam's small-strain range). Without `with_tangent` the tangent
+// is left unset: a residual needs only the force, and the tangent is three quarters of the cost.
 ElementResponse corotational_beam_response(const CorotationalBeam& element,
                                            const Eigen::Vector3d& x_a,
                                            const Eigen::Vector3d& x_b,
                                            const Eigen::Matrix3d& rotation_a,
-                                           const Eigen::Matrix3d& rotation_b);
+                                           const Eigen::Matrix3d& rotation_b,
+                                           bool with_tangent = true);
 
 }  // namespace limber::nonlinear_beam

@@ -6,11 +6,13 @@
 // without stress output (the case's text edited in memory), compared in the peak deflection and
 // the peak |R3| reaction. Not a test: prints figures for docs/nonlinear-beams.md.
 //   limber_bench_nonlinear_rod [t_end of the seed run, default 1] [t_end of the comparison, default 0.5]
+//                              [step of the seed run, default the case's 1e-4 s]
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -46,11 +48,12 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
-Histories run_text(const std::string& text, double t_end) {
+Histories run_text(const std::string& text, double t_end, double step = 0.0) {
   const io::Case input = io::read_case_text(text, "bench.yaml");
   const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   io::RunSettings settings = built.run;
   settings.t_end = t_end;
+  if (step > 0.0) settings.integrator.step = step;
   settings.sample_interval = 1e-3;
   const int r3 = built.model.find_joint("R3");
   Histories out;
@@ -65,6 +68,10 @@ Histories run_text(const std::string& text, double t_end) {
   return out;
 }
 
+// CPU time of this process so far [s]: on a machine shared with other jobs, wall time measures
+// the load as much as the program.
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
 double peak(const std::vector<double>& x, const std::vector<double>& t, double until) {
   double m = 0.0;
   for (std::size_t k = 0; k < x.size(); ++k) {
@@ -78,14 +85,15 @@ double peak(const std::vector<double>& x, const std::vector<double>& t, double u
 int main(int argc, char** argv) {
   const double seed_end = argc > 1 ? std::atof(argv[1]) : 1.0;
   const double limit_end = argc > 2 ? std::atof(argv[2]) : 0.5;
+  const double seed_step = argc > 3 ? std::atof(argv[3]) : 0.0;
   const std::string cases = LIMBER_CASES_DIR;
 
   // (1) The seed set-up with the rod nonlinear.
-  const Histories seed = run_text(read_text(cases + "/slider_crank_seed_setup_nonlinear.yaml"), seed_end);
+  const Histories seed = run_text(read_text(cases + "/slider_crank_seed_setup_nonlinear.yaml"), seed_end, seed_step);
   const auto& s = seed.summary;
-  fmt::print("seed set-up, nonlinear rod, {} s: {:.1f} s wall, {} steps (h = 1e-4 s), {} Newton iterations, "
-             "{} iteration matrices, {} rejected steps, status {}, energy error {:.2e}\n",
-             seed_end, s.wall_seconds, s.statistics.steps, s.statistics.newton_iterations,
+  fmt::print("seed set-up, nonlinear rod, {} s: {:.1f} s wall, {:.1f} s CPU, {} steps (h = {:g} s), {} Newton "
+             "iterations, {} iteration matrices, {} rejected steps, status {}, energy error {:.2e}\n",
+             seed_end, s.wall_seconds, cpu_seconds(), s.statistics.steps, seed_step > 0.0 ? seed_step : 1e-4, s.statistics.newton_iterations,
              s.statistics.jacobian_evaluations, s.statistics.rejected_steps, s.accurate() ? "ok" : "inaccurate",
              s.accuracy.energy_relative);
   fmt::print("  peak mid-span deflection over [0, 0.3] s: {:.3f} mm (unreduced co-rotational reference 38.5 mm)\n",
