@@ -96,8 +96,10 @@ std::string mass_table(const RunData& run) {
 // joints, total mass), then the bodies' masses, folded.
 std::string model_line(const RunData& run, const RunDigest& d) {
   const std::string flexible = flexible_text(run);
-  const std::string mass = d.total_mass ? fmt::format(", {:.4g} kg in all", *d.total_mass)
-                                        : std::string(" (masses not in this results.h5)");
+  // A nonlinear body has no stored mass: then the total would be short.
+  const std::string mass = d.total_mass              ? fmt::format(", {:.4g} kg in all", *d.total_mass)
+                           : run.body_masses.empty() ? std::string(" (masses not in this results.h5)")
+                                                     : fmt::format(" (masses of {} of them stored)", run.body_masses.size());
   return fmt::format("<p class=\"model\">Model: {} bodies{}, {} rigid and {} flexible{}; {} joints.</p>\n{}",
                      run.results.bodies.size(), mass, d.rigid_bodies, d.flexible_bodies.size(),
                      flexible.empty() ? "" : " (" + flexible + ")", d.joints, mass_table(run));
