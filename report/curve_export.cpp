@@ -34,9 +34,10 @@ std::string json_number(double value) { return std::isfinite(value) ? exact(valu
 }  // namespace
 
 std::string curve_csv(const CurveTable& table, const std::string& x_label,
-                      const std::string& y_label) {
+                      const std::string& y_label, const std::string& comment) {
   const std::string unit = unit_of(y_label);
-  std::string out = csv_field(x_label);
+  std::string out = comment.empty() ? "" : "# " + comment + "\n";
+  out += csv_field(x_label);
   for (const std::string& label : table.labels) {
     out += ',';
     out += csv_field(unit.empty() ? label : label + " " + unit);

@@ -17,8 +17,9 @@ namespace limber::report {
 // `y_label`, e.g. "force [N]" -> "[N]"), then one row per abscissa; numbers in the shortest
 // form that parses back to the same double, an empty cell where a curve has no sample (NaN).
 // Fields holding a comma, quote or line break are quoted, quotes doubled. Line ends "\n".
+// A non-empty `comment` comes first, as the line "# <comment>" (pandas: comment="#").
 std::string curve_csv(const CurveTable& table, const std::string& x_label,
-                      const std::string& y_label);
+                      const std::string& y_label, const std::string& comment = "");
 
 // A JSON string literal of `text`, safe inside an HTML <script> element: quotes, backslashes
 // and control characters escaped, and < > & as \u003c \u003e \u0026 so no "</script>" appears.

@@ -175,10 +175,29 @@ constexpr const char* kInitScript = R"JS(
       chart.limberWindow = chart.xAxisRange();  // the page's rows are the whole run's M4
       chart.limberRefine = function () { refine(this); };
     }
+    chart.limberDiv = div;
     report.charts.push(chart);
     var run = div.getAttribute("data-run");
     (charts[run] = charts[run] || []).push(chart);
   }
+  // A chart built inside a closed <details> has no width: drawn again when it opens.
+  var folds = document.querySelectorAll("details");
+  for (var f = 0; f < folds.length; ++f) {
+    folds[f].addEventListener("toggle", function (event) {
+      if (!event.target.open) return;
+      report.charts.forEach(function (c) {
+        if (event.target.contains(c.limberDiv)) c.resize();
+      });
+    });
+  }
+  // A link to a figure inside a fold (the summary's "seed Fig. 10") opens the folds around it.
+  function reveal() {
+    var target = location.hash && document.getElementById(decodeURIComponent(location.hash.slice(1)));
+    for (var e = target; e; e = e.parentElement) if (e.tagName === "DETAILS") e.open = true;
+    if (target) target.scrollIntoView();
+  }
+  window.addEventListener("hashchange", reveal);
+  reveal();
   var forms = document.querySelectorAll("form.time-window");
   for (var j = 0; j < forms.length; ++j) {
     (function (form) {

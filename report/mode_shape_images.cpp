@@ -6,6 +6,7 @@
 #include "results/results_layout.h"
 
 #include <cstdio>
+#include <vector>
 
 namespace limber::report {
 namespace {
@@ -45,9 +46,23 @@ std::vector<ModeImage> draw_mode_shapes(const RunData& run, const std::filesyste
   for (const render::BodyTrack& body : run.results.bodies) {
     const Eigen::MatrixXd& phi = body.mesh.mode_translations;
     if (!body.flexible || phi.cols() == 0 || body.mesh.nodes.rows() == 0) continue;
+    // One image set per distinct component: the first of the bodies sharing it, named by it.
+    const ModeTable* table = mode_table_of(run, body.name);
+    if (table != nullptr && table->bodies.front() != body.name) continue;
+    const std::string subject =
+        table != nullptr && table->bodies.size() > 1 ? "component " + table->component : body.name;
     const double size =
         (body.mesh.nodes.colwise().maxCoeff() - body.mesh.nodes.colwise().minCoeff()).norm();
-    for (Eigen::Index i = 0; i < std::min<Eigen::Index>(phi.cols(), kMaxModeImages); ++i) {
+    // The lowest modes, then the static ones (what a static-mode set adds).
+    std::vector<Eigen::Index> modes;
+    int statics = 0;
+    for (Eigen::Index i = 0; i < phi.cols(); ++i) {
+      const bool is_static = table != nullptr && static_cast<std::size_t>(i) < table->modes.size() &&
+                             (table->modes[static_cast<std::size_t>(i)].kind == "constraint" ||
+                              table->modes[static_cast<std::size_t>(i)].kind == "attachment");
+      if (i < kMaxModeImages || (is_static && statics++ < kMaxStaticModeImages)) modes.push_back(i);
+    }
+    for (const Eigen::Index i : modes) {
       // Scale: the largest nodal translation becomes kModeShapeFraction of the body's size.
       const Eigen::Map<const Eigen::Matrix3Xd> nodes(phi.col(i).data(), 3, phi.rows() / 3);
       const double largest = nodes.colwise().norm().maxCoeff();
@@ -55,8 +70,12 @@ std::vector<ModeImage> draw_mode_shapes(const RunData& run, const std::filesyste
       // The renderer keeps a reference to the results it draws: they must outlive it.
       const render::Results shape = single_mode(run.results, body, i, scale);
       render::FrameRenderer renderer(shape, options, 0.0, 0.0);
-      ModeImage image{body.name, static_cast<int>(i),
+      const ModeRow* row = table != nullptr && static_cast<std::size_t>(i) < table->modes.size()
+                               ? &table->modes[static_cast<std::size_t>(i)]
+                               : nullptr;
+      ModeImage image{subject, static_cast<int>(i),
                       i < body.mesh.frequencies_hz.size() ? body.mesh.frequencies_hz(i) : 0.0,
+                      row != nullptr && row->kind != "normal" ? row->label : "",
                       prefix + "mode_" + file_stem(body.name) + "_" + std::to_string(i) + ".png"};
       writer.push(renderer.render(0.0), images / image.file);
       drawn.push_back(std::move(image));

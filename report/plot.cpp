@@ -16,6 +16,7 @@
 #include <vtkPlot.h>
 #include <vtkPlotPoints.h>
 #include <vtkPointData.h>
+#include <vtkRect.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
@@ -120,23 +121,28 @@ std::array<double, 2> nice_range(double lo, double hi, int ticks) {
 
 struct ChartCanvas::Impl {
   int width, height;
+  int context_height;  // height plus the room of the largest legend
   render::EglContext context;
   vtkNew<render::EglRenderWindow> window;
   vtkNew<vtkContextView> view;
   vtkNew<vtkChartXY> chart;
   vtkNew<vtkUnsignedCharArray> pixels;
 
-  Impl(int w, int h) : width(w), height(h), context(w, h) {
-    window->attach_to_current_context(w, h);
+  Impl(int w, int h)
+      : width(w), height(h), context_height(h + kMaxLegendRows * kLegendRowPixels + kLegendPadding),
+        context(w, context_height) {
+    window->attach_to_current_context(w, context_height);
     view->SetRenderWindow(window);
     view->GetRenderer()->SetBackground(kPlotBackground[0] / 255.0, kPlotBackground[1] / 255.0,
                                        kPlotBackground[2] / 255.0);
     view->GetScene()->AddItem(chart);
-    // Legend beside the plot area, so it never hides a curve.
+    // Legend below the plot area, so it never hides a curve nor narrows the plot; the chart
+    // fills the top of the context, as high as each plot's legend needs (draw).
     chart->SetShowLegend(true);
     chart->GetLegend()->SetInline(false);
-    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::CENTER);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+    chart->SetLayoutStrategy(vtkChart::FILL_RECT);
     chart->GetLegend()->GetLabelProperties()->SetFontSize(kLabelFont);
     chart->GetTitleProperties()->SetFontSize(kTitleFont);
     chart->GetTitleProperties()->SetBold(true);
@@ -245,11 +251,18 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     set_nice_ticks(y_axis, frame.y_min, frame.y_max);
   }
 
-  // Draw and read the back buffer (rows bottom-up, as vtkImageData stores them).
+  // The chart at the top of the context: the plot's height plus one row per legend entry.
+  int rows = 0;
+  for (const Curve& c : plot.curves) rows += std::min(c.x.size(), c.y.size()) >= (plot.markers ? 1 : 2) ? 1 : 0;
+  const int used = m.height + std::min(rows, kMaxLegendRows) * kLegendRowPixels + (rows > 0 ? kLegendPadding : 0);
+  const int bottom = m.context_height - used;
+  chart->SetSize(vtkRectf(0.0f, static_cast<float>(bottom), static_cast<float>(m.width), static_cast<float>(used)));
+
+  // Draw and read the chart's rows of the back buffer (bottom-up, as vtkImageData stores them).
   m.window->Render();
-  m.window->GetPixelData(0, 0, m.width - 1, m.height - 1, 0, m.pixels, 0);
+  m.window->GetPixelData(0, bottom, m.width - 1, m.context_height - 1, 0, m.pixels, 0);
   vtkNew<vtkImageData> image;
-  image->SetDimensions(m.width, m.height, 1);
+  image->SetDimensions(m.width, used, 1);
   image->GetPointData()->SetScalars(m.pixels);
   vtkNew<vtkPNGWriter> writer;
   writer->SetFileName(png.string().c_str());
@@ -259,11 +272,12 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     throw std::runtime_error("cannot write plot '" + png.string() + "'");
   }
 
-  // Pixel positions of the axis ends (scene y counts from the bottom edge).
+  // Pixel positions of the axis ends (scene y counts from the context's bottom edge, the
+  // image's rows from its top, the context's top).
   frame.left_px = x_axis->GetPoint1()[0];
   frame.right_px = x_axis->GetPoint2()[0];
-  frame.bottom_px = m.height - y_axis->GetPoint1()[1];
-  frame.top_px = m.height - y_axis->GetPoint2()[1];
+  frame.bottom_px = m.context_height - y_axis->GetPoint1()[1];
+  frame.top_px = m.context_height - y_axis->GetPoint2()[1];
   return frame;
 }
 

@@ -72,9 +72,18 @@ inline const std::array<unsigned char, 3>& curve_color(const Curve& curve, std::
 // The page colour behind the chart (white, as printed).
 inline constexpr std::array<unsigned char, 3> kPlotBackground{255, 255, 255};
 
+// The legend sits below the plot (a long run name must not narrow the plot), one row per
+// curve: each PNG is `height` plus this per legend row, up to kMaxLegendRows rows (a plot of
+// more curves lets its legend take plot height instead).
+inline constexpr int kLegendRowPixels = 26;
+inline constexpr int kMaxLegendRows = 12;
+// Below a legend's rows: VTK's padding around a legend outside the plot (10 + 5 pixels).
+inline constexpr int kLegendPadding = 15;
+
 class ChartCanvas {
  public:
-  // Creates the EGL context and a width x height [pixels] chart view.
+  // Creates the EGL context and a chart view width pixels wide whose plots are `height` pixels
+  // high above their legend (each PNG: height + the legend's rows, see kLegendRowPixels).
   // Throws std::runtime_error when no offscreen OpenGL 3.2 context can be created.
   ChartCanvas(int width, int height);
   ~ChartCanvas();

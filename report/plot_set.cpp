@@ -102,11 +102,13 @@ std::array<bool, 3> indeterminate_in_frame(const RunData& run, const JointReacti
   return indeterminate_components(*directions, torque, frame.R_WF);
 }
 
-// The note an indeterminate joint's force or torque plot carries ("" when that quantity is
-// determined in this frame): which components, which redundancy, at how many samples.
+// The note an indeterminate joint's force or torque plot carries ("" when no component it
+// draws, `drawn`, is indeterminate in this frame): which components, which redundancy, at how
+// many samples.
 std::string indeterminate_note(const RunData& run, const JointReactions& joint, const FrameView& frame,
-                               bool torque) {
-  const std::array<bool, 3> components = indeterminate_in_frame(run, joint, frame, torque);
+                               bool torque, const std::array<bool, 3>& drawn) {
+  std::array<bool, 3> components = indeterminate_in_frame(run, joint, frame, torque);
+  for (std::size_t c = 0; c < 3; ++c) components[c] = components[c] && drawn[c];
   if (!components[0] && !components[1] && !components[2]) return "";
   const Indeterminacy which = indeterminacy(run, joint);
   const std::array<std::string, 3>& names = torque ? frame.torque_names : frame.force_names;
@@ -148,8 +150,14 @@ double mechanism_size(const RunData& run) {
   return size > 0.0 ? size : 1.0;
 }
 
+// The CSV comment of a plot whose components below the noise floor are not drawn.
+std::string undrawn_comment(const std::string& undrawn, double zero_fraction) {
+  return fmt::format("not drawn, ≈ 0 (below {:g} of the largest component): {}", zero_fraction,
+                     undrawn.empty() ? "none" : undrawn);
+}
+
 // A reaction plot in one frame: the components above the noise floor, the magnitude, and the
-// others listed as "≈ 0 (peak …)".
+// others listed as "≈ 0 (peak …)"; its CSV holds them all.
 NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const FrameView& frame,
                         bool torque, const std::string& stem, const PlotOptions& options,
                         const PlotRequest* request = nullptr) {
@@ -163,19 +171,25 @@ NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const F
   const std::string unit = torque ? "N m" : "N";
   const Eigen::Vector3d peak = values.cwiseAbs().colwise().maxCoeff().transpose();
   const double floor = options.zero_fraction * peak.maxCoeff();
-  std::vector<Curve> curves;
-  std::string zeros;
+  std::vector<Curve> curves, csv_curves;
+  std::string zeros, undrawn;
+  std::array<bool, 3> drawn{false, false, false};
   for (int c = 0; c < 3; ++c) {
     if (!shown[static_cast<std::size_t>(c)]) continue;
+    const Curve curve{names[static_cast<std::size_t>(c)], t, values.col(c), c};
+    csv_curves.push_back(curve);
     if (peak(c) > floor) {
-      curves.push_back({names[static_cast<std::size_t>(c)], t, values.col(c), c});
+      drawn[static_cast<std::size_t>(c)] = true;
+      curves.push_back(curve);
     } else {
       zeros += fmt::format("{}{} ≈ 0 (peak {:.3g} {})", zeros.empty() ? "" : ", ",
                            names[static_cast<std::size_t>(c)], peak(c), unit);
+      undrawn += (undrawn.empty() ? "" : ", ") + curve.label;
     }
   }
   const std::string symbol = torque ? "T" : "F";
   if (shown[3]) curves.push_back({"|" + symbol + "|", t, values.rowwise().norm(), 3});
+  if (shown[3]) csv_curves.push_back(curves.back());
 
   const std::string body = reaction_body(run, joint.name);
   std::string caption = "Reaction " + quantity + " at joint " + joint.name +
@@ -186,13 +200,16 @@ NamedPlot reaction_plot(const RunData& run, const JointReactions& joint, const F
     caption += fmt::format(" Not drawn, below {:g} of the largest component: {}.",
                            options.zero_fraction, zeros);
   }
-  const std::string warning = indeterminate_note(run, joint, frame, torque);
+  const std::string warning = indeterminate_note(run, joint, frame, torque, drawn);
   const std::string title = request != nullptr && !request->title.empty()
                                 ? request->title
                                 : "Joint " + joint.name + ": reaction " + quantity + " " +
                                       frame.title + (warning.empty() ? "" : ", minimum-norm");
-  return NamedPlot(PlotSection::kReactions, stem + "_" + quantity + frame.tag + ".png", caption,
-                   {title, kTimeLabel, quantity + " [" + unit + "]", curves, false}, warning);
+  NamedPlot plot(PlotSection::kReactions, stem + "_" + quantity + frame.tag + ".png", caption,
+                 {title, kTimeLabel, quantity + " [" + unit + "]", curves, false}, warning);
+  plot.csv_curves = std::move(csv_curves);
+  plot.csv_comment = undrawn_comment(undrawn, options.zero_fraction);
+  return plot;
 }
 
 // Marks the last plot with what it shows (a report config selects plots by kind and subject).
@@ -348,6 +365,15 @@ std::string indeterminate_summary(const RunData& run, const JointReactions& join
   if (parts.empty()) return "determined";
   return parts + " minimum-norm (indeterminate" + (partial ? ", ground axes; other components determined" : "") +
          ")" + (!which.force ? "; force determined" : "");
+}
+
+bool is_indeterminate_component(const RunData& run, const std::string& joint, const std::string& frame,
+                                bool torque, int axis) {
+  const auto reactions = std::find_if(run.joints.begin(), run.joints.end(),
+                                      [&](const JointReactions& j) { return j.name == joint; });
+  if (reactions == run.joints.end() || axis < 0 || axis > 2) return false;
+  const std::optional<FrameView> view = frame_view(run, *reactions, FrameRequest::parse(frame));
+  return view && indeterminate_in_frame(run, *reactions, *view, torque)[static_cast<std::size_t>(axis)];
 }
 
 FrameRequest FrameRequest::parse(const std::string& text) {
@@ -525,13 +551,16 @@ std::vector<NamedPlot> default_run_plots(const RunData& run, const std::string& 
   for (const DeflectionProbe& probe : run.deflections) {
     if (probe.values.rows() != t.size() || t.size() == 0) continue;
     const Eigen::Vector3d peak = probe.values.cwiseAbs().colwise().maxCoeff().transpose();
-    std::vector<Curve> curves;
-    std::string zeros;
+    std::vector<Curve> curves, csv_curves;
+    std::string zeros, undrawn;
     for (int c = 0; c < 3; ++c) {
+      const Curve curve{std::string("u") + kAxes[c], t, probe.values.col(c)};
+      csv_curves.push_back(curve);
       if (peak(c) > options.zero_fraction * peak.maxCoeff()) {
-        curves.push_back({std::string("u") + kAxes[c], t, probe.values.col(c)});
+        curves.push_back(curve);
       } else {
         zeros += fmt::format("{}u{} ≈ 0 (peak {:.3g} m)", zeros.empty() ? "" : ", ", kAxes[c], peak(c));
+        undrawn += (undrawn.empty() ? "" : ", ") + curve.label;
       }
     }
     plots.push_back({PlotSection::kDeflection, prefix + "probe_" + file_stem(probe.body) + ".png",
@@ -542,6 +571,8 @@ std::vector<NamedPlot> default_run_plots(const RunData& run, const std::string& 
                                         : fmt::format(" Not drawn, below {:g} of the largest: {}.",
                                                       options.zero_fraction, zeros)),
                      {"Deflection probe of " + probe.body, kTimeLabel, "deflection [m]", curves, false}});
+    plots.back().csv_curves = std::move(csv_curves);
+    plots.back().csv_comment = undrawn_comment(undrawn, options.zero_fraction);
     tag(plots, PlotKind::kProbe, probe.body);
   }
   for (const render::BodyTrack& body : run.results.bodies) {

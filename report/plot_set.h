@@ -47,6 +47,11 @@ struct NamedPlot {
   std::string subject;  // the joint (reaction), body (probe, modal) or unit (drivers); "" else
   // Curves that lie on each other, drawn dashed: "R1 ≡ R2 (to 1e-9)" (curve_styles.h); "" none.
   std::string coincidence;
+  // The CSV's columns when they differ from the drawn curves: every component the plot is
+  // about, those ≈ 0 (not drawn) included, so that a plot's columns never change with the data;
+  // `csv_comment` (first line, after "# ") says which are not drawn. Empty: the drawn curves.
+  std::vector<Curve> csv_curves;
+  std::string csv_comment;
 
   NamedPlot() = default;
   NamedPlot(PlotSection section_, std::string file_, std::string caption_, PlotSpec spec_,
@@ -146,6 +151,13 @@ Indeterminacy indeterminacy(const RunData& run, const JointReactions& joint);
 // component in ground axes when the file says (indeterminate_components.h): "force Y and torque
 // X, Z minimum-norm (indeterminate, ground axes; other components determined)".
 std::string indeterminate_summary(const RunData& run, const JointReactions& joint);
+
+// Whether component `axis` (0, 1, 2) of `joint`'s reaction force (or torque) is minimum-norm in
+// `frame` ("ground", "joint", a marker or a body, as --frame): the one decision behind the
+// joints table, the plots' notes and titles and the selection ranking. False when the run has
+// no such joint or frame.
+bool is_indeterminate_component(const RunData& run, const std::string& joint, const std::string& frame,
+                                bool torque, int axis);
 
 // "X", "Y", "Z" (the run's axis names) with what they are ("X = ground x, ...").
 std::string ground_axes_note(const RunData& run);

@@ -3,6 +3,7 @@
 #include "hinge_summary.h"
 #include "run_summary.h"
 #include "html.h"
+#include "mode_origins.h"
 #include "selection_html.h"
 #include "sizing_loads.h"
 #include "stress_summary.h"
@@ -114,12 +115,24 @@ std::string figure(const WrittenPlot& written, const std::string& run_anchor) {
   return out + "</figure>\n";
 }
 
+// The first figure open, the others folded: a long section (24 joints' reactions) reads as
+// its first plot and a line saying how many follow.
+std::string folded_figures(const std::vector<const WrittenPlot*>& plots, const std::string& anchor) {
+  if (plots.empty()) return "";
+  std::string out = figure(*plots.front(), anchor);
+  if (plots.size() == 1) return out;
+  out += fmt::format("<details class=\"more-figures\"><summary>{} more figure{}</summary>\n", plots.size() - 1,
+                     plots.size() > 2 ? "s" : "");
+  for (std::size_t k = 1; k < plots.size(); ++k) out += figure(*plots[k], anchor);
+  return out + "</details>\n";
+}
+
 std::string plots_of(const RunSection& section, PlotSection kind) {
-  std::string out;
+  std::vector<const WrittenPlot*> plots;
   for (const WrittenPlot& plot : section.plots) {
-    if (plot.plot.section == kind) out += figure(plot, section.anchor);
+    if (plot.plot.section == kind) plots.push_back(&plot);
   }
-  return out;
+  return folded_figures(plots, section.anchor);
 }
 
 // A red (failed) or amber (did not finish, or finished inaccurate) banner; nothing for a run
@@ -269,11 +282,30 @@ std::string notes(const RunData& run) {
   return out;
 }
 
+// "Modes of plate0" for one body; for bodies sharing a component, that they share it.
+std::string mode_table_heading(const ModeTable& table) {
+  const std::string source = "from " + markup_escape(table.source);
+  if (table.bodies.size() == 1) {
+    return fmt::format("<h4>Modes of {} <span class=\"note\">({}{})</span></h4>\n", markup_escape(table.bodies[0]),
+                       table.component.empty() || table.component == table.bodies[0]
+                           ? ""
+                           : "component " + markup_escape(table.component) + ", ",
+                       source);
+  }
+  std::string bodies;
+  for (std::size_t k = 0; k < table.bodies.size(); ++k) {
+    bodies += (k == 0 ? "" : k + 1 == table.bodies.size() ? " and " : ", ") + markup_escape(table.bodies[k]);
+  }
+  return fmt::format("<h4>Modes of component {} <span class=\"note\">({} share component {}; {})</span></h4>\n",
+                     markup_escape(table.component), bodies, markup_escape(table.component), source);
+}
+
+// One table per distinct component: frequency, kind, and the label with the joints at a
+// static mode's node.
 std::string mode_tables(const RunData& run) {
   std::string out;
   for (const ModeTable& table : run.mode_tables) {
-    out += fmt::format("<h4>Modes of {} <span class=\"note\">(from {})</span></h4>\n",
-                       markup_escape(table.body), markup_escape(table.source));
+    out += mode_table_heading(table);
     if (table.modes.empty()) {
       out += "<p class=\"note\">No modes.</p>\n";
       continue;
@@ -281,9 +313,11 @@ std::string mode_tables(const RunData& run) {
     out += "<table><tr><th>#</th><th>frequency [Hz]</th><th>kind</th><th>label</th></tr>\n";
     for (std::size_t i = 0; i < table.modes.size(); ++i) {
       const ModeRow& m = table.modes[i];
+      const std::string joints = mode_origin_joints(run, table, m.label);
       out += fmt::format(
-          "<tr><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td><td>{}</td></tr>\n",
-          i + 1, number(m.frequency_hz), markup_escape(m.kind), markup_escape(m.label));
+          "<tr><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td><td>{}{}</td></tr>\n",
+          i + 1, number(m.frequency_hz), markup_escape(m.kind), markup_escape(m.label),
+          joints.empty() ? "" : ": " + markup_escape(joints));
     }
     out += "</table>\n";
   }
@@ -316,8 +350,9 @@ std::string media(const RunSection& section) {
 std::string mode_images(const RunSection& section) {
   std::string out = "<div class=\"modes\">\n";
   for (const ModeImage& m : section.mode_images) {
-    const std::string caption =
-        markup_escape(fmt::format("{} mode {}: {} Hz", m.body, m.mode + 1, number(m.frequency_hz)));
+    const std::string caption = markup_escape(fmt::format("{} mode {}: {} Hz{}", m.body, m.mode + 1,
+                                                          number(m.frequency_hz),
+                                                          m.label.empty() ? "" : ", " + m.label));
     out += fmt::format("<figure><img src=\"{}/{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
                        kImageFolder, m.file, caption, caption);
   }
@@ -440,7 +475,7 @@ std::string run_section(const RunSection& s, bool interactive) {
   if (interactive && !s.plots.empty()) out += time_window_form(s.anchor);
   out += subsection(s, "reactions", "Reaction forces", plots_of(s, PlotSection::kReactions));
   if (run.selection) {
-    std::string body = selection_tables(*run.selection) + plots_of(s, PlotSection::kSelection);
+    std::string body = selection_tables(run) + plots_of(s, PlotSection::kSelection);
     if (body.empty()) {
       body = "<p class=\"note\">The selection folder holds nothing usable (see the notes in the "
              "case summary).</p>\n";
@@ -507,7 +542,9 @@ std::string report_html(const ReportContent& content) {
     out += "<section id=\"comparison\">\n<h2>Comparison of runs</h2>\n";
     out += comparison_joints_table(content.runs);
     if (content.interactive) out += time_window_form("comparison");
-    for (const WrittenPlot& plot : content.comparisons) out += figure(plot, "comparison");
+    std::vector<const WrittenPlot*> plots;
+    for (const WrittenPlot& plot : content.comparisons) plots.push_back(&plot);
+    out += folded_figures(plots, "comparison");
     out += "</section>\n";
   }
   out += "<footer class=\"note\">Generated by limber report.</footer>\n";

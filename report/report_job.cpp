@@ -54,7 +54,8 @@ WrittenPlot write_plot(ChartCanvas& canvas, NamedPlot plot, const std::filesyste
   const std::filesystem::path csv = out / kDataFolder / written.csv_file;
   const CurveTable all = curve_table(plot.spec.curves);
   std::ofstream file(csv, std::ios::binary);
-  file << curve_csv(all, plot.spec.x_label, plot.spec.y_label);
+  file << curve_csv(plot.csv_curves.empty() ? all : curve_table(plot.csv_curves), plot.spec.x_label,
+                    plot.spec.y_label, plot.csv_comment);
   file.close();
   if (!file) throw std::runtime_error("cannot write '" + csv.string() + "'");
   if (interactive && !plot.spec.curves.empty()) {

@@ -105,6 +105,7 @@ void truncate(RunData& run, Eigen::Index n) {
   }
   for (Series& s : run.drivers) s.values.conservativeResize(n);
   for (Series& s : run.energies) s.values.conservativeResize(n);
+  if (run.momentum.rows() > n) run.momentum.conservativeResize(n, 6);
   if (run.position_violation) run.position_violation->values.conservativeResize(n);
   if (run.velocity_violation) run.velocity_violation->values.conservativeResize(n);
 }
@@ -246,6 +247,14 @@ hsize_t read_series(const H5Reader& file, RunData& run) {
     }
   }
 
+  // The system's momentum.
+  const std::vector<double> momentum = read_doubles(file, layout::kMomentum, 6, rows);
+  if (!momentum.empty()) {
+    run.momentum = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(
+        momentum.data(), static_cast<Eigen::Index>(rows), 6);
+    ns = std::min(ns, rows);
+  }
+
   // Redundant constraint equations found at the start (names and what they depend on).
   const std::vector<std::string> redundant = read_strings(file, layout::at(layout::kConstraints, layout::constraints::kRedundant));
   const std::vector<std::string> with = read_strings(file, layout::at(layout::kConstraints, layout::constraints::kRedundantWith));
@@ -272,9 +281,24 @@ void read_axis_names(const H5Reader& file, RunData& run) {
   }
 }
 
-// Mode tables: modes.h5 beside the results when it holds the body (kinds and labels), else the
-// frequencies in results.h5. A damaged modes.h5 is noted, not fatal: the results still report.
-void read_mode_tables(RunData& run) {
+// The body's stored mode kinds and labels (results.h5, limber run), when both fit its modes.
+bool read_stored_modes(const H5Reader& file, const render::BodyTrack& body, ModeTable& table) {
+  const std::string modes = layout::at(body.group, layout::body::kModes);
+  const std::vector<std::string> kinds = read_strings(file, layout::at(modes, layout::modes::kKinds));
+  const std::vector<std::string> labels = read_strings(file, layout::at(modes, layout::modes::kLabels));
+  const auto nm = static_cast<std::size_t>(body.mesh.frequencies_hz.size());
+  if (nm == 0 || kinds.size() != nm || labels.size() != nm) return false;
+  for (std::size_t i = 0; i < nm; ++i) {
+    table.modes.push_back({body.mesh.frequencies_hz(static_cast<Eigen::Index>(i)), kinds[i], labels[i]});
+  }
+  return true;
+}
+
+// Mode tables, one per distinct component (its bodies share the modes): kinds and labels as
+// results.h5 stores them, else from modes.h5 beside the results when it holds the body or its
+// component with as many modes, else the frequencies alone. A damaged modes.h5 is noted, not
+// fatal: the results still report.
+void read_mode_tables(const H5Reader& file, RunData& run) {
   const std::filesystem::path modes_file = run.directory / results::kModesFileName;
   results::ModesData modes;
   std::error_code error;
@@ -285,22 +309,58 @@ void read_mode_tables(RunData& run) {
       run.notes.push_back(std::string("modes.h5 not used: ") + e.what());
     }
   }
+  const auto in_modes_file = [&](const std::string& name, std::size_t nm) -> const results::ModesBody* {
+    for (const results::ModesBody& b : modes.bodies) {
+      if (b.name == name && b.modes.size() == nm) return &b;
+    }
+    return nullptr;
+  };
   for (const render::BodyTrack& body : run.results.bodies) {
     if (!body.flexible) continue;
-    ModeTable table{body.name, results::kResultsFileName, {}};
-    const auto in_modes = std::find_if(modes.bodies.begin(), modes.bodies.end(),
-                                       [&](const results::ModesBody& b) { return b.name == body.name; });
-    if (in_modes != modes.bodies.end()) {
-      table.source = results::kModesFileName;
-      for (const results::ModeRecord& mode : in_modes->modes) {
-        table.modes.push_back({mode.frequency_hz, mode.kind, mode.label});
-      }
-    } else {
-      for (Eigen::Index i = 0; i < body.mesh.frequencies_hz.size(); ++i) {
-        table.modes.push_back({body.mesh.frequencies_hz(i), "", ""});
+    const std::string component = file.string_attribute(body.group, layout::body::kComponentAttribute, false);
+    // A body of a component already tabled joins its table.
+    const auto shared = std::find_if(run.mode_tables.begin(), run.mode_tables.end(), [&](const ModeTable& t) {
+      return !component.empty() && t.component == component;
+    });
+    if (shared != run.mode_tables.end()) {
+      shared->bodies.push_back(body.name);
+      continue;
+    }
+    ModeTable table{{body.name}, component, results::kResultsFileName, {}};
+    const auto nm = static_cast<std::size_t>(body.mesh.frequencies_hz.size());
+    if (!read_stored_modes(file, body, table)) {
+      const results::ModesBody* stored = in_modes_file(body.name, nm);
+      if (!stored && !component.empty()) stored = in_modes_file(component, nm);
+      if (stored) {
+        table.source = results::kModesFileName;
+        for (const results::ModeRecord& mode : stored->modes) {
+          table.modes.push_back({mode.frequency_hz, mode.kind, mode.label});
+        }
+      } else {
+        for (std::size_t i = 0; i < nm; ++i) {
+          table.modes.push_back({body.mesh.frequencies_hz(static_cast<Eigen::Index>(i)), "", ""});
+        }
       }
     }
     run.mode_tables.push_back(std::move(table));
+  }
+}
+
+// Mass, centre of mass and inertia of the bodies whose group holds all three.
+void read_body_masses(const H5Reader& file, RunData& run) {
+  for (const render::BodyTrack& body : run.results.bodies) {
+    std::set<std::string> names;
+    for (const auto& [name, text] : file.attribute_texts(body.group)) names.insert(name);
+    if (!names.count(layout::body::kMassAttribute) || !names.count(layout::body::kCenterOfMassAttribute) ||
+        !names.count(layout::body::kInertiaAttribute)) {
+      continue;
+    }
+    BodyMass m{body.name, file.doubles_attribute(body.group, layout::body::kMassAttribute, 1)[0], {}, {}};
+    const std::vector<double> c = file.doubles_attribute(body.group, layout::body::kCenterOfMassAttribute, 3);
+    const std::vector<double> J = file.doubles_attribute(body.group, layout::body::kInertiaAttribute, 9);
+    m.com_B = Eigen::Map<const Eigen::Vector3d>(c.data());
+    m.inertia_com_B = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(J.data());
+    run.body_masses.push_back(std::move(m));
   }
 }
 
@@ -335,6 +395,8 @@ RunData read_run_data(const std::filesystem::path& directory) {
     truncate(run, static_cast<Eigen::Index>(ns));
     run.solver_attributes = attributes(file, "/", kKnownRootAttributes);
     read_axis_names(file, run);
+    read_mode_tables(file, run);
+    read_body_masses(file, run);
     for (auto& attribute : attributes(file, layout::kSolver, {})) {
       run.solver_attributes.push_back(std::move(attribute));
     }
@@ -351,11 +413,17 @@ RunData read_run_data(const std::filesystem::path& directory) {
   } catch (const InputError& e) {
     run.notes.push_back(std::string("stresses not used: ") + e.what());
   }
-  read_mode_tables(run);
   find_media(run);
   run.selection = read_selection(directory, run.notes);
   run.sweep = read_sweep(directory, run.notes);
   return run;
+}
+
+const ModeTable* mode_table_of(const RunData& run, const std::string& body) {
+  for (const ModeTable& table : run.mode_tables) {
+    if (std::find(table.bodies.begin(), table.bodies.end(), body) != table.bodies.end()) return &table;
+  }
+  return nullptr;
 }
 
 Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,

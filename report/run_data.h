@@ -1,8 +1,9 @@
 // Everything the report shows about one run directory, read from its files only:
 // DIR/results.h5 (docs/results-format.md) through render's reader plus, through the same HDF5
-// reader (results/h5_reader.h) at the layout's paths, the per-sample series render does not need (reactions, drivers, energies, violations, steps,
-// acceleration probes) and the shock spectra (shock_data.h), DIR/modes.h5
-// (docs/modes-format.md) for mode kinds and labels, the media `limber render` left in DIR, and
+// reader (results/h5_reader.h) at the layout's paths, what render does not need (reactions,
+// drivers, energies, violations, steps, momentum, acceleration probes, body masses, mode kinds
+// and labels) and the shock spectra (shock_data.h), DIR/modes.h5 (docs/modes-format.md) for
+// mode kinds and labels when results.h5 lacks them, the media `limber render` left in DIR, and
 // the CSV files `limber select` left in DIR/selection (selection_data.h) and `limber sweep`'s
 // work-precision table in DIR/sweep (sweep_data.h).
 #pragma once
@@ -79,10 +80,22 @@ struct ModeRow {
   std::string label;  // e.g. "constraint uz at node 101"; "" when unknown
 };
 
+// The modes of one distinct component: every body whose modes it holds (bodies of one case
+// component share them: the satellite's four panels), in results order.
 struct ModeTable {
-  std::string body;
-  std::string source;  // "modes.h5" or "results.h5"
+  std::vector<std::string> bodies;  // at least one
+  std::string component;  // the case's `flexible_bodies` entry; "" when the file does not say
+  std::string source;     // "results.h5" (kinds and labels stored with the run) or "modes.h5"
   std::vector<ModeRow> modes;
+};
+
+// A body's mass, centre of mass (body frame) and inertia about it (body axes), as results.h5
+// stores them (/bodies/<body> attributes); a flexible body's undeformed.
+struct BodyMass {
+  std::string body;
+  double mass = 0.0;                                        // [kg]
+  Eigen::Vector3d com_B = Eigen::Vector3d::Zero();          // [m]
+  Eigen::Matrix3d inertia_com_B = Eigen::Matrix3d::Zero();  // [kg m²]
 };
 
 struct RunData {
@@ -112,7 +125,11 @@ struct RunData {
   std::vector<std::pair<std::string, std::string>> solver_attributes;
   // Redundant constraint equations ("R2.z") and the equations each combines ("R1.z, R3.z").
   std::vector<std::pair<std::string, std::string>> redundant_equations;
-  std::vector<ModeTable> mode_tables;   // flexible bodies only
+  std::vector<ModeTable> mode_tables;   // one per distinct component of the flexible bodies
+  std::vector<BodyMass> body_masses;    // the bodies whose file holds them, in results order
+  // The system's linear momentum [kg m/s] and angular momentum about the ground origin
+  // [kg m²/s], ground axes, ns x 6 (/momentum; 0 rows in files written before it).
+  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> momentum;
   // Per body of results.bodies: its recovered stresses, when it has stress output.
   std::vector<std::optional<render::StressTrack>> stresses;
   std::vector<std::filesystem::path> frames;  // DIR/frames/*.png, sorted
@@ -124,6 +141,9 @@ struct RunData {
   Eigen::Index sample_count() const { return results.sample_count(); }
   bool finished_ok() const { return results.status == results::layout::status::kOk; }
 };
+
+// The mode table holding `body`'s modes, or null (a rigid body).
+const ModeTable* mode_table_of(const RunData& run, const std::string& body);
 
 // Reads `directory`. Throws InputError (expected/got, naming the file) when results.h5 is
 // missing, damaged or not a limber results file. A run that failed or was killed is read as it

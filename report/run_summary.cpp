@@ -58,16 +58,51 @@ std::string badge(const std::string& status) {
   return fmt::format("<span class=\"badge {}\">{}</span>", kind, markup_escape(status));
 }
 
-// The model in one line: bodies, the flexible ones with their mode counts, joints.
-std::string model_line(const RunData& run, const RunDigest& d) {
-  std::string flexible;
-  for (const auto& [name, modes] : d.flexible_bodies) {
-    flexible += fmt::format("{}{}: {} modes", flexible.empty() ? "" : ", ", markup_escape(name), modes);
+// The flexible bodies by mode table: "panel_R1, panel_R2 (component panel): 8 modes".
+std::string flexible_text(const RunData& run) {
+  std::string out;
+  for (const ModeTable& table : run.mode_tables) {
+    std::string bodies;
+    for (const std::string& b : table.bodies) bodies += (bodies.empty() ? "" : ", ") + markup_escape(b);
+    const std::string component =
+        table.component.empty() || (table.bodies.size() == 1 && table.bodies[0] == table.component)
+            ? ""
+            : " (component " + markup_escape(table.component) + ")";
+    out += fmt::format("{}{}{}: {} modes", out.empty() ? "" : "; ", bodies, component, table.modes.size());
   }
-  return fmt::format("<p class=\"model\">Model: {} bodies, {} rigid and {} flexible{}; {} joints. Masses "
-                     "are not in results.h5.</p>\n",
-                     run.results.bodies.size(), d.rigid_bodies, d.flexible_bodies.size(),
-                     flexible.empty() ? "" : " (" + flexible + ")", d.joints);
+  return out;
+}
+
+// Each body's mass, centre of mass and inertia about it, folded below the model line.
+std::string mass_table(const RunData& run) {
+  if (run.body_masses.empty()) return "";
+  std::string rows;
+  for (const BodyMass& b : run.body_masses) {
+    const Eigen::Matrix3d& J = b.inertia_com_B;
+    rows += fmt::format("<tr><td>{}</td><td class=\"number\">{:.4g}</td><td class=\"number\">{:.4g}, {:.4g}, "
+                        "{:.4g}</td><td class=\"number\">{:.4g}, {:.4g}, {:.4g}</td><td class=\"number\">{:.3g}, "
+                        "{:.3g}, {:.3g}</td></tr>\n",
+                        markup_escape(b.body), b.mass, b.com_B.x(), b.com_B.y(), b.com_B.z(), J(0, 0), J(1, 1),
+                        J(2, 2), J(0, 1), J(0, 2), J(1, 2));
+  }
+  return fmt::format("<details><summary>masses and inertias of the {} bodies (flexible: undeformed)</summary>\n"
+                     "<table class=\"compact\"><tr><th>body</th><th>mass [kg]</th><th>centre of mass, body "
+                     "frame [m]</th><th>J<sub>xx</sub>, J<sub>yy</sub>, J<sub>zz</sub> [kg m²]</th><th>J<sub>xy"
+                     "</sub>, J<sub>xz</sub>, J<sub>yz</sub> [kg m²]</th></tr>\n{}</table>\n</details>\n",
+                     run.body_masses.size(), rows);
+}
+
+// The model in one line (bodies, the flexible ones by component with their mode counts,
+// joints, total mass), then the bodies' masses, folded.
+std::string model_line(const RunData& run, const RunDigest& d) {
+  const std::string flexible = flexible_text(run);
+  // A nonlinear body has no stored mass: then the total would be short.
+  const std::string mass = d.total_mass              ? fmt::format(", {:.4g} kg in all", *d.total_mass)
+                           : run.body_masses.empty() ? std::string(" (masses not in this results.h5)")
+                                                     : fmt::format(" (masses of {} of them stored)", run.body_masses.size());
+  return fmt::format("<p class=\"model\">Model: {} bodies{}, {} rigid and {} flexible{}; {} joints.</p>\n{}",
+                     run.results.bodies.size(), mass, d.rigid_bodies, d.flexible_bodies.size(),
+                     flexible.empty() ? "" : " (" + flexible + ")", d.joints, mass_table(run));
 }
 
 // Latch and stop switches, then joints released.
@@ -148,6 +183,11 @@ std::string peaks_line(const RunDigest& d) {
                                       "energy, {:.3g} J)",
                                       *d.energy_residual, *d.energy_residual / d.peak_kinetic, d.peak_kinetic)
                         : fmt::format("energy balance closes to {:.3g} J", *d.energy_residual));
+  }
+  if (const std::optional<MomentumDrift>& m = d.momentum) {
+    parts.push_back(fmt::format("free-floating: momentum drifts by {:.3g} kg m/s ({:.2g} relative) and "
+                                "{:.3g} kg m²/s ({:.2g} relative) from the first to the last sample",
+                                m->linear, m->linear_relative(), m->angular, m->angular_relative()));
   }
   if (parts.empty()) return "";
   std::string out = "<p class=\"peaks-line\">";
@@ -258,6 +298,11 @@ RunDigest digest_run(const RunData& run) {
     }
   }
   d.joints = static_cast<int>(r.joints.size());
+  if (!run.body_masses.empty() && run.body_masses.size() == r.bodies.size()) {
+    d.total_mass = 0.0;
+    for (const BodyMass& b : run.body_masses) *d.total_mass += b.mass;
+  }
+  d.momentum = momentum_drift(run);
 
   add_joint_peaks(run, d);
 

@@ -1,11 +1,13 @@
 // The summary at the top of a report (docs/report.md "Summary"): what a reviewer reads in one
 // minute, computed from run data (no drawing). Per run: the status with each accuracy measure
-// against its threshold, the model (bodies, flexible bodies with their mode counts, joints), the
+// against its threshold, the model (bodies with their masses, flexible bodies with their mode
+// counts and shared components, joints), the
 // events (latches, stops, joints released), the peak reaction of each joint with its time
 // (largest first), the peak deflection, stress and probe acceleration, the energy balance's
-// closure; and links to the plots that reproduce the seed paper's figures.
+// closure, a free-floating system's momentum drift; and links to the plots that reproduce the seed paper's figures.
 #pragma once
 
+#include "momentum_drift.h"
 #include "report_html.h"
 #include "run_data.h"
 #include "stress_summary.h"
@@ -57,6 +59,8 @@ struct RunDigest {
   int rigid_bodies = 0;
   std::vector<std::pair<std::string, int>> flexible_bodies;  // name, mode count
   int joints = 0;
+  std::optional<double> total_mass;       // [kg], when results.h5 holds every body's mass
+  std::optional<MomentumDrift> momentum;  // a free-floating system's (momentum_drift.h)
   std::vector<ReleaseRow> releases;       // in time order
   std::vector<JointPeakRow> peaks;        // largest |F| first
   // The largest relative deflection over the flexible bodies (max_relative_deflection).

@@ -1,6 +1,7 @@
 #include "selection_html.h"
 
 #include "html.h"
+#include "plot_set.h"
 #include "results/results_layout.h"
 
 #include <fmt/format.h>
@@ -19,7 +20,15 @@ std::string seconds(const std::optional<double>& value) {
   return value ? fmt::format("{:.3g}", *value) : "";
 }
 
-std::string ranking_table(const SelectionData& selection) {
+// A ranking row's reaction component is minimum-norm: decided from the run's redundancy in the
+// body's axes (the joints table's decision) when the row names an axis, else as the CSV says.
+bool minimum_norm(const RunData& run, const RankingRow& r) {
+  const std::size_t axis = std::string("xyz").find(r.axis);
+  if (r.axis.size() != 1 || axis == std::string::npos) return r.indeterminate;
+  return is_indeterminate_component(run, r.joint, r.body, r.quantity == "torque", static_cast<int>(axis));
+}
+
+std::string ranking_table(const RunData& run, const SelectionData& selection) {
   if (selection.ranking.empty()) return "";
   std::string out =
       "<h4>Ranking of the reactions on flexible bodies</h4>\n"
@@ -40,7 +49,7 @@ std::string ranking_table(const SelectionData& selection) {
         r.kept ? " class=\"kept\"" : "", k + 1, markup_escape(r.body), markup_escape(r.joint), r.node,
         markup_escape(r.quantity), markup_escape(r.axis), number(r.peak), number(r.rms), unit,
         100.0 * r.relative, r.kept ? "kept" : "",
-        r.indeterminate ? "<em class=\"indeterminate\">minimum-norm</em>" : "");
+        minimum_norm(run, r) ? "<em class=\"indeterminate\">minimum-norm</em>" : "");
   }
   return out + "</table>\n";
 }
@@ -73,8 +82,9 @@ std::string comparison_table(const SelectionData& selection) {
 
 }  // namespace
 
-std::string selection_tables(const SelectionData& selection) {
-  return ranking_table(selection) + comparison_table(selection);
+std::string selection_tables(const RunData& run) {
+  if (!run.selection) return "";
+  return ranking_table(run, *run.selection) + comparison_table(*run.selection);
 }
 
 }  // namespace limber::report

@@ -126,6 +126,7 @@ void add_flexible_body(const FlexibleBodyEntry& entry, const std::vector<Flexibl
   const FlexibleBodyCase& component = component_named(components, entry.component);
   multibody::FlexibleBodySpec spec;
   spec.name = entry.name;
+  spec.component = entry.component;
   spec.node_positions_B = component.model.node_positions;
   spec.mesh = drawing_mesh(component.model);
   spec.initial_pose = entry.initial_pose;

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -97,6 +98,10 @@ struct FlexibleBody {
   modal::ModalGeometricStiffness geometric;  // nm x nm matrices unless kOff
   std::optional<StressOutput> stress_output;
   modal::ModalStress modal_stress;  // with stress_output: every element's resultants per mode
+  // Output only (results.h5): the case's component the modes were computed for, and each
+  // mode's kind and origin label (nm entries, modal::ModeSet::modes; empty when not given).
+  std::string component;
+  std::vector<modal::ModeInfo> mode_info;
 
   int mode_count() const { return static_cast<int>(shapes.cols()); }
   int node_count() const { return static_cast<int>(node_positions.cols()); }

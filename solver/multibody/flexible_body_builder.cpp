@@ -164,6 +164,8 @@ int ModelBuilder::add_flexible_body(const FlexibleBodySpec& spec, const SourceLo
   flexible->stiffness = spec.modes.modal_stiffness;
   flexible->damping = modal_damping_coefficients(spec.damping, flexible->stiffness);
   flexible->invariants = spec.modes.invariants;
+  flexible->component = spec.component;
+  flexible->mode_info = spec.modes.modes;
   flexible->stiffening = spec.stiffening;
   if (spec.stiffening != GeometricStiffening::kOff) flexible->geometric = spec.geometric;
   if (spec.stress) {

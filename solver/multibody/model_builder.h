@@ -36,6 +36,7 @@ struct RigidBodySpec {
 // modes clamped at a node → the frame attached to that node.
 struct FlexibleBodySpec {
   std::string name;
+  std::string component;                          // output only: the case's component ("" none)
   modal::ModeSet modes;                           // shapes (6 nodes x nm), modal_stiffness, invariants
   std::vector<Eigen::Vector3d> node_positions_B;  // fe::FeModel::node_positions [m]
   ModalDamping damping;                           // default: kDefaultModalDampingRatio in every mode

@@ -41,8 +41,8 @@ inline constexpr const char* kFixed = "fixed";  // int32 [nf, 2]: (node index, l
 // kinds, labels).
 namespace modes {
 inline constexpr const char* kShapes = "shapes";                    // float64 [n, nm], M-orthonormal
-inline constexpr const char* kKinds = "kinds";                      // string [nm]
-inline constexpr const char* kLabels = "labels";                    // string [nm]
+using layout::modes::kKinds;   // string [nm]
+using layout::modes::kLabels;  // string [nm]
 inline constexpr const char* kModalStiffness = "modal_stiffness";  // float64 [nm] [1/s^2]
 }  // namespace modes
 

@@ -59,6 +59,13 @@ inline constexpr const char* kFlexible = "flexible";
 inline constexpr const char* kPosition = "position";        // float64 [ns, 3], frame origin [m]
 inline constexpr const char* kOrientation = "orientation";  // float64 [ns, 4], quaternion ground <- body
 inline constexpr const char* kShapes = "shapes";            // group of rendering primitives (optional)
+// Attributes (optional; a flexible body's of its undeformed FE model): mass, centre of mass in
+// the body frame, inertia about it in body axes.
+inline constexpr const char* kMassAttribute = "mass";                    // float64 [kg]
+inline constexpr const char* kCenterOfMassAttribute = "center_of_mass";  // float64 [3] [m]
+inline constexpr const char* kInertiaAttribute = "inertia";              // float64 [9], 3 x 3 row-major [kg m^2]
+// Flexible bodies: the case's component (`flexible_bodies` entry) of its modes (optional).
+inline constexpr const char* kComponentAttribute = "component";
 // Flexible bodies only.
 inline constexpr const char* kMesh = "mesh";                          // group, see mesh::
 inline constexpr const char* kModes = "modes";                        // group, see modes::
@@ -99,6 +106,8 @@ inline constexpr const char* kOutlineEquivalent = "outline_equivalent";  // int8
 namespace modes {
 inline constexpr const char* kTranslations = "translations";     // float64 [nm, nn, 3]
 inline constexpr const char* kFrequenciesHz = "frequencies_hz";  // float64 [nm] [Hz]
+inline constexpr const char* kKinds = "kinds";    // string [nm] normal | constraint | attachment (optional in results.h5)
+inline constexpr const char* kLabels = "labels";  // string [nm] "attachment uz at node 10001" (optional in results.h5)
 }  // namespace modes
 
 // <body>/stress: attributes every, and at finish peak_value [Pa], peak_element, peak_time [s].
@@ -246,6 +255,10 @@ inline constexpr const char* kMaximax = "maximax";
 inline constexpr const char* kPrimary = "primary";    // during the window
 inline constexpr const char* kResidual = "residual";  // after it
 }  // namespace shock_spectra
+
+// float64 [ns, 6] (optional): the system's linear momentum [kg m/s] and angular momentum about
+// the ground origin [kg m^2/s], ground axes.
+inline constexpr const char* kMomentum = "/momentum";
 
 // /clearance (optional).
 inline constexpr const char* kClearance = "/clearance";

@@ -56,6 +56,14 @@ void write_doubles_attribute(hid_t object, const char* name, const double* value
   check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values), "write a real attribute");
 }
 
+// Mass, centre of mass and inertia about it (row-major) as the body group's attributes.
+void write_mass_properties(hid_t body, const MassProperties& m) {
+  write_doubles_attribute(body, layout::body::kMassAttribute, &m.mass, 1);
+  write_doubles_attribute(body, layout::body::kCenterOfMassAttribute, m.com_B.data(), 3);
+  // Symmetric: column-major storage is the row-major one.
+  write_doubles_attribute(body, layout::body::kInertiaAttribute, m.inertia_com_B.data(), 9);
+}
+
 H5Handle create_group(hid_t parent, const std::string& name) {
   return checked(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                  "create a group");
@@ -174,6 +182,9 @@ struct ResultsWriter::Impl {
   std::set<std::string> probe_links;
   std::vector<Series> probe_series;
   bool has_shock_spectra = false;
+  // /momentum, when declared.
+  Series momentum;
+  bool has_momentum = false;
   // /clearance/minimum and /clearance/pair, when pairs were declared.
   Series clearance_minimum, clearance_pair;
   bool has_clearance = false;
@@ -268,6 +279,7 @@ struct ResultsWriter::Impl {
       write_pending(clearance_minimum, ns_written, rows);
       write_pending(clearance_pair, ns_written, rows);
     }
+    if (has_momentum) write_pending(momentum, ns_written, rows);
     for (const std::unique_ptr<StressSeries>& stress : body_stress) {
       if (stress) write_stress_block(*stress, ns_written, rows);
     }
@@ -357,11 +369,12 @@ struct ResultsWriter::Impl {
   }
 
   // Creates a body group with its kind, shapes and pose series.
-  H5Handle begin_body(const std::string& name, const char* kind,
-                      const std::vector<ShapeSpec>& shapes) {
+  H5Handle begin_body(const std::string& name, const char* kind, const std::vector<ShapeSpec>& shapes,
+                      const std::optional<MassProperties>& mass_properties) {
     demand_declaring();
     H5Handle body = create_named_group(bodies_group.get(), body_links, name);
     write_string_attribute(body.get(), layout::body::kKindAttribute, kind);
+    if (mass_properties) write_mass_properties(body.get(), *mass_properties);
     write_shapes(body.get(), shapes);
     std::vector<Series> series;
     series.push_back(create_series(body.get(), layout::body::kPosition, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
@@ -434,7 +447,7 @@ ResultsWriter::~ResultsWriter() {
 
 int ResultsWriter::add_rigid_body(const RigidBodySpec& body) {
   const std::lock_guard lock(hdf5_lock());
-  impl_->begin_body(body.name, layout::body::kRigid, body.shapes);
+  impl_->begin_body(body.name, layout::body::kRigid, body.shapes, body.mass_properties);
   impl_->body_nmodes.push_back(-1);
   return static_cast<int>(impl_->body_series.size()) - 1;
 }
@@ -450,7 +463,11 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
   LIMBER_DEMAND(body.lines.size() == 0 || (body.lines.minCoeff() >= 0 && body.lines.maxCoeff() < nn));
   LIMBER_DEMAND(body.quads.size() == 0 || (body.quads.minCoeff() >= 0 && body.quads.maxCoeff() < nn));
 
-  H5Handle group = impl_->begin_body(body.name, layout::body::kFlexible, body.shapes);
+  LIMBER_DEMAND(body.mode_kinds.size() == body.mode_labels.size());
+  LIMBER_DEMAND(body.mode_kinds.empty() || static_cast<Eigen::Index>(body.mode_kinds.size()) == nm);
+
+  H5Handle group = impl_->begin_body(body.name, layout::body::kFlexible, body.shapes, body.mass_properties);
+  if (!body.component.empty()) write_string_attribute(group.get(), layout::body::kComponentAttribute, body.component);
 
   // Mesh: nodes, ids, elements, tube radius.
   H5Handle mesh = create_group(group.get(), layout::body::kMesh);
@@ -480,6 +497,10 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
                 {static_cast<hsize_t>(nm), n, 3}, translations.data());
   write_dataset(modes.get(), layout::modes::kFrequenciesHz, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                 {static_cast<hsize_t>(nm)}, body.frequencies_hz.data());
+  if (!body.mode_kinds.empty()) {
+    write_string_dataset(modes.get(), layout::modes::kKinds, body.mode_kinds);
+    write_string_dataset(modes.get(), layout::modes::kLabels, body.mode_labels);
+  }
 
   // Modal coordinates and rates; a flexible body without modes keeps [ns, 0] datasets.
   for (const char* name : {layout::body::kModalCoordinates, layout::body::kModalVelocities}) {
@@ -631,6 +652,15 @@ void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
   impl_->has_clearance = true;
 }
 
+void ResultsWriter::record_momentum() {
+  const std::lock_guard lock(hdf5_lock());
+  impl_->demand_declaring();
+  LIMBER_DEMAND(!impl_->has_momentum);
+  impl_->momentum =
+      impl_->create_series(impl_->file.get(), layout::kMomentum, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 6);
+  impl_->has_momentum = true;
+}
+
 void ResultsWriter::set_integrator(const std::string& name) {
   const std::lock_guard lock(hdf5_lock());
   impl_->demand_declaring();
@@ -714,6 +744,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
     m.append_row(m.clearance_minimum, &sample.clearance_minimum);
     m.append_row(m.clearance_pair, &sample.clearance_pair);
   }
+  if (m.has_momentum) m.append_row(m.momentum, sample.momentum.data());
 
   m.append_row(m.time, &sample.time);
   ++m.ns;
@@ -851,6 +882,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.time = {};
   m.clearance_minimum = {};
   m.clearance_pair = {};
+  m.momentum = {};
   m.bodies_group.reset();
   m.joints_group.reset();
   m.drivers_group.reset();

@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,9 +51,18 @@ struct ShapeSpec {
   Eigen::Vector3d color{0.7, 0.7, 0.7};
 };
 
+// A body's mass, centre of mass and inertia (/bodies/<body> attributes mass, center_of_mass,
+// inertia); a flexible body's are those of its undeformed FE model.
+struct MassProperties {
+  double mass = 0.0;                                          // [kg]
+  Eigen::Vector3d com_B = Eigen::Vector3d::Zero();            // centre of mass, body frame [m]
+  Eigen::Matrix3d inertia_com_B = Eigen::Matrix3d::Zero();    // about the centre, body axes [kg m²]
+};
+
 struct RigidBodySpec {
   std::string name;
   std::vector<ShapeSpec> shapes;
+  std::optional<MassProperties> mass_properties = std::nullopt;  // none: attributes not written
 };
 
 // A flexible body: its undeformed FE mesh (body frame) and the translational part of its modes.
@@ -73,6 +83,12 @@ struct FlexibleBodySpec {
   Eigen::MatrixXd mode_translations;
   // nm natural frequencies [Hz].
   Eigen::VectorXd frequencies_hz;
+  // nm kinds ("normal", "constraint", "attachment") and origin labels ("attachment uz at node
+  // 10001") of the modes, as modes.h5 holds them; empty: not written.
+  std::vector<std::string> mode_kinds, mode_labels;
+  // The case's component (`flexible_bodies` entry) the body's modes belong to; "": not written.
+  std::string component;
+  std::optional<MassProperties> mass_properties = std::nullopt;  // undeformed; none: not written
   std::vector<ShapeSpec> shapes;
   // Writes /bodies/<body>/deflection [ns, 3] (BodySample::deflection) when true.
   bool has_deflection = false;
@@ -171,6 +187,9 @@ struct Sample {
   int clearance_pair = -1;
   // Per declared acceleration probe: the point's absolute acceleration, ground axes [m/s²].
   std::vector<Eigen::Vector3d> probe_accelerations;
+  // Written only when record_momentum() was called: the whole system's linear momentum
+  // [kg m/s] and angular momentum about the ground origin [kg m²/s], ground axes.
+  Eigen::Matrix<double, 6, 1> momentum = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 struct HingeLimitSpec {
@@ -234,6 +253,9 @@ class ResultsWriter {
   // /clearance/pairs [np] holds "<body_a>, <body_b>"; each sample then appends
   // /clearance/minimum and /clearance/pair (Sample::clearance_minimum, clearance_pair).
   void set_clearance_pairs(const std::vector<std::string>& pairs);
+  // Declares /momentum [ns, 6] (at most once, before the first sample): each sample then
+  // appends Sample::momentum.
+  void record_momentum();
   // Root attribute `integrator` ("ida", "galpha"): which method produced the samples.
   void set_integrator(const std::string& name);
   // Root attribute `axis_names`: the case's names of the ground axes x, y, z ("X, Y, Z").

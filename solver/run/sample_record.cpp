@@ -13,6 +13,7 @@
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"
 #include "multibody/hinge_limit.h"
+#include "multibody/momentum.h"
 #include "multibody/nonlinear_body.h"
 #include "multibody/reactions.h"
 #include "multibody/rotation.h"
@@ -80,7 +81,13 @@ results::FlexibleBodySpec mesh_spec(const std::string& name, const Eigen::Matrix
   return spec;
 }
 
-// Mesh, translational mode shapes and frequencies of a flexible body (docs/results-format.md).
+// A body's mass, centre of mass and inertia about it (a flexible body's undeformed ones).
+results::MassProperties mass_properties(const multibody::Body& body) {
+  return {body.mass, body.com_B, body.inertia_com_B};
+}
+
+// Mesh, translational mode shapes, frequencies, kinds and labels of a flexible body, its
+// component and undeformed mass properties (docs/results-format.md).
 results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
                                              std::vector<results::ShapeSpec> shapes) {
   const multibody::FlexibleBody& flexible = *body.flexible;
@@ -89,6 +96,14 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
   spec.mode_translations.resize(3 * nn, nm);
   for (int n = 0; n < nn; ++n) spec.mode_translations.middleRows(3 * n, 3) = flexible.translation_shapes(n);
   spec.frequencies_hz = flexible.stiffness.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
+  if (static_cast<int>(flexible.mode_info.size()) == nm) {
+    for (const modal::ModeInfo& mode : flexible.mode_info) {
+      spec.mode_kinds.emplace_back(modal::to_string(mode.kind));
+      spec.mode_labels.push_back(mode.label);
+    }
+  }
+  spec.component = flexible.component;
+  spec.mass_properties = mass_properties(body);
   spec.shapes = std::move(shapes);
   spec.has_deflection = flexible.deflection_probe.has_value();
   if (const auto& stress = flexible.stress_output) {
@@ -140,7 +155,7 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
     if (body.kind == multibody::BodyKind::kFlexible) {
       writer.add_flexible_body(flexible_body_spec(body, std::move(shapes)));
     } else {
-      writer.add_rigid_body({body.name, std::move(shapes)});
+      writer.add_rigid_body({body.name, std::move(shapes), mass_properties(body)});
     }
   }
   for (const multibody::Joint& joint : model.joints) {
@@ -154,6 +169,7 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
                       driver.coordinate == multibody::DriverCoordinate::kRotation ? "N m" : "N");
   }
   for (const char* name : kEnergyNames) writer.add_energy(name);
+  writer.record_momentum();
   for (const multibody::ForceElement& force : model.forces) {
     if (const auto* limit = std::get_if<multibody::HingeLimit>(&force)) {
       writer.add_hinge_limit({limit->name, multibody::to_string(limit->kind),
@@ -331,6 +347,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   const multibody::EnergyTerms energy = multibody::energies(model_, state, workspace_);
   out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
+  out.momentum = multibody::system_momentum(model_, state, workspace_);
 
   // Hinge latches and stops: joint angle, torque on body j about the joint axis, and mode;
   // one marker update serves them all.

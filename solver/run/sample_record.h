@@ -1,9 +1,10 @@
 // What `limber run` writes for one output sample (docs/results-format.md): body poses, joint
 // reactions on body j in the joint frame and in ground axes with the indeterminate flags,
-// driver efforts, energies, constraint violations, the step count, the acceleration probes'
-// absolute accelerations (multibody/acceleration_probe.h) and, when two or more bodies
-// have surfaces, the minimum clearance between them (multibody/clearance.h), computed from the
-// integrator's sample (q, v, v̇, λ and the energy integrals).
+// driver efforts, energies, the system's momentum (multibody/momentum.h), constraint
+// violations, the step count, the acceleration probes' absolute accelerations
+// (multibody/acceleration_probe.h) and, when two or more bodies have surfaces, the minimum
+// clearance between them (multibody/clearance.h), computed from the integrator's sample
+// (q, v, v̇, λ and the energy integrals).
 #pragma once
 
 #include <array>
@@ -26,8 +27,9 @@ inline constexpr std::array<const char*, 7> kEnergyNames = {
 inline constexpr int kEnergyIntegrals = 3;
 
 // Declares every body (with its shapes; flexible bodies with their mesh and modes), joint,
-// driver, energy and clearance pair (when there are any) of `model` in `writer`,
-// in model order (the indices of results::Sample follow the model's). A nonlinear body's node
+// driver, energy and clearance pair (when there are any) of `model` in `writer`, with the
+// bodies' mass properties, the flexible bodies' mode kinds, labels and component, and
+// /momentum; in model order (the indices of results::Sample follow the model's). A nonlinear body's node
 // bodies are declared as that one body, a flexible body of no modes with its mesh and probe,
 // at the place of its first node body; joints on its nodes name it.
 void declare_model(const multibody::Model& model, results::ResultsWriter& writer);

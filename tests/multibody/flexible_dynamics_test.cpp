@@ -1,6 +1,6 @@
 // Equations of motion of a flexible body checked at one instant, without an integrator:
-// along the motion v̇ = M⁻¹ Q of a free body the linear and angular momentum must not
-// change and the energy must fall by the damping power only (central differences in
+// along the motion v̇ = M⁻¹ Q of a free body the linear and angular momentum (momentum.h)
+// must not change and the energy must fall by the damping power only (central differences in
 // time); the modal rows must satisfy Lagrange's equations; gravity must be −∂V/∂q. Also
 // the builder's checks of flexible bodies and the linear-range warning.
 #include <cmath>
@@ -11,6 +11,7 @@
 #include "multibody/body.h"
 #include "multibody/dynamics.h"
 #include "multibody/linear_range.h"
+#include "multibody/momentum.h"
 #include "multibody/rotation.h"
 #include "flexible_test_models.h"
 #include "test_models.h"
@@ -55,18 +56,6 @@ Eigen::VectorXd accelerations(const Model& model, const State& state, Workspace&
   return ws.M.llt().solve(ws.Q);
 }
 
-// Linear momentum ∂T/∂ṙ and angular momentum about the ground origin r × P + A ∂T/∂ω,
-// in ground axes (the conserved quantities of a Lagrangian invariant under rigid motion).
-Eigen::Matrix<double, 6, 1> momentum(const Model& model, const State& state, Workspace& ws) {
-  mass_matrix(model, state, ws);
-  const Eigen::VectorXd p = ws.M * state.v;
-  const Eigen::Vector3d r = state.q.head<3>(), P = p.head<3>();
-  const Eigen::Matrix3d A = rotation_matrix(state.q.segment<4>(3));
-  Eigen::Matrix<double, 6, 1> out;
-  out << P, r.cross(P) + A * p.segment<3>(3);
-  return out;
-}
-
 // Rate of f along the motion: central differences with q ⊕ ±h v, v ± h v̇ (second-order
 // terms equal on both sides), h = kMotionStep and h/2 combined by Richardson extrapolation.
 template <class F>
@@ -90,7 +79,8 @@ TEST_P(FreeFlexibleBody, MomentumIsConservedAndEnergyFallsByTheDampingPower) {
   const State state = initial_state(model);
   const Eigen::VectorXd v_dot = accelerations(model, state, ws);
   // Momentum: its rate against the size of the terms that make it up (|M v̇| rows).
-  const auto dh = rate_along_motion(model, state, v_dot, [&](const State& s) { return momentum(model, s, ws); });
+  const auto dh =
+      rate_along_motion(model, state, v_dot, [&](const State& s) { return system_momentum(model, s, ws); });
   const double scale = (ws.M * v_dot).head<6>().cwiseAbs().maxCoeff() + 1.0;
   EXPECT_LT(dh.cwiseAbs().maxCoeff(), 1e-7 * scale) << dh.transpose();
   // Energy T + V_strain falls by η̇ᵀ C η̇ (internal damping, the only non-conservative force).

@@ -189,6 +189,12 @@ TEST(GroundReactionPlots, NoiseIsListedAsZeroAndMinimumNormReactionsSayTheyAreIn
   EXPECT_NE(r2.caption.find("Not drawn, below 0.0001 of the largest component: Y ≈ 0 (peak 1e-09 N)."),
             std::string::npos)
       << r2.caption;
+  // Its CSV keeps every component, Y flagged in the comment: the columns do not depend on the
+  // data (a script reading "Y [N]" finds it whether or not Y is drawn).
+  ASSERT_EQ(r2.csv_curves.size(), 4u);
+  EXPECT_EQ(r2.csv_curves[1].label, "Y");
+  EXPECT_EQ(r2.csv_curves[1].y(0), 1e-9);
+  EXPECT_EQ(r2.csv_comment, "not drawn, ≈ 0 (below 0.0001 of the largest component): Y");
   // The markers were left at identity (ground axes), so R2.x leaves only ground X undetermined
   // (report/indeterminate_components.h).
   EXPECT_NE(r2.warning.find("Indeterminate: joint R2 is in a redundant set of constraints (R2.x "
@@ -208,6 +214,15 @@ TEST(GroundReactionPlots, NoiseIsListedAsZeroAndMinimumNormReactionsSayTheyAreIn
             (std::vector<std::string>{"reaction_R1_force_ground.png", "reaction_R1_torque_ground.png",
                                       "reaction_R2_force_ground.png"}));
   EXPECT_TRUE(plot_named(plots, "reaction_R1_force_ground.png").warning.empty());
+  // The same decision per component and frame, as the selection ranking asks it: in the rod's
+  // axes (identity here) only the force x; the torque and the other joint determined.
+  EXPECT_TRUE(is_indeterminate_component(data, "R2", "rod", false, 0));
+  EXPECT_FALSE(is_indeterminate_component(data, "R2", "rod", false, 1));
+  EXPECT_FALSE(is_indeterminate_component(data, "R2", "rod", true, 0));
+  EXPECT_FALSE(is_indeterminate_component(data, "R1", "ground", false, 0));
+  EXPECT_FALSE(is_indeterminate_component(data, "R9", "rod", false, 0));
+  EXPECT_EQ(plot_named(plots, "reaction_R1_force_ground.png").csv_comment,
+            "not drawn, ≈ 0 (below 0.0001 of the largest component): none");
   // A rotation equation in the set makes the torque, not the force, indeterminate.
   RunData rotation = data;
   rotation.redundant_equations = {{"R2.rot_x", "R1.rot_x"}};

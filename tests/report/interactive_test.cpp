@@ -131,11 +131,14 @@ TEST(CurveExport, CsvBesideTheReportReadsBackToTheResultsFile) {
   options.mode_shapes = false;
   const ReportSummary summary = generate_report(options);
 
-  // Parse the CSV of the ground-axes force: header, then time, X, Y, Z and |F|.
+  // Parse the CSV of the ground-axes force: the comment on what is not drawn, the header, then
+  // time, X, Y, Z and |F|.
   const std::string csv = testing::read_text(dir / "report/data/run1_reaction_R3_force_ground.csv");
   std::vector<std::vector<double>> rows;
-  std::size_t at = csv.find('\n') + 1;
-  EXPECT_EQ(csv.substr(0, at), "time [s],X [N],Y [N],Z [N],|F| [N]\n");
+  const std::size_t header = csv.find('\n') + 1;
+  EXPECT_EQ(csv.substr(0, header), "# not drawn, ≈ 0 (below 0.0001 of the largest component): none\n");
+  std::size_t at = csv.find('\n', header) + 1;
+  EXPECT_EQ(csv.substr(header, at - header), "time [s],X [N],Y [N],Z [N],|F| [N]\n");
   while (at < csv.size()) {
     const std::size_t end = csv.find('\n', at);
     std::vector<double>& row = rows.emplace_back();

@@ -84,7 +84,8 @@ TEST(ChartCanvas, DrawsTheCurveWhereItsDataMapAndNothingElse) {
 
   const testing::Png png(dir / "curve.png");
   ASSERT_EQ(png.width, kWidth);
-  ASSERT_EQ(png.height, kHeight);
+  // The plot, then its legend's one row below it.
+  ASSERT_EQ(png.height, kHeight + kLegendRowPixels + kLegendPadding);
 
   // The curve's colour at every 10th sample's pixel.
   for (Eigen::Index k = 0; k < x.size(); k += 10) {
@@ -165,6 +166,36 @@ TEST(ChartCanvas, LogLogAxesWithMarkers) {
   const double step_01 = frame.to_pixel(x(1), y(1)).x() - frame.to_pixel(x(0), y(0)).x();
   const double step_23 = frame.to_pixel(x(3), y(3)).x() - frame.to_pixel(x(2), y(2)).x();
   EXPECT_NEAR(step_01, step_23, 1e-9);
+}
+
+// The legend sits below the plot: a long run name neither narrows the plot area nor hides the
+// curve, and the legend's line symbol shows under the x axis.
+TEST(ChartCanvas, LegendBelowThePlotLeavesItsWidth) {
+  unsetenv("DISPLAY");
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(201, 0.0, 1.0);
+  const Eigen::VectorXd y = (2.0 * M_PI * x).array().sin();
+  const std::string long_name(40, 'n');  // ~440 px at 20 px: half the plot's width
+  PlotSpec short_label{"test curve", "time [s]", "force [N]", {{"F", x, y}}, false};
+  PlotSpec long_label{"test curve", "time [s]", "force [N]", {{long_name, x, y}}, false};
+  const auto dir = testing::fresh_directory("plot_legend");
+  PlotFrame short_frame, long_frame;
+  {
+    ChartCanvas canvas(kWidth, kHeight);
+    short_frame = canvas.draw(short_label, dir / "short.png");
+    long_frame = canvas.draw(long_label, dir / "long.png");
+  }
+  // The same plot area to a pixel whatever the legend's width.
+  EXPECT_NEAR(long_frame.right_px - long_frame.left_px, short_frame.right_px - short_frame.left_px, 1.0);
+  EXPECT_GT(long_frame.right_px - long_frame.left_px, 0.8 * kWidth);
+  // The legend's symbol: the curve's colour somewhere in the rows below the x axis's labels.
+  const testing::Png png(dir / "long.png");
+  bool symbol = false;
+  for (int row = static_cast<int>(long_frame.bottom_px) + 50; row < png.height && !symbol; ++row) {
+    for (int col = 0; col < png.width && !symbol; ++col) {
+      symbol = near_color(png.pixel(col, row), kCurveColors[0]);
+    }
+  }
+  EXPECT_TRUE(symbol) << "no legend symbol below the plot";
 }
 
 }  // namespace

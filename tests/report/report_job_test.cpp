@@ -125,7 +125,8 @@ TEST_F(ReportJobTest, ModalCoordinatePlotShowsTheBeamsClosedForm) {
   }
   const testing::Png png(dir / "report" / "images" / "run1_modal_beam.png");
   ASSERT_EQ(png.width, options.plot_width);
-  ASSERT_EQ(png.height, options.plot_height);
+  // The plot's height and, below it, the legend's two rows (eta1, eta2).
+  ASSERT_EQ(png.height, options.plot_height + 2 * kLegendRowPixels + kLegendPadding);
   // eta = B (sin, cos)(2 pi f t), B = 0.05: in steps of 0.02 the axis spans [-0.06, 0.06].
   EXPECT_NEAR(frame.y_min, -0.06, 1e-15);
   EXPECT_NEAR(frame.y_max, 0.06, 1e-15);

@@ -28,15 +28,18 @@ using Dims = std::vector<hsize_t>;
 
 constexpr int kSamples = 3;
 
-// A run with a rigid and a flexible body (2 beams and a quad, 2 modes, deflection, stress), a
-// joint, a driver, an energy, a hinge limit with one event, redundancy, clearance, an
-// acceleration probe with its shock spectra (2 windows, 2 frequencies) and every root attribute.
+// A run with a rigid and a flexible body (2 beams and a quad, 2 modes with kinds and labels,
+// deflection, stress; both with mass properties), a joint, a driver, an energy, a hinge limit
+// with one event, redundancy, clearance, momentum, an acceleration probe with its shock spectra
+// (2 windows, 2 frequencies) and every root attribute.
 std::filesystem::path write_full_run() {
   const std::filesystem::path directory =
       std::filesystem::temp_directory_path() / "limber_layout_round_trip";
   std::filesystem::remove_all(directory);
   ResultsWriter writer(directory, "round trip", "case.yaml");
-  RigidBodySpec crank{"crank", {ShapeSpec{}}};
+  MassProperties crank_mass{2.0, Eigen::Vector3d(0.1, 0.0, 0.0), Eigen::Matrix3d::Identity()};
+  crank_mass.inertia_com_B(0, 1) = crank_mass.inertia_com_B(1, 0) = 0.25;
+  RigidBodySpec crank{"crank", {ShapeSpec{}}, crank_mass};
   writer.add_rigid_body(crank);
   FlexibleBodySpec rod;
   rod.name = "rod";
@@ -49,6 +52,10 @@ std::filesystem::path write_full_run() {
   rod.beam_radius = 0.01;
   rod.mode_translations = Eigen::MatrixXd::Constant(12, 2, 0.5);
   rod.frequencies_hz = Eigen::Vector2d(10.0, 20.0);
+  rod.mode_kinds = {"normal", "attachment"};
+  rod.mode_labels = {"normal 1", "attachment uz at node 3"};
+  rod.component = "beam";
+  rod.mass_properties = MassProperties{};
   rod.has_deflection = true;
   rod.has_stress = true;
   rod.stress_elements = {0, 2};  // beam 0 and the quad (element nl + 0)
@@ -59,6 +66,7 @@ std::filesystem::path write_full_run() {
   writer.add_hinge_limit(HingeLimitSpec{"stop", "stop", "R1", 0.5});
   writer.set_redundant_equations({"R1.rot_x"}, {"R1.x"});
   writer.set_clearance_pairs({"crank, rod"});
+  writer.record_momentum();
   writer.add_acceleration_probe({"tip", "rod", 3, Eigen::Vector3d(1, 0, 0)});
   writer.set_integrator("galpha");
   writer.set_axis_names({"X", "Y", "Z"});
@@ -88,6 +96,7 @@ std::filesystem::path write_full_run() {
     sample.clearance_minimum = 0.25;
     sample.clearance_pair = 0;
     sample.probe_accelerations = {Eigen::Vector3d(k, 0.0, -9.81)};
+    sample.momentum << k, 0, 0, 0, 0, -k;
     writer.append_sample(sample);
   }
   ShockSpectra spectra;
@@ -159,6 +168,9 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
       {L::at(mesh, L::mesh::kBeamRadius), {}},
       {L::at(modes, L::modes::kTranslations), {2, 4, 3}},
       {L::at(modes, L::modes::kFrequenciesHz), {2}},
+      {L::at(modes, L::modes::kKinds), {2}},
+      {L::at(modes, L::modes::kLabels), {2}},
+      {L::kMomentum, {ns, 6}},
       {L::at(rod, L::body::kModalCoordinates), {ns, 2}},
       {L::at(rod, L::body::kModalVelocities), {ns, 2}},
       {L::at(rod, L::body::kDeflection), {ns, 3}},
@@ -223,8 +235,10 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
         L::kStatusAttribute, L::kMessageAttribute, L::kIntegratorAttribute,
         L::kAxisNamesAttribute, L::kAccuracyEnergyAttribute, L::kAccuracyLocalErrorAttribute,
         L::kAccuracyDriftAttribute, L::kAccuracyWarningsAttribute}},
-      {crank, {kNameAttribute, L::body::kKindAttribute}},
-      {rod, {kNameAttribute, L::body::kKindAttribute}},
+      {crank, {kNameAttribute, L::body::kKindAttribute, L::body::kMassAttribute,
+               L::body::kCenterOfMassAttribute, L::body::kInertiaAttribute}},
+      {rod, {kNameAttribute, L::body::kKindAttribute, L::body::kMassAttribute,
+             L::body::kCenterOfMassAttribute, L::body::kInertiaAttribute, L::body::kComponentAttribute}},
       {shape, {L::shape::kTypeAttribute, L::shape::kSizeAttribute, L::shape::kOffsetAttribute,
                L::shape::kColorAttribute}},
       {stress, {L::stress::kEveryAttribute, L::stress::kPeakValueAttribute,
@@ -275,6 +289,15 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
   EXPECT_EQ(r.string_attribute("/", L::kAxisNamesAttribute), "X, Y, Z");
   EXPECT_EQ(r.string_attribute(rod, L::body::kKindAttribute), L::body::kFlexible);
   EXPECT_EQ(r.string_attribute(crank, kNameAttribute), "crank");
+  EXPECT_EQ(r.string_attribute(rod, L::body::kComponentAttribute), "beam");
+  EXPECT_EQ(r.doubles_attribute(crank, L::body::kMassAttribute, 1), std::vector<double>{2.0});
+  EXPECT_EQ(r.doubles_attribute(crank, L::body::kCenterOfMassAttribute, 3), (std::vector<double>{0.1, 0, 0}));
+  EXPECT_EQ(r.doubles_attribute(crank, L::body::kInertiaAttribute, 9),
+            (std::vector<double>{1, 0.25, 0, 0.25, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(r.strings(L::at(modes, L::modes::kLabels)),
+            (std::vector<std::string>{"normal 1", "attachment uz at node 3"}));
+  EXPECT_EQ(r.read<double>(L::kMomentum, H5T_NATIVE_DOUBLE, ns),
+            (std::vector<double>{0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 2, 0, 0, 0, 0, -2}));
   EXPECT_EQ(r.string_attribute(shape, L::shape::kTypeAttribute), L::shape::kBox);
   EXPECT_EQ(r.string_attribute(L::at(joint, L::kMarkerGroups[1]), kNameAttribute), "R1.j");
   EXPECT_EQ(r.read<double>(L::kTime, H5T_NATIVE_DOUBLE, ns), (std::vector<double>{0.0, 0.125, 0.25}));

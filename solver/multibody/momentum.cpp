@@ -1,0 +1,27 @@
+#include "multibody/momentum.h"
+
+#include "multibody/dynamics.h"
+#include "multibody/rotation.h"
+
+namespace limber::multibody {
+
+Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state, Workspace& ws) {
+  mass_matrix(model, state, ws);
+  const Eigen::VectorXd p = ws.M * state.v;
+  Eigen::Vector3d P = Eigen::Vector3d::Zero(), L = Eigen::Vector3d::Zero();
+  // Each moving body's share: its translational momentum and, about the ground origin, its
+  // moment plus its angular momentum turned into ground axes.
+  for (const Body& body : model.bodies) {
+    if (body.kind == BodyKind::kGround) continue;
+    const Eigen::Vector3d r = state.q.segment<3>(body.q_offset);
+    const Eigen::Matrix3d A = rotation_matrix(state.q.segment<4>(body.q_offset + 3));
+    const Eigen::Vector3d P_b = p.segment<3>(body.v_offset);
+    P += P_b;
+    L += r.cross(P_b) + A * p.segment<3>(body.v_offset + 3);
+  }
+  Eigen::Matrix<double, 6, 1> out;
+  out << P, L;
+  return out;
+}
+
+}  // namespace limber::multibody
