@@ -2,6 +2,7 @@
 
 #include "frame_renderer.h"
 #include "html.h"
+#include "mode_view.h"
 #include "png_frame_writer.h"
 #include "results/results_layout.h"
 
@@ -37,11 +38,6 @@ std::vector<ModeImage> draw_mode_shapes(const RunData& run, const std::filesyste
                                         const std::string& prefix, int width, int height) {
   std::vector<ModeImage> drawn;
   if (run.sample_count() == 0) return drawn;
-  render::RenderOptions options;
-  options.width = width;
-  options.height = height;
-  options.ground = false;
-  options.world_triad = false;
   render::PngFrameWriter writer;
   for (const render::BodyTrack& body : run.results.bodies) {
     const Eigen::MatrixXd& phi = body.mesh.mode_translations;
@@ -69,7 +65,8 @@ std::vector<ModeImage> draw_mode_shapes(const RunData& run, const std::filesyste
       const double scale = largest > 0.0 ? kModeShapeFraction * size / largest : 0.0;
       // The renderer keeps a reference to the results it draws: they must outlive it.
       const render::Results shape = single_mode(run.results, body, i, scale);
-      render::FrameRenderer renderer(shape, options, 0.0, 0.0);
+      // Square to the mode's plane, no time stamp (render/mode_view.h).
+      render::FrameRenderer renderer(shape, render::mode_image_options(body, i, width, height), 0.0, 0.0);
       const ModeRow* row = table != nullptr && static_cast<std::size_t>(i) < table->modes.size()
                                ? &table->modes[static_cast<std::size_t>(i)]
                                : nullptr;
