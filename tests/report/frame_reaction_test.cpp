@@ -132,13 +132,13 @@ TEST(FrameReactions, IndeterminacyIsPerComponentOnTheRigidSliderCrank) {
     EXPECT_EQ(indeterminate_components(*directions, true, marker_j->R_WF), (std::array<bool, 3>{true, true, false}))
         << joint.name;
   }
-  // The plot notes and the joints table say so.
+  // The joints table says so. The plot does not: Y, out of the mechanism's plane, is ≈ 0 here
+  // (nothing loads it), so it is not drawn, and notes name drawn components only (issue 28).
   const std::vector<NamedPlot> plots = run_plots(run, "run1_");
   const auto r3 = std::find_if(plots.begin(), plots.end(),
                                [](const NamedPlot& plot) { return plot.file == "run1_reaction_R3_force_ground.png"; });
   ASSERT_NE(r3, plots.end());
-  EXPECT_NE(r3->warning.find("The component Y of its reaction force is the minimum-norm split"), std::string::npos)
-      << r3->warning;
+  EXPECT_EQ(r3->warning.find("component Y"), std::string::npos) << r3->warning;
   EXPECT_EQ(indeterminate_summary(run, run.joints.front()),
             "force Y and torque X, Z minimum-norm (indeterminate, ground axes; other components determined)");
 }
