@@ -53,7 +53,10 @@ inline std::string pre_text(const std::string& dom, const std::string& id) {
 inline std::vector<double> numbers_on_line(const std::string& text, int k) {
   std::istringstream lines(text);
   std::string line;
-  for (int i = 0; i <= k; ++i) std::getline(lines, line);
+  // Past the last line: nothing (a failed getline leaves `line` as it was).
+  for (int i = 0; i <= k; ++i) {
+    if (!std::getline(lines, line)) return {};
+  }
   std::vector<double> out;
   std::istringstream words(line);
   for (std::string word; words >> word;) out.push_back(std::strtod(word.c_str(), nullptr));
