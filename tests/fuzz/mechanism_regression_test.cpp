@@ -38,7 +38,9 @@ TEST_P(MechanismRegression, RunsToAnExpectedEndWithBothIntegrators) {
   const std::filesystem::path path =
       std::filesystem::path(LIMBER_FUZZ_MECHANISM_REGRESSIONS_DIR) / GetParam();
   const std::string text = read_bytes(path);
-  const std::filesystem::path out = std::filesystem::path(testing::TempDir()) / "mechanism_regression";
+  // One folder per input: ctest -j runs the inputs side by side, and a shared folder is locked.
+  const std::filesystem::path out =
+      std::filesystem::path(testing::TempDir()) / ("mechanism_regression_" + path.stem().string());
   for (const integrate::Method method : {integrate::Method::kIda, integrate::Method::kGeneralizedAlpha}) {
     const MechanismOutcome outcome = run_mechanism_case(text, path.string(), method, out.string());
     RecordProperty(method == integrate::Method::kIda ? "ida" : "galpha", outcome.status);
