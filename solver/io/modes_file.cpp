@@ -1,141 +1,90 @@
 #include "io/modes_file.h"
 
 #include "core/error.h"
-#include "io/hdf5_file.h"
 #include "modal/modal_stress.h"
-#include "results/link_name.h"
-#include "results/modes_layout.h"
+#include "results/modes_writer.h"
 
 namespace limber::io {
 
 namespace {
 
-namespace layout = results::layout;
-namespace modes_layout = results::modes_layout;
-namespace invariants = results::modes_layout::invariants;
-
-using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-void write_matrix(const H5Group& group, const std::string& name, const Eigen::MatrixXd& matrix) {
-  const RowMatrix rows = matrix;
-  group.write_doubles(name,
-                      {static_cast<hsize_t>(matrix.rows()), static_cast<hsize_t>(matrix.cols())},
-                      rows.data());
-}
-
-// A list of equally sized matrices as one [count, rows, cols] dataset.
-template <typename Matrix>
-void write_matrices(const H5Group& group, const std::string& name,
-                    const std::vector<Matrix>& matrices, Eigen::Index rows, Eigen::Index cols) {
-  std::vector<double> values;
-  values.reserve(matrices.size() * rows * cols);
-  for (const Matrix& matrix : matrices) {
-    LIMBER_DEMAND(matrix.rows() == rows && matrix.cols() == cols);
-    const RowMatrix row_major = matrix;
-    values.insert(values.end(), row_major.data(), row_major.data() + row_major.size());
-  }
-  group.write_doubles(name,
-                      {matrices.size(), static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)},
-                      values.data());
-}
-
-void write_mode_infos(const H5Group& group, const std::vector<modal::ModeInfo>& modes) {
-  std::vector<double> frequencies;
-  std::vector<std::string> kinds;
-  std::vector<std::string> labels;
+std::vector<results::ModeRecord> mode_records(const std::vector<modal::ModeInfo>& modes) {
+  std::vector<results::ModeRecord> records;
   for (const modal::ModeInfo& mode : modes) {
-    frequencies.push_back(mode.frequency_hz);
-    kinds.emplace_back(modal::to_string(mode.kind));
-    labels.push_back(mode.label);
+    records.push_back({modal::to_string(mode.kind), mode.frequency_hz, mode.label});
   }
-  group.write_doubles(layout::modes::kFrequenciesHz, {modes.size()}, frequencies.data());
-  group.write_strings(modes_layout::modes::kKinds, kinds);
-  group.write_strings(modes_layout::modes::kLabels, labels);
+  return records;
 }
 
-void write_mesh(const H5Group& group, const fe::FeModel& model) {
-  const int nn = model.node_count();
-  std::vector<double> nodes;
-  for (const Eigen::Vector3d& p : model.node_positions)
-    nodes.insert(nodes.end(), {p.x(), p.y(), p.z()});
-  group.write_doubles(layout::mesh::kNodes, {static_cast<hsize_t>(nn), 3}, nodes.data());
-  group.write_ints(layout::mesh::kNodeIds, {static_cast<hsize_t>(nn)}, model.node_ids.data());
-  std::vector<int> lines;
-  for (const fe::BeamElement& beam : model.beams)
-    lines.insert(lines.end(), beam.nodes.begin(), beam.nodes.end());
-  group.write_ints(layout::mesh::kLines, {model.beams.size(), 2}, lines.data());
-  std::vector<int> quads;
-  for (const fe::ShellElement& shell : model.shells)
-    quads.insert(quads.end(), shell.nodes.begin(), shell.nodes.end());
+results::MeshData mesh_data(const fe::FeModel& model, const Eigen::MatrixXd& shapes) {
+  results::MeshData mesh;
+  mesh.nodes.resize(model.node_count(), 3);
+  for (int node = 0; node < model.node_count(); ++node) {
+    mesh.nodes.row(node) = model.node_positions[node].transpose();
+  }
+  mesh.node_ids = model.node_ids;
+  mesh.lines.resize(static_cast<Eigen::Index>(model.beams.size()), 2);
+  for (std::size_t e = 0; e < model.beams.size(); ++e) {
+    mesh.lines.row(e) << model.beams[e].nodes[0], model.beams[e].nodes[1];
+  }
   // Triangles as quads with the last node repeated (docs/modes-format.md).
-  for (const fe::ShellTriangle& t : model.triangles)
-    quads.insert(quads.end(), {t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]});
-  group.write_ints(layout::mesh::kQuads, {model.shells.size() + model.triangles.size(), 4}, quads.data());
+  mesh.quads.resize(static_cast<Eigen::Index>(model.shells.size() + model.triangles.size()), 4);
+  Eigen::Index row = 0;
+  for (const fe::ShellElement& shell : model.shells) {
+    mesh.quads.row(row++) << shell.nodes[0], shell.nodes[1], shell.nodes[2], shell.nodes[3];
+  }
+  for (const fe::ShellTriangle& t : model.triangles) {
+    mesh.quads.row(row++) << t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2];
+  }
+  mesh.mode_translations.resize(3 * model.node_count(), shapes.cols());
+  for (Eigen::Index i = 0; i < shapes.cols(); ++i) {
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> t =
+        mode_translations(shapes, static_cast<int>(i));
+    mesh.mode_translations.col(i) = Eigen::Map<const Eigen::VectorXd>(t.data(), t.size());
+  }
+  return mesh;
 }
 
-void write_dofs(const H5Group& group, const fe::FeModel& model) {
-  group.write_attribute(modes_layout::dofs::kPerNodeAttribute, fe::kDofsPerNode);
-  group.write_attribute(modes_layout::dofs::kIndexAttribute, "6 * node_index + local_dof");
-  group.write_strings(modes_layout::dofs::kNames, {fe::kDofNames.begin(), fe::kDofNames.end()});
-  std::vector<int> fixed;
-  for (const fe::FixedDof& f : model.fixed_dofs)
-    fixed.insert(fixed.end(), {f.node, static_cast<int>(f.dof)});
-  group.write_ints(modes_layout::dofs::kFixed, {model.fixed_dofs.size(), 2}, fixed.data());
+results::InvariantsData invariants_data(const modal::ModalInvariants& inv) {
+  results::InvariantsData data;
+  data.mass = inv.mass;
+  data.first_moment = inv.first_moment;
+  data.inertia = inv.inertia;
+  data.translation_coupling = inv.translation_coupling;
+  data.rotation_coupling = inv.rotation_coupling;
+  data.inertia_first_order = {inv.inertia_first_order.begin(), inv.inertia_first_order.end()};
+  data.inertia_second_order = {inv.inertia_second_order.begin(), inv.inertia_second_order.end()};
+  data.rotation_coupling_first_order = {inv.rotation_coupling_first_order.begin(),
+                                        inv.rotation_coupling_first_order.end()};
+  return data;
 }
 
-void write_invariants(const H5Group& group, const modal::ModalInvariants& inv, Eigen::Index nm) {
-  group.write_doubles(invariants::kMass, {}, &inv.mass);
-  group.write_doubles(invariants::kFirstMoment, {3}, inv.first_moment.data());
-  write_matrix(group, invariants::kInertia, inv.inertia);
-  write_matrix(group, invariants::kTranslationCoupling, inv.translation_coupling);
-  write_matrix(group, invariants::kRotationCoupling, inv.rotation_coupling);
-  write_matrices(group, invariants::kInertiaFirstOrder, inv.inertia_first_order, 3, 3);
-  write_matrices(group, invariants::kInertiaSecondOrder, inv.inertia_second_order, 3, 3);
-  write_matrices(group, invariants::kRotationCouplingFirstOrder, inv.rotation_coupling_first_order, 3, nm);
-}
-
-void write_body(const H5Group& bodies, const BodyModesRef& body) {
+results::ModesBody modes_body(const BodyModesRef& body) {
   LIMBER_DEMAND(body.model != nullptr && body.mode_set != nullptr);
   const fe::FeModel& model = *body.model;
   const modal::ModeSet& set = *body.mode_set;
-  const auto nm = set.shapes.cols();
-  LIMBER_DEMAND(set.shapes.rows() == model.dof_count());
-  LIMBER_DEMAND(static_cast<std::size_t>(nm) == set.modes.size());
-
-  // The group at the name's link (results/link_name.h, as in results.h5), the name beside it.
-  const H5Group group = bodies.create_group(results::link_name(body.name));
-  group.write_attribute(results::kNameAttribute, body.name);
-  group.write_attribute(modes_layout::kDofCountAttribute, model.dof_count());
-  group.write_attribute(modes_layout::kModeCountAttribute, static_cast<int>(nm));
-  write_mesh(group.create_group(modes_layout::kMesh), model);
-  write_dofs(group.create_group(modes_layout::kDofs), model);
-
-  // Mode shapes in full, then their translations for drawing.
-  const H5Group modes = group.create_group(modes_layout::kModes);
-  write_matrix(modes, modes_layout::modes::kShapes, set.shapes);
-  std::vector<double> translations;
-  for (Eigen::Index i = 0; i < nm; ++i) {
-    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> t =
-        mode_translations(set.shapes, static_cast<int>(i));
-    translations.insert(translations.end(), t.data(), t.data() + t.size());
+  results::ModesBody out;
+  out.name = body.name;
+  out.mesh = mesh_data(model, set.shapes);
+  out.modes = mode_records(set.modes);
+  out.mesh.frequencies_hz.resize(static_cast<Eigen::Index>(set.modes.size()));
+  for (std::size_t i = 0; i < set.modes.size(); ++i) {
+    out.mesh.frequencies_hz(i) = set.modes[i].frequency_hz;
   }
-  modes.write_doubles(layout::modes::kTranslations,
-                      {static_cast<hsize_t>(nm), static_cast<hsize_t>(model.node_count()), 3},
-                      translations.data());
-  write_mode_infos(modes, set.modes);
-  modes.write_doubles(modes_layout::modes::kModalStiffness, {static_cast<hsize_t>(set.modal_stiffness.size())},
-                      set.modal_stiffness.data());
-  write_mode_infos(group.create_group(modes_layout::kRigidModes), set.rigid_modes);
-  write_invariants(group.create_group(modes_layout::kInvariants), set.invariants, nm);
+  out.dof_count = model.dof_count();
+  out.fixed.resize(static_cast<Eigen::Index>(model.fixed_dofs.size()), 2);
+  for (std::size_t i = 0; i < model.fixed_dofs.size(); ++i) {
+    out.fixed.row(i) << model.fixed_dofs[i].node, static_cast<int>(model.fixed_dofs[i].dof);
+  }
+  out.shapes = set.shapes;
+  out.modal_stiffness = set.modal_stiffness;
+  out.rigid_modes = mode_records(set.rigid_modes);
+  out.invariants = invariants_data(set.invariants);
   // Modal stresses: element resultants per unit modal coordinate (docs/stress-recovery.md).
   const modal::ModalStress stress = modal::modal_stress(model, set.shapes);
-  const H5Group stresses = group.create_group(modes_layout::kStress);
-  stresses.write_attribute(modes_layout::stress::kBeamResultantsAttribute,
-                           "N Vy Vz T My Mz at end 0, then at end 1; local axes");
-  stresses.write_attribute(modes_layout::stress::kShellResultantsAttribute,
-                           "Nxx Nyy Nxy Mxx Myy Mxy at the centre; local axes");
-  write_matrix(stresses, modes_layout::stress::kBeamModal, stress.beam_modal);
-  write_matrix(stresses, modes_layout::stress::kShellModal, stress.shell_modal);
+  out.beam_stress_modal = stress.beam_modal;
+  out.shell_stress_modal = stress.shell_modal;
+  return out;
 }
 
 }  // namespace
@@ -151,17 +100,11 @@ Eigen::MatrixX3d mode_translations(const Eigen::MatrixXd& shapes, int mode) {
 
 void write_modes_file(const std::string& path, const std::string& title,
                       const std::string& case_file, const std::vector<BodyModesRef>& bodies) {
-  const H5Group file = H5Group::create_file(path);
-  file.write_attribute(layout::kFormatAttribute, modes_layout::kFormat);
-  file.write_attribute(layout::kVersionAttribute, modes_layout::kVersion);
-  file.write_attribute(layout::kTitleAttribute, title);
-  file.write_attribute(layout::kCaseFileAttribute, case_file);
-  // Body names in order (HDF5 lists group members alphabetically).
-  std::vector<std::string> names;
-  for (const BodyModesRef& body : bodies) names.push_back(body.name);
-  file.write_strings(modes_layout::kBodyNames, names);
-  const H5Group group = file.create_group(modes_layout::kBodies);
-  for (const BodyModesRef& body : bodies) write_body(group, body);
+  results::ModesData data;
+  data.title = title;
+  data.case_file = case_file;
+  for (const BodyModesRef& body : bodies) data.bodies.push_back(modes_body(body));
+  results::write_modes(path, data);
 }
 
 }  // namespace limber::io

@@ -1,6 +1,6 @@
-// The writing calls that results.h5's writer and io's H5Group (modes.h5) share: whole datasets
-// and scalar attributes through the HDF5 C API. Each returns false on an HDF5 failure; the
-// caller says which file and object failed, in its own kind of error.
+// The writing calls that results.h5's writer and H5Group (h5_group.h, for modes.h5) share:
+// whole datasets and scalar attributes through the HDF5 C API. Each returns false on an HDF5
+// failure; the caller says which file and object failed, in its own kind of error.
 #pragma once
 
 #include <hdf5.h>

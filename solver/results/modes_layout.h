@@ -1,10 +1,10 @@
 // Paths and attribute names of modes.h5 (docs/modes-format.md), shared by its writer
-// (solver/io/modes_file.cpp, through io's H5Group) and its readers (io's read_modes_file,
-// render's modes reader). The mesh and the translations and frequencies of the modes are the
-// same as in results.h5: results/results_layout.h (layout::mesh, layout::modes).
+// (modes_writer.h) and its reader (modes_reader.h). The mesh and the translations and
+// frequencies of the modes are the same as in results.h5: results/results_layout.h
+// (layout::mesh, layout::modes).
 //
-// Every name here is a link name within its parent group (io's H5Group works relative to a
-// group); a reader of absolute paths builds them with layout::at(parent, name), the root's
+// Every name here is a link name within its parent group (H5Group, h5_group.h, works relative
+// to a group); a reader of absolute paths builds them with layout::at(parent, name), the root's
 // parent being "" (at("", kBodyNames) == "/body_names").
 #pragma once
 

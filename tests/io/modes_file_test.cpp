@@ -1,5 +1,5 @@
-// modes.h5: everything io's writer writes reads back bit for bit through the one reader of
-// the file (results/modes_reader.h).
+// modes.h5: everything io's conversion and results' writer write reads back bit for bit
+// through the one reader of the file (results/modes_reader.h).
 #include "io/modes_file.h"
 
 #include <gtest/gtest.h>
@@ -11,10 +11,10 @@
 #include "core/error.h"
 #include "fe/assembly.h"
 #include "io/case_reader.h"
-#include "io/hdf5_file.h"
 #include "modal/modal_stress.h"
 #include "modal/rigid_body_modes.h"
 #include "modal/static_modes.h"
+#include "results/h5_group.h"
 #include "results/h5_reader.h"
 #include "results/modes_reader.h"
 
@@ -195,8 +195,8 @@ TEST(ModesFile, LayoutHoldsTheDocumentedAttributes) {
   EXPECT_EQ(file.doubles_attribute("/bodies/b", "dof_count", 1).at(0), model.dof_count());
   EXPECT_EQ(file.doubles_attribute("/bodies/b", "mode_count", 1).at(0), 3.0);
   EXPECT_EQ(file.dims("/bodies/b/modes/translations"),
-            (H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
-  EXPECT_EQ(file.dims("/bodies/b/modes/shapes"), (H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
+            (results::H5Dims{3, static_cast<hsize_t>(model.node_count()), 3}));
+  EXPECT_EQ(file.dims("/bodies/b/modes/shapes"), (results::H5Dims{static_cast<hsize_t>(model.dof_count()), 3}));
   EXPECT_EQ(file.strings("/bodies/b/dofs/names"),
             (std::vector<std::string>{"ux", "uy", "uz", "rx", "ry", "rz"}));
   std::filesystem::remove(path);
@@ -245,7 +245,7 @@ TEST(ModesFile, ControlCharactersInNamesAreInputErrors) {
 TEST(ModesFile, ReadingSomethingElseIsAnInputError) {
   EXPECT_THROW(read_modes(scratch_path("does_not_exist.h5")), InputError);
   const std::string path = scratch_path("not_modes.h5");
-  H5Group::create_file(path).write_attribute("format", "something-else");
+  results::H5Group::create_file(path).write_attribute("format", "something-else");
   EXPECT_THROW(read_modes(path), InputError);
   std::filesystem::remove(path);
 }

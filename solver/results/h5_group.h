@@ -1,6 +1,7 @@
-// A thin, checked layer over the HDF5 C API (1.10) for writing limber's modes.h5:
-// files and groups as RAII handles, whole datasets of doubles, ints and strings,
-// scalar attributes (reading: results/h5_reader.h and results/modes_reader.h). Datasets are row-major (C order), as HDF5 stores them.
+// A thin, checked layer over the HDF5 C API (1.10) for writing modes.h5 (modes_writer.h):
+// files and groups as RAII handles, whole datasets of doubles, ints and strings, scalar
+// attributes (reading: h5_reader.h and modes_reader.h). Datasets are row-major (C order), as
+// HDF5 stores them.
 // Files are written in the 1.8-compatible format (no "open for writing" flag that
 // would lock readers out after a crash; see docs/results-format.md).
 //
@@ -15,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace limber::io {
+namespace limber::results {
 
 using H5Dims = std::vector<hsize_t>;
 
@@ -44,4 +45,4 @@ class H5Group {
   std::string path_;
 };
 
-}  // namespace limber::io
+}  // namespace limber::results

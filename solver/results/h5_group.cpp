@@ -1,14 +1,12 @@
-#include "io/hdf5_file.h"
+#include "results/h5_group.h"
 
 #include "core/error.h"
 #include "results/h5_handle.h"
 #include "results/h5_write.h"
 
-namespace limber::io {
+namespace limber::results {
 
-using results::H5Handle;
-
-// A file or group identifier shared by the H5Group values that refer to it (results/h5_handle.h
+// A file or group identifier shared by the H5Group values that refer to it (h5_handle.h
 // closes it by its kind, as for every identifier here).
 struct H5Group::Handle {
   explicit Handle(hid_t id) : handle(id) {}
@@ -38,11 +36,11 @@ H5Handle string_type() {
   return H5Handle(type);
 }
 
-// Writes one dataset of `file_type` from memory of `memory_type` (results/h5_write.h, the
-// writing calls results.h5's writer uses too).
+// Writes one dataset of `file_type` from memory of `memory_type` (h5_write.h, the writing
+// calls results.h5's writer uses too).
 void write_dataset(hid_t location, const std::string& name, const std::string& path,
                    hid_t file_type, hid_t memory_type, const H5Dims& dims, const void* data) {
-  if (!results::try_write_dataset(location, name.c_str(), file_type, memory_type, dims, data)) {
+  if (!try_write_dataset(location, name.c_str(), file_type, memory_type, dims, data)) {
     fail("cannot write dataset", path + "/" + name);
   }
 }
@@ -87,17 +85,17 @@ void H5Group::write_strings(const std::string& name, const std::vector<std::stri
 void H5Group::write_attribute(const std::string& name, const std::string& value) const {
   H5Handle type = string_type();
   const char* text = value.c_str();
-  if (!results::try_write_scalar_attribute(self_->handle.get(), name.c_str(), type.get(),
+  if (!try_write_scalar_attribute(self_->handle.get(), name.c_str(), type.get(),
                                            type.get(), &text)) {
     fail("cannot write attribute", path_ + "@" + name);
   }
 }
 
 void H5Group::write_attribute(const std::string& name, int value) const {
-  if (!results::try_write_scalar_attribute(self_->handle.get(), name.c_str(), H5T_STD_I32LE,
+  if (!try_write_scalar_attribute(self_->handle.get(), name.c_str(), H5T_STD_I32LE,
                                            H5T_NATIVE_INT, &value)) {
     fail("cannot write attribute", path_ + "@" + name);
   }
 }
 
-}  // namespace limber::io
+}  // namespace limber::results
