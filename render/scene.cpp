@@ -182,8 +182,12 @@ struct Scene::Impl {
     u_norm = u_rel.rowwise().norm();
   }
 
-  // Bounds of everything drawn at one time, in ground and in camera axes (`view`).
-  Bounds bounds_at(const SampleBracket& at, const CameraAxes& axes, CameraBox& view) const {
+  // Bounds of everything drawn at one time, in ground and in camera axes (`view`); and, in
+  // `hull_W` (ground), the corners of a box about each body in its own axes (its deformed mesh,
+  // each primitive) and the joints: points whose convex hull holds the frame's content, tighter
+  // than an axis-aligned box when bodies lie askew (a deployed wing seen from iso).
+  Bounds bounds_at(const SampleBracket& at, const CameraAxes& axes, CameraBox& view,
+                   std::vector<Eigen::Vector3d>& hull_W) const {
     struct {
       Bounds ground;
       CameraBox* view;
@@ -199,19 +203,46 @@ struct Scene::Impl {
       const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
       for (const Shape& shape : body.shapes) {
         b.add(state.position + R * shape.offset_position, shape_radius(shape));
+        add_shape_corners(shape, state.position, R, hull_W);
       }
       if (body.flexible) {
         RowMatrix3d x_W;
         Eigen::VectorXd u_norm;
         deformed_nodes(index, state, x_W, u_norm);
+        CameraBox box_B;  // the deformed mesh in body axes
         for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
           b.add(x_W.row(k).transpose(), body.mesh.beam_radius);
+          box_B.add(R.transpose() * (x_W.row(k).transpose() - state.position), body.mesh.beam_radius);
         }
+        for (const Eigen::Vector3d& corner : box_B.corners()) hull_W.push_back(state.position + R * corner);
       }
-      if (body.shapes.empty() && !body.flexible) b.add(state.position);
+      if (body.shapes.empty() && !body.flexible) {
+        b.add(state.position);
+        hull_W.push_back(state.position);
+      }
     }
-    for (const JointTrack& joint : results.joints) b.add(joint_position(joint, at));
+    for (const JointTrack& joint : results.joints) {
+      b.add(joint_position(joint, at));
+      hull_W.push_back(joint_position(joint, at));
+    }
     return b.ground;
+  }
+
+  // The 8 corners of a primitive's box in its own axes (a cylinder's about its axis z, a
+  // sphere's cube), for a body at (p, R), into `hull_W`.
+  static void add_shape_corners(const Shape& shape, const Eigen::Vector3d& p, const Eigen::Matrix3d& R,
+                                std::vector<Eigen::Vector3d>& hull_W) {
+    const Eigen::Vector3d half = shape.type == Shape::Type::kBox        ? Eigen::Vector3d(0.5 * shape.size)
+                                 : shape.type == Shape::Type::kCylinder ? Eigen::Vector3d(shape.size.x(), shape.size.x(),
+                                                                                          0.5 * shape.size.z())
+                                                                        : Eigen::Vector3d::Constant(shape.size.x());
+    const Eigen::Matrix3d R_shape = R * shape.offset_orientation.toRotationMatrix();
+    CameraBox box;
+    box.lo = -half;
+    box.hi = half;
+    for (const Eigen::Vector3d& corner : box.corners()) {
+      hull_W.push_back(p + R * shape.offset_position + R_shape * corner);
+    }
   }
 
   bool by_stress() const { return options.color == ColorBy::kVonMises; }
@@ -253,6 +284,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   // Per sample, two boxes holding what is drawn, in camera and in ground axes: the fixed
   // camera fits the tighter of their hulls (a wing along ground y is tight in ground axes).
   std::vector<CameraBox> frame_boxes, ground_boxes;
+  std::vector<Eigen::Vector3d> body_hull_W;  // per sample, boxes about each body (bounds_at)
   std::vector<SampleBracket> samples;
   for (Eigen::Index i = 0; i < results.sample_count(); ++i) {
     if (results.time(i) >= t0 && results.time(i) <= t1) samples.push_back({i, 0.0});
@@ -260,7 +292,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   if (samples.empty()) samples.push_back(bracket(results.time, t0));
   for (const SampleBracket& at : samples) {
     CameraBox& view = frame_boxes.emplace_back();
-    const Bounds b = s.bounds_at(at, axes, view);
+    const Bounds b = s.bounds_at(at, axes, view, body_hull_W);
     ground_boxes.push_back(b);
     if (b.empty()) continue;
     all.add(b.lo);
@@ -305,6 +337,9 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
       all.add(p, 0.25 * triad_length);
       view.add(axes.of(p), 0.25 * triad_length);
       ground.add(p, 0.25 * triad_length);
+      CameraBox around;
+      around.add(p, 0.25 * triad_length);
+      for (const Eigen::Vector3d& corner : around.corners()) body_hull_W.push_back(corner);
     }
   }
   const double radius = std::max(all.radius(), 1e-6);
@@ -348,6 +383,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     for (const Eigen::Vector3d& corner : s.extras->glyph_corners()) {
       frame_boxes[k].add(axes.of(corner));
       ground_boxes[k].add(corner);
+      body_hull_W.push_back(corner);
     }
   }
 
@@ -409,17 +445,23 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
     window.y0 = options.time_stamp ? 0.03 + 1.6 * font / options.height : 0.03;
     if (options.forces) window.y0 = 0.17;  // above the arrow legends (scene_extras.h)
     window.y1 = content_top;
-    std::vector<Eigen::Vector3d> view_hull, ground_hull;
+    // Three hulls of the whole motion, each holding all of it: the corners of each frame's box
+    // in camera axes, in ground axes, and of the boxes about each body in its own axes; the
+    // camera fits the tightest (nearest eye).
+    std::vector<Eigen::Vector3d> view_hull, ground_hull, body_hull;
     for (const CameraBox& box : frame_boxes) {
       for (const Eigen::Vector3d& p : box.corners()) view_hull.push_back(p);
     }
     for (const CameraBox& box : ground_boxes) {
       for (const Eigen::Vector3d& p : box.corners()) ground_hull.push_back(axes.of(p));
     }
+    for (const Eigen::Vector3d& p : body_hull_W) body_hull.push_back(axes.of(p));
     const double aspect = static_cast<double>(options.width) / options.height;
-    const CameraPlacement by_view = fit_camera(view_hull, axes, kViewAngleDeg, aspect, window);
-    const CameraPlacement by_ground = fit_camera(ground_hull, axes, kViewAngleDeg, aspect, window);
-    const CameraPlacement& placement = by_view.eye_back <= by_ground.eye_back ? by_view : by_ground;
+    CameraPlacement placement = fit_camera(view_hull, axes, kViewAngleDeg, aspect, window);
+    for (const std::vector<Eigen::Vector3d>* hull : {&ground_hull, &body_hull}) {
+      const CameraPlacement other = fit_camera(*hull, axes, kViewAngleDeg, aspect, window);
+      if (other.eye_back < placement.eye_back) placement = other;
+    }
     vtkCamera* camera = s.renderer->GetActiveCamera();
     camera->SetViewAngle(kViewAngleDeg);
     camera->SetPosition(placement.eye.data());
