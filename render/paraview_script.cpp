@@ -1,5 +1,6 @@
 #include "paraview_script.h"
 
+#include "length_unit.h"
 #include "scene.h"
 #include "xdmf_layout.h"
 
@@ -82,6 +83,13 @@ deformed = WarpByVector(registrationName="deformed x{:g}".format(SCALE), Input=w
 deformed.Vectors = ["POINTS", "warp"]
 deformed.ScaleFactor = 1.0
 
+# Colours as the video's: the coloured quantity in the video's unit (the relative deflection in
+# mm when its largest value is millimetres, stress in MPa), its own array.
+colored = Calculator(registrationName=COLOR_ARRAY, Input=deformed)
+colored.AttributeType = "Cell Data" if COLOR_CENTER == "CELLS" else "Point Data"
+colored.ResultArrayName = COLOR_ARRAY
+colored.Function = "{} * {:.17g}".format(COLOR_SOURCE, COLOR_FACTOR)
+
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = VIEW_SIZE
 view.Background = BACKGROUND
@@ -90,14 +98,14 @@ try:
 except AttributeError:
     pass
 view.OrientationAxesVisibility = 1
-shown = Show(deformed, view)
+shown = Show(colored, view)
 shown.LineWidth = 2.0
 
 # Beams as solids: their lines swept into tubes of the section's radius (cell data beam_radius,
 # averaged onto the points; 0 on surfaces, where the tube filter draws nothing).
 displays = [shown]
 if BEAMS:
-    radius = CellDatatoPointData(registrationName="beam radius at points", Input=deformed)
+    radius = CellDatatoPointData(registrationName="beam radius at points", Input=colored)
     radius.PassCellData = 1
     lines = ExtractSurface(registrationName="surface", Input=radius)
     tubes = Tube(registrationName="beams as tubes", Input=lines)
@@ -107,11 +115,8 @@ if BEAMS:
     tubes.Capping = 1
     displays.append(Show(tubes, view))
 for display in displays:
-    if COLOR_BY == "stress":
-        ColorBy(display, ("CELLS", "stress"))
-    else:
-        ColorBy(display, ("POINTS", COLOR_BY))
-colors = GetColorTransferFunction(COLOR_BY)
+    ColorBy(display, (COLOR_CENTER, COLOR_ARRAY))
+colors = GetColorTransferFunction(COLOR_ARRAY)
 colors.ApplyPreset(COLOR_MAP, True)
 colors.RescaleTransferFunction(0.0, max(COLOR_MAX, 1e-300))
 colors.AutomaticRescaleRangeMode = "Never"
@@ -184,10 +189,20 @@ std::string paraview_script(const ParaViewView& view, const std::filesystem::pat
   text += fmt::format("DIRECTORY = {}  # where it was written (a fallback)\n", python_string(directory.string()));
   text += fmt::format("SCRIPT_NAME = {}\n", python_string(xdmf::kScriptName));
   text += fmt::format("SCALE = {:.17g}  # deformation scale of the relative deflection\n", view.scale);
-  text += fmt::format("COLOR_BY = \"{}\"\n", view.color_by_stress ? xdmf::sample::kStress
-                                                                   : xdmf::sample::kRelativeDeflectionMagnitude);
-  text += fmt::format("COLOR_TITLE = \"{}\"\n", view.color_by_stress ? "stress [Pa]" : "|u rel.| [m]");
-  text += fmt::format("COLOR_MAX = {:.17g}  # largest value over the samples\n", view.color_max);
+  // The video's quantity and unit (render/scene.cpp): |u_rel| in the length unit of its
+  // largest value, or stress in MPa.
+  const LengthUnit unit = view.color_by_stress ? LengthUnit{"MPa", 1e-6} : length_unit_for(view.color_max);
+  const std::string quantity = view.color_by_stress ? "von Mises" : view.relative ? "|u rel.|" : "|u|";
+  const std::string array_unit = unit.name == "\xC2\xB5m" ? "um" : unit.name;
+  const char* source = view.color_by_stress ? xdmf::sample::kStress : xdmf::sample::kRelativeDeflectionMagnitude;
+  text += fmt::format("COLOR_SOURCE = \"{}\"  # SI units\n", source);
+  text += fmt::format("COLOR_CENTER = \"{}\"\n", view.color_by_stress ? "CELLS" : "POINTS");
+  text += fmt::format("COLOR_FACTOR = {:g}  # {} per SI unit\n", unit.per_metre, unit.name);
+  const char* array = view.color_by_stress ? "stress" : "relative_deflection";
+  text += fmt::format("COLOR_ARRAY = \"{}_{}\"\n", array, array_unit);
+  text += fmt::format("COLOR_TITLE = {}\n", python_string(quantity + " [" + unit.name + "]"));
+  text += fmt::format("COLOR_MAX = {:.17g}  # largest value over the samples [{}]\n", unit.per_metre * view.color_max,
+                      unit.name);
   // ParaView's presets of the video's maps (render/color_map.h).
   text += fmt::format("COLOR_MAP = \"{}\"\n", view.viridis ? "Viridis (matplotlib)" : "Blue to Red Rainbow");
   text += fmt::format("VIEW_DIRECTION = {}  # focal point -> eye\n", triple(view.view_direction));

@@ -2,8 +2,9 @@
 // (render/xdmf_export.h) in the view the render drew (docs/rendering.md, "Open it in ParaView"):
 // the deformed shape at the render's scale (points warped by displacement + (s - 1)
 // relative_deflection, so joints stay connected at any scale s), coloured by the relative
-// deflection |u_rel| [m] (or by the element stress [Pa] when the run recorded it) with a colour
-// bar over the run's range, beams as tubes of their section radius, the render's camera (direction, up, 30 degree view angle, fitted to
+// deflection |u_rel| in the video's length unit (render/length_unit.h: mm for millimetres), or
+// by the element stress in MPa as the video with --color von_mises, with a colour bar over the
+// run's range, beams as tubes of their section radius, the render's camera (direction, up, 30 degree view angle, fitted to
 // the whole motion), and the time steps of the samples.
 //   paraview --script=open_in_paraview.py                   the GUI, ready
 //   pvpython open_in_paraview.py [--interact]                a window (interactive on request)
@@ -22,7 +23,8 @@ struct ParaViewView {
   double scale = 1.0;                       // deformation scale s
   bool color_by_stress = false;             // cell data "stress" instead of |u_rel| (as the video: --color)
   bool viridis = true;                      // the video's colour map (--color-map), else the rainbow
-  double color_max = 0.0;                   // colour range [0, color_max] [m] or [Pa]
+  bool relative = true;                     // |u_rel| differs from |u| (bar title "|u rel.|", else "|u|")
+  double color_max = 0.0;                   // colour range [0, color_max] [m] or [Pa] (SI)
   std::array<double, 3> view_direction{0.0, 0.0, 1.0};  // focal point -> eye, unit
   std::array<double, 3> focal_point{0.0, 0.0, 0.0};     // [m]
   double distance = 1.0;                    // eye to focal point [m]

@@ -144,6 +144,7 @@ RenderSummary render_results(const RenderOptions& options) {
       view.color_by_stress = options.color == ColorBy::kVonMises && scene.stress;
       view.viridis = options.color_map == ColorMap::kViridis;
       view.beams = scene.beams;
+      view.relative = scene.relative;
       view.color_max = view.color_by_stress ? scene.stress_max : scene.relative_deflection_max;
       view.width = options.width;
       view.height = options.height;

@@ -1,7 +1,7 @@
 // The XDMF 2 text of DIR/vtk/scene.xmf over scene.h5 (render/xdmf_layout.h): a Temporal
-// collection of the samples, each a Spatial collection of one Uniform grid per body with a
-// Mixed topology, XYZ geometry and the point and cell attributes the body has. Every DataItem
-// names a whole dataset, which both of ParaView 5.11's XDMF readers read.
+// collection of one Uniform grid per sample, all bodies in it, with a Mixed topology, XYZ
+// geometry and the point and cell attributes. Every DataItem names a whole dataset, which both
+// of ParaView 5.11's XDMF readers read. About 2 kB per sample, whatever the number of bodies.
 #pragma once
 
 #include <string>
@@ -9,17 +9,14 @@
 
 namespace limber::render {
 
-// One grid of each sample. A further grid per body (e.g. beam solids as surface cells) is one
-// more entry, with its own group holding its topology and per-sample points.
-struct XdmfBody {
-  std::string name;        // the case's name (the grid's name)
-  std::string group;       // its group in scene.h5, e.g. "/bodies/crank"
-  bool flexible = false;
-  bool stress = false;     // cell data "stress" present
+// The grid every sample shares the shape of.
+struct XdmfGrid {
   long points = 0, cells = 0, topology = 0;  // np, nc, nt
+  bool stress = false;                       // cell data "stress" present
 };
 
-// The description of `bodies` at `times` [s] (sample k's data under <group>/samples/<k>).
-std::string xdmf_description(const std::vector<XdmfBody>& bodies, const std::vector<double>& times);
+// The description of `grid` at `times` [s] (sample k's data under /samples/<k>); no grid at
+// all when it has no points.
+std::string xdmf_description(const XdmfGrid& grid, const std::vector<double>& times);
 
 }  // namespace limber::render

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -84,13 +85,25 @@ class SceneFile {
   H5Handle file_;
 };
 
-// What a body needs at every sample: its grid, its joint-node fit and its stress history.
+// What a body needs at every sample: its grid, its joint-node fit, its stress history and
+// where its points and cells lie in the scene's grid.
 struct BodyOutput {
   const BodyTrack* track = nullptr;
   BodyGrid grid;
   RigidFitBasis fit;
   const StressTrack* stress = nullptr;
-  H5Handle samples;  // its samples group
+  Eigen::Index first_point = 0, first_cell = 0;
+};
+
+// The scene's grid at one sample, all bodies (render/xdmf_layout.h).
+struct SampleData {
+  RowMatrix3d x_W, u_W, u_rel_W;
+  Eigen::VectorXd u_norm, u_rel_norm, stress;
+
+  SampleData(Eigen::Index np, Eigen::Index nc, bool with_stress)
+      : x_W(np, 3), u_W(RowMatrix3d::Zero(np, 3)), u_rel_W(RowMatrix3d::Zero(np, 3)),
+        u_norm(Eigen::VectorXd::Zero(np)), u_rel_norm(Eigen::VectorXd::Zero(np)),
+        stress(Eigen::VectorXd::Constant(with_stress ? nc : 0, std::numeric_limits<double>::quiet_NaN())) {}
 };
 
 // Cell data "stress" [Pa] in cell order (quads, lines, then the swept surfaces with their
@@ -115,41 +128,121 @@ void extend(XdmfSceneSummary& summary, const RowMatrix3d& x_W) {
     summary.lo[k] = first ? x_W.col(k).minCoeff() : std::min(summary.lo[k], x_W.col(k).minCoeff());
     summary.hi[k] = first ? x_W.col(k).maxCoeff() : std::max(summary.hi[k], x_W.col(k).maxCoeff());
   }
+  ++summary.grids;
 }
 
-// Writes one body's datasets at sample row i of results.h5 into `group`.
-void write_sample(const SceneFile& file, hid_t group, const BodyOutput& out, const BodyState& state, double t,
-                  XdmfSceneSummary& summary) {
+// Fills one body's rows of `data` at `state` (time t).
+void fill_body(SampleData& data, const BodyOutput& out, const BodyState& state, double t, XdmfSceneSummary& summary) {
   const BodyTrack& body = *out.track;
+  const Eigen::Index np = out.grid.points_B.rows(), p0 = out.first_point;
   const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
   const RowMatrix3d x_W = (out.grid.points_B * R.transpose()).rowwise() + state.position.transpose();
-  const auto np = static_cast<hsize_t>(x_W.rows());
-  file.reals(group, xdmf::sample::kPoints, {np, 3}, x_W.data());
+  data.x_W.middleRows(p0, np) = x_W;
   if (!body.flexible) {
     extend(summary, x_W);
     return;
   }
   const RowMatrix3d u_node_B = elastic_displacements(body.mesh, state.modal_coordinates);
   const RowMatrix3d u_B = at_grid_points(out.grid, u_node_B);
-  const RowMatrix3d u_rel_B =
-      at_grid_points(out.grid, relative_displacements(out.fit, body.mesh.nodes, u_node_B));
-  const RowMatrix3d u_W = u_B * R.transpose();
-  const RowMatrix3d u_rel_W = u_rel_B * R.transpose();
-  const Eigen::VectorXd u_norm = u_B.rowwise().norm();
-  const Eigen::VectorXd u_rel_norm = u_rel_B.rowwise().norm();
-  extend(summary, x_W + u_W);
-  if (np > 0) summary.relative_deflection_max = std::max(summary.relative_deflection_max, u_rel_norm.maxCoeff());
-  file.reals(group, xdmf::sample::kDisplacement, {np, 3}, u_W.data());
-  file.reals(group, xdmf::sample::kDisplacementMagnitude, {np}, u_norm.data());
-  file.reals(group, xdmf::sample::kRelativeDeflection, {np, 3}, u_rel_W.data());
-  file.reals(group, xdmf::sample::kRelativeDeflectionMagnitude, {np}, u_rel_norm.data());
+  const RowMatrix3d u_rel_B = at_grid_points(out.grid, relative_displacements(out.fit, body.mesh.nodes, u_node_B));
+  data.u_W.middleRows(p0, np) = u_B * R.transpose();
+  data.u_rel_W.middleRows(p0, np) = u_rel_B * R.transpose();
+  data.u_norm.segment(p0, np) = u_B.rowwise().norm();
+  data.u_rel_norm.segment(p0, np) = u_rel_B.rowwise().norm();
+  extend(summary, x_W + data.u_W.middleRows(p0, np));
+  if (np > 0) {
+    summary.relative_deflection_max =
+        std::max(summary.relative_deflection_max, data.u_rel_norm.segment(p0, np).maxCoeff());
+  }
   if (out.stress != nullptr) {
     const Eigen::VectorXd stress = cell_stress(body, out.grid, *out.stress, t);
-    file.reals(group, xdmf::sample::kStress, {static_cast<hsize_t>(stress.size())}, stress.data());
+    data.stress.segment(out.first_cell, stress.size()) = stress;
     for (double value : stress) {
       if (std::isfinite(value)) summary.stress_max = std::max(summary.stress_max, value);
     }
   }
+}
+
+// Writes sample k's group.
+void write_sample(const SceneFile& file, hid_t samples, long k, const SampleData& data) {
+  const H5Handle group = file.group(samples, xdmf::sample_name(k));
+  const auto np = static_cast<hsize_t>(data.x_W.rows());
+  file.reals(group.get(), xdmf::sample::kPoints, {np, 3}, data.x_W.data());
+  file.reals(group.get(), xdmf::sample::kDisplacement, {np, 3}, data.u_W.data());
+  file.reals(group.get(), xdmf::sample::kDisplacementMagnitude, {np}, data.u_norm.data());
+  file.reals(group.get(), xdmf::sample::kRelativeDeflection, {np, 3}, data.u_rel_W.data());
+  file.reals(group.get(), xdmf::sample::kRelativeDeflectionMagnitude, {np}, data.u_rel_norm.data());
+  if (data.stress.size() > 0) {
+    file.reals(group.get(), xdmf::sample::kStress, {static_cast<hsize_t>(data.stress.size())}, data.stress.data());
+  }
+}
+
+// Appends a body's Mixed topology to the scene's, its point indices moved by `first_point`.
+void append_topology(std::vector<int>& scene, const std::vector<int>& body, int first_point) {
+  for (std::size_t i = 0; i < body.size();) {
+    const int code = body[i];
+    scene.push_back(code);
+    ++i;
+    int n = code == xdmf::kTriangle ? 3 : 4;
+    if (code == xdmf::kPolyline || code == xdmf::kPolygon) {
+      n = body[i];
+      scene.push_back(n);
+      ++i;
+    }
+    for (int k = 0; k < n; ++k, ++i) scene.push_back(first_point + body[i]);
+  }
+}
+
+// The bodies' grids, fits and stress histories, placed one after the other.
+std::vector<BodyOutput> body_outputs(const Results& results,
+                                     const std::vector<std::optional<StressTrack>>& stresses) {
+  std::vector<BodyOutput> outputs(results.bodies.size());
+  Eigen::Index points = 0, cells = 0;
+  for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+    const BodyTrack& track = results.bodies[b];
+    BodyOutput& out = outputs[b];
+    out.track = &track;
+    out.grid = body_grid(track);
+    if (track.flexible) out.fit = rigid_fit_basis(track.mesh.nodes, joint_nodes(results, track));
+    if (track.flexible && stresses[b]) out.stress = &*stresses[b];
+    out.first_point = points;
+    out.first_cell = cells;
+    points += out.grid.points_B.rows();
+    cells += out.grid.cells;
+  }
+  return outputs;
+}
+
+// The grid's constant parts (topology, beam radius, body per cell) and one attribute group per
+// body saying where it lies.
+XdmfGrid write_constant_parts(const SceneFile& file, const std::vector<BodyOutput>& outputs) {
+  std::vector<int> topology, body;
+  std::vector<double> beam_radius;
+  XdmfGrid grid;
+  const H5Handle bodies = file.group(file.root(), xdmf::kBodies);
+  for (std::size_t b = 0; b < outputs.size(); ++b) {
+    const BodyOutput& out = outputs[b];
+    append_topology(topology, out.grid.topology, static_cast<int>(out.first_point));
+    beam_radius.insert(beam_radius.end(), out.grid.beam_radius.data(),
+                       out.grid.beam_radius.data() + out.grid.beam_radius.size());
+    body.insert(body.end(), static_cast<std::size_t>(out.grid.cells), static_cast<int>(b));
+    const H5Handle group = file.group(bodies.get(), results::link_name(out.track->name));
+    file.string_attribute(group.get(), results::kNameAttribute, out.track->name);
+    file.string_attribute(group.get(), xdmf::body::kKindAttribute, out.track->flexible ? "flexible" : "rigid");
+    file.int_attribute(group.get(), xdmf::body::kIndexAttribute, static_cast<int>(b));
+    file.int_attribute(group.get(), xdmf::body::kFirstPointAttribute, static_cast<int>(out.first_point));
+    file.int_attribute(group.get(), xdmf::body::kPointCountAttribute, static_cast<int>(out.grid.points_B.rows()));
+    file.int_attribute(group.get(), xdmf::body::kFirstCellAttribute, static_cast<int>(out.first_cell));
+    file.int_attribute(group.get(), xdmf::body::kCellCountAttribute, out.grid.cells);
+    grid.points += out.grid.points_B.rows();
+    grid.stress = grid.stress || out.stress != nullptr;
+  }
+  file.ints(file.root(), xdmf::kTopology, topology);
+  file.reals(file.root(), xdmf::kBeamRadius, {beam_radius.size()}, beam_radius.data());
+  file.ints(file.root(), xdmf::kBody, body);
+  grid.cells = static_cast<long>(body.size());
+  grid.topology = static_cast<long>(topology.size());
+  return grid;
 }
 
 }  // namespace
@@ -172,49 +265,28 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
   file.reals(file.root(), xdmf::kTime, {times.size()}, times.data());
   file.ints(file.root(), xdmf::kSampleRows, rows);
 
-  // Per body: its group with the grid's constant parts.
+  // The bodies one after the other in one grid; its constant parts.
   XdmfSceneSummary summary;
   const std::vector<std::optional<StressTrack>> stresses = read_stress_tracks(results);
-  const H5Handle bodies = file.group(file.root(), xdmf::kBodies);
-  std::vector<BodyOutput> outputs(results.bodies.size());
-  std::vector<XdmfBody> described;
-  for (std::size_t b = 0; b < results.bodies.size(); ++b) {
-    const BodyTrack& track = results.bodies[b];
-    BodyOutput& out = outputs[b];
-    out.track = &track;
-    out.grid = body_grid(track);
-    if (track.flexible) out.fit = rigid_fit_basis(track.mesh.nodes, joint_nodes(results, track));
-    if (track.flexible && stresses[b]) out.stress = &*stresses[b];
-    summary.stress = summary.stress || out.stress != nullptr;
+  const std::vector<BodyOutput> outputs = body_outputs(results, stresses);
+  const XdmfGrid grid = write_constant_parts(file, outputs);
+  for (const BodyOutput& out : outputs) {
     // Tubes in ParaView only for beams without sections (files before them).
+    const BodyTrack& track = *out.track;
     summary.beams = summary.beams || (track.flexible && track.mesh.lines.rows() > 0 && out.grid.solid_beam.empty());
-    const std::string link = results::link_name(track.name);
-    const H5Handle group = file.group(bodies.get(), link);
-    file.string_attribute(group.get(), results::kNameAttribute, track.name);
-    file.string_attribute(group.get(), xdmf::body::kKindAttribute, track.flexible ? "flexible" : "rigid");
-    file.int_attribute(group.get(), xdmf::body::kCellCountAttribute, out.grid.cells);
-    file.ints(group.get(), xdmf::body::kTopology, out.grid.topology);
-    const auto np = static_cast<hsize_t>(out.grid.points_B.rows());
-    file.reals(group.get(), xdmf::body::kBeamRadius, {static_cast<hsize_t>(out.grid.cells)},
-               out.grid.beam_radius.data());
-    if (!track.flexible) {
-      const RowMatrix3d zeros = RowMatrix3d::Zero(out.grid.points_B.rows(), 3);
-      file.reals(group.get(), xdmf::body::kZeroVectors, {np, 3}, zeros.data());
-      file.reals(group.get(), xdmf::body::kZeroScalars, {np}, zeros.col(0).eval().data());
-    }
-    out.samples = file.group(group.get(), xdmf::body::kSamples);
-    described.push_back({track.name, xdmf::at(xdmf::kBodies, link), track.flexible, out.stress != nullptr,
-                         static_cast<long>(np), out.grid.cells, static_cast<long>(out.grid.topology.size())});
+    summary.relative = summary.relative || !out.fit.anchors.empty();
   }
+  summary.stress = grid.stress;
 
-  // Every sample of every body.
+  // Every sample.
+  const H5Handle samples = file.group(file.root(), xdmf::kSamples);
   ProgressBar bar("ParaView scene", static_cast<int>(times.size()), progress);
   for (std::size_t k = 0; k < times.size(); ++k) {
-    for (BodyOutput& out : outputs) {
-      const H5Handle group = file.group(out.samples.get(), xdmf::sample_name(static_cast<long>(k)));
-      write_sample(file, group.get(), out, body_state(*out.track, {rows[k], 0.0}), times[k], summary);
-      if (out.grid.points_B.rows() > 0) ++summary.grids;
+    SampleData data(grid.points, grid.cells, grid.stress);
+    for (const BodyOutput& out : outputs) {
+      fill_body(data, out, body_state(*out.track, {rows[k], 0.0}), times[k], summary);
     }
+    write_sample(file, samples.get(), static_cast<long>(k), data);
     bar.update(static_cast<int>(k) + 1);
   }
   summary.samples = static_cast<int>(times.size());
@@ -222,7 +294,7 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
   // The description beside it.
   const std::filesystem::path xmf = vtk_directory / xdmf::kDescriptionName;
   std::ofstream out(xmf);
-  out << xdmf_description(described, times);
+  out << xdmf_description(grid, times);
   if (!out) throw std::runtime_error("cannot write '" + xmf.string() + "'");
   return summary;
 }

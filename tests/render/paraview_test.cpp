@@ -1,12 +1,14 @@
 // ParaView itself opens limber's output (pvpython on tests/render/paraview_check.py): the
 // VTU/PVD series with its PVD reader; the one-file scene (scene.xmf over scene.h5) with both of
-// its XDMF readers, every time step against the VTU of the same sample; and
+// its XDMF readers, every time step against the VTUs of the same sample and one deformed point
+// against the closed form; and
 // open_in_paraview.py under pvbatch saves a screenshot of the ready view. Skipped when pvpython
 // (pvbatch, and xvfb-run for its display) is not installed: scripts/install-paraview.sh, which
 // the README's test command runs, installs them.
 #include "render_job.h"
 #include "vtk_export.h"
 #include "xdmf_export.h"
+#include "xdmf_grids.h"
 
 #include "test_dir.h"
 #include "test_results.h"
@@ -107,7 +109,8 @@ TEST(ParaView, OpensTheSeriesWithEveryTimeAndPoint) {
 }
 
 // The test scene without and with its beam's section (a hollow tube: its swept surface's
-// points and cells follow the mesh's in both files).
+// points and cells follow the mesh's in both files): both readers give one grid per time step,
+// the VTUs' points, cells and arrays one after the other.
 TEST(ParaView, BothXdmfReadersReadEveryStepAsTheVtuSeries) {
   REQUIRE_PROGRAM(pvpython, "pvpython");
   for (const bool section : {false, true}) {
@@ -120,10 +123,25 @@ TEST(ParaView, BothXdmfReadersReadEveryStepAsTheVtuSeries) {
     write_xdmf_scene(results, dir / "vtk", t0, t1, false);
     write_vtk_series(results, dir / "vtk", t0, t1);
 
-    const std::string bodies = std::to_string(results.bodies.size());
+    // The grid's points (every body's, one after the other in results.h5's order), and the
+    // plate's far corner node (lx, ly) at t = 0.3 s (the plate bent; flat at the last sample):
+    // origin + (lx, ly, 0) + u, u the closed form results.h5 holds (the plate frame is not
+    // turned).
+    long points = 0, corner = -1;
+    for (const BodyTrack& body : results.bodies) {
+      if (body.name == "plate0") corner = points + (scene.nx + 1) * (scene.ny + 1) - 1;
+      points += body_grid(body).points_B.rows();
+    }
+    ASSERT_GE(corner, 0);
+    const double t = results.time(3);
+    ASSERT_GT(testing::plate_displacement(scene, scene.lx, scene.ly, t).norm(), 1e-3);
+    const Eigen::Vector3d x = testing::plate_origin(0) + Eigen::Vector3d(scene.lx, scene.ly, 0.0) +
+                              testing::plate_displacement(scene, scene.lx, scene.ly, t);
+    char point[160];
+    std::snprintf(point, sizeof point, " %ld %ld %.17g %.17g %.17g %.17g", points, corner, t, x.x(), x.y(), x.z());
     for (const char* reader : {"xdmf", "xdmf3"}) {
       EXPECT_EQ(run(pvpython->string() + " " + LIMBER_PARAVIEW_CHECK + " " + reader + " " +
-                        (dir / "vtk" / "scene.xmf").string() + " " + bodies + time_arguments(results),
+                        (dir / "vtk" / "scene.xmf").string() + point + time_arguments(results),
                     dir / (std::string(reader) + ".log")),
                 "")
           << (section ? "with the beam's section" : "without sections");

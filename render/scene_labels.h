@@ -1,0 +1,62 @@
+// The 2D texts of a scene and where they sit (render/scene.h): the title top left, the
+// deformation legend under it on the right, the time and event stamps bottom left, the colour
+// bar on the right, and the arrow legends of scene_extras.h; their pixels as last drawn (the CPU
+// FXAA leaves them alone; the layout tests read them). Sizes grow with the frame height (issue
+// 28: glyphs over 14 px tall at 720p). Internal to limber_render (exposes VTK types).
+#pragma once
+
+#include "relative_deflection.h"
+#include "scene.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <vector>
+
+class vtkLookupTable;
+class vtkRenderer;
+class vtkScalarBarActor;
+class vtkTextActor;
+
+namespace limber::render {
+
+class SceneLabels {
+ public:
+  // Texts added to `renderer` (which must outlive this) for a frame of `options`' size.
+  SceneLabels(vtkRenderer* renderer, const RenderOptions& options);
+
+  // Texts drawn by others (scene_extras.h's arrow legends), counted among the overlay's.
+  void add_texts(const std::vector<vtkSmartPointer<vtkTextActor>>& texts);
+  // The colour bar over `lut`, titled `title` (with its unit), in kColorBarBox.
+  void add_color_bar(vtkLookupTable* lut, const std::string& title);
+  // The title, the deformation legend (what is scaled; per flexible body, the joints its fit
+  // goes through: `fits` and `fit_joints` in results.bodies order) and the time and event
+  // stamps. Returns the top of what is left for the content, normalised viewport y: under the
+  // legend's last line.
+  double add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
+                                     const std::vector<std::vector<std::string>>& fit_joints);
+
+  bool has_color_bar() const { return bar_ != nullptr; }
+  // The time stamp's font size [pixels].
+  int stamp_font() const;
+  // The time stamp (with the slow-motion factor) and the events at time t [s] (event_stamp.h).
+  void update(const Results& results, double t);
+
+  // See Scene::overlay_boxes and Scene::drawn_texts.
+  std::vector<PixelBox> overlay_boxes() const;
+  std::vector<Scene::DrawnText> drawn_texts() const;
+
+ private:
+  void add_text(const std::string& text, int size, double x, double y, bool right);
+
+  vtkRenderer* renderer_;
+  RenderOptions options_;
+  vtkSmartPointer<vtkTextActor> time_text_;
+  vtkSmartPointer<vtkTextActor> event_text_;
+  double event_hold_ = 0.0;  // simulated time an event stays stamped [s] (event_stamp.h)
+  std::vector<vtkSmartPointer<vtkTextActor>> texts_;  // every text drawn (title, note, time)
+  vtkSmartPointer<vtkScalarBarActor> bar_;            // null without flexible bodies
+  int bar_font_ = 10;                                 // colour bar label size [pixels]
+};
+
+}  // namespace limber::render
