@@ -37,7 +37,8 @@
 // reference those are the hinge springs and constraint forces acting through the joint nodes'
 // rotations in the attachment modes, constant to six digits over time, and without them
 // Newton contracts at only 0.05 to 0.13 per iteration. Either is kept across
-// steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old.
+// steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old (a sparse
+// system's structured matrix: 2 steps, as its coupled stiffness turns with the bodies).
 // A step whose Newton iteration fails (no convergence in max_newton_iterations, divergence or
 // non-finite values) is rejected and retried with h/2, at most max_step_halvings times, then the
 // run stops with kConvergenceFailures (or kNaN).
