@@ -28,7 +28,8 @@
 // force derivatives of quadratic-velocity forces, force elements and the constraint forces'
 // change with q and costs no residual. A sparse system (MechanicalSystem::sparse: a nonlinear
 // body's node bodies) gets the same matrices assembled sparse and factorised by KLU
-// (sparse_lu.h), its residuals with the sparse M; others stay dense (PartialPivLU). When Newton converges slowly with it even fresh
+// (sparse_lu.h), its residuals with the sparse M; its entries are scattered into slots found once
+// per sparsity pattern; others stay dense (PartialPivLU). When Newton converges slowly with it even fresh
 // (contraction rate > 0.1), a forward difference of the scaled residual in ξ (exact tangent
 // operator included, analytic in λ) replaces it for the next 20 steps, and (dense systems)
 // what that matrix holds beyond the structured one is kept and added to every structured
@@ -36,7 +37,8 @@
 // reference those are the hinge springs and constraint forces acting through the joint nodes'
 // rotations in the attachment modes, constant to six digits over time, and without them
 // Newton contracts at only 0.05 to 0.13 per iteration. Either is kept across
-// steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old.
+// steps and rebuilt when Newton slows down, fails, h changes, or it is 20 steps old (a sparse
+// system's structured matrix: 2 steps, as its coupled stiffness turns with the bodies).
 // A step whose Newton iteration fails (no convergence in max_newton_iterations, divergence or
 // non-finite values) is rejected and retried with h/2, at most max_step_halvings times, then the
 // run stops with kConvergenceFailures (or kNaN).
@@ -161,6 +163,11 @@ class GeneralizedAlpha final : public Integrator {
   bool build_structured_jacobian(double h);
   // Its ξ block without C, for a dense system.
   void dense_structured_block(double h, Eigen::MatrixXd& block);
+  // The same matrix for a sparse system, in J_sparse_ (its pattern kept across matrices).
+  void sparse_structured_matrix(double h);
+  // J_sparse_'s pattern for the structured matrix (M, the diagonal, the coupled derivatives, G
+  // and Gᵀ, and G's entries seen before) and where each of their entries lands (slots_).
+  void build_sparse_pattern(bool coupled);
   // Factorises the iteration matrix (J_, or J_sparse_ for a sparse system); false when singular.
   bool factorize_iteration_matrix();
   // Δ = −J⁻¹ r with the factorised iteration matrix.
@@ -207,7 +214,16 @@ class GeneralizedAlpha final : public Integrator {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::SparseMatrix<double> J_sparse_;
   SparseLu sparse_lu_;
-  std::vector<Eigen::Triplet<double>> entries_;  // J_sparse_'s entries while it is assembled
+  // Where each entry of the sparse structured matrix lands in J_sparse_'s values: per nonzero of
+  // M_sparse and of coupled_, per diagonal entry, and per entry of G (column-major, nc x nv) in
+  // both places (−1: not in the pattern). Valid while slots_valid_ (a matrix of differences
+  // replaces J_sparse_'s pattern).
+  struct SparseSlots {
+    std::vector<int> mass, coupled, diagonal, g, g_transposed;
+    std::vector<int> mass_pattern, coupled_pattern;  // the patterns they were found for
+  };
+  SparseSlots slots_;
+  bool slots_valid_ = false;
   double jacobian_h_ = 0.0;
   int jacobian_age_ = 0;  // steps accepted since it was built
   bool jacobian_structured_ = false;  // lu_ holds the structured matrix (else differences)

@@ -15,6 +15,7 @@ struct SparseLu::Factors {
   klu_numeric* numeric = nullptr;
   std::vector<int> outer, inner;  // the pattern `symbolic` was analysed for
   double rcond = 0.0;
+  double pivoted_rcond = 0.0;  // of the last factorisation with a pivot search
 
   Factors() { klu_defaults(&common); }
   ~Factors() {
@@ -47,12 +48,23 @@ bool SparseLu::factorize(const Eigen::SparseMatrix<double>& A) {
     f.symbolic = klu_analyze(n, f.outer.data(), f.inner.data(), &f.common);
     LIMBER_DEMAND(f.symbolic != nullptr);
   }
+  double* values = const_cast<double*>(A.valuePtr());
+  // The same pattern: refactorise with the last pivot order (no search, about half the cost),
+  // kept when its condition estimate is as good as a tenth of the pivoted one's.
+  if (same_pattern && f.numeric && klu_refactor(f.outer.data(), f.inner.data(), values, f.symbolic, f.numeric, &f.common)) {
+    klu_rcond(f.symbolic, f.numeric, &f.common);
+    if (f.common.rcond >= 0.1 * f.pivoted_rcond && f.common.rcond > 0.0) {
+      f.rcond = f.common.rcond;
+      return true;
+    }
+  }
   f.free_numeric();
   f.rcond = 0.0;
-  f.numeric = klu_factor(f.outer.data(), f.inner.data(), const_cast<double*>(A.valuePtr()), f.symbolic, &f.common);
+  f.numeric = klu_factor(f.outer.data(), f.inner.data(), values, f.symbolic, &f.common);
   if (!f.numeric) return false;
   klu_rcond(f.symbolic, f.numeric, &f.common);
   f.rcond = f.common.rcond;
+  f.pivoted_rcond = f.rcond;
   return true;
 }
 

@@ -5,7 +5,9 @@
 // constraint rows), a saddle-point matrix whose zero block needs pivoting across rows, which a
 // Cholesky or an LDLᵀ without pivoting cannot factorise.
 // The ordering is analysed once per sparsity pattern and reused while the pattern stays the
-// same (the entries change every factorisation, the pattern rarely).
+// same (the entries change every factorisation, the pattern rarely); on the same pattern the
+// factors are first recomputed with the last pivot order (klu_refactor), and pivoted afresh
+// when that order's condition estimate falls below a tenth of the last pivoted one's.
 #pragma once
 
 #include <memory>

@@ -58,7 +58,10 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
   const Eigen::Vector3d a = mi.R_WF.col(e.axis_i);
   ws.g_t(row) = -f.first;
   ws.gamma(row) = 0.0;
-  ws.G.row(row).setZero();
+  // Only the two frames' body blocks are ever written (add_row_product; G starts zero): clear
+  // those, not the whole row (a strided pass over a nonlinear body's hundreds of columns).
+  ws.G.row(row).segment(mi.body_v_offset, mi.body_nv).setZero();
+  ws.G.row(row).segment(mj.body_v_offset, mj.body_nv).setZero();
   switch (e.kind) {
     case EquationKind::kDot1: {
       const Eigen::Vector3d b = mj.R_WF.col(e.axis_j);

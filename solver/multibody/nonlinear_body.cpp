@@ -1,5 +1,9 @@
 #include "multibody/nonlinear_body.h"
 
+#include <algorithm>
+
+#include "core/error.h"
+
 #include "multibody/rotation.h"
 #include "nonlinear_beam/corotational_beam.h"
 
@@ -34,7 +38,15 @@ ElementInBodies element_in_bodies(const NonlinearBody& body, const nonlinear_bea
   ElementInBodies out;
   // T_e is block diagonal: its four 3 x 3 blocks, each transposed.
   for (int k = 0; k < 4; ++k) out.force.segment<3>(3 * k) = t_e.block<3, 3>(3 * k, 3 * k).transpose() * response.force.segment<3>(3 * k);
-  if (with_stiffness) out.stiffness = t_e.transpose() * response.tangent * t_e;
+  // Block by block: T_e is block diagonal.
+  if (with_stiffness) {
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < 4; ++j) {
+        out.stiffness.block<3, 3>(3 * i, 3 * j) =
+            t_e.block<3, 3>(3 * i, 3 * i).transpose() * response.tangent.block<3, 3>(3 * i, 3 * j) * t_e.block<3, 3>(3 * j, 3 * j);
+      }
+    }
+  }
   return out;
 }
 
@@ -44,6 +56,47 @@ std::vector<Eigen::Matrix3d> rotation_matrices(const nonlinear_beam::BeamState& 
   out.reserve(state.rotations.size());
   for (const Eigen::Quaterniond& r : state.rotations) out.push_back(r.toRotationMatrix());
   return out;
+}
+
+const Body& node_body(const Model& model, const NonlinearBody& body, int node) {
+  return model.bodies[static_cast<std::size_t>(body.node_bodies[static_cast<std::size_t>(node)])];
+}
+
+// Position of entry (row, col) in a compressed column-major matrix whose pattern holds it.
+int slot_of(const Eigen::SparseMatrix<double>& A, int row, int col) {
+  const int* begin = A.innerIndexPtr() + A.outerIndexPtr()[col];
+  const int* end = A.innerIndexPtr() + A.outerIndexPtr()[col + 1];
+  const int* at = std::lower_bound(begin, end, row);
+  LIMBER_DEMAND(at != end && *at == row);
+  return static_cast<int>(at - A.innerIndexPtr());
+}
+
+// Adds a dense 6 x 6 block at (row, col) of `A`'s pattern, column by column.
+void add_block_in_place(Eigen::SparseMatrix<double>& A, int row, int col, const Eigen::Matrix<double, 6, 6>& block) {
+  for (int j = 0; j < 6; ++j) {
+    double* column = A.valuePtr() + slot_of(A, row, col + j);
+    for (int i = 0; i < 6; ++i) column[i] += block(i, j);
+  }
+}
+
+// The pattern of nonlinear_body_stiffness: the node-pair blocks of every element.
+void build_stiffness_pattern(const Model& model, Eigen::SparseMatrix<double>& K) {
+  std::vector<Eigen::Triplet<double>> pattern;
+  for (const NonlinearBody& body : model.nonlinear_bodies) {
+    for (const nonlinear_beam::CorotationalBeam& element : body.structure->elements) {
+      for (const int a : element.nodes) {
+        for (const int b : element.nodes) {
+          const int row = node_body(model, body, a).v_offset, col = node_body(model, body, b).v_offset;
+          for (int j = 0; j < 6; ++j) {
+            for (int i = 0; i < 6; ++i) pattern.emplace_back(row + i, col + j, 0.0);
+          }
+        }
+      }
+    }
+  }
+  K.resize(model.nv, model.nv);
+  K.setFromTriplets(pattern.begin(), pattern.end());
+  K.makeCompressed();
 }
 
 }  // namespace
@@ -74,14 +127,10 @@ void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eig
   }
 }
 
-bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q,
-                                  std::vector<Eigen::Triplet<double>>& K) {
-  // Appends the entries of a dense block at (row, col).
-  const auto add_block = [&K](int row, int col, const auto& block) {
-    for (int j = 0; j < block.cols(); ++j) {
-      for (int i = 0; i < block.rows(); ++i) K.emplace_back(row + i, col + j, block(i, j));
-    }
-  };
+bool nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& K) {
+  if (model.nonlinear_bodies.empty()) return false;
+  if (K.rows() != model.nv || K.cols() != model.nv || K.nonZeros() == 0) build_stiffness_pattern(model, K);
+  std::fill(K.valuePtr(), K.valuePtr() + K.nonZeros(), 0.0);
   for (const NonlinearBody& body : model.nonlinear_bodies) {
     const nonlinear_beam::BeamState state = nonlinear_body_state(model, body, q);
     const std::vector<Eigen::Matrix3d> rotations = rotation_matrices(state);
@@ -91,19 +140,20 @@ bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q,
       const ElementInBodies e = element_in_bodies(body, element, state, rotations, true);
       for (int i = 0; i < 2; ++i) {
         moments[static_cast<std::size_t>(element.nodes[i])] += e.force.segment<3>(6 * i + 3);
-        const int row = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[i]])].v_offset;
+        const int row = node_body(model, body, element.nodes[i]).v_offset;
         for (int j = 0; j < 2; ++j) {
-          const int col = model.bodies[static_cast<std::size_t>(body.node_bodies[element.nodes[j]])].v_offset;
-          add_block(row, col, e.stiffness.block<6, 6>(6 * i, 6 * j));
+          add_block_in_place(K, row, node_body(model, body, element.nodes[j]).v_offset, e.stiffness.block<6, 6>(6 * i, 6 * j));
         }
       }
     }
     for (std::size_t k = 0; k < body.node_bodies.size(); ++k) {
-      const int offset = model.bodies[static_cast<std::size_t>(body.node_bodies[k])].v_offset;
-      add_block(offset + 3, offset + 3, skew(moments[k]));
+      const int offset = node_body(model, body, static_cast<int>(k)).v_offset;
+      Eigen::Matrix<double, 6, 6> block = Eigen::Matrix<double, 6, 6>::Zero();
+      block.bottomRightCorner<3, 3>() = skew(moments[k]);
+      add_block_in_place(K, offset, offset, block);
     }
   }
-  return !model.nonlinear_bodies.empty();
+  return true;
 }
 
 double nonlinear_body_strain_energy(const Model& model, const Eigen::VectorXd& q) {

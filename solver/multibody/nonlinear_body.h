@@ -31,10 +31,11 @@ nonlinear_beam::BeamState nonlinear_body_state(const Model& model, const Nonline
 // Q += −Tᵀ f_int over every nonlinear body of the model (Q: nv).
 void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eigen::VectorXd& Q);
 
-// The beams' stiffness above as (row, column, value) entries of the nv x nv K, appended to K
-// (an entry may repeat: they add). Returns false when the model has no nonlinear body.
-bool add_nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q,
-                                  std::vector<Eigen::Triplet<double>>& K);
+// The beams' stiffness K above as one nv x nv sparse matrix. Its pattern (every element's
+// node-pair 6 x 6 blocks) is built on the first call, or when K has another size; later calls
+// write the values in place, so the pattern stays the same. Returns false (K untouched) when
+// the model has no nonlinear body.
+bool nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& K);
 
 // Strain energy of the beams of every nonlinear body [J] (f_int is its gradient).
 double nonlinear_body_strain_energy(const Model& model, const Eigen::VectorXd& q);

@@ -40,6 +40,7 @@ struct CorotationalMotion {
   std::function<void(double t, Eigen::VectorXd& u)> prescribe;  // sets u at those DOFs
   Eigen::VectorXd added_mass;  // per DOF [kg or kg m²], or empty
   Eigen::VectorXd v0;          // initial rates per DOF, or empty (rest)
+  Eigen::VectorXd load;        // constant dead load per DOF [N or N m] (gravity), or empty
 };
 
 // Integrates from the straight beam (moving at motion.v0) to t_end and calls record(t, u) at
@@ -100,8 +101,11 @@ inline void integrate_corotational_beam(const CorotationalBeam& p, const Corotat
     }
   };
   Eigen::VectorXd u = Eigen::VectorXd::Zero(n), acc = u, f_old(n), f_new(n);
+  if (motion.load.size() == n) acc = motion.load.cwiseQuotient(mass);
+  for (int d : motion.prescribed) acc(d) = 0.0;
   Eigen::VectorXd v = motion.v0.size() == n ? motion.v0 : Eigen::VectorXd::Zero(n);
-  internal(u, f_old, nullptr);  // zero: the start is straight, so a_0 = 0 on the free DOFs
+  // f_int is zero on the straight start, so a_0 = load / mass on the free DOFs.
+  internal(u, f_old, nullptr);
   const double h = p.step, al = p.hht_alpha;
   const double beta = (1 - al) * (1 - al) / 4, gamma = 0.5 - al;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
@@ -121,6 +125,7 @@ inline void integrate_corotational_beam(const CorotationalBeam& p, const Corotat
       for (int i = 0; i < nf; ++i) {
         const int d = free_dofs[i];
         residual(i) = mass(d) * a_new(d) + (1 + al) * f_new(d) - al * f_old(d);
+        if (motion.load.size() == n) residual(i) -= motion.load(d);
       }
       for (auto& tr : triplets) tr = Eigen::Triplet<double>(tr.row(), tr.col(), (1 + al) * tr.value());
       for (int i = 0; i < nf; ++i) triplets.emplace_back(i, i, mass(free_dofs[i]) / (beta * h * h));

@@ -1,10 +1,12 @@
 // limber_bench_nonlinear_rod: the nonlinear rod in a mechanism (issue 27), through the run driver
 // (no file). (1) The seed set-up (cases/slider_crank_seed_setup_nonlinear.yaml) for `t_end`
 // seconds: wall time, steps, Newton iterations and iteration matrices, and the peak mid-span
-// deflection over the first 0.3 s. (2) The small-deformation limit on cases/slider_crank.yaml
-// (0.05 m crank, spin-up ramp): the modal rod (5 modes) and the nonlinear rod, both undamped and
-// without stress output (the case's text edited in memory), compared in the peak deflection and
-// the peak |R3| reaction. Not a test: prints figures for docs/nonlinear-beams.md.
+// deflection over the first 0.3 s, and the accuracy check's warnings. (2) The small-deformation
+// limit on cases/slider_crank.yaml (0.05 m crank, spin-up ramp): the nonlinear rod, the modal rod
+// (5 and 20 modes, inertia-only and full geometric stiffening), all undamped and without stress
+// output (the case's text edited in memory), and the planar co-rotational rod of
+// corotational_rod.h, compared in the peak deflection and the peak |R3| reaction. Not a test:
+// prints figures for docs/nonlinear-beams.md.
 //   limber_bench_nonlinear_rod [t_end of the seed run, default 1] [t_end of the comparison, default 0.5]
 //                              [step of the seed run, default the case's 1e-4 s]
 #include <fmt/format.h>
@@ -21,6 +23,8 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "corotational_rod.h"
+#include "multibody/time_function.h"
 #include "run/run_driver.h"
 
 namespace {
@@ -96,22 +100,61 @@ int main(int argc, char** argv) {
              seed_end, s.wall_seconds, cpu_seconds(), s.statistics.steps, seed_step > 0.0 ? seed_step : 1e-4, s.statistics.newton_iterations,
              s.statistics.jacobian_evaluations, s.statistics.rejected_steps, s.accurate() ? "ok" : "inaccurate",
              s.accuracy.energy_relative);
+  for (const std::string& warning : s.accuracy.warnings) fmt::print("  accuracy warning: {}\n", warning);
   fmt::print("  peak mid-span deflection over [0, 0.3] s: {:.3f} mm (unreduced co-rotational reference 38.5 mm)\n",
              1e3 * peak(seed.deflection, seed.time, 0.3));
 
-  // (2) The small-deformation limit: modal and nonlinear rods, both undamped, no stress output.
+  // (2) The small-deformation limit: modal rods (5 and 20 modes, with the default inertia-only
+  // and with the full geometric stiffening) and the nonlinear rod, all undamped, no stress
+  // output; and the independent planar co-rotational rod (corotational_rod.h) on the same
+  // spin-up and gravity, its crank pin prescribed.
   if (limit_end <= 0.0) return 0;
   std::string modal = read_text(cases + "/slider_crank.yaml");
   modal = replaced(modal, "    damping: 0.01                   # ratio of critical, every mode\n", "    damping: 0\n");
   modal = replaced(modal, "    stress: {elements: all, every: 10}", "   ");
   const std::string nonlinear = replaced(modal, "    damping: 0\n", "    damping: 0\n    formulation: nonlinear\n");
-  const Histories m = run_text(modal, limit_end), n = run_text(nonlinear, limit_end);
-  const double dm = peak(m.deflection, m.time, limit_end), dn = peak(n.deflection, n.time, limit_end);
-  const double rm = peak(m.r3, m.time, limit_end), rn = peak(n.r3, n.time, limit_end);
-  fmt::print("slider_crank.yaml, 0 to {} s, undamped: modal rod {:.1f} s wall, nonlinear rod {:.1f} s wall\n", limit_end,
-             m.summary.wall_seconds, n.summary.wall_seconds);
-  fmt::print("  peak deflection: modal {:.4f} mm, nonlinear {:.4f} mm ({:+.2f} %)\n", 1e3 * dm, 1e3 * dn,
-             100.0 * (dn - dm) / dm);
-  fmt::print("  peak |R3|: modal {:.3f} N, nonlinear {:.3f} N ({:+.2f} %)\n", rm, rn, 100.0 * (rn - rm) / rm);
+  const std::string stiffened = replaced(modal, "    damping: 0\n", "    damping: 0\n    geometric_stiffening: true\n");
+  const auto with_modes = [](const std::string& text, int modes) {
+    return replaced(text, "      normal: 5\n", fmt::format("      normal: {}\n", modes));
+  };
+  const Histories n = run_text(nonlinear, limit_end);
+  const double dn = peak(n.deflection, n.time, limit_end), rn = peak(n.r3, n.time, limit_end);
+  fmt::print("slider_crank.yaml, 0 to {} s, undamped: nonlinear rod {:.1f} s wall, peak deflection {:.4f} mm, "
+             "peak |R3| {:.3f} N, {} steps, {} Newton iterations\n",
+             limit_end, n.summary.wall_seconds, 1e3 * dn, rn, n.summary.statistics.steps,
+             n.summary.statistics.newton_iterations);
+  for (const int modes : {5, 20}) {
+    for (const bool full : {false, true}) {
+      const Histories m = run_text(with_modes(full ? stiffened : modal, modes), limit_end);
+      const double dm = peak(m.deflection, m.time, limit_end), rm = peak(m.r3, m.time, limit_end);
+      double rms = 0.0, scale = 0.0;
+      for (std::size_t k = 0; k < std::min(m.deflection.size(), n.deflection.size()); ++k) {
+        rms += std::pow(m.deflection[k] - n.deflection[k], 2);
+        scale += std::pow(n.deflection[k], 2);
+      }
+      fmt::print("  modal rod, {:2d} modes, stiffening {:12s}: peak deflection {:.4f} mm ({:+.2f} % from the nonlinear "
+                 "rod), rms difference {:.2f} %, peak |R3| {:.3f} N ({:+.2f} %)\n",
+                 modes, full ? "true" : "inertia_only", 1e3 * dm, 100.0 * (dn - dm) / dm, 100.0 * std::sqrt(rms / scale),
+                 rm, 100.0 * (rn - rm) / rm);
+    }
+  }
+  // The planar co-rotational rod: the seed set-up's rod on this case's crank, ramp and gravity.
+  test::CorotationalRodSetup planar = test::seed_setup_rod(100, 2e-5);
+  planar.crank = 0.05;
+  planar.omega = 0.0;
+  const multibody::TimeFunction ramp =
+      multibody::TimeFunction::ramp(0.0, 125.66370614359172, 0.1, multibody::RampShape::kQuintic);
+  planar.angle = [&ramp](double t) { return ramp.evaluate(t).value; };
+  planar.gravity = 9.81;
+  const std::vector<double> reference = test::corotational_midspan_deflection(planar, limit_end, 1e-3);
+  double rms = 0.0, scale = 0.0, dp = 0.0;
+  for (std::size_t k = 0; k < std::min(reference.size(), n.deflection.size()); ++k) {
+    dp = std::max(dp, std::abs(reference[k]));
+    rms += std::pow(std::abs(reference[k]) - std::abs(n.deflection[k]), 2);
+    scale += std::pow(reference[k], 2);
+  }
+  fmt::print("  planar co-rotational rod (100 elements, HHT h = 2e-5 s): peak deflection {:.4f} mm ({:+.2f} % from the "
+             "nonlinear rod), rms difference of |deflection| {:.2f} %\n",
+             1e3 * dp, 100.0 * (dn - dp) / dp, 100.0 * std::sqrt(rms / scale));
   return 0;
 }

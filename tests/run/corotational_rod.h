@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -16,6 +17,10 @@ struct CorotationalRodSetup {
   double length = 1.0;             // [m]
   double crank = 0.2;              // [m]
   double omega = 0.0;              // crank rate [rad/s]; pin at (a cos ωt, −a sin ωt)
+  // Crank angle θ(t) [rad] instead of ωt when set (a spin-up ramp; the start is then at rest,
+  // θ̇(0) = 0 is taken for the rod's initial rates). Pin at (a cos θ, −a sin θ).
+  std::function<double(double)> angle;
+  double gravity = 0.0;            // [m/s²] along −Y (limber's −z): a dead load on the rod
   double EA = 0.0, EI = 0.0;       // [N], [N m²]
   double rho_A = 0.0, rho_I = 0.0; // [kg/m], [kg m]
   double slider_mass = 0.0;        // [kg]
@@ -40,19 +45,26 @@ inline std::vector<double> corotational_midspan_deflection(const CorotationalRod
   const int n = 3 * (p.elements + 1), last = 3 * p.elements;
   CorotationalMotion motion;
   motion.prescribed = {0, 1, last + 1};  // the pin's X, Y; the slider's Y
+  const auto angle = [&p](double t) { return p.angle ? p.angle(t) : p.omega * t; };
+  const double rate_0 = p.angle ? 0.0 : p.omega;
   motion.prescribe = [&](double t, Eigen::VectorXd& u) {
-    u(0) = p.crank * std::cos(p.omega * t) - p.crank;
-    u(1) = -p.crank * std::sin(p.omega * t);
+    u(0) = p.crank * std::cos(angle(t)) - p.crank;
+    u(1) = -p.crank * std::sin(angle(t));
     u(last + 1) = 0.0;
   };
+  // Gravity on the lumped translational masses (the slider's is carried by its rail).
+  motion.load = Eigen::VectorXd::Zero(n);
+  for (int e = 0; e < p.elements; ++e) {
+    for (int k : {e, e + 1}) motion.load(3 * k + 1) -= p.gravity * p.rho_A * p.length / p.elements / 2;
+  }
   motion.added_mass = Eigen::VectorXd::Zero(n);
   motion.added_mass(last) = p.slider_mass;
   // The rigid mechanism's rates at θ = 0 (the slider at rest, the rod turning about it):
   // v_Y(s) = −aω (1 − s/ℓ), θ̇ = aω/ℓ.
   motion.v0 = Eigen::VectorXd::Zero(n);
   for (int k = 0; k <= p.elements; ++k) {
-    motion.v0(3 * k + 1) = -p.crank * p.omega * (1.0 - static_cast<double>(k) / p.elements);
-    motion.v0(3 * k + 2) = p.crank * p.omega / p.length;
+    motion.v0(3 * k + 1) = -p.crank * rate_0 * (1.0 - static_cast<double>(k) / p.elements);
+    motion.v0(3 * k + 2) = p.crank * rate_0 / p.length;
   }
   std::vector<double> out;
   const int mid = 3 * (p.elements / 2);
