@@ -100,9 +100,11 @@ TEST(NonlinearBeamStress, CantileverRootStressIsTheTipLoadsMoment) {
   }
 }
 
-// A small generic tip load (motion ~1e-7 m): the co-rotational resultants equal the linear
-// recovery on the linear FE solution, element by element, to 1e-5 of the largest (the
-// nonlinear terms are O(motion / L) ~ 1e-7 of it; the shears use the current length).
+// A small generic tip load (tip motion ~3e-5 m, rotations <= 5e-5 rad): the co-rotational
+// resultants equal the linear recovery on the linear FE solution, element by element, to 2e-4 of
+// the largest. The difference is the geometric nonlinearity, O(rotation) relative (the dead load
+// and the element frames turn with the beam): measured 4.4e-5; round-off of the stretch
+// (1e-16 m · EA / l0 ~ 6e-8 N) is 2e-7 of the 0.3 N load.
 TEST(NonlinearBeamStress, SmallLoadsGiveTheLinearRecovery) {
   const Cantilever c = steel_cantilever(8);
   const nonlinear_beam::BeamStructure structure = nonlinear_beam::build_beam_structure(c.model);
@@ -139,9 +141,10 @@ TEST(NonlinearBeamStress, SmallLoadsGiveTheLinearRecovery) {
     const Eigen::Matrix<double, 12, 1> linear = op * d_e;
     largest = std::max(largest, linear.cwiseAbs().maxCoeff());
     difference = std::max(difference, (linear - r.segment<12>(12 * static_cast<Eigen::Index>(e))).cwiseAbs().maxCoeff());
+
   }
   EXPECT_GT(largest, 0.1);
-  EXPECT_LT(difference, 1e-5 * largest);
+  EXPECT_LT(difference, 2e-4 * largest);
 }
 
 }  // namespace
