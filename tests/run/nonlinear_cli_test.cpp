@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,28 @@ TEST(NonlinearCli, NodeDisplacementsReproduceTheDeflectionProbe) {
   }
   // The comparison is not of zeros: the rod bends within the window.
   EXPECT_GT(largest, 1e-5);
+}
+
+// `--formulation nonlinear` on cases a nonlinear body cannot be: an input error at the body's
+// entry (file:line:col) naming the option, the body and what was expected; nothing is run.
+TEST(NonlinearCli, FormulationOptionRefusesWhatANonlinearBodyCannotBe) {
+  const auto dir = test::fresh_directory("cli_formulation_bad");
+  const auto expect_refused = [&](const std::string& file, const std::string& part) {
+    const test::CommandRun run = test::run_command(
+        LIMBER_EXE, "run " + std::string(LIMBER_CASES_DIR) + "/" + file + " --formulation nonlinear --t-end 0 -o " +
+                        (dir / file).string());
+    EXPECT_EQ(run.exit_code, 1) << run.err;
+    EXPECT_NE(run.err.find(part), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / file / "results.h5")) << file;
+  };
+  expect_refused("satellite_deployment.yaml",
+                 "satellite_deployment.yaml:119:5: --formulation nonlinear: body 'panel_R1': expected beams only, got 96 shell");
+  expect_refused("slider_crank.yaml", "slider_crank.yaml:88:5: --formulation nonlinear: body 'rod': expected no 'stress'");
+  // An unknown formulation is refused by the option itself.
+  const test::CommandRun unknown = test::run_command(
+      LIMBER_EXE, "run " + std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml --formulation exact -o " + dir.string());
+  EXPECT_EQ(unknown.exit_code, 1);
+  EXPECT_NE(unknown.err.find("--formulation"), std::string::npos) << unknown.err;
 }
 
 }  // namespace
