@@ -32,13 +32,17 @@ Eigen::Quaterniond quaternion_row(const BodyTrack& body, Eigen::Index i) {
 BodyState body_state(const BodyTrack& body, const SampleBracket& at) {
   BodyState state;
   const Eigen::Index j = std::min<Eigen::Index>(at.i + 1, body.position.rows() - 1);
-  // Linear in position and modal coordinates, slerp in orientation.
+  // Linear in position, modal coordinates and node displacements, slerp in orientation.
   state.position = (1.0 - at.w) * body.position.row(at.i).transpose() +
                    at.w * body.position.row(j).transpose();
   state.orientation = quaternion_row(body, at.i).slerp(at.w, quaternion_row(body, j));
   if (body.flexible && body.modal_coordinates.cols() > 0) {
     state.modal_coordinates = (1.0 - at.w) * body.modal_coordinates.row(at.i).transpose() +
                               at.w * body.modal_coordinates.row(j).transpose();
+  }
+  if (body.flexible && body.node_displacements.cols() > 0) {
+    state.node_displacements = (1.0 - at.w) * body.node_displacements.row(at.i).transpose() +
+                               at.w * body.node_displacements.row(j).transpose();
   }
   return state;
 }
@@ -56,6 +60,13 @@ RowMatrix3d elastic_displacements(const FlexibleMesh& mesh, const Eigen::VectorX
   // (3 nn) vector node-major xyz, viewed as nn x 3 row-major.
   const Eigen::VectorXd u = mesh.mode_translations * eta;
   return Eigen::Map<const RowMatrix3d>(u.data(), nn, 3);
+}
+
+RowMatrix3d elastic_displacements(const FlexibleMesh& mesh, const BodyState& state) {
+  if (state.node_displacements.size() == 0) return elastic_displacements(mesh, state.modal_coordinates);
+  const Eigen::Index nn = mesh.nodes.rows();
+  LIMBER_DEMAND(state.node_displacements.size() == 3 * nn);
+  return Eigen::Map<const RowMatrix3d>(state.node_displacements.data(), nn, 3);
 }
 
 }  // namespace limber::render

@@ -53,7 +53,7 @@ std::vector<Eigen::Index> joint_nodes(const Results& results, const BodyTrack& b
   const SampleBracket first{0, 0.0};
   const BodyState state = body_state(body, first);
   const RowMatrix3d x_W =
-      ((body.mesh.nodes + elastic_displacements(body.mesh, state.modal_coordinates)) *
+      ((body.mesh.nodes + elastic_displacements(body.mesh, state)) *
        state.orientation.toRotationMatrix().transpose())
           .rowwise() +
       state.position.transpose();

@@ -73,6 +73,8 @@ Results read_results(const std::filesystem::path& directory) {
                    r.rows(layout::at(g, layout::body::kOrientation), 4)});
     const std::string eta = layout::at(g, layout::body::kModalCoordinates);
     if (r.exists(eta)) ns = std::min(ns, r.dims(eta).at(0));
+    const std::string displacements = layout::at(g, layout::body::kNodeDisplacements);
+    if (r.exists(displacements)) ns = std::min(ns, r.dims(displacements).at(0));
   }
   for (const std::string& joint : joint_links) {
     const std::string g = layout::at(layout::kJoints, joint);
@@ -128,6 +130,16 @@ Results read_results(const std::filesystem::path& directory) {
         track.modal_coordinates = Eigen::Map<
             const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
             eta.data(), n, nm);
+      }
+      // Node displacements [ns, 3 nn] (a nonlinear body), row-major likewise.
+      const std::string displacements = layout::at(g, layout::body::kNodeDisplacements);
+      if (r.exists(displacements)) {
+        const Eigen::Index width = 3 * track.mesh.nodes.rows();
+        r.rows(displacements, static_cast<hsize_t>(width));
+        const std::vector<double> u = r.read<double>(displacements, H5T_NATIVE_DOUBLE, ns);
+        track.node_displacements = Eigen::Map<
+            const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            u.data(), n, width);
       }
     }
     results.bodies.push_back(std::move(track));

@@ -44,6 +44,9 @@ struct BodyTrack {
   RowMatrix3d position;                                           // ns x 3 [m]
   Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> orientation;  // ns x 4, w x y z
   Eigen::MatrixXd modal_coordinates;                              // ns x nm (flexible)
+  // ns x 3 nn: node displacements from the mesh, body frame, node-major xyz [m] (a nonlinear
+  // body's /bodies/<body>/node_displacements); 0 columns when the file has none.
+  Eigen::MatrixXd node_displacements;
   FlexibleMesh mesh;                                              // flexible bodies only
 };
 

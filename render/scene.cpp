@@ -174,7 +174,7 @@ struct Scene::Impl {
   void deformed_nodes(std::size_t b, const BodyState& state, RowMatrix3d& x_W,
                       Eigen::VectorXd& u_norm) const {
     const BodyTrack& body = results.bodies[b];
-    const RowMatrix3d u = elastic_displacements(body.mesh, state.modal_coordinates);
+    const RowMatrix3d u = elastic_displacements(body.mesh, state);
     const RowMatrix3d u_rel = relative_displacements(fits[b], body.mesh.nodes, u);
     const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
     x_W = ((body.mesh.nodes + (u - u_rel) + options.scale * u_rel) * R.transpose()).rowwise() +
@@ -302,7 +302,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
       const BodyTrack& body = results.bodies[b];
       if (!body.flexible) continue;
       const RowMatrix3d u = relative_displacements(
-          s.fits[b], body.mesh.nodes, elastic_displacements(body.mesh, body_state(body, at).modal_coordinates));
+          s.fits[b], body.mesh.nodes, elastic_displacements(body.mesh, body_state(body, at)));
       if (u.rows() > 0) s.umax = std::max(s.umax, u.rowwise().norm().maxCoeff());
     }
   }

@@ -400,7 +400,7 @@ void SceneExtras::update(const SampleBracket& at) {
   for (Impl::Ghost& ghost : s.ghosts) {
     const BodyTrack& body = s.results.bodies[ghost.body];
     const BodyState state = body_state(body, at);
-    const RowMatrix3d u = elastic_displacements(body.mesh, state.modal_coordinates);
+    const RowMatrix3d u = elastic_displacements(body.mesh, state);
     const RowMatrix3d u_rel = relative_displacements(ghost.fit, body.mesh.nodes, u);
     const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
     const RowMatrix3d x_W =

@@ -59,7 +59,7 @@ vtkSmartPointer<vtkUnstructuredGrid> flexible_grid(const BodyTrack& body, const 
   X_B.topRows(nn) = body.mesh.nodes;
   X_B.bottomRows(ns) = solids.points_B;
   const RowMatrix3d x_W = (X_B * R.transpose()).rowwise() + state.position.transpose();
-  const RowMatrix3d u_node_W = elastic_displacements(body.mesh, state.modal_coordinates) * R.transpose();
+  const RowMatrix3d u_node_W = elastic_displacements(body.mesh, state) * R.transpose();
   RowMatrix3d u_W(nn + ns, 3);
   u_W.topRows(nn) = u_node_W;
   for (Eigen::Index k = 0; k < ns; ++k) {

@@ -142,7 +142,7 @@ void fill_body(SampleData& data, const BodyOutput& out, const BodyState& state, 
     extend(summary, x_W);
     return;
   }
-  const RowMatrix3d u_node_B = elastic_displacements(body.mesh, state.modal_coordinates);
+  const RowMatrix3d u_node_B = elastic_displacements(body.mesh, state);
   const RowMatrix3d u_B = at_grid_points(out.grid, u_node_B);
   const RowMatrix3d u_rel_B = at_grid_points(out.grid, relative_displacements(out.fit, body.mesh.nodes, u_node_B));
   data.u_W.middleRows(p0, np) = u_B * R.transpose();

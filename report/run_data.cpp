@@ -76,6 +76,9 @@ void truncate(RunData& run, Eigen::Index n) {
     if (body.modal_coordinates.rows() > n) {
       body.modal_coordinates.conservativeResize(n, body.modal_coordinates.cols());
     }
+    if (body.node_displacements.rows() > n) {
+      body.node_displacements.conservativeResize(n, body.node_displacements.cols());
+    }
   }
   for (render::JointTrack& joint : r.joints) {
     joint.position.conservativeResize(n, 3);
@@ -426,31 +429,40 @@ const ModeTable* mode_table_of(const RunData& run, const std::string& body) {
   return nullptr;
 }
 
+namespace {
+
+// Whether a flexible body's samples can deform its mesh: modes, or stored node displacements.
+bool has_elastic_shape(const render::BodyTrack& body) {
+  return body.mesh.mode_translations.cols() > 0 || body.node_displacements.cols() > 0;
+}
+
+// Samples of a flexible body's shape (none for a rigid body).
+Eigen::Index shape_samples(const render::BodyTrack& body) { return body.flexible ? body.position.rows() : 0; }
+
+}  // namespace
+
 Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
                                         std::vector<std::string>* joints) {
   const render::RigidFitBasis fit =
       render::rigid_fit_basis(body.mesh.nodes, render::joint_nodes(results, body, joints));
   if (fit.anchors.empty()) return max_deflection(body);
-  const Eigen::Index ns = body.modal_coordinates.rows();
+  const Eigen::Index ns = shape_samples(body);
   Eigen::VectorXd largest = Eigen::VectorXd::Zero(ns);
-  if (body.mesh.mode_translations.cols() == 0) return largest;
+  if (!has_elastic_shape(body)) return largest;
   for (Eigen::Index s = 0; s < ns; ++s) {
-    const render::RowMatrix3d u =
-        render::elastic_displacements(body.mesh, body.modal_coordinates.row(s).transpose());
+    const render::RowMatrix3d u = render::elastic_displacements(body.mesh, render::body_state(body, {s, 0.0}));
     largest(s) = render::relative_displacements(fit, body.mesh.nodes, u).rowwise().norm().maxCoeff();
   }
   return largest;
 }
 
 Eigen::VectorXd max_deflection(const render::BodyTrack& body) {
-  const Eigen::Index ns = body.modal_coordinates.rows();
+  const Eigen::Index ns = shape_samples(body);
   Eigen::VectorXd largest = Eigen::VectorXd::Zero(ns);
-  if (body.mesh.mode_translations.cols() == 0 || body.mesh.nodes.rows() == 0) return largest;
+  if (!has_elastic_shape(body) || body.mesh.nodes.rows() == 0) return largest;
   for (Eigen::Index s = 0; s < ns; ++s) {
-    // u = Phi eta, node-major xyz: one column of a 3 x nn map per node.
-    const Eigen::VectorXd u = body.mesh.mode_translations * body.modal_coordinates.row(s).transpose();
-    const Eigen::Map<const Eigen::Matrix3Xd> nodes(u.data(), 3, u.size() / 3);
-    largest(s) = nodes.colwise().norm().maxCoeff();
+    const render::RowMatrix3d u = render::elastic_displacements(body.mesh, render::body_state(body, {s, 0.0}));
+    largest(s) = u.rowwise().norm().maxCoeff();
   }
   return largest;
 }

@@ -151,7 +151,8 @@ const ModeTable* mode_table_of(const RunData& run, const std::string& body);
 // modes.h5 or selection file is a note, not an error.
 RunData read_run_data(const std::filesystem::path& directory);
 
-// Largest elastic displacement max_n |u_n| of a flexible body per sample [m], u = Phi eta.
+// Largest elastic displacement max_n |u_n| of a flexible body per sample [m], u = Phi eta or
+// its stored node displacements (a nonlinear body).
 Eigen::VectorXd max_deflection(const render::BodyTrack& body);
 
 // Largest elastic displacement relative to the rigid fit through the body's joint nodes,

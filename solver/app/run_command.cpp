@@ -330,6 +330,11 @@ Command add_run_command(CLI::App& app) {
   cli->add_option("--modes", options->modes,
                   "Normal modes of every flexible body (N >= 0) in place of the case's; its static "
                   "modes are kept (limber sweep varies this)");
+  cli->add_option("--formulation", options->overrides.formulation,
+                  "nonlinear: every flexible body's FE beams unreduced and co-rotational, as if each "
+                  "said 'formulation: nonlinear' (docs/nonlinear-beams.md; limber sweep --reference "
+                  "nonlinear runs it); modal: the case's own")
+      ->check(CLI::IsMember({"modal", "nonlinear"}));
   cli->add_flag("--json", options->json,
                 "Print exactly one JSON object on stdout: {\"status\", \"message\", \"integrator\", "
                 "\"t_end\", \"t_reached\", \"samples\", \"steps\", \"rejected_steps\", \"newton_failures\", "

@@ -174,7 +174,10 @@ Command add_sweep_command(CLI::App& app) {
       "  limber sweep case.yaml --over integrator=galpha step=1e-3,5e-4,2.5e-4 modes=3,5 --target 0.01\n"
       "Reference 'tight': the grid's most modes with generalized-alpha at 1/8 of its smallest step\n"
       "(IDA at 1/100 of its smallest rtol when the grid has no generalized-alpha point), run once\n"
-      "into DIR/reference/<point> and reused on resume.\n"
+      "into DIR/reference/<point> and reused on resume. Reference 'nonlinear': the case with\n"
+      "every flexible body nonlinear (limber run --formulation nonlinear), generalized-alpha at the\n"
+      "smaller of the case's and the grid's smallest step: the errors are then what the modal\n"
+      "model costs against the geometrically exact rod (beams only, undamped).\n"
       "Exit codes: 0 done (failed points are rows), 1 bad input, 2 the reference run failed or\n"
       "its own accuracy check did not pass (status ok_inaccurate),\n"
       "3 internal error, 4 interrupted by SIGINT or SIGTERM (finished points kept; rerun resumes).");
@@ -184,7 +187,8 @@ Command add_sweep_command(CLI::App& app) {
       ->required()
       ->expected(1, -1);
   cli->add_option("-o,--output", options->output_dir, "Output directory (default: out/<case file stem>_sweep)");
-  cli->add_option("--reference", options->reference, "'tight' (one much tighter run) or a finished results.h5")
+  cli->add_option("--reference", options->reference, "'tight' (one much tighter run), 'nonlinear' (the case with every flexible body nonlinear: "
+                  "what the modal model costs; docs/nonlinear-beams.md) or a finished results.h5")
       ->capture_default_str();
   cli->add_option("--target", options->target,
                   "Error target as a fraction (0.01 = 1 %): print the cheapest point that meets it");

@@ -73,6 +73,9 @@ inline constexpr const char* kModalCoordinates = "modal_coordinates";  // float6
 inline constexpr const char* kModalVelocities = "modal_velocities";    // float64 [ns, nm] [kg^0.5 m/s]
 inline constexpr const char* kDeflection = "deflection";  // float64 [ns, 3] probe, body axes [m] (optional)
 inline constexpr const char* kStress = "stress";          // group, see stress:: (optional)
+// float64 [ns, 3 nn]: each node's displacement from its mesh place, body frame, node-major
+// x0 y0 z0 x1 ... [m] (optional: a nonlinear body, whose shape is not a sum of modes).
+inline constexpr const char* kNodeDisplacements = "node_displacements";
 }  // namespace body
 
 // bodies/<body>/shapes/<k>: attributes only.

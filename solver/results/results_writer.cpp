@@ -165,10 +165,13 @@ struct ResultsWriter::Impl {
   Series event_time, event_limit, event_engaged, event_angle, event_rate;
   std::int64_t ne = 0;
 
-  // Per body: position, orientation, then modal_coordinates, modal_velocities and deflection
-  // (flexible only); nm or -1 (rigid).
+  // Per body: position, orientation, then modal_coordinates, modal_velocities, deflection and
+  // node_displacements (flexible only, the last two when declared); nm or -1 (rigid); the
+  // places of deflection and node_displacements in its series, or -1; 3 nn of the latter.
   std::vector<std::vector<Series>> body_series;
   std::vector<int> body_nmodes;
+  std::vector<int> body_deflection, body_displacements;
+  std::vector<Eigen::Index> body_displacement_width;
   // Per body: its stress output, or none.
   std::vector<std::unique_ptr<StressSeries>> body_stress;
   // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate,
@@ -382,6 +385,9 @@ struct ResultsWriter::Impl {
         create_series(body.get(), layout::body::kOrientation, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
     body_series.push_back(std::move(series));
     body_stress.emplace_back();
+    body_deflection.push_back(-1);
+    body_displacements.push_back(-1);
+    body_displacement_width.push_back(0);
     return body;
   }
 };
@@ -508,9 +514,17 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
         group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(nm)));
   }
   impl_->body_nmodes.push_back(static_cast<int>(nm));
+  std::vector<Series>& series = impl_->body_series.back();
   if (body.has_deflection) {
-    impl_->body_series.back().push_back(impl_->create_series(
-        group.get(), layout::body::kDeflection, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+    impl_->body_deflection.back() = static_cast<int>(series.size());
+    series.push_back(impl_->create_series(group.get(), layout::body::kDeflection, H5T_IEEE_F64LE,
+                                          H5T_NATIVE_DOUBLE, 3));
+  }
+  if (body.has_node_displacements) {
+    impl_->body_displacements.back() = static_cast<int>(series.size());
+    impl_->body_displacement_width.back() = 3 * nn;
+    series.push_back(impl_->create_columns(group.get(), layout::body::kNodeDisplacements,
+                                           H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(3 * nn)));
   }
   if (body.has_stress) impl_->body_stress.back() = impl_->create_stress(group.get(), body);
   return static_cast<int>(impl_->body_series.size()) - 1;
@@ -686,7 +700,7 @@ void ResultsWriter::append_sample(const Sample& sample) {
   LIMBER_DEMAND(sample.hinge_limits_engaged.size() == m.limit_series.size());
   LIMBER_DEMAND(sample.probe_accelerations.size() == m.probe_series.size());
 
-  // Bodies: pose, then modal coordinates, rates and deflection.
+  // Bodies: pose, then modal coordinates, rates, deflection and node displacements.
   for (std::size_t b = 0; b < sample.bodies.size(); ++b) {
     const BodySample& body = sample.bodies[b];
     std::vector<Series>& series = m.body_series[b];
@@ -700,7 +714,11 @@ void ResultsWriter::append_sample(const Sample& sample) {
       m.append_row(series[2], body.modal_coordinates.data());
       m.append_row(series[3], body.modal_velocities.data());
     }
-    if (series.size() > 4) m.append_vector3(series[4], body.deflection);
+    if (const int k = m.body_deflection[b]; k >= 0) m.append_vector3(series[static_cast<std::size_t>(k)], body.deflection);
+    if (const int k = m.body_displacements[b]; k >= 0) {
+      LIMBER_DEMAND(body.node_displacements.size() == m.body_displacement_width[b]);
+      m.append_row(series[static_cast<std::size_t>(k)], body.node_displacements.data());
+    }
     if (m.body_stress[b]) m.append_stress(*m.body_stress[b], body, sample.time);
   }
 

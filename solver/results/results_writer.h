@@ -92,6 +92,9 @@ struct FlexibleBodySpec {
   std::vector<ShapeSpec> shapes;
   // Writes /bodies/<body>/deflection [ns, 3] (BodySample::deflection) when true.
   bool has_deflection = false;
+  // Writes /bodies/<body>/node_displacements [ns, 3 nn] (BodySample::node_displacements) when
+  // true: a body whose shape is not a sum of modes (a nonlinear body).
+  bool has_node_displacements = false;
   // Writes /bodies/<body>/stress (docs/results-format.md, "Stress") when true: the mesh's peak
   // stress at every sample and the history of `stress_elements` (0-based element numbers: e <
   // lines.rows() is line e, else quad e − lines.rows(); ascending) at every `stress_every`-th.
@@ -139,6 +142,9 @@ struct BodySample {
   // Flexible bodies with a deflection probe: a node's elastic displacement relative to a
   // chord between two other nodes, body axes [m].
   Eigen::Vector3d deflection = Eigen::Vector3d::Zero();
+  // Flexible bodies declared with node displacements: each node's displacement from its
+  // undeformed place, body frame, node-major (x0 y0 z0 x1 ...), 3 nn values [m].
+  Eigen::VectorXd node_displacements;
   // Flexible bodies with stress output: the largest equivalent stress over the mesh [Pa] and
   // its element (0-based, as FlexibleBodySpec::stress_elements), at every sample; and, when
   // stress_recorded, the history row of the declared elements: equivalent stress [Pa] per

@@ -1,6 +1,7 @@
 #include "run/case_run.h"
 
 #include "core/error.h"
+#include "io/formulation_override.h"
 
 namespace limber::run {
 
@@ -12,6 +13,13 @@ CaseRun prepare_case_run(const io::Case& input, const SettingsOverrides& overrid
   CaseRun run;
   run.settings = overrides.apply(input.mechanism->run);
   check_settings(run.settings);
+  if (io::nonlinear_formulation_requested(overrides.formulation, "--formulation")) {
+    io::Case nonlinear = input;
+    io::make_flexible_bodies_nonlinear(nonlinear);
+    run.reduction = io::reduce_case(nonlinear, io::ReductionScope::kMechanismBodies);
+    run.mechanism = io::build_mechanism(nonlinear, run.reduction);
+    return run;
+  }
   run.reduction = io::reduce_case(input, io::ReductionScope::kMechanismBodies, normal_mode_overrides(input, modes));
   run.mechanism = io::build_mechanism(input, run.reduction);
   return run;

@@ -115,7 +115,7 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
 }
 
 // A nonlinear body as a flexible body of no modes (docs/results-format.md): its mesh in the
-// component frame, and its deflection probe.
+// component frame, its node displacements and its deflection probe.
 results::FlexibleBodySpec nonlinear_body_spec(const multibody::NonlinearBody& body) {
   const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
   Eigen::MatrixXd nodes(3, static_cast<Eigen::Index>(X.size()));
@@ -123,7 +123,17 @@ results::FlexibleBodySpec nonlinear_body_spec(const multibody::NonlinearBody& bo
   results::FlexibleBodySpec spec = mesh_spec(body.name, nodes, body.mesh);
   spec.mode_translations.resize(nodes.size(), 0);
   spec.has_deflection = body.deflection_probe.has_value();
+  spec.has_node_displacements = true;
   return spec;
+}
+
+// The node farthest from the first in the undeformed mesh: the chord of the recorded frame.
+std::size_t chord_end_node(const std::vector<Eigen::Vector3d>& X) {
+  std::size_t end = 0;
+  for (std::size_t k = 1; k < X.size(); ++k) {
+    if ((X[k] - X.front()).squaredNorm() > (X[end] - X.front()).squaredNorm()) end = k;
+  }
+  return end;
 }
 
 // The results' name of a model body: a node body's is its nonlinear body's.
@@ -279,15 +289,29 @@ SampleRecorder::SampleRecorder(const multibody::Model& model,
 
 results::BodySample SampleRecorder::record_nonlinear(const multibody::NonlinearBody& body,
                                                      const Eigen::VectorXd& q) const {
-  // The component frame carried by the first node: its axes turned as that node's, through
-  // the node at its undeformed place (no modes: the mesh drawn undeformed there).
-  const multibody::Body& first = model_.bodies[static_cast<std::size_t>(body.node_bodies.front())];
-  const Eigen::Vector4d p = q.segment<4>(first.q_offset + 3).normalized();
+  // The node configurations in the component axes C of t = 0.
+  const nonlinear_beam::BeamState state = multibody::nonlinear_body_state(model_, body, q);
+  const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
+  const std::vector<Eigen::Vector3d>& x = state.positions;
+  // The chord frame F: the first node's axes turned by the smallest rotation that takes the
+  // chord to the farthest node, carried with them, onto the current chord; its origin puts the
+  // first node at its mesh place (docs/results-format.md, "Nonlinear bodies").
+  const std::size_t end = chord_end_node(X);
+  const Eigen::Vector3d carried = state.rotations.front() * (X[end] - X.front());
+  const Eigen::Matrix3d R_CF =
+      (Eigen::Quaterniond::FromTwoVectors(carried, x[end] - x.front()) * state.rotations.front())
+          .toRotationMatrix();
+  const Eigen::Vector3d p_CF = x.front() - R_CF * X.front();
   results::BodySample pose;
-  pose.orientation = Eigen::Quaterniond(p(0), p(1), p(2), p(3));
-  pose.position = q.segment<3>(first.q_offset) - pose.orientation * body.structure->reference_positions.front();
+  pose.orientation = Eigen::Quaterniond(body.R_WC * R_CF).normalized();
+  pose.position = body.p_WC + body.R_WC * p_CF;
   pose.modal_coordinates.resize(0);
   pose.modal_velocities.resize(0);
+  // Each node's displacement from its mesh place in F.
+  pose.node_displacements.resize(3 * static_cast<Eigen::Index>(X.size()));
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    pose.node_displacements.segment<3>(3 * static_cast<Eigen::Index>(k)) = R_CF.transpose() * (x[k] - p_CF) - X[k];
+  }
   if (body.deflection_probe) pose.deflection = multibody::nonlinear_probe_deflection(model_, body, q);
   return pose;
 }

@@ -60,7 +60,7 @@ class SampleRecorder {
   const Eigen::VectorXd& constraint_residuals() const { return workspace_.g; }
 
  private:
-  // A nonlinear body's sample: its component frame carried by its first node, its probe.
+  // A nonlinear body's sample: its chord frame, its node displacements in it, its probe.
   results::BodySample record_nonlinear(const multibody::NonlinearBody& body, const Eigen::VectorXd& q) const;
 
   const multibody::Model& model_;

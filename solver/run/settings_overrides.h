@@ -16,6 +16,9 @@ struct SettingsOverrides {
   std::string integrator;  // "" = the case's; "ida" | "galpha"
   std::string start;       // "" = the case's; "assembly" | "statics"
   std::optional<double> rtol, atol, step, t_end, max_wall, peak_window;
+  // "" or "modal" = the case's; "nonlinear": every flexible body nonlinear
+  // (io/formulation_override.h; limber run --formulation, limber sweep --reference nonlinear).
+  std::string formulation;
 
   // The case's settings with the given overrides applied. Throws InputError for an integrator
   // or start other than those above (the values themselves are checked by check_settings).

@@ -136,7 +136,7 @@ GridSpec parse_over(const std::vector<std::string>& arguments, const CaseDefault
 }
 
 std::string SweepPoint::name() const {
-  std::string text = integrator;
+  std::string text = nonlinear ? "nonlinear_" + integrator : integrator;
   if (rtol) text += fmt::format("_rtol{:g}", *rtol);
   if (atol) text += fmt::format("_atol{:g}", *atol);
   if (step) text += fmt::format("_step{:g}", *step);
@@ -149,7 +149,9 @@ std::string SweepPoint::curve() const {
 }
 
 std::vector<std::string> SweepPoint::run_options() const {
-  std::vector<std::string> options = {"--integrator", integrator};
+  std::vector<std::string> options;
+  if (nonlinear) options = {"--formulation", "nonlinear"};
+  options.insert(options.end(), {"--integrator", integrator});
   // Shortest text that reads back exactly: the child runs exactly this setting.
   if (rtol) options.insert(options.end(), {"--rtol", fmt::format("{}", *rtol)});
   if (atol) options.insert(options.end(), {"--atol", fmt::format("{}", *atol)});
@@ -200,6 +202,17 @@ SweepPoint tight_reference(const std::vector<SweepPoint>& points, const CaseDefa
     reference.integrator = "ida";
     reference.rtol = std::max(*smallest_rtol / 100.0, kTightestReferenceRtol);
     reference.atol = std::max(case_atol / 100.0, run::kMinimumAtol);
+  }
+  return reference;
+}
+
+SweepPoint nonlinear_reference(const std::vector<SweepPoint>& points, const CaseDefaults& defaults) {
+  SweepPoint reference;
+  reference.nonlinear = true;
+  reference.integrator = "galpha";
+  reference.step = defaults.step;
+  for (const SweepPoint& point : points) {
+    if (point.step) reference.step = std::min(*reference.step, *point.step);
   }
   return reference;
 }

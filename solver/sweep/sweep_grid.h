@@ -48,12 +48,14 @@ struct SweepPoint {
   std::optional<double> atol; // IDA points: set only by a tight reference
   std::optional<double> step; // generalized-α points [s]
   std::optional<int> modes;   // normal modes per flexible body; nullopt: the case's
+  bool nonlinear = false;     // every flexible body nonlinear (`--reference nonlinear`)
 
-  // Folder name and label: "ida_rtol1e-05_m5", "galpha_step0.0002" ...
+  // Folder name and label: "ida_rtol1e-05_m5", "galpha_step0.0002", "nonlinear_galpha_step0.0001" ...
   std::string name() const;
   // The curve the point belongs to in the work-precision plot: "ida, 5 modes", "galpha".
   std::string curve() const;
-  // The `limber run` options that select this point ("--integrator ida --rtol 1e-05 --modes 5").
+  // The `limber run` options that select this point ("--integrator ida --rtol 1e-05 --modes 5",
+  // "--formulation nonlinear --integrator galpha --step 0.0001").
   std::vector<std::string> run_options() const;
 };
 
@@ -65,5 +67,11 @@ std::vector<SweepPoint> expand_grid(const GridSpec& spec, const CaseDefaults& de
 // method: error ~64 times below the finest point's), else IDA at a hundredth of the smallest
 // rtol (at least 1e-10) with atol a hundredth of the case's (at least 1e-14).
 SweepPoint tight_reference(const std::vector<SweepPoint>& points, const CaseDefaults& defaults, double case_atol);
+
+// The reference `--reference nonlinear` runs (docs/sweep.md): the case with every flexible body
+// nonlinear (io/formulation_override.h), generalized-α (the integrator of a nonlinear body) at
+// the smaller of the case's step and the grid's smallest generalized-α step: the modal points'
+// errors are then what the modal model costs against the unreduced, geometrically exact rod.
+SweepPoint nonlinear_reference(const std::vector<SweepPoint>& points, const CaseDefaults& defaults);
 
 }  // namespace limber::sweep

@@ -71,16 +71,15 @@ bool finished_status(const std::string& status) {
   return status == results::layout::status::kOk || status == results::layout::status::kInaccurate;
 }
 
-// The tight reference: run once (rank 0) into DIR/reference/<point> and reused on resume.
+// A reference run (`--reference tight` or `nonlinear`): run once (rank 0) into
+// DIR/reference/<point> and reused on resume. `kind` names it in the label ("tight run ...").
 // Returns false when interrupted during its run. Throws NumericalError when it failed.
-bool make_tight_reference(const SweepRequest& request, const RankGroup& ranks, const SweepHooks& hooks,
-                          const std::vector<SweepPoint>& points, const CaseDefaults& defaults, double case_atol,
-                          SweepOutcome& outcome) {
-  const SweepPoint point = tight_reference(points, defaults, case_atol);
+bool make_reference_run(const SweepRequest& request, const RankGroup& ranks, const SweepHooks& hooks,
+                        const SweepPoint& point, const char* kind, SweepOutcome& outcome) {
   // One folder per reference setting: a changed grid never reuses another setting's reference.
   const std::filesystem::path directory = request.root / "reference" / point.name();
   outcome.reference_file = directory / results::kResultsFileName;
-  outcome.reference_label = fmt::format("tight run {} ({})", point.name(), run_command_line(request, point));
+  outcome.reference_label = fmt::format("{} run {} ({})", kind, point.name(), run_command_line(request, point));
   int ok = 1;
   if (ranks.rank() == 0) {
     // A finished reference is reused (an inaccurate one is refused below without a rerun).
@@ -104,16 +103,20 @@ bool make_tight_reference(const SweepRequest& request, const RankGroup& ranks, c
   }
   ok = ranks.broadcast(ok);
   if (ok == 2) return false;
+  const std::string log = (directory / results::kRunLogFileName).string();
+  const std::string remedy = point.nonlinear ? "give --reference RESULTS (a run you trust) or a smaller step in "
+                                               "the grid or the case"
+                                             : "give --reference RESULTS (a run you trust) or a grid whose richest "
+                                               "setting runs accurately at a tighter step";
   if (ok == 3) {
     throw NumericalError(fmt::format("the reference run {} finished, but its own accuracy check failed (status "
-                                     "ok_inaccurate; its warnings are in {}), so errors against it mean nothing; "
-                                     "give --reference RESULTS (a run you trust) or a grid whose richest setting "
-                                     "runs accurately at a tighter step", point.name(),
-                                     (directory / results::kRunLogFileName).string()));
+                                     "ok_inaccurate; its warnings are in {}), so errors against it mean nothing; {}",
+                                     point.name(), log, remedy));
   }
   if (ok == 0) {
-    throw NumericalError(fmt::format("the reference run failed ({}); give --reference RESULTS or a grid "
-                                     "whose finest point runs", (directory / results::kRunLogFileName).string()));
+    throw NumericalError(fmt::format("the reference run failed ({}); {}", log,
+                                     point.nonlinear ? "give --reference RESULTS or a smaller step"
+                                                     : "give --reference RESULTS or a grid whose finest point runs"));
   }
   return true;
 }
@@ -124,7 +127,7 @@ void given_reference(const SweepRequest& request, const RankGroup& ranks, const 
   outcome.reference_file = request.reference;
   const std::string status = read_run_status(outcome.reference_file);
   if (!finished_status(status)) {
-    throw InputError(fmt::format("--reference: expected 'tight' or a finished results.h5 (status ok), got '{}'{}",
+    throw InputError(fmt::format("--reference: expected 'tight', 'nonlinear' or a finished results.h5 (status ok), got '{}'{}",
                                  request.reference,
                                  status.empty() ? " (no readable results file)" : " with status " + status));
   }
@@ -264,10 +267,13 @@ SweepOutcome run_sweep(const SweepRequest& request, const RankGroup& ranks, cons
                                 ranks.size() > 1 ? fmt::format(" on each of {} MPI ranks", ranks.size()) : ""));
   }
 
-  // The reference: one tight run, made once and reused on resume, or a given file.
-  if (request.reference == "tight") {
+  // The reference: one tight or nonlinear run, made once and reused on resume, or a given file.
+  if (request.reference == "tight" || request.reference == "nonlinear") {
     const double case_atol = request.atol.value_or(input.mechanism->run.integrator.atol);
-    if (!make_tight_reference(request, ranks, hooks, outcome.points, defaults, case_atol, outcome)) {
+    const bool nonlinear = request.reference == "nonlinear";
+    const SweepPoint point = nonlinear ? nonlinear_reference(outcome.points, defaults)
+                                       : tight_reference(outcome.points, defaults, case_atol);
+    if (!make_reference_run(request, ranks, hooks, point, nonlinear ? "nonlinear" : "tight", outcome)) {
       outcome.interrupted = outcome.interrupted_in_reference = true;
       return outcome;
     }

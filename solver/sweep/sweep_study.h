@@ -3,7 +3,7 @@
 // work-precision table. The command parses options, prints and maps the outcome to an exit
 // code; the MPI ranks come in through RankGroup, so this library needs no MPI.
 //
-// Files under the request's root: reference/<point>/ (a tight reference), runs/<point>/ (each
+// Files under the request's root: reference/<point>/ (a tight or nonlinear reference), runs/<point>/ (each
 // point's results.h5, run.json, run.log, process.json: work_precision.h),
 // sweep/{work_precision.csv,work_precision.json,errors.csv} and results.h5 (the reference's).
 #pragma once
@@ -24,7 +24,7 @@ struct SweepRequest {
   std::string case_file;
   std::filesystem::path root;            // DIR: created; locked by rank 0 while the sweep runs
   std::vector<std::string> over;         // the axes (sweep_grid.h's parse_over)
-  std::string reference = "tight";       // "tight" or a finished results.h5
+  std::string reference = "tight";       // "tight", "nonlinear" or a finished results.h5
   std::optional<double> target;          // error target (fraction)
   bool rms = true;                       // the target's measure: rms, else peak
   std::vector<std::string> quantities;   // compared quantities; empty: default_quantities
@@ -60,7 +60,7 @@ struct SweepOutcome {
   bool interrupted_in_reference = false;  // a stop during the reference run: nothing else ran
   std::vector<SweepPoint> points;
   std::filesystem::path reference_file;
-  std::string reference_label;            // "tight run <point> (<command line>)" or "the given file ..."
+  std::string reference_label;            // "tight run <point> (<command line>)", "nonlinear run ...", "the given file ..."
   std::vector<std::string> quantities;
   std::vector<SweepRow> rows;             // in grid order
   std::optional<std::size_t> chosen;      // the cheapest row meeting the target

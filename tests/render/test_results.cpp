@@ -69,7 +69,7 @@ FlexibleBodySpec plate_spec(const TestScene& scene, int k) {
   return plate;
 }
 
-FlexibleBodySpec beam_spec(bool tube_section) {
+FlexibleBodySpec beam_spec(bool tube_section, bool node_displacements) {
   FlexibleBodySpec beam;
   beam.name = "beam";
   beam.nodes.resize(kBeamNodes, 3);
@@ -97,6 +97,11 @@ FlexibleBodySpec beam_spec(bool tube_section) {
     s.equivalent = {0};
   }
   beam.frequencies_hz = Eigen::Vector2d(5.0, 5.0);
+  if (node_displacements) {
+    beam.mode_translations.resize(3 * kBeamNodes, 0);
+    beam.frequencies_hz.resize(0);
+    beam.has_node_displacements = true;
+  }
   return beam;
 }
 
@@ -113,7 +118,7 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
     writer.add_rigid_body({"box", {cube}});
   }
   for (int k = 0; k < scene.plates; ++k) writer.add_flexible_body(plate_spec(scene, k));
-  if (scene.with_beam) writer.add_flexible_body(beam_spec(scene.beam_tube_section));
+  if (scene.with_beam) writer.add_flexible_body(beam_spec(scene.beam_tube_section, scene.beam_node_displacements));
   if (scene.with_box) writer.add_joint({"pin", "spherical", "ground", "box"});
   if (scene.with_beam && scene.beam_mid_joint) writer.add_joint({"mid", "revolute", "ground", "beam"});
   const bool latch = scene.with_box && scene.latch_time >= 0.0;
@@ -139,8 +144,18 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
     if (scene.with_beam) {
       results::BodySample beam;
       beam.position = beam_origin();
-      beam.modal_coordinates = beam_eta(scene, t);
-      beam.modal_velocities = Eigen::Vector2d::Zero();
+      if (scene.beam_node_displacements) {
+        beam.modal_coordinates.resize(0);
+        beam.modal_velocities.resize(0);
+        beam.node_displacements.resize(3 * kBeamNodes);
+        for (int n = 0; n < kBeamNodes; ++n) {
+          const double x = kBeamLength * n / (kBeamNodes - 1);
+          beam.node_displacements.segment<3>(3 * n) = beam_displacement(scene, x, t);
+        }
+      } else {
+        beam.modal_coordinates = beam_eta(scene, t);
+        beam.modal_velocities = Eigen::Vector2d::Zero();
+      }
       sample.bodies.push_back(beam);
     }
     if (scene.with_box) {

@@ -35,6 +35,9 @@ struct TestScene {
   // beam's relative deflection is then u(x) - u(L/2) (one joint node: the rigid fit is a
   // translation).
   bool beam_mid_joint = false;
+  // The beam stored as a nonlinear body is (docs/results-format.md, "Nonlinear bodies"): no
+  // modes, its node displacements per sample (the same closed form, beam_displacement).
+  bool beam_node_displacements = false;
   // >= 0: a latch "latch_pin" on joint "pin" (with the box) that locks at this time [s]: one
   // /events row.
   double latch_time = -1.0;

@@ -3,6 +3,8 @@
 // reader at the paths of render/xdmf_layout.h.
 #include "xdmf_export.h"
 
+#include "body_pose.h"
+
 #include "results/h5_reader.h"
 #include "results/link_name.h"
 #include "test_dir.h"
@@ -185,6 +187,51 @@ TEST(XdmfExport, RelativeDeflectionIsMeasuredFromTheJointNode) {
         EXPECT_NEAR(u_rel[3 * n + c], expected(c), 1e-14) << "node " << n << " t " << t;
       }
       EXPECT_NEAR(u_rel_norm[n], expected.norm(), 1e-14);
+    }
+  }
+}
+
+// A beam stored node by node (a nonlinear body's layout, docs/results-format.md) exports as the
+// same beam stored as modes, every dataset of every sample: the second method is the modal sum
+// Φη against the stored displacements, both the closed form beam_displacement. With the tube
+// section (swept-surface points follow their nodes) and the mid joint (the relative deflection's
+// rigid fit). Tolerance 1e-15 m: the same products on values <= 1.1 m (the modal sum adds
+// exact zeros).
+TEST(XdmfExport, NodeDisplacementsExportAsTheModalBeam) {
+  TestScene scene;
+  scene.beam_tube_section = true;
+  scene.beam_mid_joint = true;
+  const auto modal_dir = testing::fresh_directory("xdmf_beam_modal");
+  testing::write_test_results(modal_dir, scene);
+  scene.beam_node_displacements = true;
+  const auto nodes_dir = testing::fresh_directory("xdmf_beam_nodes");
+  testing::write_test_results(nodes_dir, scene);
+  const Results stored = read_results(nodes_dir);
+  const auto found = std::find_if(stored.bodies.begin(), stored.bodies.end(),
+                                  [](const BodyTrack& body) { return body.name == "beam"; });
+  ASSERT_NE(found, stored.bodies.end());
+  const BodyTrack& beam = *found;
+  EXPECT_EQ(beam.modal_coordinates.cols(), 0);
+  ASSERT_EQ(beam.node_displacements.rows(), scene.samples);
+  ASSERT_EQ(beam.node_displacements.cols(), 3 * testing::kBeamNodes);
+  // Between samples the displacements interpolate linearly, as modal coordinates do.
+  const RowMatrix3d u_mid = elastic_displacements(beam.mesh, body_state(beam, {2, 0.5}));
+  const Eigen::Vector3d tip_2 = testing::beam_displacement(scene, testing::kBeamLength, 0.2);
+  const Eigen::Vector3d tip_3 = testing::beam_displacement(scene, testing::kBeamLength, 0.3);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(u_mid(testing::kBeamNodes - 1, c), 0.5 * (tip_2(c) + tip_3(c)), 1e-15);
+
+  write_xdmf_scene(read_results(modal_dir), modal_dir / "vtk", 0.0, 1.0, false);
+  write_xdmf_scene(stored, nodes_dir / "vtk", 0.0, 1.0, false);
+  const results::H5Reader modal(modal_dir / "vtk" / xdmf::kFileName, "ParaView scene", "");
+  const results::H5Reader nodes(nodes_dir / "vtk" / xdmf::kFileName, "ParaView scene", "");
+  for (int k = 0; k < scene.samples; ++k) {
+    for (const char* name : {xdmf::sample::kPoints, xdmf::sample::kDisplacement, xdmf::sample::kRelativeDeflection,
+                             xdmf::sample::kRelativeDeflectionMagnitude}) {
+      const std::vector<double> expected = reals(modal, sample_path("beam", k, name));
+      const std::vector<double> got = reals(nodes, sample_path("beam", k, name));
+      ASSERT_EQ(got.size(), expected.size()) << name;
+      ASSERT_GT(got.size(), static_cast<std::size_t>(testing::kBeamNodes)) << "the swept surface's points follow the nodes";
+      for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-15) << name << " " << i;
     }
   }
 }

@@ -1,10 +1,14 @@
 // `limber run` on the seed set-up with the rod nonlinear: results.h5 in the layout the readers
 // know (docs/results-format.md): the rigid bodies' frames, the rod as a flexible body of no
-// modes with its deflection probe, every joint's reaction, status ok.
+// modes with its node displacements and deflection probe, every joint's reaction, status ok.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -41,6 +45,7 @@ TEST(NonlinearCli, SeedSetupWritesTheResultsTheReadersKnow) {
   EXPECT_EQ(dataset_dims(file, "/bodies/rod/mesh/nodes"), (Dims{101, 3}));
   EXPECT_EQ(dataset_dims(file, "/bodies/rod/modal_coordinates"), (Dims{ns, 0}));
   EXPECT_EQ(dataset_dims(file, "/bodies/rod/deflection"), (Dims{ns, 3}));
+  EXPECT_EQ(dataset_dims(file, "/bodies/rod/node_displacements"), (Dims{ns, 303}));
   // The probe starts at 0 (the rod undeformed) and moves: the start's impulse bends the rod.
   const std::vector<double> deflection = read_doubles(file, "/bodies/rod/deflection");
   EXPECT_NEAR(deflection[2], 0.0, 1e-9);
@@ -51,6 +56,80 @@ TEST(NonlinearCli, SeedSetupWritesTheResultsTheReadersKnow) {
   EXPECT_EQ(read_string_attribute(file, "/joints/R2", "body_j"), "rod");
   EXPECT_EQ(read_string_attribute(file, "/joints/R3", "body_i"), "rod");
   H5Fclose(file);
+}
+
+// The node displacements describe the run's node states: the mid-span probe recomputed from the
+// written nodes (ground positions p + R (X + u), then the probe's own definition, nonlinear_body.h:
+// node 51's offset from the chord R2-R3 turned back by the smallest rotation taking the
+// undeformed chord onto the current one) equals the run's deflection dataset, which the run
+// computed from its node bodies' coordinates. The FE axes are the ground axes at t = 0 (the
+// case), so component and ground axes agree. Tolerance 1e-12 m: both from the same doubles,
+// O(10) operations on coordinates <= 1.3 m (round-off 1e-15 m), against a deflection of
+// 1e-5 .. 1e-3 m. The chord frame's own properties (first node fixed, far node on the chord)
+// to the same tolerance.
+TEST(NonlinearCli, NodeDisplacementsReproduceTheDeflectionProbe) {
+  const auto dir = test::fresh_directory("cli_nonlinear_nodes");
+  const test::CommandRun run =
+      test::run_command(LIMBER_EXE, "run " + std::string(LIMBER_CASES_DIR) +
+                                        "/slider_crank_seed_setup_nonlinear.yaml -o " + dir.string() + " --t-end 0.005");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const std::vector<double> nodes = read_doubles(file, "/bodies/rod/mesh/nodes");
+  const std::vector<double> u = read_doubles(file, "/bodies/rod/node_displacements");
+  const std::vector<double> p = read_doubles(file, "/bodies/rod/position");
+  const std::vector<double> q = read_doubles(file, "/bodies/rod/orientation");
+  const std::vector<double> deflection = read_doubles(file, "/bodies/rod/deflection");
+  H5Fclose(file);
+  const std::size_t nn = 101, ns = p.size() / 3;
+  ASSERT_EQ(nodes.size(), 3 * nn);
+  ASSERT_EQ(u.size(), 3 * nn * ns);
+  ASSERT_GE(ns, 4u);
+  const auto X = [&](std::size_t k) { return Eigen::Vector3d(nodes[3 * k], nodes[3 * k + 1], nodes[3 * k + 2]); };
+  const std::size_t node = 50, start = 0, end = 100;
+  const Eigen::Vector3d E = X(end) - X(start);
+  const double s = (X(node) - X(start)).dot(E) / E.squaredNorm();
+  const Eigen::Vector3d offset_0 = X(node) - (X(start) + s * E);
+  double largest = 0.0;
+  for (std::size_t i = 0; i < ns; ++i) {
+    const Eigen::Quaterniond R(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
+    const Eigen::Vector3d origin(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    const auto u_B = [&](std::size_t k) { return Eigen::Vector3d(Eigen::Map<const Eigen::Vector3d>(u.data() + 3 * (nn * i + k))); };
+    const auto x_W = [&](std::size_t k) -> Eigen::Vector3d { return origin + R * (X(k) + u_B(k)); };
+    const Eigen::Vector3d e = x_W(end) - x_W(start);
+    const Eigen::Vector3d offset = x_W(node) - (x_W(start) + s * e);
+    const Eigen::Vector3d recomputed =
+        Eigen::Quaterniond::FromTwoVectors(E, e).toRotationMatrix().transpose() * offset - offset_0;
+    const Eigen::Vector3d recorded = Eigen::Map<const Eigen::Vector3d>(deflection.data() + 3 * i);
+    EXPECT_LT((recomputed - recorded).norm(), 1e-12) << "sample " << i;
+    EXPECT_LT(u_B(start).norm(), 1e-12) << "sample " << i;
+    EXPECT_LT(u_B(end).cross(E).norm() / E.norm(), 1e-12) << "sample " << i;
+    largest = std::max(largest, recorded.norm());
+  }
+  // The comparison is not of zeros: the rod bends within the window.
+  EXPECT_GT(largest, 1e-5);
+}
+
+// `--formulation nonlinear` on cases a nonlinear body cannot be: an input error at the body's
+// entry (file:line:col) naming the option, the body and what was expected; nothing is run.
+TEST(NonlinearCli, FormulationOptionRefusesWhatANonlinearBodyCannotBe) {
+  const auto dir = test::fresh_directory("cli_formulation_bad");
+  const auto expect_refused = [&](const std::string& file, const std::string& part) {
+    const test::CommandRun run = test::run_command(
+        LIMBER_EXE, "run " + std::string(LIMBER_CASES_DIR) + "/" + file + " --formulation nonlinear --t-end 0 -o " +
+                        (dir / file).string());
+    EXPECT_EQ(run.exit_code, 1) << run.err;
+    EXPECT_NE(run.err.find(part), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / file / "results.h5")) << file;
+  };
+  expect_refused("satellite_deployment.yaml",
+                 "satellite_deployment.yaml:119:5: --formulation nonlinear: body 'panel_R1': expected beams only, got 96 shell");
+  expect_refused("slider_crank.yaml", "slider_crank.yaml:88:5: --formulation nonlinear: body 'rod': expected no 'stress'");
+  // An unknown formulation is refused by the option itself.
+  const test::CommandRun unknown = test::run_command(
+      LIMBER_EXE, "run " + std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml --formulation exact -o " + dir.string());
+  EXPECT_EQ(unknown.exit_code, 1);
+  EXPECT_NE(unknown.err.find("--formulation"), std::string::npos) << unknown.err;
 }
 
 }  // namespace

@@ -84,6 +84,30 @@ TEST(SweepGrid, TightReference) {
   EXPECT_DOUBLE_EQ(*tight_reference(finest, defaults, 1e-13).atol, 1e-14);
 }
 
+// `--reference nonlinear`: the case's flexible bodies nonlinear, generalized-α at the smaller of
+// the case's step and the grid's smallest generalized-α step; no mode count (a nonlinear body
+// has no modes); its folder name and `limber run` options say so.
+TEST(SweepGrid, NonlinearReference) {
+  const CaseDefaults defaults = flexible_galpha();  // case step 2e-4
+  const std::vector<SweepPoint> fine =
+      expand_grid(parse_over({"integrator", "rtol=1e-4", "step=1e-3,1e-4", "modes=3,8"}, defaults), defaults);
+  const SweepPoint reference = nonlinear_reference(fine, defaults);
+  EXPECT_TRUE(reference.nonlinear);
+  EXPECT_EQ(reference.integrator, "galpha");
+  EXPECT_DOUBLE_EQ(*reference.step, 1e-4);
+  EXPECT_FALSE(reference.modes.has_value());
+  EXPECT_EQ(reference.name(), "nonlinear_galpha_step0.0001");
+  EXPECT_EQ(reference.run_options(),
+            (std::vector<std::string>{"--formulation", "nonlinear", "--integrator", "galpha", "--step", "0.0001"}));
+  // Coarser grid steps, or IDA only: the case's step.
+  const std::vector<SweepPoint> ida = expand_grid(parse_over({"integrator=ida", "rtol=1e-4,1e-6"}, defaults), defaults);
+  EXPECT_DOUBLE_EQ(*nonlinear_reference(ida, defaults).step, 2e-4);
+  const std::vector<SweepPoint> coarse = expand_grid(parse_over({"integrator=galpha", "step=1e-3"}, defaults), defaults);
+  EXPECT_DOUBLE_EQ(*nonlinear_reference(coarse, defaults).step, 2e-4);
+  // The grid's own points stay modal.
+  for (const SweepPoint& point : fine) EXPECT_FALSE(point.nonlinear) << point.name();
+}
+
 // Each bad --over is an InputError whose message names what was expected and what came.
 void expect_error(const std::vector<std::string>& over, const CaseDefaults& defaults, const std::string& part) {
   try {
