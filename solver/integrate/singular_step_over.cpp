@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <Eigen/SVD>
 #include <fmt/format.h>
@@ -90,6 +91,80 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
   }
   return fail(fmt::format("no state past it up to 2^{} times its distance is better conditioned",
                           kMaxStepOverDoublings));
+}
+
+void SteppedOverStretch::serve(const MechanicalSystem& system, double t, Sample& out) const {
+  const double theta = (t - t0) / (t1 - t0);
+  out.t = t;
+  predict_across(system, t0, q0, v0, vdot0, t, out.q, out.v);
+  out.vdot = (1.0 - theta) * vdot0 + theta * vdot1;
+  out.lambda = (1.0 - theta) * lambda0 + theta * lambda1;
+  out.integrals = (1.0 - theta) * z0 + theta * z1;
+}
+
+void SingularStepOvers::start(const MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
+  margin_start_ = held_rows_margin(system, t, q);
+  in_a_row_ = 0;
+  stretch_.reset();
+}
+
+const SteppedOverStretch* SingularStepOvers::holding(double t) const {
+  if (!stretch_ || !(t < stretch_->t1 - 1e-12 * std::max(1.0, std::abs(t)))) return nullptr;
+  return &*stretch_;
+}
+
+std::optional<Status> SingularStepOvers::step_over(const MechanicalSystem& system, const Quadrature& quadrature,
+                                                   double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                                   const Eigen::VectorXd& z, double t_limit,
+                                                   const std::string& what_failed, double near_ratio) {
+  const double ratio = held_rows_margin(system, t, q) / margin_start_;
+  if (!(ratio < near_ratio)) return std::nullopt;
+  if (++in_a_row_ > kMaxStepOversInARow) {
+    return Status{StatusCode::kConvergenceFailures, t,
+                  singular_failure_message(t, ratio, fmt::format("{} after {} step-overs", what_failed,
+                                                                 kMaxStepOversInARow))};
+  }
+  StepOver over = step_over_singular(system, t, q, v, margin_start_, t_limit);
+  if (!over.status.ok()) return over.status;
+  // New rows may suit the landing point better (their multipliers then follow).
+  if (system.reselect_constraints(over.t, over.q)) {
+    const Status solved = solve_accelerations(system, over.t, over.q, over.v, over.vdot, over.lambda);
+    if (!solved.ok()) return Status{solved.code, over.t, singular_failure_message(over.t, ratio, solved.message)};
+  }
+  // An event between the ends would be missed: refuse rather than skip it.
+  if (const int ne = system.num_events(); ne > 0) {
+    Eigen::VectorXd e0, e1;
+    system.event_functions(t, q, v, e0);
+    system.event_functions(over.t, over.q, over.v, e1);
+    for (int k = 0; k < ne; ++k) {
+      if (e0(k) < 0.0 && e1(k) >= 0.0) {
+        return Status{StatusCode::kConvergenceFailures, t,
+                      singular_failure_message(t, ratio, "a hinge limit switches inside the stretch")};
+      }
+    }
+  }
+  SteppedOverStretch s;
+  s.t0 = t;
+  s.q0 = q;
+  s.v0 = v;
+  s.vdot0 = std::move(over.vdot_from);
+  s.lambda0 = std::move(over.lambda_from);
+  s.z0 = z;
+  s.t1 = over.t;
+  s.q1 = std::move(over.q);
+  s.v1 = std::move(over.v);
+  s.vdot1 = std::move(over.vdot);
+  s.lambda1 = std::move(over.lambda);
+  // The integrals by the trapezoidal rule across the stretch.
+  s.z1 = z;
+  if (quadrature.size > 0) {
+    Eigen::VectorXd f0(quadrature.size), f1(quadrature.size);
+    quadrature.integrand(s.t0, s.q0, s.v0, s.vdot0, s.lambda0, f0);
+    quadrature.integrand(s.t1, s.q1, s.v1, s.vdot1, s.lambda1, f1);
+    s.z1 += 0.5 * (s.t1 - s.t0) * (f0 + f1);
+  }
+  stretch_ = std::move(s);
+  return Status::success(stretch_->t1);
 }
 
 }  // namespace limber::integrate

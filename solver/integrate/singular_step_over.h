@@ -13,9 +13,13 @@
 // projection lands on the branch the motion arrived on.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include <Eigen/Core>
 
 #include "core/mechanical_system.h"
+#include "integrate/integrator.h"
 #include "integrate/status.h"
 
 namespace limber::integrate {
@@ -30,6 +34,10 @@ inline constexpr double kNearSingularRatio = 0.3;
 // itself (σ at 1e-6 of its start: the 3-chain at rtol 1e-8) measures a distance of ~0.
 inline constexpr int kMaxStepOverDoublings = 20;
 
+// Step-overs without an accepted step between them after which the run stops: each lands where
+// the rank margin is at least the departure's.
+inline constexpr int kMaxStepOversInARow = 3;
+
 // The smallest singular value of the held rows' G(t, q) with unit rows (1 with no rows).
 double held_rows_margin(const MechanicalSystem& system, double t, const Eigen::VectorXd& q);
 
@@ -43,11 +51,11 @@ struct StepOver {
   Eigen::VectorXd q_from, v_from, vdot_from, lambda_from;
 };
 
-// From the state (t, q, v) where the corrector failed (v̇ solved there afresh): the state 2 d later, no later than
-// `t_limit` (t_stop, a breakpoint). Precondition: σ(t, q) is below kNearSingularRatio of
-// `margin_start` (σ at the start). Fails (status, singular_failure_message) when the landing
-// point's σ stays below the departure's after kMaxStepOverDoublings doublings of Δ, or when
-// the accelerations fail.
+// From the state (t, q, v) where the corrector failed (v̇ solved there afresh): the state 2 d
+// later, no later than `t_limit` (t_stop, a breakpoint). Precondition: σ(t, q) is below
+// kNearSingularRatio of `margin_start` (σ at the start). Fails (status,
+// singular_failure_message) when the landing point's σ stays below the departure's after
+// kMaxStepOverDoublings doublings of Δ, or when the accelerations fail.
 StepOver step_over_singular(const MechanicalSystem& system, double t, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double margin_start, double t_limit);
 
@@ -60,5 +68,42 @@ bool predict_across(const MechanicalSystem& system, double t0, const Eigen::Vect
 
 // The message of a failure near a singular configuration: where, how close, what to change.
 std::string singular_failure_message(double t, double ratio, const std::string& what_failed);
+
+// A stretch stepped over, from the departure (t0) to the landing point (t1, where the
+// integrator restarts), with the integrals z at both ends (trapezoidal rule across it).
+struct SteppedOverStretch {
+  double t0 = 0.0, t1 = 0.0;
+  Eigen::VectorXd q0, v0, vdot0, lambda0, z0;  // at t0
+  Eigen::VectorXd q1, v1, vdot1, lambda1, z1;  // at t1
+  // A sample at t0 ≤ t ≤ t1: the departure's prediction, projected; v̇, λ and z linear.
+  void serve(const MechanicalSystem& system, double t, Sample& out) const;
+};
+
+// The step-overs of one run: the held rows' rank margin at the start, the step-overs since the
+// last accepted step and the last stretch.
+class SingularStepOvers {
+ public:
+  // At the run's consistent start.
+  void start(const MechanicalSystem& system, double t, const Eigen::VectorXd& q);
+  // After an accepted step: the count of step-overs in a row starts again.
+  void accepted_step() { in_a_row_ = 0; }
+  // After a failed (or struggling) step, from the state (t, q, v) with integrals z the
+  // integrator stands at: nullopt when the held rows' margin there is not below `near_ratio` of
+  // the start's (the caller reports its own failure); else success, with stretch() the landing
+  // state to restart from (new rows reselected there, an event switching inside the stretch
+  // refused), or the failure naming the singular configuration. `t_limit`: the next velocity
+  // breakpoint or t_stop; `what_failed`: the integrator's failure, for the messages.
+  std::optional<Status> step_over(const MechanicalSystem& system, const Quadrature& quadrature, double t,
+                                  const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& z,
+                                  double t_limit, const std::string& what_failed, double near_ratio);
+  // The last stretch stepped over, when t lies inside it (before its end); else null.
+  const SteppedOverStretch* holding(double t) const;
+  const SteppedOverStretch& stretch() const { return *stretch_; }
+
+ private:
+  double margin_start_ = 1.0;
+  int in_a_row_ = 0;
+  std::optional<SteppedOverStretch> stretch_;
+};
 
 }  // namespace limber::integrate
