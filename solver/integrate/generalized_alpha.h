@@ -75,12 +75,15 @@
 
 #include <array>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
 #include "integrate/integrator.h"
+#include "integrate/singular_step_over.h"
 #include "integrate/sparse_lu.h"
 #include "integrate/wall_clock_budget.h"
 
@@ -143,6 +146,8 @@ class GeneralizedAlpha final : public Integrator {
   // New independent constraint rows at curr_ (MechanicalSystem::reselect_constraints): the
   // scheme restarts there (v̇, λ from the saddle-point system, a = v̇).
   Status reselect_constraints();
+  // After new rows were selected: v̇, λ on them at curr_, and the scheme restarts there.
+  Status restart_on_new_rows();
   // q, v, v̇ at the end of a step of size h from curr_ whose tangent displacement is ξ.
   void end_of_step_kinematics(double h, const Eigen::VectorXd& xi, StepState& s) const;
   // Scaled residual [βh²(M v̇ − Q) + Gᵀλ̃; g] at the state s with λ̃ = βh²λ.
@@ -169,6 +174,10 @@ class GeneralizedAlpha final : public Integrator {
   double largest_mass_entry() const;
   void evaluate_integrand(StepState& s) const;
   void interpolate(double t_out, Sample& out) const;
+  // After a step from curr_ that failed with `why` (Newton after its halvings, or a singular
+  // iteration matrix): at a singular configuration, restart past it on the grid (success) or
+  // fail naming it (singular_step_over.h); nullopt when not at one.
+  std::optional<Status> step_over_singular_configuration(const std::string& why);
   // Fails with `why` at curr_; Newton's and the matrix's failures at a singular configuration
   // say so, with what to change (singular_failure_message).
   Status failure(StatusCode code, const std::string& why);
@@ -190,7 +199,7 @@ class GeneralizedAlpha final : public Integrator {
   double h_try_ = 0.0;
   int halvings_ = 0;
   bool stepped_over_ = false;  // a step onto a singular configuration was stretched past it
-  double margin_start_ = 1.0;  // the held rows' rank margin at the start (singular_step_over.h)
+  SingularStepOvers step_overs_;  // singular configurations stepped over (singular_step_over.h)
   bool failed_ = false;
   Status failure_;
   std::vector<int> pending_events_;  // located at curr_.t, applied before the next step

@@ -19,6 +19,7 @@
 #include "integrate/dense_lu_solver.h"
 #include "integrate/ggl_equations.h"
 #include "integrate/ida_first_step.h"
+#include "integrate/ida_status.h"
 #include "integrate/singular_step_over.h"
 
 namespace limber::integrate {
@@ -266,22 +267,49 @@ struct IdaIntegrator::Impl : GglLayout {
   }
 
   // After a failed step (or a struggling one): at a singular configuration (the held rows' rank
-  // margin below near_ratio of the start's), restart past it (singular_step_over.h). Returns nullopt
-  // when not at one (the caller reports IDA's failure), else success or the failure naming it.
+  // margin below near_ratio of the start's), restart past it, or on other rows where they hold
+  // (singular_step_over.h). Returns nullopt when not at one (the caller reports IDA's failure),
+  // else success or the failure naming it.
   std::optional<Status> step_over_singular_configuration(double near_ratio = kNearSingularRatio) {
     LIMBER_DEMAND(IDAGetDky(ida, t_reached, 0, y) == IDA_SUCCESS);
     Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
     const double limit = next_breakpoint < breakpoints.size() ? breakpoints[next_breakpoint] : options.t_stop;
-    const std::optional<Status> over =
+    const StepOverOutcome over =
         step_overs.step_over(*system, options.quadrature, t_reached, y_now.head(nq), y_now.segment(iv, nv),
                              y_now.segment(iz, nz), limit, "IDA's corrector failed", near_ratio);
-    if (!over || !over->ok()) return over;
+    if (over.kind == StepOverOutcome::kNotSingular) return std::nullopt;
+    if (over.kind == StepOverOutcome::kRowsReselected) restart(t_reached);
+    if (over.kind != StepOverOutcome::kSteppedOver) return over.status;
     const SteppedOverStretch& stretch = step_overs.stretch();
     y_now.segment(iz, nz) = stretch.z1;
     load_state(stretch.t1, stretch.q1, stretch.v1, stretch.vdot1, stretch.lambda1);
     reinit(stretch.t1, 0.1 * (stretch.t1 - stretch.t0));
     jumped = true;
-    return over;
+    return over.status;
+  }
+
+  // After IDASolve failed with `flag`: true when IDA goes on (restarted past a singular
+  // configuration, or on other rows, or with λ's weight loosened), else false with the failure.
+  bool recover_from_failure(int flag) {
+    // At a singular configuration: restart past it, or stop naming it.
+    if (const std::optional<Status> over = step_over_singular_configuration()) {
+      if (over->ok()) return true;
+      failed = true;
+      failure = *over;
+      return false;
+    }
+    // Elsewhere, a corrector that cannot converge λ to its weight: loosen it and go on.
+    if (flag == IDA_CONV_FAIL && relax_multiplier_weight()) return true;
+    double t_fail = t_reached;
+    IDAGetCurrentTime(ida, &t_fail);
+    failed = true;
+    failure = {status_code_of_ida_flag(flag), t_fail,
+               fmt::format("at t = {:.6g} s: IDA failed with flag {} ({}{})", t_fail, flag, last_message,
+                           flag == IDA_CONV_FAIL && lambda_relaxations > 0
+                               ? fmt::format("; the multipliers' Newton weight loosened {} times before",
+                                             lambda_relaxations)
+                               : "")};
+    return false;
   }
 
   // IntegratorOptions::on_step with the state IDA returned at t (the end of its step, or a
@@ -331,26 +359,6 @@ void ida_error_handler(int, const char* module, const char* function, char* mess
                        void* user_data) {
   static_cast<IdaIntegrator::Impl*>(user_data)->last_message =
       fmt::format("{}:{}: {}", module, function, message);
-}
-
-// Our status for an IDASolve return flag.
-StatusCode status_code(int flag) {
-  switch (flag) {
-    case IDA_ERR_FAIL:
-    case IDA_TOO_MUCH_ACC:
-      return StatusCode::kErrorTestFailures;
-    case IDA_LSETUP_FAIL:
-    case IDA_LSOLVE_FAIL:
-      return StatusCode::kSingularJacobian;
-    case IDA_RES_FAIL:
-    case IDA_REP_RES_ERR:
-    case IDA_FIRST_RES_FAIL:
-      return StatusCode::kNaN;
-    case IDA_TOO_MUCH_WORK:
-      return StatusCode::kTooManySteps;
-    default:
-      return StatusCode::kConvergenceFailures;
-  }
 }
 
 }  // namespace
@@ -521,24 +529,7 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       }
       s.read_statistics(stats_, s.restart_statistics);
       if (flag < 0) {
-        // At a singular configuration: restart past it, or stop naming it.
-        if (const std::optional<Status> over = s.step_over_singular_configuration()) {
-          if (over->ok()) continue;
-          s.failed = true;
-          s.failure = *over;
-          return s.failure;
-        }
-        // Elsewhere, a corrector that cannot converge λ to its weight: loosen it and go on.
-        if (flag == IDA_CONV_FAIL && s.relax_multiplier_weight()) continue;
-        double t_fail = t_out;
-        IDAGetCurrentTime(s.ida, &t_fail);
-        s.failed = true;
-        s.failure = {status_code(flag), t_fail,
-                     fmt::format("at t = {:.6g} s: IDA failed with flag {} ({}{})", t_fail, flag, s.last_message,
-                                 flag == IDA_CONV_FAIL && s.lambda_relaxations > 0
-                                     ? fmt::format("; the multipliers' Newton weight loosened {} times before",
-                                                   s.lambda_relaxations)
-                                     : "")};
+        if (s.recover_from_failure(flag)) continue;
         return s.failure;
       }
       s.jumped = false;
@@ -546,19 +537,15 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       const long rejected = stats_.rejected_steps - s.rejected_before;
       s.rejected_before = stats_.rejected_steps;
       if (s.options.on_step) s.report_step(t_current);
-      if (s.budget.spent()) {
+      if (s.budget.spent() || stats_.steps > s.options.max_steps) {
         s.failed = true;
-        s.failure = {StatusCode::kWallClock, t_current,
-                     fmt::format("at t = {:.6g} s: the wall-clock budget of {:g} s is spent (last step "
-                                 "{:.3g} s)",
-                                 t_current, s.options.max_wall_seconds, stats_.last_step)};
-        return s.failure;
-      }
-      if (stats_.steps > s.options.max_steps) {
-        s.failed = true;
-        s.failure = {StatusCode::kTooManySteps, t_current,
-                     fmt::format("at t = {:.6g} s: more than {} steps", t_current,
-                                 s.options.max_steps)};
+        s.failure = s.budget.spent()
+                        ? Status{StatusCode::kWallClock, t_current,
+                                 fmt::format("at t = {:.6g} s: the wall-clock budget of {:g} s is spent (last "
+                                             "step {:.3g} s)",
+                                             t_current, s.options.max_wall_seconds, stats_.last_step)}
+                        : Status{StatusCode::kTooManySteps, t_current,
+                                 fmt::format("at t = {:.6g} s: more than {} steps", t_current, s.options.max_steps)};
         return s.failure;
       }
       // Struggling near a singular configuration: step over it now (a failed try leaves IDA
