@@ -43,7 +43,11 @@
 // A step whose iteration matrix is singular (it ends on a configuration where the constraints
 // lose rank, e.g. a parallelogram with its links collinear on a grid point) is retried once with
 // 1.5 h, past that instant, and the next step returns to the grid; if that fails too the run
-// stops with kSingularJacobian. Between steps the system may select new independent
+// stops with kSingularJacobian. Either failure at a singular configuration (the held rows' rank
+// lost there or near along the motion) is stepped over as IDA does (singular_step_over.h): a
+// projected Taylor step from the last accepted state to a grid point past the instant, or a
+// restart on other rows where they hold; the run stops naming the configuration when that
+// fails. Between steps the system may select new independent
 // constraint rows (MechanicalSystem::reselect_constraints, as IDA does); the scheme then
 // restarts there like after an event. No projection is applied after the step:
 // positions satisfy g = 0 to the Newton tolerance, velocities drift from G v + g_t = 0 by O(h²).
