@@ -8,7 +8,6 @@
 
 #include "core/error.h"
 #include "integrate/consistent_state.h"
-#include "integrate/singular_step_over.h"
 #include "integrate/singular_test.h"
 
 namespace limber::integrate {
@@ -100,7 +99,7 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
     failure_ = status;
     return status;
   }
-  margin_start_ = held_rows_margin(system, x0.t, curr_.q);
+  step_overs_.start(system, x0.t, curr_.q);
   curr_.a = curr_.vdot;
   curr_.integrals = Eigen::VectorXd::Zero(options.quadrature.size);
   evaluate_integrand(curr_);
@@ -122,14 +121,22 @@ Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState
 Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
   LIMBER_DEMAND(system_ != nullptr);
   if (failed_) return failure_;
-  if (t_out < prev_.t - time_tolerance(t_out) || t_out > options_.t_stop + time_tolerance(t_out)) {
-    throw InputError(fmt::format("output time: expected {} ≤ t ≤ {}, got {}", prev_.t,
+  // (A stretch stepped over serves the samples inside it.)
+  const SteppedOverStretch* stretch = step_overs_.holding(t_out);
+  const double t_earliest = stretch != nullptr ? stretch->t0 : prev_.t;
+  if (t_out < t_earliest - time_tolerance(t_out) || t_out > options_.t_stop + time_tolerance(t_out)) {
+    throw InputError(fmt::format("output time: expected {} ≤ t ≤ {}, got {}", t_earliest,
                                  options_.t_stop, t_out));
   }
   // Step until the last step ends at or after t_out.
   while (curr_.t < t_out - time_tolerance(t_out)) {
     const Status status = take_step();
     if (!status.ok()) return status;
+  }
+  if ((stretch = step_overs_.holding(t_out)) != nullptr) {
+    stretch->serve(*system_, t_out, out);
+    out.statistics = stats_;
+    return Status::success(t_out);
   }
   interpolate(t_out, out);
   return Status::success(t_out);
@@ -139,6 +146,7 @@ Status GeneralizedAlpha::accept_step(double h) {
   if (const Status status = locate_events(h); !status.ok()) return status;
   stats_.last_step = next_.t - curr_.t;
   if (structured_pause_ > 0) --structured_pause_;
+  step_overs_.accepted_step();
   prev_ = std::move(curr_);
   curr_ = next_;
   ++stats_.steps;
@@ -215,9 +223,10 @@ Status GeneralizedAlpha::take_step() {
     }
     stepped_over_ = false;
     if (attempt == Attempt::kSingular) {
-      return failure(StatusCode::kSingularJacobian,
-                     fmt::format("the iteration matrix of a step h = {:.4g} s is singular "
-                                 "(dependent constraints or a singular mass matrix)", h));
+      const std::string why = fmt::format("the iteration matrix of a step h = {:.4g} s is singular "
+                                          "(dependent constraints or a singular mass matrix)", h);
+      if (const std::optional<Status> over = step_over_singular_configuration(why)) return *over;
+      return failure(StatusCode::kSingularJacobian, why);
     }
     // A failed Newton iteration rejects the step: retry with h/2 a bounded number of times.
     ++stats_.rejected_steps;
@@ -228,10 +237,11 @@ Status GeneralizedAlpha::take_step() {
                        fmt::format("the model returned non-finite values in a step h = {:.4g} s "
                                    "(after {} halvings)", h, halvings_));
       }
-      return failure(StatusCode::kConvergenceFailures,
-                     fmt::format("Newton did not converge (at most {} iterations) in a step "
-                                 "h = {:.4g} s (after {} halvings)",
-                                 options_.max_newton_iterations, h, halvings_));
+      const std::string why = fmt::format("Newton did not converge (at most {} iterations) in a step "
+                                          "h = {:.4g} s (after {} halvings)",
+                                          options_.max_newton_iterations, h, halvings_);
+      if (const std::optional<Status> over = step_over_singular_configuration(why)) return *over;
+      return failure(StatusCode::kConvergenceFailures, why);
     }
     h_try_ = 0.5 * h;
     ++halvings_;
@@ -483,6 +493,10 @@ Status GeneralizedAlpha::reselect_constraints() {
   // meaning, so the scheme restarts there like after an event: v̇ and λ from the saddle-point
   // system, a = v̇, no extrapolation across the switch, a fresh iteration matrix.
   if (!system_->reselect_constraints(curr_.t, curr_.q)) return Status::success(curr_.t);
+  return restart_on_new_rows();
+}
+
+Status GeneralizedAlpha::restart_on_new_rows() {
   const Status status =
       solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
   if (!status.ok()) {
@@ -752,11 +766,47 @@ void GeneralizedAlpha::interpolate(double t_out, Sample& out) const {
   out.statistics = stats_;
 }
 
+std::optional<Status> GeneralizedAlpha::step_over_singular_configuration(const std::string& why) {
+  // Land on a grid point, where the scheme goes on with its step.
+  const auto on_grid = [this](double t) {
+    return grid_origin_ + std::ceil((t - grid_origin_) / grid_step_ - 1e-9) * grid_step_;
+  };
+  const double limit = next_breakpoint_ < breakpoints_.size() ? breakpoints_[next_breakpoint_] : options_.t_stop;
+  const StepOverOutcome over = step_overs_.step_over(*system_, options_.quadrature, curr_.t, curr_.q, curr_.v,
+                                                     curr_.integrals, limit, why, kNearSingularRatio, on_grid);
+  if (over.kind == StepOverOutcome::kNotSingular) return std::nullopt;
+  if (over.kind == StepOverOutcome::kFailed) {
+    failed_ = true;
+    failure_ = over.status;
+    return failure_;
+  }
+  if (over.kind == StepOverOutcome::kRowsReselected) {
+    // Other rows hold there: the scheme restarts on them from curr_, with its step.
+    h_try_ = grid_step_;
+    halvings_ = 0;
+    return restart_on_new_rows();
+  }
+  // Restart at the landing point, as after an event, back on the grid.
+  const SteppedOverStretch& stretch = step_overs_.stretch();
+  curr_.t = stretch.t1;
+  curr_.q = stretch.q1;
+  curr_.v = stretch.v1;
+  curr_.vdot = stretch.vdot1;
+  curr_.lambda = stretch.lambda1;
+  curr_.integrals = stretch.z1;
+  restart_at_current();
+  grid_index_ = static_cast<long>(std::floor((curr_.t - grid_origin_) / grid_step_ + 1e-9));
+  h_try_ = grid_step_;
+  halvings_ = 0;
+  if (grid_in_window_ && !in_event_window(curr_.t)) start_grid(curr_.t);
+  return check_budgets();
+}
+
 Status GeneralizedAlpha::failure(StatusCode code, const std::string& why) {
   failed_ = true;
   failure_ = {code, curr_.t, fmt::format("at t = {:.6g} s: {}", curr_.t, why)};
   if (code == StatusCode::kConvergenceFailures || code == StatusCode::kSingularJacobian) {
-    const double ratio = held_rows_margin(*system_, curr_.t, curr_.q) / margin_start_;
+    const double ratio = held_rows_margin(*system_, curr_.t, curr_.q) / step_overs_.margin_start();
     if (ratio < kNearSingularRatio) failure_.message = singular_failure_message(curr_.t, ratio, why);
   }
   return failure_;

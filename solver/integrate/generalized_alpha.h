@@ -45,7 +45,11 @@
 // A step whose iteration matrix is singular (it ends on a configuration where the constraints
 // lose rank, e.g. a parallelogram with its links collinear on a grid point) is retried once with
 // 1.5 h, past that instant, and the next step returns to the grid; if that fails too the run
-// stops with kSingularJacobian. Between steps the system may select new independent
+// stops with kSingularJacobian. Either failure at a singular configuration (the held rows' rank
+// lost there or near along the motion) is stepped over as IDA does (singular_step_over.h): a
+// projected Taylor step from the last accepted state to a grid point past the instant, or a
+// restart on other rows where they hold; the run stops naming the configuration when that
+// fails. Between steps the system may select new independent
 // constraint rows (MechanicalSystem::reselect_constraints, as IDA does); the scheme then
 // restarts there like after an event. No projection is applied after the step:
 // positions satisfy g = 0 to the Newton tolerance, velocities drift from G v + g_t = 0 by O(h²).
@@ -77,12 +81,15 @@
 
 #include <array>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
 #include "integrate/integrator.h"
+#include "integrate/singular_step_over.h"
 #include "integrate/sparse_lu.h"
 #include "integrate/wall_clock_budget.h"
 
@@ -145,6 +152,8 @@ class GeneralizedAlpha final : public Integrator {
   // New independent constraint rows at curr_ (MechanicalSystem::reselect_constraints): the
   // scheme restarts there (v̇, λ from the saddle-point system, a = v̇).
   Status reselect_constraints();
+  // After new rows were selected: v̇, λ on them at curr_, and the scheme restarts there.
+  Status restart_on_new_rows();
   // q, v, v̇ at the end of a step of size h from curr_ whose tangent displacement is ξ.
   void end_of_step_kinematics(double h, const Eigen::VectorXd& xi, StepState& s) const;
   // Scaled residual [βh²(M v̇ − Q) + Gᵀλ̃; g] at the state s with λ̃ = βh²λ.
@@ -176,6 +185,10 @@ class GeneralizedAlpha final : public Integrator {
   double largest_mass_entry() const;
   void evaluate_integrand(StepState& s) const;
   void interpolate(double t_out, Sample& out) const;
+  // After a step from curr_ that failed with `why` (Newton after its halvings, or a singular
+  // iteration matrix): at a singular configuration, restart past it on the grid (success) or
+  // fail naming it (singular_step_over.h); nullopt when not at one.
+  std::optional<Status> step_over_singular_configuration(const std::string& why);
   // Fails with `why` at curr_; Newton's and the matrix's failures at a singular configuration
   // say so, with what to change (singular_failure_message).
   Status failure(StatusCode code, const std::string& why);
@@ -197,7 +210,7 @@ class GeneralizedAlpha final : public Integrator {
   double h_try_ = 0.0;
   int halvings_ = 0;
   bool stepped_over_ = false;  // a step onto a singular configuration was stretched past it
-  double margin_start_ = 1.0;  // the held rows' rank margin at the start (singular_step_over.h)
+  SingularStepOvers step_overs_;  // singular configurations stepped over (singular_step_over.h)
   bool failed_ = false;
   Status failure_;
   std::vector<int> pending_events_;  // located at curr_.t, applied before the next step

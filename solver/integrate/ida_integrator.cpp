@@ -3,12 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <fmt/format.h>
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
@@ -19,6 +17,9 @@
 #include "integrate/combined_statistics.h"
 #include "integrate/consistent_state.h"
 #include "integrate/dense_lu_solver.h"
+#include "integrate/ggl_equations.h"
+#include "integrate/ida_first_step.h"
+#include "integrate/ida_status.h"
 #include "integrate/singular_step_over.h"
 
 namespace limber::integrate {
@@ -48,9 +49,6 @@ constexpr double kMaxStepGrowth = 1.5;
 // Non-finite residuals IDA may recover from (by cutting the step) within one advance_to.
 constexpr int kMaxNonFiniteRetries = 10;
 
-// Step-overs of singular configurations (singular_step_over.h) without an accepted step between
-// them after which the run stops: each lands where the rank margin is at least the departure's.
-constexpr int kMaxStepOversInARow = 3;
 // Rejected attempts within one accepted step within kStruggleRatio of a singular
 // configuration after which IDA steps over it at once instead of crawling on to its
 // corrector's failure (at rtol 1e-8 the simple parallelogram took 200 rejected steps per
@@ -59,48 +57,12 @@ constexpr int kMaxStepOversInARow = 3;
 constexpr int kStruggle = 3;
 constexpr double kStruggleRatio = 1e-2;
 
-// Weighted RMS norm of x with IDA's weights 1/(rtol |y| + atol).
-double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double rtol, double atol) {
-  if (x.size() == 0) return 0.0;
-  const Eigen::ArrayXd weight = 1.0 / (rtol * y.array().abs() + atol);
-  return std::sqrt((x.array() * weight).square().mean());
-}
-
-// First step from the second derivative (Hairer, Nørsett & Wanner, Solving ODEs I, §II.4):
-// ‖y'‖ and ‖y''‖ of [q, v] in IDA's weights, y'' by a difference of accelerations over an
-// explicit Euler step. IDA's own choice, 0.5/‖y'‖, is first-order: a body at rest with an
-// acceleration a and atol = 1e-10 gets h0 ~ 1e-10/a, where the multipliers, which carry
-// round-off divided by h, cannot converge in Newton.
-double initial_step(const MechanicalSystem& system, const InitialState& x0,
-                    const Eigen::VectorXd& vdot, const IntegratorOptions& options) {
-  const int nq = system.nq(), nv = system.nv();
-  Eigen::MatrixXd N(nq, nv), N1(nq, nv);
-  system.kinematic_matrix(x0.q, N);
-  Eigen::VectorXd y(nq + nv), yp(nq + nv);
-  y << x0.q, x0.v;
-  yp << N * x0.v, vdot;
-  const double d0 = weighted_rms(y, y, options.rtol, options.atol);
-  const double d1 = weighted_rms(yp, y, options.rtol, options.atol);
-  const double h_trial = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-  Eigen::VectorXd q1, v1 = x0.v + h_trial * vdot, vdot1, lambda1;
-  system.integrate_coordinates(x0.q, h_trial * x0.v, q1);
-  if (!solve_accelerations(system, x0.t + h_trial, q1, v1, vdot1, lambda1).ok()) return h_trial;
-  system.kinematic_matrix(q1, N1);
-  Eigen::VectorXd ypp(nq + nv);
-  ypp << (N1 * v1 - N * x0.v) / h_trial, (vdot1 - vdot) / h_trial;
-  const double d2 = weighted_rms(ypp, y, options.rtol, options.atol);
-  const double h_second = std::max(d1, d2) <= 1e-15 ? std::max(1e-6, 1e-3 * h_trial)
-                                                   : std::sqrt(0.01 / std::max(d1, d2));
-  return std::min(100.0 * h_trial, h_second);
-}
-
 }  // namespace
 
-struct IdaIntegrator::Impl {
+// The layout of y = [q, v, λ, μ, z] is the equations' (ggl_equations.h).
+struct IdaIntegrator::Impl : GglLayout {
   WallClockBudget budget;  // IntegratorOptions::max_wall_seconds
-  // Layout of y = [q, v, λ, μ, z].
-  int nq = 0, nv = 0, nc = 0, nh = 0, nz = 0;
-  int iv = 0, ilambda = 0, imu = 0, iz = 0, n = 0;
+  std::optional<GglEquations> equations;  // F and its Newton matrix
 
   const MechanicalSystem* system = nullptr;
   IntegratorOptions options;
@@ -117,17 +79,7 @@ struct IdaIntegrator::Impl {
   std::vector<double> breakpoints;  // velocity breakpoints after t0, before t_stop, ascending
   std::size_t next_breakpoint = 0;  // the first not yet passed
   Eigen::VectorXd e_values;
-  // Singular configurations stepped over (singular_step_over.h): the held rows' rank margin at
-  // the start, the consecutive step-overs, and the last jump, whose inside samples are served by
-  // its prediction (v̇, λ and the integrals linear between its ends).
-  double margin_start = 1.0;
-  int step_overs_in_a_row = 0;
-  struct Jump {
-    double t0 = 0.0, t1 = 0.0;
-    Eigen::VectorXd q0, v0, vdot0, lambda0, z0;  // at t0
-    Eigen::VectorXd vdot1, lambda1, z1;          // at t1
-  };
-  std::optional<Jump> jump;
+  SingularStepOvers step_overs;  // singular configurations stepped over (singular_step_over.h)
   bool jumped = false;  // restarted past a singular configuration, not stepped since
   long rejected_before = 0;  // rejected attempts before the last accepted step
   int lambda_relaxations = 0;  // λ's Newton weight loosened (kLambdaRelaxation) so far
@@ -139,15 +91,9 @@ struct IdaIntegrator::Impl {
   SUNLinearSolver solver = nullptr;
   void* ida = nullptr;
 
-  // Scratch space for the residual.
-  Eigen::VectorXd q, v, vdot, lambda, mu_g, mu_h, h, f;
-  Eigen::MatrixXd N, h_q;
-  SystemEvaluation eval;  // M, Q, g, G, g_t, g_q at the residual's (t, q, v)
-
-  // For the structured Newton matrix (jacobian below): the system's diagonal stiffness and
-  // damping, and scratch space.
-  Eigen::VectorXd stiffness, damping, qdot, q_perturbed;
-  Eigen::MatrixXd N_pinv, N_perturbed, D, g_q_along;
+  // Scratch space: events, y' of a restart.
+  Eigen::VectorXd q, v, f;
+  Eigen::MatrixXd N;
 
   ~Impl() { release(); }
 
@@ -166,111 +112,11 @@ struct IdaIntegrator::Impl {
     y = yp = id = atol_vec = nullptr;
   }
 
-  void unpack(const double* y_data, const double* yp_data) {
-    q = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
-    v = Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv);
-    lambda = Eigen::Map<const Eigen::VectorXd>(y_data + ilambda, nc);
-    mu_g = Eigen::Map<const Eigen::VectorXd>(y_data + imu, nc);
-    mu_h = Eigen::Map<const Eigen::VectorXd>(y_data + imu + nc, nh);
-    vdot = Eigen::Map<const Eigen::VectorXd>(yp_data + iv, nv);
-  }
-
-  // F(t, y, y') of the GGL system; on non-finite values returns 1 (recoverable: IDA cuts the
+  // F(t, y, y') (ggl_equations.h); on non-finite values returns 1 (recoverable: IDA cuts the
   // step) at most kMaxNonFiniteRetries times per advance_to, then −1 (IDA_RES_FAIL).
   int residual(double t, const double* y_data, const double* yp_data, double* r_data) {
-    unpack(y_data, yp_data);
-    Eigen::Map<Eigen::VectorXd> r(r_data, n);
-    Eigen::Map<const Eigen::VectorXd> qdot(yp_data, nq);
-    system->kinematic_matrix(q, N);
-    system->evaluate(t, q, v, true, eval);
-    system->coordinate_invariants(q, h, h_q);
-
-    // Kinematics with the GGL stabilising term, dynamics, velocity and position constraints.
-    r.head(nq).noalias() = qdot - N * v;
-    r.head(nq).noalias() += eval.g_q.transpose() * mu_g;
-    r.head(nq).noalias() += h_q.transpose() * mu_h;
-    r.segment(iv, nv).noalias() = eval.M * vdot - eval.Q;
-    r.segment(iv, nv).noalias() += eval.G.transpose() * lambda;
-    r.segment(ilambda, nc).noalias() = eval.G * v + eval.g_t;
-    r.segment(imu, nc) = eval.g;
-    r.segment(imu + nc, nh) = h;
-    // Quadratures.
-    if (nz > 0) {
-      options.quadrature.integrand(t, q, v, vdot, lambda, f);
-      r.segment(iz, nz) = Eigen::Map<const Eigen::VectorXd>(yp_data + iz, nz) - f;
-    }
-    // Non-finite: let IDA retry with a smaller step a bounded number of times, then stop.
-    if (r.allFinite()) return 0;
+    if (equations->residual(t, y_data, yp_data, r_data)) return 0;
     return ++nonfinite_residuals <= kMaxNonFiniteRetries ? 1 : -1;
-  }
-
-  // The Newton matrix J = ∂F/∂y + c_j ∂F/∂y' (column-major n x n) from the form of F, one
-  // evaluation of the system at (t, q, v) and one of ∂g/∂q along the motion; no residual:
-  //   [c_j I − D   −N            0    g_qᵀ  h_qᵀ  0    ]   q
-  //   [k N⁺        c_j M + c     Gᵀ   0     0     0    ]   v
-  //   [L           G             0    0     0     0    ]   λ (velocity constraints)
-  //   [g_q; h_q    0             0    0     0     0    ]   μ (position constraints, invariants)
-  //   [0           0             0    0     0     c_j I]   z
-  // D = ∂(N v)/∂q by differences of N alone (the quaternion rates), k and c the system's
-  // diagonal stiffness and damping (as generalized-α's structured matrix; −∂Q/∂q ≈ k ∂ξ/∂q =
-  // k N⁺ on the tangent space, N⁺ = (NᵀN)⁻¹Nᵀ), and L = ∂(G v + g_t)/∂q = ∂(g_q q̇ + g_t)/∂q:
-  // by the symmetry of g's second derivatives, [g_q(t + ε, q + ε q̇) − g_q(t, q)]/ε + g_q D with
-  // q̇ = N v, one constraint pass. L is not small: the μ rows move q by O(g) whatever the step,
-  // and without L the velocity rows' Newton error stays O(1) as h → 0 (the seed set-up then
-  // failed its corrector down to h = 2e-10). Left out, each O(h) against the blocks kept
-  // once c_j ~ 1/h scales them: ∂(M v' + Gᵀλ − Q)/∂q beyond k, ∂Q/∂v beyond c (quadratic-
-  // velocity forces, force elements), ∂(g_qᵀμ)/∂q (μ = 0 on the solution) and the integrals'
-  // −∂f (nothing depends on z: its Newton iterates lag the others' by one iteration). They only
-  // slow Newton, which IDA watches (a slow or failed iteration gets a fresh matrix, then a
-  // smaller step). Where they matter Newton fails step after step (the satellite deployment:
-  // 36 006 steps, 17 464 rejected, against 6 408 with differences), so this matrix is chosen per
-  // case (IntegratorOptions::ida_newton_matrix); handing over to differences mid-run made IDA
-  // fail at a driver's kink and on the spinning beam. Returns 1 (recoverable) on non-finite values.
-  int jacobian(double t, double c_j, const double* y_data, const double* yp_data, double* J_data) {
-    unpack(y_data, yp_data);
-    Eigen::Map<Eigen::MatrixXd> J(J_data, n, n);
-    system->kinematic_matrix(q, N);
-    system->evaluate(t, q, v, true, eval);
-    system->coordinate_invariants(q, h, h_q);
-    // D = ∂(N v)/∂q by forward differences of N (no model evaluation).
-    const double root_epsilon = std::sqrt(std::numeric_limits<double>::epsilon());
-    qdot.noalias() = N * v;
-    q_perturbed = q;
-    for (int j = 0; j < nq; ++j) {
-      const double increment = root_epsilon * std::max(1.0, std::abs(q(j)));
-      q_perturbed(j) = q(j) + increment;
-      system->kinematic_matrix(q_perturbed, N_perturbed);
-      D.col(j).noalias() = N_perturbed * v;
-      D.col(j) = (D.col(j) - qdot) / increment;
-      q_perturbed(j) = q(j);
-    }
-    // ∂g/∂q a step ε along the motion (t + ε, q + ε q̇).
-    const double epsilon = root_epsilon * std::max(1.0, q.lpNorm<Eigen::Infinity>()) /
-                           std::max(1.0, qdot.lpNorm<Eigen::Infinity>());
-    q_perturbed.noalias() = q + epsilon * qdot;
-    system->constraint_jacobian_q(t + epsilon, q_perturbed, g_q_along);
-    N_pinv.noalias() = (N.transpose() * N).ldlt().solve(N.transpose());
-    J.setZero();
-    // Kinematic rows.
-    J.topLeftCorner(nq, nq) = -D;
-    J.topLeftCorner(nq, nq).diagonal().array() += c_j;
-    J.block(0, iv, nq, nv) = -N;
-    J.block(0, imu, nq, nc) = eval.g_q.transpose();
-    J.block(0, imu + nc, nq, nh) = h_q.transpose();
-    // Dynamics rows.
-    J.block(iv, 0, nv, nq).noalias() = stiffness.asDiagonal() * N_pinv;
-    J.block(iv, iv, nv, nv) = c_j * eval.M;
-    J.block(iv, iv, nv, nv).diagonal() += damping;
-    J.block(iv, ilambda, nv, nc) = eval.G.transpose();
-    // Velocity constraints.
-    J.block(ilambda, 0, nc, nq) = (g_q_along - eval.g_q) / epsilon;
-    J.block(ilambda, 0, nc, nq).noalias() += eval.g_q * D;
-    J.block(ilambda, iv, nc, nv) = eval.G;
-    // Position constraints, invariants, integrals.
-    J.block(imu, 0, nc, nq) = eval.g_q;
-    J.block(imu + nc, 0, nh, nq) = h_q;
-    J.block(iz, iz, nz, nz).diagonal().setConstant(c_j);
-    return J.allFinite() ? 0 : 1;
   }
 
   // IDA's counters since the last (re)start, added to `before` (the totals at that restart).
@@ -421,72 +267,49 @@ struct IdaIntegrator::Impl {
   }
 
   // After a failed step (or a struggling one): at a singular configuration (the held rows' rank
-  // margin below near_ratio of the start's), restart past it (singular_step_over.h). Returns nullopt
-  // when not at one (the caller reports IDA's failure), else success or the failure naming it.
+  // margin below near_ratio of the start's), restart past it, or on other rows where they hold
+  // (singular_step_over.h). Returns nullopt when not at one (the caller reports IDA's failure),
+  // else success or the failure naming it.
   std::optional<Status> step_over_singular_configuration(double near_ratio = kNearSingularRatio) {
     LIMBER_DEMAND(IDAGetDky(ida, t_reached, 0, y) == IDA_SUCCESS);
     Eigen::Map<Eigen::VectorXd> y_now(N_VGetArrayPointer(y), n);
-    Jump j;
-    j.t0 = t_reached;
-    j.q0 = y_now.head(nq);
-    j.v0 = y_now.segment(iv, nv);
-    j.z0 = y_now.segment(iz, nz);
-    const double ratio = held_rows_margin(*system, j.t0, j.q0) / margin_start;
-    if (!(ratio < near_ratio)) return std::nullopt;
-    if (++step_overs_in_a_row > kMaxStepOversInARow) {
-      return Status{StatusCode::kConvergenceFailures, j.t0,
-                    singular_failure_message(j.t0, ratio, fmt::format("IDA's corrector failed after {} step-overs",
-                                                                      kMaxStepOversInARow))};
-    }
     const double limit = next_breakpoint < breakpoints.size() ? breakpoints[next_breakpoint] : options.t_stop;
-    StepOver over = step_over_singular(*system, j.t0, j.q0, j.v0, margin_start, limit);
-    if (!over.status.ok()) return over.status;
-    j.vdot0 = over.vdot_from;
-    j.lambda0 = over.lambda_from;
-    // New rows may suit the landing point better (their multipliers then follow).
-    if (system->reselect_constraints(over.t, over.q)) {
-      const Status solved = solve_accelerations(*system, over.t, over.q, over.v, over.vdot, over.lambda);
-      if (!solved.ok()) return Status{solved.code, over.t, singular_failure_message(over.t, ratio, solved.message)};
-    }
-    // An event between the ends would be missed: refuse rather than skip it.
-    if (ne > 0) {
-      Eigen::VectorXd e0, e1;
-      system->event_functions(j.t0, j.q0, j.v0, e0);
-      system->event_functions(over.t, over.q, over.v, e1);
-      for (int k = 0; k < ne; ++k) {
-        if (e0(k) < 0.0 && e1(k) >= 0.0) {
-          return Status{StatusCode::kConvergenceFailures, j.t0,
-                        singular_failure_message(j.t0, ratio, "a hinge limit switches inside the stretch")};
-        }
-      }
-    }
-    // The integrals by the trapezoidal rule over the jump.
-    j.t1 = over.t;
-    j.vdot1 = over.vdot;
-    j.lambda1 = over.lambda;
-    j.z1 = j.z0;
-    if (nz > 0) {
-      Eigen::VectorXd f0(nz);
-      options.quadrature.integrand(j.t0, j.q0, j.v0, j.vdot0, j.lambda0, f0);
-      options.quadrature.integrand(over.t, over.q, over.v, over.vdot, over.lambda, f);
-      j.z1 += 0.5 * (over.t - j.t0) * (f0 + f);
-    }
-    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(y), n).segment(iz, nz) = j.z1;
-    load_state(over.t, over.q, over.v, over.vdot, over.lambda);
-    reinit(over.t, 0.1 * (over.t - j.t0));
-    jump = std::move(j);
+    const StepOverOutcome over =
+        step_overs.step_over(*system, options.quadrature, t_reached, y_now.head(nq), y_now.segment(iv, nv),
+                             y_now.segment(iz, nz), limit, "IDA's corrector failed", near_ratio);
+    if (over.kind == StepOverOutcome::kNotSingular) return std::nullopt;
+    if (over.kind == StepOverOutcome::kRowsReselected) restart(t_reached);
+    if (over.kind != StepOverOutcome::kSteppedOver) return over.status;
+    const SteppedOverStretch& stretch = step_overs.stretch();
+    y_now.segment(iz, nz) = stretch.z1;
+    load_state(stretch.t1, stretch.q1, stretch.v1, stretch.vdot1, stretch.lambda1);
+    reinit(stretch.t1, 0.1 * (stretch.t1 - stretch.t0));
     jumped = true;
-    return Status::success(over.t);
+    return over.status;
   }
 
-  // A sample inside the last jump (t0 < t < t1): its prediction, the rest linear.
-  void serve_from_jump(double t_out, Sample& out) const {
-    const Jump& j = *jump;
-    const double theta = (t_out - j.t0) / (j.t1 - j.t0);
-    predict_across(*system, j.t0, j.q0, j.v0, j.vdot0, t_out, out.q, out.v);
-    out.vdot = (1.0 - theta) * j.vdot0 + theta * j.vdot1;
-    out.lambda = (1.0 - theta) * j.lambda0 + theta * j.lambda1;
-    out.integrals = (1.0 - theta) * j.z0 + theta * j.z1;
+  // After IDASolve failed with `flag`: true when IDA goes on (restarted past a singular
+  // configuration, or on other rows, or with λ's weight loosened), else false with the failure.
+  bool recover_from_failure(int flag) {
+    // At a singular configuration: restart past it, or stop naming it.
+    if (const std::optional<Status> over = step_over_singular_configuration()) {
+      if (over->ok()) return true;
+      failed = true;
+      failure = *over;
+      return false;
+    }
+    // Elsewhere, a corrector that cannot converge λ to its weight: loosen it and go on.
+    if (flag == IDA_CONV_FAIL && relax_multiplier_weight()) return true;
+    double t_fail = t_reached;
+    IDAGetCurrentTime(ida, &t_fail);
+    failed = true;
+    failure = {status_code_of_ida_flag(flag), t_fail,
+               fmt::format("at t = {:.6g} s: IDA failed with flag {} ({}{})", t_fail, flag, last_message,
+                           flag == IDA_CONV_FAIL && lambda_relaxations > 0
+                               ? fmt::format("; the multipliers' Newton weight loosened {} times before",
+                                             lambda_relaxations)
+                               : "")};
+    return false;
   }
 
   // IntegratorOptions::on_step with the state IDA returned at t (the end of its step, or a
@@ -514,8 +337,11 @@ namespace {
 
 int ida_jacobian(double t, double c_j, N_Vector y, N_Vector yp, N_Vector, SUNMatrix J,
                  void* user_data, N_Vector, N_Vector, N_Vector) {
-  return static_cast<IdaIntegrator::Impl*>(user_data)->jacobian(
-      t, c_j, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), SUNDenseMatrix_Data(J));
+  // 1 (recoverable) on non-finite values.
+  return static_cast<IdaIntegrator::Impl*>(user_data)->equations->newton_matrix(
+             t, c_j, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), SUNDenseMatrix_Data(J))
+             ? 0
+             : 1;
 }
 
 int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
@@ -533,26 +359,6 @@ void ida_error_handler(int, const char* module, const char* function, char* mess
                        void* user_data) {
   static_cast<IdaIntegrator::Impl*>(user_data)->last_message =
       fmt::format("{}:{}: {}", module, function, message);
-}
-
-// Our status for an IDASolve return flag.
-StatusCode status_code(int flag) {
-  switch (flag) {
-    case IDA_ERR_FAIL:
-    case IDA_TOO_MUCH_ACC:
-      return StatusCode::kErrorTestFailures;
-    case IDA_LSETUP_FAIL:
-    case IDA_LSOLVE_FAIL:
-      return StatusCode::kSingularJacobian;
-    case IDA_RES_FAIL:
-    case IDA_REP_RES_ERR:
-    case IDA_FIRST_RES_FAIL:
-      return StatusCode::kNaN;
-    case IDA_TOO_MUCH_WORK:
-      return StatusCode::kTooManySteps;
-    default:
-      return StatusCode::kConvergenceFailures;
-  }
 }
 
 }  // namespace
@@ -582,9 +388,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   s.restart_statistics = {};
   s.t_reached = x0.t;
   s.pending_events.clear();
-  s.step_overs_in_a_row = 0;
   s.rejected_before = 0;
-  s.jump.reset();
   s.jumped = false;
   s.ne = system.num_events();
   s.breakpoints.clear();
@@ -597,26 +401,10 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
   stats_ = {};
 
   // Sizes and layout of y = [q, v, λ, μ, z].
-  s.nq = system.nq();
-  s.nv = system.nv();
-  s.nc = system.nc();
-  s.nh = system.nh();
-  s.nz = options.quadrature.size;
-  s.iv = s.nq;
-  s.ilambda = s.iv + s.nv;
-  s.imu = s.ilambda + s.nc;
-  s.iz = s.imu + s.nc + s.nh;
-  s.n = s.iz + s.nz;
-  s.h.resize(s.nh);
+  s.equations.emplace(system, s.options.quadrature);
+  static_cast<GglLayout&>(s) = s.equations->layout();
   s.f.resize(s.nz);
   s.N.resize(s.nq, s.nv);
-  s.h_q.resize(s.nh, s.nq);
-  s.D.resize(s.nq, s.nq);
-  // Systems without a diagonal stiffness and damping get a structured matrix without them.
-  if (!system.diagonal_stiffness_damping(s.stiffness, s.damping)) {
-    s.stiffness.setZero(s.nv);
-    s.damping.setZero(s.nv);
-  }
 
   // Consistent initial state: projected q, v; v̇, λ from the saddle-point system.
   Eigen::VectorXd q = x0.q, v = x0.v, vdot, lambda;
@@ -627,7 +415,7 @@ Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x
     s.failure = status;
     return status;
   }
-  s.margin_start = held_rows_margin(system, x0.t, q);
+  s.step_overs.start(system, x0.t, q);
 
   // y0 = [q, v, λ, 0, 0], y0' = [N v, v̇, 0, 0, f]; id marks q, v, z differential.
   LIMBER_DEMAND(SUNContext_Create(nullptr, &s.context) == 0);
@@ -741,44 +529,23 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       }
       s.read_statistics(stats_, s.restart_statistics);
       if (flag < 0) {
-        // At a singular configuration: restart past it, or stop naming it.
-        if (const std::optional<Status> over = s.step_over_singular_configuration()) {
-          if (over->ok()) continue;
-          s.failed = true;
-          s.failure = *over;
-          return s.failure;
-        }
-        // Elsewhere, a corrector that cannot converge λ to its weight: loosen it and go on.
-        if (flag == IDA_CONV_FAIL && s.relax_multiplier_weight()) continue;
-        double t_fail = t_out;
-        IDAGetCurrentTime(s.ida, &t_fail);
-        s.failed = true;
-        s.failure = {status_code(flag), t_fail,
-                     fmt::format("at t = {:.6g} s: IDA failed with flag {} ({}{})", t_fail, flag, s.last_message,
-                                 flag == IDA_CONV_FAIL && s.lambda_relaxations > 0
-                                     ? fmt::format("; the multipliers' Newton weight loosened {} times before",
-                                                   s.lambda_relaxations)
-                                     : "")};
+        if (s.recover_from_failure(flag)) continue;
         return s.failure;
       }
       s.jumped = false;
-      s.step_overs_in_a_row = 0;
+      s.step_overs.accepted_step();
       const long rejected = stats_.rejected_steps - s.rejected_before;
       s.rejected_before = stats_.rejected_steps;
       if (s.options.on_step) s.report_step(t_current);
-      if (s.budget.spent()) {
+      if (s.budget.spent() || stats_.steps > s.options.max_steps) {
         s.failed = true;
-        s.failure = {StatusCode::kWallClock, t_current,
-                     fmt::format("at t = {:.6g} s: the wall-clock budget of {:g} s is spent (last step "
-                                 "{:.3g} s)",
-                                 t_current, s.options.max_wall_seconds, stats_.last_step)};
-        return s.failure;
-      }
-      if (stats_.steps > s.options.max_steps) {
-        s.failed = true;
-        s.failure = {StatusCode::kTooManySteps, t_current,
-                     fmt::format("at t = {:.6g} s: more than {} steps", t_current,
-                                 s.options.max_steps)};
+        s.failure = s.budget.spent()
+                        ? Status{StatusCode::kWallClock, t_current,
+                                 fmt::format("at t = {:.6g} s: the wall-clock budget of {:g} s is spent (last "
+                                             "step {:.3g} s)",
+                                             t_current, s.options.max_wall_seconds, stats_.last_step)}
+                        : Status{StatusCode::kTooManySteps, t_current,
+                                 fmt::format("at t = {:.6g} s: more than {} steps", t_current, s.options.max_steps)};
         return s.failure;
       }
       // Struggling near a singular configuration: step over it now (a failed try leaves IDA
@@ -786,9 +553,8 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       if (rejected >= kStruggle && s.pending_events.empty()) s.step_over_singular_configuration(kStruggleRatio);
     }
     // A sample inside a stretch stepped over (before IDA's restart there).
-    if (s.jump && t_out < s.jump->t1 - time_tolerance(t_out)) {
-      out.t = t_out;
-      s.serve_from_jump(t_out, out);
+    if (const SteppedOverStretch* stretch = s.step_overs.holding(t_out)) {
+      stretch->serve(*s.system, t_out, out);
       out.statistics = stats_;
       return Status::success(t_out);
     }

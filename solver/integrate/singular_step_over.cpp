@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <utility>
+
 
 #include <Eigen/SVD>
 #include <fmt/format.h>
@@ -48,7 +51,8 @@ std::string singular_failure_message(double t, double ratio, const std::string& 
 }
 
 StepOver step_over_singular(const MechanicalSystem& system, double t, const Eigen::VectorXd& q_failed,
-                            const Eigen::VectorXd& v_failed, double margin_start, double t_limit) {
+                            const Eigen::VectorXd& v_failed, double margin_start, double t_limit,
+                            const std::function<double(double)>& landing_time) {
   StepOver out;
   const Eigen::VectorXd& q = out.q_from = q_failed;
   const Eigen::VectorXd& v = out.v_from = v_failed;
@@ -69,18 +73,34 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
   Eigen::MatrixXd N;
   system.kinematic_matrix(q, N);
   const double speed = (N * v).lpNorm<Eigen::Infinity>();
+  double rate = 0.0;
+  if (speed > 0.0) {
+    const double epsilon = 1e-7 * std::max(1.0, q.lpNorm<Eigen::Infinity>()) / speed;
+    Eigen::VectorXd q_ahead;
+    system.integrate_coordinates(q, epsilon * v, q_ahead);
+    rate = (held_rows_margin(system, t + epsilon, q_ahead) - sigma) / epsilon;
+  }
+  // A rank lost here, or lost ahead (or just behind) along the motion: by the set of rows held,
+  // which other rows cure (the system reselects them there), or by the mechanism.
+  out.near = ratio < kRankLostRatio;
+  if (!out.near && rate != 0.0) {
+    const double t_instant = t - sigma / rate;
+    Eigen::VectorXd q_instant, v_instant;
+    const bool projected = predict_across(system, t, q, v, vdot, t_instant, q_instant, v_instant);
+    out.near = !projected || held_rows_margin(system, t_instant, q_instant) < kRankLossConfirmRatio * sigma;
+    out.rows_reselected = out.near && projected && system.reselect_constraints(t_instant, q_instant) &&
+                          !(held_rows_margin(system, t_instant, q_instant) < kNearSingularRatio * margin_start);
+    if (out.rows_reselected) return out;
+  }
+  if (!out.near) return out;
   if (!(speed > 0.0)) return fail("the mechanism rests");
-  const double epsilon = 1e-7 * std::max(1.0, q.lpNorm<Eigen::Infinity>()) / speed;
-  Eigen::VectorXd q_ahead;
-  system.integrate_coordinates(q, epsilon * v, q_ahead);
-  const double rate = std::abs(held_rows_margin(system, t + epsilon, q_ahead) - sigma) / epsilon;
-  if (!(rate > 0.0)) return fail("the rank margin does not change along the motion");
+  if (rate == 0.0) return fail("the rank margin does not change along the motion");
   // Land as far past the singular instant as the failure stood before it; further when the
   // landing point is no better conditioned than the departure.
-  double delta = 2.0 * sigma / rate;
+  double delta = 2.0 * sigma / std::abs(rate);
   for (int doubling = 0; doubling <= kMaxStepOverDoublings; ++doubling, delta *= 2.0) {
-    if (t + delta > t_limit) return fail("the stretch to step over reaches the end of the run or a jump");
-    out.t = t + delta;
+    out.t = landing_time ? landing_time(t + delta) : t + delta;
+    if (out.t > t_limit) return fail("the stretch to step over reaches the end of the run or a jump");
     if (!predict_across(system, t, q, v, vdot, out.t, out.q, out.v)) continue;
     if (held_rows_margin(system, out.t, out.q) < sigma) continue;
     const Status solved = solve_accelerations(system, out.t, out.q, out.v, out.vdot, out.lambda);
@@ -90,6 +110,83 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
   }
   return fail(fmt::format("no state past it up to 2^{} times its distance is better conditioned",
                           kMaxStepOverDoublings));
+}
+
+void SteppedOverStretch::serve(const MechanicalSystem& system, double t, Sample& out) const {
+  const double theta = (t - t0) / (t1 - t0);
+  out.t = t;
+  predict_across(system, t0, q0, v0, vdot0, t, out.q, out.v);
+  out.vdot = (1.0 - theta) * vdot0 + theta * vdot1;
+  out.lambda = (1.0 - theta) * lambda0 + theta * lambda1;
+  out.integrals = (1.0 - theta) * z0 + theta * z1;
+}
+
+void SingularStepOvers::start(const MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
+  margin_start_ = held_rows_margin(system, t, q);
+  in_a_row_ = 0;
+  stretch_.reset();
+}
+
+const SteppedOverStretch* SingularStepOvers::holding(double t) const {
+  if (!stretch_ || !(t < stretch_->t1 - 1e-12 * std::max(1.0, std::abs(t)))) return nullptr;
+  return &*stretch_;
+}
+
+StepOverOutcome SingularStepOvers::step_over(const MechanicalSystem& system, const Quadrature& quadrature, double t,
+                                             const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& z,
+                                             double t_limit, const std::string& what_failed, double near_ratio,
+                                             const std::function<double(double)>& landing_time) {
+  const double ratio = held_rows_margin(system, t, q) / margin_start_;
+  if (!(ratio < near_ratio)) return {};
+  StepOver over = step_over_singular(system, t, q, v, margin_start_, t_limit, landing_time);
+  if (!over.near) return {};
+  const auto failed = [](Status status) { return StepOverOutcome{StepOverOutcome::kFailed, std::move(status)}; };
+  if (++in_a_row_ > kMaxStepOversInARow) {
+    return failed({StatusCode::kConvergenceFailures, t,
+                   singular_failure_message(t, ratio, fmt::format("{} after {} step-overs", what_failed,
+                                                                  kMaxStepOversInARow))});
+  }
+  if (over.rows_reselected) return {StepOverOutcome::kRowsReselected, Status::success(t)};
+  if (!over.status.ok()) return failed(over.status);
+  // New rows may suit the landing point better (their multipliers then follow).
+  if (system.reselect_constraints(over.t, over.q)) {
+    const Status solved = solve_accelerations(system, over.t, over.q, over.v, over.vdot, over.lambda);
+    if (!solved.ok()) return failed({solved.code, over.t, singular_failure_message(over.t, ratio, solved.message)});
+  }
+  // An event between the ends would be missed: refuse rather than skip it.
+  if (const int ne = system.num_events(); ne > 0) {
+    Eigen::VectorXd e0, e1;
+    system.event_functions(t, q, v, e0);
+    system.event_functions(over.t, over.q, over.v, e1);
+    for (int k = 0; k < ne; ++k) {
+      if (e0(k) < 0.0 && e1(k) >= 0.0) {
+        return failed({StatusCode::kConvergenceFailures, t,
+                       singular_failure_message(t, ratio, "a hinge limit switches inside the stretch")});
+      }
+    }
+  }
+  SteppedOverStretch s;
+  s.t0 = t;
+  s.q0 = q;
+  s.v0 = v;
+  s.vdot0 = std::move(over.vdot_from);
+  s.lambda0 = std::move(over.lambda_from);
+  s.z0 = z;
+  s.t1 = over.t;
+  s.q1 = std::move(over.q);
+  s.v1 = std::move(over.v);
+  s.vdot1 = std::move(over.vdot);
+  s.lambda1 = std::move(over.lambda);
+  // The integrals by the trapezoidal rule across the stretch.
+  s.z1 = z;
+  if (quadrature.size > 0) {
+    Eigen::VectorXd f0(quadrature.size), f1(quadrature.size);
+    quadrature.integrand(s.t0, s.q0, s.v0, s.vdot0, s.lambda0, f0);
+    quadrature.integrand(s.t1, s.q1, s.v1, s.vdot1, s.lambda1, f1);
+    s.z1 += 0.5 * (s.t1 - s.t0) * (f0 + f1);
+  }
+  stretch_ = std::move(s);
+  return {StepOverOutcome::kSteppedOver, Status::success(stretch_->t1)};
 }
 
 }  // namespace limber::integrate

@@ -72,10 +72,10 @@ class BricardAngles {
   }
 };
 
-// Runs the linkage to t_end at the setting (singular_family.h), results.h5 into `results_dir`
-// when given.
+// Runs the linkage to t_end at the setting (singular_family.h; IDA's atol when positive),
+// results.h5 into `results_dir` when given.
 inline BricardRun run_bricard(integrate::Method method, double rtol_or_step, double t_end,
-                              const std::filesystem::path& results_dir = {}) {
+                              const std::filesystem::path& results_dir = {}, double atol = 0.0) {
   const io::Mechanism built = build_test_case(kBricardStem);
   const BricardAngles angles(built.model);
   BricardRun out;
@@ -91,7 +91,7 @@ inline BricardRun run_bricard(integrate::Method method, double rtol_or_step, dou
     out.t.push_back(sample.t);
     out.q.push_back(sample.q);
   };
-  out.summary = run_at_setting(built, method, rtol_or_step, t_end, hooks, results_dir);
+  out.summary = run_at_setting(built, method, rtol_or_step, t_end, hooks, results_dir, atol);
   return out;
 }
 

@@ -91,5 +91,29 @@ TEST(BricardLinkage, IdaStartsAtRtol1e10WithAtol1e12) {
   }
 }
 
+// IDA at rtol 1e-10 with atol 1e-12 past t = 0.214 s, where the rows IDA holds lose rank
+// (their smallest singular value falls to 2e-3 of its start value) while the 31 equations keep
+// rank 30: other rows hold there. IDA's corrector fails 2 ms before it, and the failure was
+// taken for a singular configuration and stepped over (a 10 ms Taylor step: the symmetry still
+// 4e-12 rad, but the energy balance 1.2e-3 of the scale from the integrals across the stretch).
+// Now the system reselects its rows there and IDA restarts on them (singular_step_over.h).
+// Bounds against the closed form with room for IDA's error control at rtol 1e-10 over 0.3 m
+// lengths: symmetry and driver angle 1e-9 rad (measured 4.2e-12), energy balance 1e-7 of the
+// scale (measured 1.8e-9; the step-over's 1.2e-3 is far above), no passage.
+TEST(BricardLinkage, IdaAtRtol1e10ReselectsRowsWhereTheHeldOnesLoseRank) {
+  const BricardRun r = run_bricard(integrate::Method::kIda, 1e-10, 0.5, {}, 1e-12);
+  const RunSummary& s = r.summary;
+  std::printf("  ida: %s, symmetry %.2e rad, driver %.2e rad, energy %.2e, %ld steps, %ld rejected\n",
+              s.ok ? "ok" : s.message.c_str(), r.max_symmetry_error, r.max_driver_error, s.accuracy.energy_relative,
+              s.statistics.steps, s.statistics.rejected_steps);
+  ASSERT_TRUE(s.ok) << s.message;
+  EXPECT_NEAR(s.t_reached, 0.5, 1e-12);
+  EXPECT_LT(r.max_symmetry_error, 1e-9);
+  EXPECT_LT(r.max_driver_error, 1e-9);
+  EXPECT_LT(s.accuracy.energy_relative, 1e-7);
+  EXPECT_TRUE(s.accurate());
+  EXPECT_TRUE(s.singular_passages.empty()) << s.singular_passages.front().message();
+}
+
 }  // namespace
 }  // namespace limber::run

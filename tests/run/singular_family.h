@@ -32,16 +32,16 @@ inline io::Mechanism build_test_case(const std::string& stem) {
 }
 
 // The case's run settings to t_end with IDA at rtol (atol rtol/100, at least 1e-10, the rule
-// the parallelogram chains' table was measured with: docs/integrators.md) or generalized-α at
-// `step`.
+// the parallelogram chains' table was measured with: docs/integrators.md; `atol` instead when
+// positive) or generalized-α at `step`.
 inline io::RunSettings settings_at(const io::Mechanism& built, integrate::Method method,
-                                   double rtol_or_step, double t_end) {
+                                   double rtol_or_step, double t_end, double atol = 0.0) {
   io::RunSettings settings = built.run;
   settings.t_end = t_end;
   settings.integrator.method = method;
   if (method == integrate::Method::kIda) {
     settings.integrator.rtol = rtol_or_step;
-    settings.integrator.atol = std::max(1e-2 * rtol_or_step, 1e-10);
+    settings.integrator.atol = atol > 0.0 ? atol : std::max(1e-2 * rtol_or_step, 1e-10);
   } else {
     settings.integrator.step = rtol_or_step;
   }
@@ -52,8 +52,8 @@ inline io::RunSettings settings_at(const io::Mechanism& built, integrate::Method
 // there too.
 inline run::RunSummary run_at_setting(const io::Mechanism& built, integrate::Method method, double rtol_or_step,
                                       double t_end, run::RunHooks hooks,
-                                      const std::filesystem::path& results_dir = {}) {
-  const io::RunSettings settings = settings_at(built, method, rtol_or_step, t_end);
+                                      const std::filesystem::path& results_dir = {}, double atol = 0.0) {
+  const io::RunSettings settings = settings_at(built, method, rtol_or_step, t_end, atol);
   if (results_dir.empty()) return run::run_mechanism(built.model, built.assembly, settings, hooks);
   results::ResultsWriter writer(results_dir, "singular family", "");
   hooks.writer = &writer;
