@@ -280,17 +280,24 @@ py::object results_of(const results::H5Reader& file, py::object path) {
   return py::cast(std::move(r));
 }
 
+// HDF5 is not thread-safe (h5_handle.h): runs on other threads write while this thread reads.
+// The lock is taken with the GIL released: a thread holding it may wait for the GIL (numpy
+// releases it while it copies), so waiting for the lock with the GIL held would deadlock.
+std::unique_lock<std::recursive_mutex> lock_hdf5() {
+  const py::gil_scoped_release released;
+  return std::unique_lock(results::hdf5_lock());
+}
+
 }  // namespace
 
-// HDF5 is not thread-safe (h5_handle.h): runs on other threads write while this thread reads.
 py::object read_results(const std::filesystem::path& path) {
-  const std::lock_guard lock(results::hdf5_lock());
+  const auto lock = lock_hdf5();
   const results::H5Reader file(path, "results file", "(expected DIR/results.h5 of `limber run` or limber.run)");
   return results_of(file, py::cast(path.string()));
 }
 
 py::object read_results(const std::vector<unsigned char>& image) {
-  const std::lock_guard lock(results::hdf5_lock());
+  const auto lock = lock_hdf5();
   return results_of(results::H5Reader(image, "results.h5", "results file"), py::none());
 }
 

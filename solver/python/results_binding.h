@@ -16,7 +16,8 @@ void bind_results(pybind11::module_& module);
 
 // The results object of the results file `file` (Results.path is its path), or of a results
 // file kept in memory (ResultsWriter::file_image(); Results.path None): one reader for both.
-// Throws InputError when the file is not a readable results file.
+// Throws InputError when the file is not a readable results file. Both take HDF5's lock
+// (results/h5_handle.h) with the GIL released; callers must not hold that lock.
 pybind11::object read_results(const std::filesystem::path& file);
 pybind11::object read_results(const std::vector<unsigned char>& image);
 

@@ -38,12 +38,14 @@ py::object run(const py::object& case_or_path, std::optional<std::string> integr
   const bool check_signals = in_main_thread();
   std::optional<py::error_already_set> raised;  // by a signal handler or the callback
   std::vector<std::string> warnings;
-  // results.h5 in `output`, or the same file in memory: one writer, one reader for both.
-  std::unique_ptr<results::ResultsWriter> writer;
+  // results.h5 in `output`, or the same file in memory: one writer, one reader for both. The
+  // writer lives and dies with the GIL released (it takes HDF5's lock; results_binding.h).
+  std::vector<unsigned char> image;
   {
     py::gil_scoped_release released;
     const run::CaseRun prepared = run::prepare_case_run(*input, overrides, modes);
-    writer = output ? run::open_case_results(*output, *input) : run::open_case_results_in_memory(*input);
+    const std::unique_ptr<results::ResultsWriter> writer =
+        output ? run::open_case_results(*output, *input) : run::open_case_results_in_memory(*input);
     run::RunHooks hooks;
     hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
       if (!check_signals && !progress) return;
@@ -63,11 +65,12 @@ py::object run(const py::object& case_or_path, std::optional<std::string> integr
     } catch (const run::RunStopped&) {
       // The file is closed as "interrupted"; the Python error is raised below.
     }
+    image = writer->file_image();
   }
   if (raised) throw std::move(*raised);
   const py::module_ python_warnings = py::module_::import("warnings");
   for (const std::string& warning : warnings) python_warnings.attr("warn")(warning, py::handle(PyExc_RuntimeWarning), 2);
-  return output ? read_results(*output / results::kResultsFileName) : read_results(writer->file_image());
+  return output ? read_results(*output / results::kResultsFileName) : read_results(image);
 }
 
 }  // namespace
