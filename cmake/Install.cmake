@@ -21,6 +21,7 @@ if(LIMBER_BUILD_PYTHON)
       "Where `cmake --install` puts the Python module, relative to the prefix")
   set_target_properties(limber_python PROPERTIES INSTALL_RPATH_USE_LINK_PATH TRUE)
   install(TARGETS limber_python LIBRARY DESTINATION ${LIMBER_PYTHON_INSTALL_DIR})
+  install(FILES ${PROJECT_SOURCE_DIR}/solver/python/limber.pyi DESTINATION ${LIMBER_PYTHON_INSTALL_DIR})
 endif()
 
 # A Debian package whose dependencies dpkg-shlibdeps reads off the executable's shared

@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "results/event_peaks.h"
 #include "results/file_names.h"
+#include "results/h5_handle.h"
 #include "results/h5_reader.h"
 #include "results/link_name.h"
 #include "results/results_layout.h"
@@ -218,8 +220,8 @@ py::dict events_of(const results::H5Reader& file, const std::vector<std::string>
 
 // The event peaks (results/event_peaks.h) as {window, joints, windows: [{label, start, end,
 // states, force, torque, ...: arrays over the joints}]}, or None.
-py::object event_peaks_of(const std::filesystem::path& path) {
-  const results::EventPeaks peaks = results::read_event_peaks(path);
+py::object event_peaks_of(const results::H5Reader& file) {
+  const results::EventPeaks peaks = results::read_event_peaks(file);
   if (peaks.windows.empty()) return py::none();
   py::list windows;
   for (const results::PeakWindow& window : peaks.windows) {
@@ -246,12 +248,10 @@ py::object event_peaks_of(const std::filesystem::path& path) {
   return result;
 }
 
-}  // namespace
-
-py::object read_results(const std::filesystem::path& path, bool keep_path) {
-  const results::H5Reader file(path, "results file", "(expected DIR/results.h5 of `limber run` or limber.run)");
+// The Results of an open results file; `path` becomes Results.path.
+py::object results_of(const results::H5Reader& file, py::object path) {
   Results r;
-  if (keep_path) r.path = py::cast(path.string());
+  r.path = std::move(path);
   r.status = file.string_attribute("/", layout::kStatusAttribute);
   r.message = file.string_attribute("/", layout::kMessageAttribute, false);
   r.title = file.string_attribute("/", layout::kTitleAttribute, false);
@@ -276,8 +276,29 @@ py::object read_results(const std::filesystem::path& path, bool keep_path) {
   r.events = events_of(file, limit_names);
   r.acceleration_probes =
       series_by_name(file, layout::kAccelerationProbes, layout::acceleration_probe::kAcceleration);
-  r.event_peaks = event_peaks_of(path);
+  r.event_peaks = event_peaks_of(file);
   return py::cast(std::move(r));
+}
+
+// HDF5 is not thread-safe (h5_handle.h): runs on other threads write while this thread reads.
+// The lock is taken with the GIL released: a thread holding it may wait for the GIL (numpy
+// releases it while it copies), so waiting for the lock with the GIL held would deadlock.
+std::unique_lock<std::recursive_mutex> lock_hdf5() {
+  const py::gil_scoped_release released;
+  return std::unique_lock(results::hdf5_lock());
+}
+
+}  // namespace
+
+py::object read_results(const std::filesystem::path& path) {
+  const auto lock = lock_hdf5();
+  const results::H5Reader file(path, "results file", "(expected DIR/results.h5 of `limber run` or limber.run)");
+  return results_of(file, py::cast(path.string()));
+}
+
+py::object read_results(const std::vector<unsigned char>& image) {
+  const auto lock = lock_hdf5();
+  return results_of(results::H5Reader(image, "results.h5", "results file"), py::none());
 }
 
 void bind_results(py::module_& module) {
@@ -314,7 +335,7 @@ void bind_results(py::module_& module) {
   py::class_<Results>(module, "Results",
                       "A run's results (docs/results-format.md), from limber.run or limber.read_results; "
                       "ns samples, arrays are numpy.")
-      .def_readonly("path", &Results::path, "The results.h5 read (None when limber.run wrote it to a temporary folder).")
+      .def_readonly("path", &Results::path, "The results.h5 read (None when limber.run kept the results in memory).")
       .def_readonly("status", &Results::status,
                     "'ok', 'ok_inaccurate' (finished; its own accuracy check failed: see accuracy), "
                     "'failed' (see message), 'interrupted' or 'running' (a killed run)")
@@ -350,7 +371,7 @@ void bind_results(py::module_& module) {
   module.def(
       "read_results",
       [](const std::filesystem::path& path) {
-        return read_results(std::filesystem::is_directory(path) ? path / results::kResultsFileName : path, true);
+        return read_results(std::filesystem::is_directory(path) ? path / results::kResultsFileName : path);
       },
       py::arg("path"),
       "read_results(path) -> Results\n\n"

@@ -15,7 +15,6 @@
 
 #include "python/case_binding.h"
 #include "python/interruptible.h"
-#include "python/temporary_folder.h"
 #include "python/results_binding.h"
 #include "run/case_run.h"
 
@@ -34,18 +33,19 @@ py::object run(const py::object& case_or_path, std::optional<std::string> integr
   overrides.step = step;
   overrides.rtol = rtol;
   overrides.t_end = t_end;
-  std::optional<TemporaryFolder> temporary;
-  if (!output) temporary.emplace();
-  const std::filesystem::path directory = output ? *output : temporary->path();
   // Signals are checked (Python's handlers run) only in the main thread; elsewhere the GIL is
   // taken at a sample only for the progress callback.
   const bool check_signals = in_main_thread();
   std::optional<py::error_already_set> raised;  // by a signal handler or the callback
   std::vector<std::string> warnings;
+  // results.h5 in `output`, or the same file in memory: one writer, one reader for both. The
+  // writer lives and dies with the GIL released (it takes HDF5's lock; results_binding.h).
+  std::vector<unsigned char> image;
   {
     py::gil_scoped_release released;
     const run::CaseRun prepared = run::prepare_case_run(*input, overrides, modes);
-    const std::unique_ptr<results::ResultsWriter> writer = run::open_case_results(directory, *input);
+    const std::unique_ptr<results::ResultsWriter> writer =
+        output ? run::open_case_results(*output, *input) : run::open_case_results_in_memory(*input);
     run::RunHooks hooks;
     hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
       if (!check_signals && !progress) return;
@@ -65,11 +65,12 @@ py::object run(const py::object& case_or_path, std::optional<std::string> integr
     } catch (const run::RunStopped&) {
       // The file is closed as "interrupted"; the Python error is raised below.
     }
+    image = writer->file_image();
   }
   if (raised) throw std::move(*raised);
   const py::module_ python_warnings = py::module_::import("warnings");
   for (const std::string& warning : warnings) python_warnings.attr("warn")(warning, py::handle(PyExc_RuntimeWarning), 2);
-  return read_results(directory / results::kResultsFileName, output.has_value());
+  return output ? read_results(*output / results::kResultsFileName) : read_results(image);
 }
 
 }  // namespace
@@ -91,9 +92,10 @@ Arguments (None keeps the case's `run` settings, docs/case-format.md):
   rtol          IDA relative tolerance (>= 1e-11)
   t_end         end time [s] (>= 0)
   output        a folder (str or os.PathLike, created when missing) for results.h5 exactly as
-                `limber run -o output` writes it; with None the run writes a temporary folder,
-                reads it back and removes it (Results.path is then None). Both go through the
-                file, so the numbers are those of `limber run`, bit for bit.
+                `limber run -o output` writes it; with None the results stay in memory and
+                nothing is written (Results.path is then None). Both are the same file, written
+                by the command's writer and read by one reader (in memory: an HDF5 file image),
+                so the numbers are those of `limber run`, bit for bit.
   progress      a callable progress(t, t_end) [s], called after each sample written (with the
                 GIL held); an exception it raises stops the run like Ctrl-C
   modes         normal modes of every flexible body in place of the case's (>= 0; their

@@ -23,7 +23,10 @@ std::vector<double> table(const H5Reader& reader, const char* name, hsize_t nw, 
 }  // namespace
 
 EventPeaks read_event_peaks(const std::filesystem::path& file) {
-  const H5Reader reader(file, "results file", "");
+  return read_event_peaks(H5Reader(file, "results file", ""));
+}
+
+EventPeaks read_event_peaks(const H5Reader& reader) {
   EventPeaks peaks;
   if (!reader.exists(layout::kEventPeaks)) return peaks;
   peaks.window = reader.doubles_attribute(layout::kEventPeaks, ep::kWindowAttribute, 1).front();

@@ -18,6 +18,8 @@
 
 namespace limber::results {
 
+class H5Reader;
+
 // The largest reaction of one joint in one window.
 struct JointPeak {
   double force = 0.0;   // max |F| [N]
@@ -54,5 +56,7 @@ struct EventPeaks {
 // (a run that failed before integrating, or an older file). Throws InputError naming the file
 // when it cannot be read or the group is malformed.
 EventPeaks read_event_peaks(const std::filesystem::path& file);
+// The same from a file already open (a file on disk or an image in memory).
+EventPeaks read_event_peaks(const H5Reader& reader);
 
 }  // namespace limber::results

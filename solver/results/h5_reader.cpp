@@ -2,7 +2,11 @@
 
 #include "core/error.h"
 
+#include <atomic>
+#include <cstdint>
 #include <cstdio>
+
+#include <unistd.h>
 
 namespace limber::results {
 
@@ -31,6 +35,20 @@ hid_t open_checked(const std::filesystem::path& path, const std::string& kind,
   if (file < 0) {
     throw InputError("expected a readable " + kind + " '" + name + "', got an HDF5 open failure");
   }
+  return file;
+}
+
+// Opens `image` read-only through HDF5's core driver (no backing store): nothing on disk. HDF5
+// tells open files apart by name, so each image is opened under one of its own.
+hid_t open_image(const std::vector<unsigned char>& image, const std::string& name, const std::string& kind) {
+  static std::atomic<std::int64_t> images_opened{0};
+  const std::string label = "(limber image in memory " + std::to_string(getpid()) + "." +
+                            std::to_string(++images_opened) + ")";
+  const H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
+  const bool ready = H5Pset_fapl_core(access.get(), image.size() + 1, /*backing_store=*/false) >= 0 &&
+                     H5Pset_file_image(access.get(), const_cast<unsigned char*>(image.data()), image.size()) >= 0;
+  const hid_t file = ready && !image.empty() ? H5Fopen(label.c_str(), H5F_ACC_RDONLY, access.get()) : -1;
+  if (file < 0) throw InputError("expected an HDF5 " + kind + " '" + name + "' in memory, got bytes HDF5 cannot open");
   return file;
 }
 
@@ -78,6 +96,9 @@ H5Reader::H5Reader(std::filesystem::path path, std::string kind, const std::stri
     : path_(std::move(path)),
       kind_(std::move(kind)),
       file_(open_checked(path_, kind_, missing_hint)) {}
+
+H5Reader::H5Reader(const std::vector<unsigned char>& image, std::filesystem::path name, std::string kind)
+    : path_(std::move(name)), kind_(std::move(kind)), file_(open_image(image, path_.string(), kind_)) {}
 
 void H5Reader::fail(const std::string& expected, const std::string& got) const {
   throw InputError(kind_ + " '" + path_.string() + "': expected " + expected + ", got " + got);

@@ -21,6 +21,9 @@ class H5Reader {
   // ends the message for a missing file. Throws InputError when the file is missing, is not
   // HDF5 (e.g. truncated) or cannot be opened.
   H5Reader(std::filesystem::path path, std::string kind, const std::string& missing_hint);
+  // Opens a file image in memory (ResultsWriter::file_image(); copied, so `image` may go);
+  // `name` stands for it in messages. Throws InputError when the bytes are not an HDF5 file.
+  H5Reader(const std::vector<unsigned char>& image, std::filesystem::path name, std::string kind);
 
   const std::filesystem::path& path() const { return path_; }
   [[noreturn]] void fail(const std::string& expected, const std::string& got) const;

@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <unistd.h>
+
 namespace limber::results {
 namespace {
 
@@ -29,6 +31,17 @@ H5Handle checked(hid_t id, const char* what) {
   check(static_cast<herr_t>(id < 0 ? -1 : 0), what);
   return H5Handle(id);
 }
+
+// File access of every results file: the 1.8-compatible format, so that no "open for writing"
+// flag survives a crash.
+H5Handle file_access() {
+  H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
+  check(H5Pset_libver_bounds(access.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18), "choose the file format");
+  return access;
+}
+
+// An in-memory file grows by this much at a time [bytes].
+constexpr std::size_t kInMemoryIncrement = std::size_t{1} << 20;
 
 // The longest text of a string attribute, in bytes: an attribute holds at most 64 KiB in the
 // 1.8 file format. The case's names and title are shorter (core/names.h, io/case_reader.cpp);
@@ -195,6 +208,38 @@ struct ResultsWriter::Impl {
   std::int64_t ns_written = 0;  // samples in the file (the rest wait in the series' buffers)
   std::chrono::steady_clock::time_point last_flush = std::chrono::steady_clock::now();
   bool finished = false;
+  // An in-memory file (InMemoryFile) and, once finished, its bytes.
+  bool in_memory = false;
+  std::vector<unsigned char> image;
+
+  // The root attributes and the groups and series every file has.
+  void write_root(const std::string& title, const std::string& case_file) {
+    const hid_t root = file.get();
+    write_string_attribute(root, layout::kFormatAttribute, layout::kFormat);
+    write_int_attribute(root, layout::kVersionAttribute, 1);
+    write_string_attribute(root, layout::kTitleAttribute, title);
+    write_string_attribute(root, layout::kCaseFileAttribute, case_file);
+    write_string_attribute(root, layout::kStatusAttribute, layout::status::kRunning);
+    write_string_attribute(root, layout::kMessageAttribute, "");
+    bodies_group = create_group(root, layout::kBodies);
+    H5Handle constraints = create_group(root, layout::kConstraints);
+    position_violation = create_series(constraints.get(), layout::constraints::kPositionViolation, H5T_IEEE_F64LE,
+                                       H5T_NATIVE_DOUBLE, 0);
+    velocity_violation = create_series(constraints.get(), layout::constraints::kVelocityViolation, H5T_IEEE_F64LE,
+                                       H5T_NATIVE_DOUBLE, 0);
+    H5Handle solver = create_group(root, layout::kSolver);
+    steps = create_series(solver.get(), layout::solver::kSteps, H5T_STD_I64LE, H5T_NATIVE_INT64, 0);
+    time = create_series(root, layout::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
+  }
+
+  // A copy of the in-memory file's bytes (after its last flush).
+  void keep_image() {
+    const ssize_t size = H5Fget_file_image(file.get(), nullptr, 0);
+    check(size < 0 ? -1 : 0, "copy the file from memory");
+    image.resize(static_cast<std::size_t>(size));
+    check(H5Fget_file_image(file.get(), image.data(), image.size()) < 0 ? -1 : 0, "copy the file from memory");
+  }
 
   // Creates an empty, chunked, unlimited per-sample dataset.
   // A per-sample dataset: [ns] for width 0, else [ns, width].
@@ -406,37 +451,27 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory, const std::
   // No other run may be writing here: creating the file truncates it.
   impl_->lock = DirectoryLock(directory);
   impl_->path = directory / kResultsFileName;
-
-  // Create the file in the 1.8-compatible format: no "open for writing" flag survives a crash.
-  {
-    H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
-    H5Pset_libver_bounds(access.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18);
-    impl_->file = H5Handle(
-        H5Fcreate(impl_->path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
-  }
+  impl_->file = H5Handle(H5Fcreate(impl_->path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, file_access().get()));
   if (!impl_->file.valid()) {
     throw InputError("expected a writable results file, got an HDF5 failure creating '" +
                      impl_->path.string() + "'");
   }
+  impl_->write_root(title, case_file);
+}
 
-  // Root attributes and the groups every file has.
-  const hid_t root = impl_->file.get();
-  write_string_attribute(root, layout::kFormatAttribute, layout::kFormat);
-  write_int_attribute(root, layout::kVersionAttribute, 1);
-  write_string_attribute(root, layout::kTitleAttribute, title);
-  write_string_attribute(root, layout::kCaseFileAttribute, case_file);
-  write_string_attribute(root, layout::kStatusAttribute, layout::status::kRunning);
-  write_string_attribute(root, layout::kMessageAttribute, "");
-  impl_->bodies_group = create_group(root, layout::kBodies);
-  H5Handle constraints = create_group(root, layout::kConstraints);
-  impl_->position_violation = impl_->create_series(constraints.get(), layout::constraints::kPositionViolation,
-                                                   H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-  impl_->velocity_violation = impl_->create_series(constraints.get(), layout::constraints::kVelocityViolation,
-                                                   H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-  H5Handle solver = create_group(root, layout::kSolver);
-  impl_->steps = impl_->create_series(solver.get(), layout::solver::kSteps, H5T_STD_I64LE, H5T_NATIVE_INT64, 0);
-  impl_->time = impl_->create_series(root, layout::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-  check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
+ResultsWriter::ResultsWriter(InMemoryFile, const std::string& title, const std::string& case_file)
+    : impl_(std::make_unique<Impl>()) {
+  const std::lock_guard lock(hdf5_lock());
+  // The core driver without a backing store; HDF5 tells open files apart by name, so each
+  // in-memory file gets one of its own (looked up on disk by HDF5, never created there).
+  static std::int64_t files_made = 0;
+  const std::string name = "(limber results in memory " + std::to_string(getpid()) + "." +
+                           std::to_string(++files_made) + ")";
+  const H5Handle access = file_access();
+  check(H5Pset_fapl_core(access.get(), kInMemoryIncrement, /*backing_store=*/false), "keep the file in memory");
+  impl_->in_memory = true;
+  impl_->file = checked(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), "create a file in memory");
+  impl_->write_root(title, case_file);
 }
 
 ResultsWriter::~ResultsWriter() {
@@ -881,6 +916,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
     write_doubles_attribute(stress->group.get(), layout::stress::kPeakTimeAttribute, &stress->max_time, 1);
   }
   check(H5Fflush(root, H5F_SCOPE_GLOBAL), "flush the file");
+  if (m.in_memory) m.keep_image();
 
   // Close every dataset and group before the file.
   m.body_stress.clear();
@@ -888,6 +924,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.joint_series.clear();
   m.driver_series.clear();
   m.energy_series.clear();
+  m.probe_series.clear();
   m.limit_series.clear();
   m.event_time = {};
   m.event_limit = {};
@@ -907,6 +944,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.energy_group.reset();
   m.limits_group.reset();
   m.events_group.reset();
+  m.probes_group.reset();
   m.file.reset();
   m.finished = true;
 }
@@ -914,5 +952,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
 std::int64_t ResultsWriter::sample_count() const { return impl_->ns; }
 
 const std::filesystem::path& ResultsWriter::path() const { return impl_->path; }
+
+const std::vector<unsigned char>& ResultsWriter::file_image() const { return impl_->image; }
 
 }  // namespace limber::results

@@ -10,7 +10,9 @@
 // most the kBlockRows − 1 samples appended since the last flush, all appended less than
 // kFlushInterval of wall time after it (docs/results-format.md, "Crash safety"). The file uses
 // the HDF5 1.8-compatible format (libver bounds "earliest"): no "file open for writing" flag
-// stays behind after a crash.
+// stays behind after a crash. The same file can be kept in memory instead (InMemoryFile: HDF5's
+// core driver without a backing store), written by the same code and read back from its image
+// (H5Reader's image constructor): the Python module's limber.run(output=None).
 //
 // Units are SI; orientations are unit quaternions (w, x, y, z) rotating body axes into ground.
 // Nothing here depends on solver classes: callers hand plain Eigen values.
@@ -223,6 +225,9 @@ inline constexpr std::chrono::milliseconds kFlushInterval{1000};
 // ("ok_inaccurate"), failed (numerically or on an error), or stopped by a signal.
 enum class RunStatus { kOk, kInaccurate, kFailed, kInterrupted };
 
+// Tag of the in-memory ResultsWriter.
+struct InMemoryFile {};
+
 class ResultsWriter {
  public:
   // Creates directory/results.h5 (the directory too, if missing), replacing an existing file,
@@ -230,6 +235,9 @@ class ResultsWriter {
   // another run is writing there or the file cannot be created (message names the path).
   ResultsWriter(const std::filesystem::path& directory, const std::string& title,
                 const std::string& case_file);
+  // The same file in memory only: no directory, no lock, nothing on disk; path() is empty and
+  // file_image() holds the file after finish().
+  ResultsWriter(InMemoryFile, const std::string& title, const std::string& case_file);
   ~ResultsWriter();
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
@@ -305,7 +313,11 @@ class ResultsWriter {
 
   // Samples appended (written or still buffered).
   std::int64_t sample_count() const;
+  // DIR/results.h5; empty for an in-memory file.
   const std::filesystem::path& path() const;
+  // The bytes of an in-memory file once finish() has run (a results.h5 as it would lie on
+  // disk); empty before, and for a file on disk.
+  const std::vector<unsigned char>& file_image() const;
 
  private:
   struct Impl;

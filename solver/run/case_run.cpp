@@ -25,13 +25,27 @@ CaseRun prepare_case_run(const io::Case& input, const SettingsOverrides& overrid
   return run;
 }
 
-std::unique_ptr<results::ResultsWriter> open_case_results(const std::filesystem::path& directory,
-                                                          const io::Case& input) {
-  auto writer = std::make_unique<results::ResultsWriter>(directory, input.title, input.file);
+namespace {
+
+// The case's names for the ground axes, when it gives them.
+std::unique_ptr<results::ResultsWriter> with_axis_names(std::unique_ptr<results::ResultsWriter> writer,
+                                                        const io::Case& input) {
   if (input.axis_names.size() == 3) {
     writer->set_axis_names({input.axis_names[0], input.axis_names[1], input.axis_names[2]});
   }
   return writer;
+}
+
+}  // namespace
+
+std::unique_ptr<results::ResultsWriter> open_case_results(const std::filesystem::path& directory,
+                                                          const io::Case& input) {
+  return with_axis_names(std::make_unique<results::ResultsWriter>(directory, input.title, input.file), input);
+}
+
+std::unique_ptr<results::ResultsWriter> open_case_results_in_memory(const io::Case& input) {
+  return with_axis_names(
+      std::make_unique<results::ResultsWriter>(results::InMemoryFile{}, input.title, input.file), input);
 }
 
 RunSummary run_case(const CaseRun& run, results::ResultsWriter& writer, RunHooks hooks) {

@@ -1,8 +1,9 @@
 // A case file's run as `limber run` does it, shared with the Python module (solver/python) so
 // that both write the same results.h5: the case's run settings with the caller's overrides,
 // checked; its flexible bodies reduced and its mechanism built (io: read -> reduce -> build);
-// DIR/results.h5 opened with the case's names; then run_mechanism (run_driver.h), the file
-// closed as "interrupted" or "failed" when a hook stops the run or something throws.
+// DIR/results.h5 (or the same file in memory) opened with the case's names; then run_mechanism
+// (run_driver.h), the file closed as "interrupted" or "failed" when a hook stops the run or
+// something throws.
 #pragma once
 
 #include <filesystem>
@@ -35,6 +36,9 @@ CaseRun prepare_case_run(const io::Case& input, const SettingsOverrides& overrid
 // DIR/results.h5 for `input` (its title, case file and axis names); DIR is created when missing.
 std::unique_ptr<results::ResultsWriter> open_case_results(const std::filesystem::path& directory,
                                                           const io::Case& input);
+// The same file kept in memory (results::InMemoryFile): its bytes in file_image() once the run
+// has finished it; nothing is written to disk.
+std::unique_ptr<results::ResultsWriter> open_case_results_in_memory(const io::Case& input);
 
 // Thrown by a hook to stop the run between samples (a signal, a Python KeyboardInterrupt).
 struct RunStopped {

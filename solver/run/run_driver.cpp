@@ -296,7 +296,10 @@ RunSummary run_mechanism(const multibody::Model& model,
         model, settings, Eigen::Map<const Eigen::VectorXd>(probe_times.data(), ns), histories, summary.events);
     if (hooks.writer) {
       hooks.writer->set_shock_spectra(*summary.shock_spectra);
-      results::write_shock_spectra_csv(hooks.writer->path().parent_path(), *summary.shock_spectra);
+      // Beside results.h5; an in-memory file has no folder, and the spectra stay in the file.
+      if (!hooks.writer->path().empty()) {
+        results::write_shock_spectra_csv(hooks.writer->path().parent_path(), *summary.shock_spectra);
+      }
     }
   }
   if (hooks.writer) {

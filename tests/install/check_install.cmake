@@ -37,6 +37,9 @@ if(PYTHON)
   if(NOT modules)
     message(FATAL_ERROR "not installed: the Python module in ${PYTHON_DIR}")
   endif()
+  if(NOT EXISTS ${module_dir}/limber.pyi)
+    message(FATAL_ERROR "not installed: the type stubs limber.pyi beside the module in ${PYTHON_DIR}")
+  endif()
   execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${module_dir}
                           ${PYTHON} -c "import limber, sys; r = limber.run(sys.argv[1], t_end=0.01); print(limber.__file__, r.status, len(r.time))"
                           ${PREFIX}/share/limber/cases/slider_crank.yaml

@@ -16,7 +16,8 @@ def assert_same_results(a, b):
     assert a.bodies.keys() == b.bodies.keys() and a.joints.keys() == b.joints.keys()
     for name, body in a.bodies.items():
         other = b.bodies[name]
-        for field in ("position", "orientation", "modal_coordinates", "modal_velocities", "deflection"):
+        for field in ("position", "orientation", "modal_coordinates", "modal_velocities", "frequencies_hz",
+                      "deflection"):
             x, y = getattr(body, field), getattr(other, field)
             assert (x is None and y is None) or same_bits(x, y), f"{name}.{field}"
         assert (body.stress is None) == (other.stress is None)
@@ -40,3 +41,11 @@ def assert_same_results(a, b):
     assert a.events.keys() == b.events.keys()
     for key, values in a.events.items():
         assert values == b.events[key] if key == "limit" else same_bits(values, b.events[key]), f"events.{key}"
+    assert (a.event_peaks is None) == (b.event_peaks is None)
+    if a.event_peaks is not None:
+        x, y = a.event_peaks, b.event_peaks
+        assert (x["window"], x["joints"], len(x["windows"])) == (y["window"], y["joints"], len(y["windows"]))
+        for u, v in zip(x["windows"], y["windows"]):
+            assert (u["label"], u["start"], u["end"], u["states"]) == (v["label"], v["start"], v["end"], v["states"])
+            for key in ("force", "force_time", "torque", "torque_time"):
+                assert same_bits(u[key], v[key]), f"event_peaks.{key}"

@@ -298,6 +298,29 @@ TEST(ResultsWriter, LongTextIsKeptCutWithItsLength) {
   H5Fclose(file);
 }
 
+// finish() closes the file, every group and dataset included, while the writer still lives: an
+// acceleration probe's group and series once stayed open until the writer died, so the file
+// stayed open, and a reader in the same process (limber.run reading back its output) failed.
+TEST(ResultsWriter, FinishClosesEveryObjectOfTheFile) {
+  const auto dir = fresh_directory("closed");
+  ResultsWriter writer(dir, "t", "c.yaml");
+  writer.add_rigid_body({"box", {ShapeSpec{}}});
+  writer.add_joint({"R1", "revolute", "ground", "box"});
+  writer.add_hinge_limit({"stop", "stop", "R1", 0.5});
+  writer.add_acceleration_probe({"tip", "box", -1, Eigen::Vector3d(1, 0, 0)});
+  Sample sample;
+  sample.bodies.resize(1);
+  sample.joints.resize(1);
+  sample.hinge_limit_angles = {0.1};
+  sample.hinge_limit_torques = {0.0};
+  sample.hinge_limits_engaged = {0};
+  sample.probe_accelerations = {Eigen::Vector3d(0, 0, -9.81)};
+  writer.append_sample(sample);
+  EXPECT_GT(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
+  writer.finish(RunStatus::kOk);
+  EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
+}
+
 TEST(ResultsWriter, UnwritableDirectoryIsAnInputError) {
   // A regular file where the run directory should be.
   const auto dir = fresh_directory("blocked");
