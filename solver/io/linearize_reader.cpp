@@ -19,7 +19,10 @@ using multibody::LinearInputKind;
 using multibody::LinearOutputKind;
 
 constexpr std::pair<std::string_view, LinearInputKind> kInputKeys[] = {
-    {"force", LinearInputKind::kForce}, {"torque", LinearInputKind::kTorque}, {"rsda", LinearInputKind::kRsdaTorque}};
+    {"force", LinearInputKind::kForce},
+    {"torque", LinearInputKind::kTorque},
+    {"rsda", LinearInputKind::kRsdaTorque},
+    {"driver", LinearInputKind::kDriverEffort}};
 constexpr std::pair<std::string_view, LinearOutputKind> kOutputKeys[] = {
     {"position", LinearOutputKind::kPosition},
     {"velocity", LinearOutputKind::kVelocity},
@@ -76,28 +79,29 @@ std::string known_name(const YamlValue& value, const std::vector<std::string>& n
   return name;
 }
 
-LinearInputEntry read_input(const std::string& name, const YamlValue& entry, const std::vector<std::string>& markers,
-                            const std::vector<std::string>& rsdas) {
-  entry.allow_only({"force", "torque", "rsda", "axes"});
+LinearInputEntry read_input(const std::string& name, const YamlValue& entry, const LinearizeTargets& targets) {
+  entry.allow_only({"force", "torque", "rsda", "driver", "axes"});
   const auto [kind, value] = quantity("linearize input", name, entry, kInputKeys);
   LinearInputEntry input;
   input.spec.name = name;
   input.spec.kind = kind;
   input.where = value.where();
-  if (kind == LinearInputKind::kRsdaTorque) {
+  // One channel along a coordinate: no axes to choose.
+  if (kind == LinearInputKind::kRsdaTorque || kind == LinearInputKind::kDriverEffort) {
+    const bool rsda = kind == LinearInputKind::kRsdaTorque;
     if (const auto axes = entry.find("axes")) {
-      axes->fail("expected no 'axes' for the RSDA torque '" + name + "' (it acts about the RSDA's axis), got one");
+      axes->fail(rsda ? "expected no 'axes' for the RSDA torque '" + name + "' (it acts about the RSDA's axis), got one"
+                      : "expected no 'axes' for the driver effort '" + name + "' (it acts along the driver's coordinate), got one");
     }
-    input.target = known_name(value, rsdas, "an rsda force");
+    input.target = rsda ? known_name(value, targets.rsdas, "an rsda force") : known_name(value, targets.drivers, "a driver");
     return input;
   }
   input.spec.axes = read_axes(entry);
-  input.target = known_name(value, markers, "a marker");
+  input.target = known_name(value, targets.markers, "a marker");
   return input;
 }
 
-LinearOutputEntry read_output(const std::string& name, const YamlValue& entry, const std::vector<std::string>& markers,
-                              const std::vector<std::string>& joints) {
+LinearOutputEntry read_output(const std::string& name, const YamlValue& entry, const LinearizeTargets& targets) {
   entry.allow_only({"position", "velocity", "acceleration", "rotation", "angular_velocity", "angular_acceleration",
                     "reaction_force", "reaction_torque", "axes"});
   const auto [kind, value] = quantity("linearize output", name, entry, kOutputKeys);
@@ -107,11 +111,11 @@ LinearOutputEntry read_output(const std::string& name, const YamlValue& entry, c
   output.where = value.where();
   if (is_reaction(kind)) {
     output.spec.axes = read_axes(entry, "joint");
-    output.target = known_name(value, joints, "a joint");
+    output.target = known_name(value, targets.joints, "a joint");
     return output;
   }
   output.spec.axes = read_axes(entry);
-  output.target = known_name(value, markers, "a marker");
+  output.target = known_name(value, targets.markers, "a marker");
   return output;
 }
 
@@ -124,20 +128,19 @@ int marker_index(const multibody::Model& model, const std::string& name, const S
 
 }  // namespace
 
-LinearizeCase read_linearize(const YamlValue& section, const std::vector<std::string>& markers,
-                             const std::vector<std::string>& rsdas, const std::vector<std::string>& joints) {
+LinearizeCase read_linearize(const YamlValue& section, const LinearizeTargets& targets) {
   section.allow_only({"inputs", "outputs"});
   LinearizeCase result;
   if (const auto inputs = section.find("inputs")) {
     for (const auto& [name, entry] : inputs->entries()) {
       check_name_text("linearize input", name, entry.key_where());
-      result.inputs.push_back(read_input(name, entry, markers, rsdas));
+      result.inputs.push_back(read_input(name, entry, targets));
     }
   }
   if (const auto outputs = section.find("outputs")) {
     for (const auto& [name, entry] : outputs->entries()) {
       check_name_text("linearize output", name, entry.key_where());
-      result.outputs.push_back(read_output(name, entry, markers, joints));
+      result.outputs.push_back(read_output(name, entry, targets));
     }
   }
   return result;
@@ -154,6 +157,9 @@ std::vector<multibody::LinearInput> linear_inputs(const LinearizeCase& section, 
         }
       }
       if (input.force < 0) throw InputError("expected an rsda force of the model, got '" + entry.target + "'", entry.where);
+    } else if (input.kind == LinearInputKind::kDriverEffort) {
+      input.driver = model.find_driver(entry.target);
+      if (input.driver < 0) throw InputError("expected a driver of the model, got '" + entry.target + "'", entry.where);
     } else {
       input.marker = marker_index(model, entry.target, entry.where);
     }

@@ -369,18 +369,19 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
     }
   }
 
-  // The state-space model's inputs and outputs, on the markers and RSDAs above.
+  // The state-space model's inputs and outputs, on the markers, RSDAs, drivers and joints above.
   if (const auto linearize = root.find("linearize")) {
-    std::vector<std::string> markers, rsdas, joints;
-    for (const MarkerEntry& marker : result.markers) markers.push_back(marker.name);
+    LinearizeTargets targets;
+    for (const MarkerEntry& marker : result.markers) targets.markers.push_back(marker.name);
     for (const JointEntry& joint : result.joints) {
-      for (const MarkerEntry& marker : joint.markers) markers.push_back(marker.name);
-      joints.push_back(joint.name);
+      for (const MarkerEntry& marker : joint.markers) targets.markers.push_back(marker.name);
+      targets.joints.push_back(joint.name);
     }
+    for (const DriverEntry& driver : result.drivers) targets.drivers.push_back(driver.name);
     for (const ForceEntry& force : result.forces) {
-      if (const auto* rsda = std::get_if<multibody::RsdaSpec>(&force.spec)) rsdas.push_back(rsda->name);
+      if (const auto* rsda = std::get_if<multibody::RsdaSpec>(&force.spec)) targets.rsdas.push_back(rsda->name);
     }
-    result.linearize = read_linearize(*linearize, markers, rsdas, joints);
+    result.linearize = read_linearize(*linearize, targets);
   }
 
   // What to do with the model.

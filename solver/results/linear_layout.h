@@ -16,7 +16,7 @@ inline constexpr const char* kCoordinateNames = "coordinate_names";  // string [
 inline constexpr const char* kMass = "M";            // [nv, nv]
 inline constexpr const char* kDamping = "C";         // [nv, nv]
 inline constexpr const char* kStiffness = "K";       // [nv, nv]
-inline constexpr const char* kNullSpace = "Z";       // [nv, n]: orthonormal basis of the allowed motions
+inline constexpr const char* kNullSpace = "Z";       // [nv, n]: basis of the states' free motions (ξ = Z y)
 
 // modes/: the system modes (n of them).
 inline constexpr const char* kModes = "modes";

@@ -88,7 +88,7 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
   root.matrix(L::kMass, summary.tangent.M);
   root.matrix(L::kDamping, summary.tangent.C);
   root.matrix(L::kStiffness, summary.tangent.K);
-  root.matrix(L::kNullSpace, summary.null_space);
+  root.matrix(L::kNullSpace, summary.state_space.Z);  // the states' basis (released drivers included)
 
   // The system modes.
   {

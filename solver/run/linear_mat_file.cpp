@@ -75,7 +75,7 @@ std::filesystem::path write_linear_mat(const multibody::Model& model, const Line
   mat.matrix("M", summary.tangent.M);
   mat.matrix("C_damping", summary.tangent.C);
   mat.matrix("K", summary.tangent.K);
-  mat.matrix("Z", summary.null_space);
+  mat.matrix("Z", ss.Z);  // the states' basis: the joints' Z, grown by released drivers
   mat.matrix("frequencies_hz", summary.modes.frequencies_hz);
   mat.matrix("damping_ratios", summary.modes.damping);
   mat.matrix("undamped_hz", summary.modes.undamped_hz);

@@ -16,7 +16,7 @@ namespace {
 using test::fails_at;
 using test::location_of;
 
-// A hub and a panel on a sprung hinge given at a point (markers hinge.i, hinge.j).
+// A hub and a panel on a sprung, driven hinge given at a point (markers hinge.i, hinge.j).
 const std::string kCase = R"(title: linearize
 bodies:
   hub: {mass: 50, inertia: [4, 5, 3], position: [0, 0, 0]}
@@ -26,6 +26,8 @@ markers:
   tip: {body: panel, position: [0, 0, 0.5]}
 joints:
   hinge: {type: revolute, body_i: hub, body_j: panel, position: [0, 0, 0.5]}
+drivers:
+  hinge_drive: {joint: hinge, motion: {type: constant, value: 0}}
 forces:
   spring: {type: rsda, marker_i: hinge.i, marker_j: hinge.j, stiffness: 20}
 linearize:
@@ -33,6 +35,7 @@ linearize:
     wheels: {torque: hub_center, axes: marker}
     motor: {rsda: spring}
     push: {force: hinge.j}
+    hinge_torque: {driver: hinge_drive}
   outputs:
     attitude: {rotation: hub_center}
     tip_acceleration: {acceleration: tip, axes: marker}
@@ -46,7 +49,7 @@ TEST(LinearizeReader, InputsAndOutputsLandWithTheirModelIndices) {
   const Mechanism built = build_mechanism(input, reduce_case(input, ReductionScope::kMechanismBodies));
   const std::vector<multibody::LinearInput> inputs = linear_inputs(input.mechanism->linearize, built.model);
   const std::vector<multibody::LinearOutput> outputs = linear_outputs(input.mechanism->linearize, built.model);
-  ASSERT_EQ(inputs.size(), 3u);
+  ASSERT_EQ(inputs.size(), 4u);
   ASSERT_EQ(outputs.size(), 3u);
   const auto& markers = built.model.markers;
   EXPECT_EQ(inputs[0].name, "wheels");
@@ -58,6 +61,8 @@ TEST(LinearizeReader, InputsAndOutputsLandWithTheirModelIndices) {
   EXPECT_EQ(inputs[2].kind, multibody::LinearInputKind::kForce);
   EXPECT_EQ(inputs[2].axes, multibody::ChannelAxes::kGround);
   EXPECT_EQ(markers[static_cast<std::size_t>(inputs[2].marker)].name, "hinge.j");
+  EXPECT_EQ(inputs[3].kind, multibody::LinearInputKind::kDriverEffort);
+  EXPECT_EQ(built.model.drivers[static_cast<std::size_t>(inputs[3].driver)].name, "hinge_drive");
   EXPECT_EQ(outputs[0].kind, multibody::LinearOutputKind::kRotation);
   EXPECT_EQ(outputs[1].kind, multibody::LinearOutputKind::kAcceleration);
   EXPECT_EQ(outputs[1].axes, multibody::ChannelAxes::kMarker);
@@ -92,6 +97,11 @@ TEST(LinearizeReader, BadEntriesAreLocated) {
   EXPECT_TRUE(fails_at(axes, location_of(axes, "body}"), "ground, marker"));
   const std::string rsda_axes = edited("{rsda: spring}", "{rsda: spring, axes: marker}");
   EXPECT_TRUE(fails_at(rsda_axes, location_of(rsda_axes, "marker}", 1), "expected no 'axes' for the RSDA torque"));
+  // A driver the case lacks (the drivers listed); axes on a driver's effort.
+  const std::string no_driver = edited("driver: hinge_drive", "driver: hinge");
+  EXPECT_TRUE(fails_at(no_driver, location_of(no_driver, "hinge}"), "expected a driver of the case (hinge_drive), got 'hinge'"));
+  const std::string driver_axes = edited("{driver: hinge_drive}", "{driver: hinge_drive, axes: marker}");
+  EXPECT_TRUE(fails_at(driver_axes, location_of(driver_axes, "marker}", 1), "expected no 'axes' for the driver effort"));
   // A reaction of a joint the case lacks; a marker's axes on a reaction.
   const std::string no_joint = edited("reaction_torque: hinge,", "reaction_torque: hinge_R1,");
   EXPECT_TRUE(fails_at(no_joint, location_of(no_joint, "hinge_R1"), "expected a joint of the case (hinge), got 'hinge_R1'"));

@@ -20,6 +20,14 @@
 // with options sharp (the latches' damping share a step, damping_depth 0, to test whether the
 // share's dependence on the penetration is what moves the strongly damped modes), falling (the
 // window above) and linear (the linear response's check only, without the nonlinear run).
+// Option pencil replaces the spectrum: the run is repeated without the impulse and subtracted
+// (the impulse's own response, without the deployment's residual ringing), the linear model is
+// driven by the same 20 ms triangle (not an ideal impulse), the two are compared sample by
+// sample, and the poles of both come from the matrix pencil (matrix_pencil.h) over the first
+// RECORD s (record=RECORD, default 1.5) from the load's end; floor=F (default 1e-7) is the
+// pencil's singular-value floor and weight=W (1e-3) the least weight of a pole matched. With
+// it, amp=A scales the impulse (linearity: the difference's second-order part goes with A) and
+// step=H replaces the run's 5e-4 s step.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,6 +35,7 @@
 #include <complex>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -41,6 +50,7 @@
 #include "multibody/body.h"
 #include "run/linearize_at.h"
 #include "run/run_driver.h"
+#include "matrix_pencil.h"
 
 namespace {
 
@@ -59,18 +69,25 @@ std::string inserted(std::string text, const std::string& before, const std::str
   return text.insert(at, what);
 }
 
-std::string edited_case(const std::string& path, double t_end, bool sharp) {
+std::string edited_case(const std::string& path, double t_end, bool sharp, double amplitude = 1.0,
+                        const std::string& step = "") {
   std::ifstream file(path);
   std::stringstream text;
   text << file.rdbuf();
   std::string edited = inserted(text.str(), "joints:\n", "markers:\n  bus_center: {body: bus}\n\n");
   edited = inserted(edited, "  spring_R3:",
-                    fmt::format("  impulse: {{type: point_load, marker: bus_center, force: [0, 0, 20], torque: [2, 0, 0],\n"
+                    fmt::format("  impulse: {{type: point_load, marker: bus_center, force: [0, 0, {3}], torque: [{4}, 0, 0],\n"
                                 "            scale: {{type: table, x: [{0}, {1}, {2}], y: [0, 1, 0]}}}}\n",
-                                kLinearizeAt, kLinearizeAt + 0.01, kLinearizeAt + 0.02));
+                                kLinearizeAt, kLinearizeAt + 0.01, kLinearizeAt + 0.02, 20.0 * amplitude,
+                                2.0 * amplitude));
   for (std::size_t depth = edited.find("damping_depth: 1.0e-3"); sharp && depth != std::string::npos;
        depth = edited.find("damping_depth: 1.0e-3")) {
     edited.replace(depth, 21, "damping_depth: 0");
+  }
+  if (!step.empty()) {
+    const std::size_t at_step = edited.find("step: 5.0e-4");
+    if (at_step == std::string::npos) throw std::runtime_error("no step: 5.0e-4 in the case");
+    edited.replace(at_step, 12, "step: " + step);
   }
   const std::size_t at = edited.find("t_end: 6.0");
   if (at == std::string::npos) throw std::runtime_error("no t_end: 6.0 in the case");
@@ -117,11 +134,53 @@ std::vector<double> summed_spectrum_peaks(std::vector<std::vector<double>> chann
   return spectrum_peaks(f, power, 1e-6 * largest);
 }
 
+// The nonlinear record's channels from the linear model's state x: per panel its rotation
+// relative to the bus to first order, R_rel0 δθ_panel − δθ_bus (bus axes; ξ's rotations are in
+// body axes), and its modal coordinates (rows of ξ = Z y).
+class LinearChannels {
+ public:
+  LinearChannels(const run::LinearizeSummary& linear, const multibody::Model& model)
+      : linear_(linear), model_(model), bus_(model.find_body("bus")), R_bus_(orientation(bus_)) {}
+
+  std::vector<double> operator()(const Eigen::VectorXd& x) const {
+    const Eigen::MatrixXd& Z = linear_.state_space.Z;
+    const Eigen::VectorXd xi = Z * x.head(Z.cols());
+    const multibody::Body& bus = model_.bodies[static_cast<std::size_t>(bus_)];
+    std::vector<double> values;
+    for (const char* name : kPanels) {
+      const int p = model_.find_body(name);
+      const multibody::Body& panel = model_.bodies[static_cast<std::size_t>(p)];
+      const Eigen::Vector3d turn = R_bus_.transpose() * orientation(p) * xi.segment<3>(panel.v_offset + 3) -
+                                   xi.segment<3>(bus.v_offset + 3);
+      for (int k = 0; k < 3; ++k) values.push_back(turn(k));
+      for (int k = 6; k < panel.nv; ++k) values.push_back(xi(panel.v_offset + k));
+    }
+    return values;
+  }
+
+ private:
+  Eigen::Matrix3d orientation(int body) const {
+    multibody::FrameKinematics X;
+    multibody::body_frame_kinematics(model_, body, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(),
+                                     linear_.point.q, nullptr, X);
+    return X.R_WF;
+  }
+  const run::LinearizeSummary& linear_;
+  const multibody::Model& model_;
+  int bus_;
+  Eigen::Matrix3d R_bus_;
+};
+
+void append(std::vector<std::vector<double>>& channels, const std::vector<double>& values) {
+  if (channels.empty()) channels.resize(values.size());
+  for (std::size_t c = 0; c < values.size(); ++c) channels[c].push_back(values[c]);
+}
+
+int record_samples() { return static_cast<int>(std::lround(kRecord / kSignalInterval)) + 1; }
+
 // The estimator's own check: the state-space model's response to the same impulse (its inputs
 // the bus force and torque; x(0+) = B J with J = 0.2 N s along z, 0.02 N m s about x), in the
-// nonlinear record's channels over the same record: per panel its rotation relative to the bus
-// to first order, R_rel0 δθ_panel − δθ_bus (bus axes; ξ's rotations are in body axes), and its
-// modal coordinates (rows of ξ = Z y).
+// nonlinear record's channels over the same record.
 std::vector<std::vector<double>> linear_response(const run::LinearizeSummary& linear, const multibody::Model& model) {
   const multibody::StateSpace& ss = linear.state_space;
   Eigen::VectorXd impulse = Eigen::VectorXd::Zero(6);
@@ -129,69 +188,52 @@ std::vector<std::vector<double>> linear_response(const run::LinearizeSummary& li
   impulse(3) = 0.02;  // torque.x
   Eigen::VectorXd x = ss.B * impulse;
   const Eigen::MatrixXd step = (ss.A * kSignalInterval).exp();
-  const Eigen::Index n = linear.null_space.cols();
-  const auto orientation = [&](int body) {
-    multibody::FrameKinematics X;
-    multibody::body_frame_kinematics(model, body, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(),
-                                     linear.point.q, nullptr, X);
-    return X.R_WF;
-  };
-  const multibody::Body& bus = model.bodies[static_cast<std::size_t>(model.find_body("bus"))];
-  const Eigen::Matrix3d R_bus = orientation(model.find_body("bus"));
+  const LinearChannels channels_of(linear, model);
   std::vector<std::vector<double>> channels;
-  const int samples = static_cast<int>(std::lround(kRecord / kSignalInterval)) + 1;
-  for (int i = 0; i < samples; ++i) {
-    const Eigen::VectorXd xi = linear.null_space * x.head(n);
-    std::vector<double> values;
-    for (const char* name : kPanels) {
-      const int p = model.find_body(name);
-      const multibody::Body& panel = model.bodies[static_cast<std::size_t>(p)];
-      const Eigen::Vector3d turn = R_bus.transpose() * orientation(p) * xi.segment<3>(panel.v_offset + 3) -
-                                   xi.segment<3>(bus.v_offset + 3);
-      for (int k = 0; k < 3; ++k) values.push_back(turn(k));
-      for (int k = 6; k < panel.nv; ++k) values.push_back(xi(panel.v_offset + k));
-    }
-    if (channels.empty()) channels.resize(values.size());
-    for (std::size_t c = 0; c < values.size(); ++c) channels[c].push_back(values[c]);
+  for (int i = 0; i < record_samples(); ++i) {
+    append(channels, channels_of(x));
     x = step * x;
   }
   return channels;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const double t_end = argc > 1 ? std::atof(argv[1]) : 36.0;
-  kRecord = t_end - kLinearizeAt;
-  const double f_max = argc > 2 ? std::atof(argv[2]) : 30.0;
-  const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
-  bool sharp = false, linear_only = false;
-  for (int a = 3; a < argc; ++a) {
-    const std::string option = argv[a];
-    sharp = sharp || option == "sharp";
-    kFallingWindow = kFallingWindow || option == "falling";
-    linear_only = linear_only || option == "linear";
+// The state-space model's response to the run's own load: the 20 ms triangle (peak 20 A N
+// along z, 2 A N m about x at 10 ms), in substeps of h = 0.1 ms with the load at each one's
+// middle (x ← e^{Ah} x + e^{Ah/2} B u h: error O(h²), (ωh)² = 1e-4 at 16.6 Hz), then e^{A Δt}
+// from sample to sample.
+std::vector<std::vector<double>> linear_triangle_response(const run::LinearizeSummary& linear,
+                                                          const multibody::Model& model, double amplitude) {
+  const multibody::StateSpace& ss = linear.state_space;
+  constexpr int kSubsteps = 20;             // per sample interval: h = 0.1 ms
+  constexpr int kLoadedIntervals = 10;      // the triangle's 20 ms
+  const double h = kSignalInterval / kSubsteps, duration = kLoadedIntervals * kSignalInterval;
+  const Eigen::MatrixXd substep = (ss.A * h).exp(), half = (ss.A * (0.5 * h)).exp();
+  const Eigen::MatrixXd step = (ss.A * kSignalInterval).exp();
+  Eigen::VectorXd peak = Eigen::VectorXd::Zero(6);
+  peak(2) = 20.0 * amplitude;  // force.z [N]
+  peak(3) = 2.0 * amplitude;   // torque.x [N m]
+  const Eigen::MatrixXd B_peak = ss.B * peak;
+  const auto triangle = [&](double t) { return std::max(0.0, 1.0 - std::abs(t - 0.5 * duration) / (0.5 * duration)); };
+  const LinearChannels channels_of(linear, model);
+  std::vector<std::vector<double>> channels;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(ss.A.rows());
+  for (int i = 0; i < record_samples(); ++i) {
+    append(channels, channels_of(x));
+    if (i >= kLoadedIntervals) {
+      x = step * x;
+      continue;
+    }
+    for (int j = 0; j < kSubsteps; ++j) {
+      x = substep * x + half * B_peak * (h * triangle((i * kSubsteps + j + 0.5) * h));
+    }
   }
-  const io::Case input = io::read_case_text(edited_case(path, t_end, sharp), path);
-  const io::Mechanism mechanism =
-      io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  return channels;
+}
+
+// The run's channels from 6 s on, every kSignalInterval: per panel its rotation relative to the
+// bus (log(R_busᵀ R_panel)) and its modal coordinates.
+std::vector<std::vector<double>> run_channels(const io::Mechanism& mechanism, run::RunSummary& ran) {
   const multibody::Model& model = mechanism.model;
-
-  // The linearized frequencies at 6 s (the impulse starts there: zero at the point).
-  run::LinearizeSettings settings;
-  settings.zero_threshold_hz = 0.5;
-  int bus_center = 0;
-  while (model.markers[static_cast<std::size_t>(bus_center)].name != "bus_center") ++bus_center;
-  settings.inputs = {{"force", multibody::LinearInputKind::kForce, bus_center, -1, multibody::ChannelAxes::kGround},
-                     {"torque", multibody::LinearInputKind::kTorque, bus_center, -1, multibody::ChannelAxes::kGround}};
-  const run::LinearizeSummary linear = run::linearize_at(model, mechanism.assembly, mechanism.run, kLinearizeAt, settings);
-  if (!linear.ok) {
-    fmt::print(stderr, "linearization failed: {}\n", linear.message);
-    return 2;
-  }
-
-  const std::vector<double> linear_peaks = summed_spectrum_peaks(linear_response(linear, model));
-  // The free decay: panel rotations relative to the bus and modal coordinates from 6 s on.
   const int bus = model.find_body("bus");
   std::vector<int> panels;
   for (const char* name : kPanels) panels.push_back(model.find_body(name));
@@ -213,15 +255,148 @@ int main(int argc, char** argv) {
       const multibody::Body& body = model.bodies[static_cast<std::size_t>(p)];
       for (int m = 7; m < body.nq; ++m) values.push_back(s.q(body.q_offset + m));
     }
-    if (channels.empty()) channels.resize(values.size());
-    for (std::size_t c = 0; c < values.size(); ++c) channels[c].push_back(values[c]);
+    append(channels, values);
   };
-  const run::RunSummary ran = linear_only ? run::RunSummary{} : run::run_mechanism(model, mechanism.assembly, mechanism.run, hooks);
+  ran = run::run_mechanism(model, mechanism.assembly, mechanism.run, hooks);
+  return channels;
+}
+
+io::Mechanism built(const io::Case& input) {
+  return io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+}
+
+// Option pencil: the impulse's own response (the run less the run without the impulse) against
+// the linear model's response to the same triangle, sample by sample and by their poles.
+int pencil_study(const io::Mechanism& mechanism, const io::Case& baseline_input, const run::LinearizeSummary& linear,
+                 double f_max, double amplitude, double pencil_record, double floor, double min_weight) {
+  const io::Mechanism baseline = built(baseline_input);
+  run::RunSummary ran, ran_baseline;
+  std::vector<std::vector<double>> response = run_channels(mechanism, ran);
+  const std::vector<std::vector<double>> rest = run_channels(baseline, ran_baseline);
+  if (!ran.ok || !ran_baseline.ok) {
+    fmt::print(stderr, "run failed: {} {}\n", ran.message, ran_baseline.message);
+    return 2;
+  }
+  const std::vector<std::vector<double>> linear_channels = linear_triangle_response(linear, mechanism.model, amplitude);
+  // Both over the same samples from the load's end on (20 ms: a free decay from there), each
+  // channel weighed by the linear response's RMS; channels the linear response leaves at rest
+  // (below 1e-6 of the largest RMS of their kind, by symmetry) are left out.
+  constexpr std::size_t kLoadEnd = 10;
+  const std::size_t n = std::min({response.front().size(), rest.front().size(), linear_channels.front().size()});
+  const std::size_t n_pencil = std::min(n - kLoadEnd, static_cast<std::size_t>(std::lround(pencil_record / kSignalInterval)));
+  std::vector<double> rms(response.size(), 0.0);
+  double largest_turn = 0.0, largest_modal = 0.0;
+  const std::size_t per_panel = response.size() / std::size(kPanels);
+  for (std::size_t c = 0; c < response.size(); ++c) {
+    for (std::size_t k = 0; k < n; ++k) rms[c] += linear_channels[c][k] * linear_channels[c][k] / n;
+    rms[c] = std::sqrt(rms[c]);
+    (c % per_panel < 3 ? largest_turn : largest_modal) = std::max(c % per_panel < 3 ? largest_turn : largest_modal, rms[c]);
+  }
+  std::vector<std::vector<double>> run_weighed, linear_weighed;
+  double difference = 0.0, norm = 0.0, difference_first = 0.0, norm_first = 0.0;
+  for (std::size_t c = 0; c < response.size(); ++c) {
+    if (rms[c] < 1e-6 * (c % per_panel < 3 ? largest_turn : largest_modal)) continue;
+    run_weighed.emplace_back();
+    linear_weighed.emplace_back();
+    double d_c = 0.0, l_c = 0.0;
+    for (std::size_t k = kLoadEnd; k < n; ++k) {
+      const double r = (response[c][k] - rest[c][k]) / rms[c], l = linear_channels[c][k] / rms[c];
+      if (k < kLoadEnd + n_pencil) {
+        run_weighed.back().push_back(r);
+        linear_weighed.back().push_back(l);
+        difference_first += (r - l) * (r - l);
+        norm_first += l * l;
+      }
+      difference += (r - l) * (r - l);
+      norm += l * l;
+      d_c += (r - l) * (r - l);
+      l_c += l * l;
+    }
+    fmt::print("channel {:2d} ({} {:2d}): linear RMS {:.3e}, |run - linear| / |linear| = {:.4f}\n", c,
+               kPanels[c / per_panel], static_cast<int>(c % per_panel), rms[c], std::sqrt(d_c / l_c));
+  }
+  const auto poles_run = study::pencil_poles(run_weighed, static_cast<Eigen::Index>(n_pencil), kSignalInterval, floor);
+  const auto poles_linear =
+      study::pencil_poles(linear_weighed, static_cast<Eigen::Index>(n_pencil), kSignalInterval, floor);
+  fmt::print("deployed satellite: the impulse's response (x {}) run less the run without it, {} to {} s, against "
+             "the linear model's response to the same load; runs {:.0f} s + {:.0f} s wall\n",
+             amplitude, kLinearizeAt, kLinearizeAt + kRecord, ran.wall_seconds, ran_baseline.wall_seconds);
+  fmt::print("sample by sample, channels weighed by the linear RMS: |run - linear| / |linear| = {:.4f} over {} s, "
+             "{:.4f} over the first {} s\n",
+             std::sqrt(difference / norm), kRecord, std::sqrt(difference_first / norm_first), pencil_record);
+  fmt::print("matrix pencil over the first {} s ({} samples, {} and {} poles):\n", pencil_record, n_pencil,
+             poles_run.size(), poles_linear.size());
+  fmt::print("{:>4} {:>12} {:>9} {:>14} {:>9} {:>9} {:>14} {:>9} {:>9}\n", "mode", "linear [Hz]", "zeta",
+             "run pencil", "zeta", "diff [%]", "lin. pencil", "zeta", "diff [%]");
+  double worst = 0.0;
+  for (Eigen::Index i = 0; i < linear.modes.frequencies_hz.size(); ++i) {
+    const double fl = linear.modes.frequencies_hz(i), zl = linear.modes.damping(i);
+    if (fl <= 0.0 || fl > f_max) continue;
+    const std::complex<double> s(-zl * 2 * M_PI * fl, 2 * M_PI * fl * std::sqrt(std::max(0.0, 1 - zl * zl)));
+    const study::PencilPole pr = study::nearest_pole(poles_run, s, min_weight);
+    const study::PencilPole pl = study::nearest_pole(poles_linear, s, min_weight);
+    const double fr = std::abs(pr.s) / (2 * M_PI), fp = std::abs(pl.s) / (2 * M_PI);
+    worst = std::max(worst, std::abs(100.0 * (fr - fl) / fl));
+    fmt::print("{:>4} {:>12.4f} {:>9.4f} {:>14.4f} {:>9.4f} {:>9.3f} {:>14.4f} {:>9.4f} {:>9.3f}\n", i + 1, fl, zl, fr,
+               -pr.s.real() / std::abs(pr.s), 100.0 * (fr - fl) / fl, fp, -pl.s.real() / std::abs(pl.s),
+               100.0 * (fp - fl) / fl);
+  }
+  fmt::print("largest difference (run pencil): {:.3f} %\n", worst);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double t_end = argc > 1 ? std::atof(argv[1]) : 36.0;
+  kRecord = t_end - kLinearizeAt;
+  const double f_max = argc > 2 ? std::atof(argv[2]) : 30.0;
+  const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
+  bool sharp = false, linear_only = false, pencil = false;
+  double amplitude = 1.0, pencil_record = 1.5, floor = 1e-7, min_weight = 1e-3;
+  std::string step;
+  for (int a = 3; a < argc; ++a) {
+    const std::string option = argv[a];
+    sharp = sharp || option == "sharp";
+    kFallingWindow = kFallingWindow || option == "falling";
+    linear_only = linear_only || option == "linear";
+    pencil = pencil || option == "pencil";
+    if (option.rfind("amp=", 0) == 0) amplitude = std::atof(option.c_str() + 4);
+    if (option.rfind("record=", 0) == 0) pencil_record = std::atof(option.c_str() + 7);
+    if (option.rfind("step=", 0) == 0) step = option.substr(5);
+    if (option.rfind("floor=", 0) == 0) floor = std::atof(option.c_str() + 6);
+    if (option.rfind("weight=", 0) == 0) min_weight = std::atof(option.c_str() + 7);
+  }
+  const io::Case input = io::read_case_text(edited_case(path, t_end, sharp, amplitude, step), path);
+  const io::Mechanism mechanism = built(input);
+  const multibody::Model& model = mechanism.model;
+
+  // The linearized frequencies at 6 s (the impulse starts there: zero at the point).
+  run::LinearizeSettings settings;
+  settings.zero_threshold_hz = 0.5;
+  int bus_center = 0;
+  while (model.markers[static_cast<std::size_t>(bus_center)].name != "bus_center") ++bus_center;
+  settings.inputs = {{"force", multibody::LinearInputKind::kForce, bus_center, -1, multibody::ChannelAxes::kGround},
+                     {"torque", multibody::LinearInputKind::kTorque, bus_center, -1, multibody::ChannelAxes::kGround}};
+  const run::LinearizeSummary linear = run::linearize_at(model, mechanism.assembly, mechanism.run, kLinearizeAt, settings);
+  if (!linear.ok) {
+    fmt::print(stderr, "linearization failed: {}\n", linear.message);
+    return 2;
+  }
+  if (pencil) {
+    const io::Case baseline = io::read_case_text(edited_case(path, t_end, sharp, 0.0, step), path);
+    return pencil_study(mechanism, baseline, linear, f_max, amplitude, pencil_record, floor, min_weight);
+  }
+
+  const std::vector<double> linear_peaks = summed_spectrum_peaks(linear_response(linear, model));
+  // The free decay: panel rotations relative to the bus and modal coordinates from 6 s on.
+  run::RunSummary ran;
+  const std::vector<std::vector<double>> channels = linear_only ? std::vector<std::vector<double>>{}
+                                                                : run_channels(mechanism, ran);
   if (!linear_only && !ran.ok) {
     fmt::print(stderr, "run failed at {} s: {}\n", ran.t_reached, ran.message);
     return 2;
   }
-
   const std::vector<double> peaks = linear_only ? std::vector<double>{} : summed_spectrum_peaks(channels);
   const std::size_t n = static_cast<std::size_t>(std::lround(kRecord / kSignalInterval)) + 1;
 
