@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
+#include <variant>
 
 #include "multibody/body.h"
+#include "multibody/released_joints.h"
 
 namespace limber::multibody {
 
@@ -16,8 +19,54 @@ double wrap_angle(double x) {
 }
 
 void update_marker_kinematics(const Model& model, const State& state, Stage stage, Workspace& ws) {
+  update_marker_kinematics(model, state, stage, ReleasedJoints{}, ws);
+}
+
+void update_marker_kinematics(const Model& model, const State& state, Stage stage, const ReleasedJoints& released,
+                              Workspace& ws) {
   const Eigen::VectorXd* v = stage == Stage::kVelocity ? &state.v : nullptr;
-  for (size_t k = 0; k < model.markers.size(); ++k) marker_kinematics(model, k, state.q, v, ws.markers[k]);
+  const bool some_released = !released.markers.empty();
+  for (size_t k = 0; k < model.markers.size(); ++k) {
+    if (some_released && released.markers[k]) continue;
+    marker_kinematics(model, k, state.q, v, ws.markers[k]);
+  }
+}
+
+namespace {
+
+// The markers a force element acts through.
+std::vector<int> force_markers(const ForceElement& force) {
+  return std::visit(
+      [](const auto& element) -> std::vector<int> {
+        if constexpr (std::is_same_v<std::decay_t<decltype(element)>, PointLoad>) {
+          return {element.marker};
+        } else {
+          return {element.marker_i, element.marker_j};
+        }
+      },
+      force);
+}
+
+}  // namespace
+
+ReleasedJoints released_joints(const Model& model, const std::vector<bool>& released_rows) {
+  ReleasedJoints out;
+  if (released_rows.empty()) return out;
+  out.rows = released_rows;
+  // Markers of released rows, less those a row in force or a force element uses.
+  std::vector<bool> of_released(model.markers.size(), false), in_force(model.markers.size(), false);
+  for (int row = 0; row < model.num_equations(); ++row) {
+    const ConstraintEquation& e = model.equations[static_cast<std::size_t>(row)];
+    std::vector<bool>& users = released_rows[static_cast<std::size_t>(row)] ? of_released : in_force;
+    users[static_cast<std::size_t>(e.marker_i)] = true;
+    users[static_cast<std::size_t>(e.marker_j)] = true;
+  }
+  for (const ForceElement& force : model.forces) {
+    for (const int marker : force_markers(force)) in_force[static_cast<std::size_t>(marker)] = true;
+  }
+  out.markers.assign(model.markers.size(), false);
+  for (std::size_t k = 0; k < model.markers.size(); ++k) out.markers[k] = of_released[k] && !in_force[k];
+  return out;
 }
 
 RelativeAngle relative_angle(const FrameKinematics& mi, const FrameKinematics& mj, Stage stage) {
@@ -105,12 +154,24 @@ void evaluate_row(const ConstraintEquation& e, const FrameKinematics& mi, const 
 }  // namespace
 
 void evaluate_constraints(const Model& model, const State& state, Stage stage, Workspace& ws) {
-  update_marker_kinematics(model, state, stage, ws);
-  evaluate_constraint_rows(model, state, stage, ws);
+  evaluate_constraints(model, state, stage, ReleasedJoints{}, ws);
+}
+
+void evaluate_constraints(const Model& model, const State& state, Stage stage, const ReleasedJoints& released,
+                          Workspace& ws) {
+  update_marker_kinematics(model, state, stage, released, ws);
+  evaluate_constraint_rows(model, state, stage, released, ws);
 }
 
 void evaluate_constraint_rows(const Model& model, const State& state, Stage stage, Workspace& ws) {
+  evaluate_constraint_rows(model, state, stage, ReleasedJoints{}, ws);
+}
+
+void evaluate_constraint_rows(const Model& model, const State& state, Stage stage, const ReleasedJoints& released,
+                              Workspace& ws) {
+  const bool some_released = !released.rows.empty();
   for (int row = 0; row < model.num_equations(); ++row) {
+    if (some_released && released.rows[static_cast<std::size_t>(row)]) continue;
     const ConstraintEquation& e = model.equations[row];
     // Drivers supply f(t); joint equations have f = 0.
     const FunctionValue f =

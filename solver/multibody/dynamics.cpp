@@ -1,5 +1,7 @@
 #include "multibody/dynamics.h"
 
+#include <algorithm>
+
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/nonlinear_body.h"
@@ -7,6 +9,7 @@
 #include "multibody/flexible_dynamics.h"
 #include "multibody/geometric_stiffening.h"
 #include "multibody/hinge_limit.h"
+#include "multibody/released_joints.h"
 
 namespace limber::multibody {
 
@@ -170,30 +173,61 @@ void add_interaction_forces(const Model& model, const State& state, Workspace& w
 
 }  // namespace
 
+namespace {
+
+// A flexible body's share of the powers: its modal damping and centrifugal geometric force.
+void add_body_powers(const Body& body, const State& state, PowerTerms& powers) {
+  if (body.kind != BodyKind::kFlexible) return;
+  // Modal damping removes Σ c_i η̇_i² (flexible_dynamics.cpp applies Q_η = −c η̇).
+  const int nm = body.flexible->mode_count();
+  const auto eta_dot = state.v.segment(body.v_offset + 6, nm);
+  powers.dissipation += eta_dot.dot(body.flexible->damping.cwiseProduct(eta_dot));
+  // The centrifugal geometric force's power (flexible_dynamics.cpp adds the force).
+  if (body.flexible->stiffening != GeometricStiffening::kOff) {
+    powers.geometric -= eta_dot.dot(centrifugal_geometric_force(
+        body.flexible->geometric, state.v.segment<3>(body.v_offset + 3), state.q.segment(body.q_offset + 7, nm)));
+  }
+}
+
+bool has_load_stiffening(const Model& model) {
+  return std::any_of(model.bodies.begin(), model.bodies.end(), [](const Body& body) {
+    return body.kind == BodyKind::kFlexible && body.flexible->stiffening == GeometricStiffening::kFull;
+  });
+}
+
+}  // namespace
+
 void generalized_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
   ws.Q.setZero(model.nv);
   if (powers) *powers = PowerTerms{};
   // Bodies: quadratic-velocity forces and gravity.
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     add_body_inertial_and_gravity_forces(model, b, state.q, state.v, ws.Q);
-    // Modal damping removes Σ c_i η̇_i² (flexible_dynamics.cpp applies Q_η = −c η̇).
-    const Body& body = model.bodies[b];
-    if (powers && body.kind == BodyKind::kFlexible) {
-      const int nm = body.flexible->mode_count();
-      const auto eta_dot = state.v.segment(body.v_offset + 6, nm);
-      powers->dissipation += eta_dot.dot(body.flexible->damping.cwiseProduct(eta_dot));
-      // The centrifugal geometric force's power (flexible_dynamics.cpp adds the force).
-      if (body.flexible->stiffening != GeometricStiffening::kOff) {
-        powers->geometric -= eta_dot.dot(centrifugal_geometric_force(
-            body.flexible->geometric, state.v.segment<3>(body.v_offset + 3), state.q.segment(body.q_offset + 7, nm)));
-      }
-    }
+    if (powers) add_body_powers(model.bodies[b], state, *powers);
   }
   if (!model.forces.empty()) update_marker_kinematics(model, state, Stage::kVelocity, ws);
   add_interaction_forces(model, state, ws, powers);
 }
 
+PowerTerms power_terms(const Model& model, const State& state, const ReleasedJoints& released, Workspace& ws) {
+  PowerTerms powers;
+  // The load-dependent stiffening estimates the accelerations from the bodies' forces too.
+  if (has_load_stiffening(model)) {
+    generalized_forces(model, state, ws, &powers);
+    return powers;
+  }
+  ws.Q.setZero(model.nv);
+  for (const Body& body : model.bodies) add_body_powers(body, state, powers);
+  if (!model.forces.empty()) update_marker_kinematics(model, state, Stage::kVelocity, released, ws);
+  add_interaction_forces(model, state, ws, &powers);
+  return powers;
+}
+
 void mass_matrix_and_forces(const Model& model, const State& state, Workspace& ws) {
+  mass_matrix_and_forces(model, state, ReleasedJoints{}, ws);
+}
+
+void mass_matrix_and_forces(const Model& model, const State& state, const ReleasedJoints& released, Workspace& ws) {
   ws.M.setZero(model.nv, model.nv);
   ws.Q.setZero(model.nv);
   for (size_t b = 0; b < model.bodies.size(); ++b) {
@@ -205,7 +239,7 @@ void mass_matrix_and_forces(const Model& model, const State& state, Workspace& w
       add_body_inertial_and_gravity_forces(model, b, state.q, state.v, ws.Q);
     }
   }
-  update_marker_kinematics(model, state, model.forces.empty() ? Stage::kPosition : Stage::kVelocity, ws);
+  update_marker_kinematics(model, state, model.forces.empty() ? Stage::kPosition : Stage::kVelocity, released, ws);
   add_interaction_forces(model, state, ws, nullptr);
 }
 

@@ -4,6 +4,7 @@
 
 #include "multibody/dynamics.h"
 #include "multibody/reactions.h"
+#include "multibody/released_joints.h"
 
 namespace limber::multibody {
 
@@ -11,8 +12,8 @@ EnergyRates energy_rates(const Model& model, const ConstraintPartition& partitio
                          const Eigen::VectorXd& v_dot, const Eigen::VectorXd& lambda, Workspace& ws) {
   EnergyRates rates;
   // Force elements: dampers, actuators, loads.
-  PowerTerms powers;
-  generalized_forces(model, state, ws, &powers);
+  // Released joints' markers carry no force element: left out.
+  const PowerTerms powers = power_terms(model, state, released_joints(model, partition.row_released), ws);
   rates.dissipation = powers.dissipation;
   rates.forces = powers.actuators + powers.loads;
   rates.geometric = powers.geometric;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "multibody/body.h"
+
 namespace limber::multibody {
 
 double hinge_limit_angle(const HingeLimit& limit, const RelativeAngle& angle) {
@@ -63,7 +65,13 @@ void hinge_limit_events(const Model& model, const std::vector<int>& limits, cons
                         Workspace& ws, Eigen::VectorXd& e) {
   e.resize(static_cast<Eigen::Index>(limits.size()));
   if (limits.empty()) return;
-  update_marker_kinematics(model, state, Stage::kPosition, ws);
+  // The limits' own markers only: this runs at every step, the other markers are not needed.
+  for (const int force : limits) {
+    const auto& limit = std::get<HingeLimit>(model.forces[static_cast<size_t>(force)]);
+    for (const int marker : {limit.marker_i, limit.marker_j}) {
+      marker_kinematics(model, marker, state.q, nullptr, ws.markers[static_cast<size_t>(marker)]);
+    }
+  }
   for (size_t k = 0; k < limits.size(); ++k) {
     const auto& limit = std::get<HingeLimit>(model.forces[limits[k]]);
     const RelativeAngle angle =

@@ -68,7 +68,7 @@ void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::
   state_.t = t;
   state_.q = q;
   if (v) state_.v = *v;
-  evaluate_constraints(model_, state_, v ? Stage::kVelocity : Stage::kPosition, workspace_);
+  evaluate_constraints(model_, state_, v ? Stage::kVelocity : Stage::kPosition, released_, workspace_);
 }
 
 void MultibodySystem::select_rows(const Eigen::VectorXd& full, Eigen::VectorXd& out) const {
@@ -138,10 +138,10 @@ void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::
     out.M.resize(0, 0);
     sparse_mass_matrix(model_, state_, out.M_sparse);
     multibody::generalized_forces(model_, state_, workspace_);
-    evaluate_constraints(model_, state_, Stage::kPosition, workspace_);
+    evaluate_constraints(model_, state_, Stage::kPosition, released_, workspace_);
   } else {
-    multibody::mass_matrix_and_forces(model_, state_, workspace_);
-    evaluate_constraint_rows(model_, state_, Stage::kPosition, workspace_);
+    multibody::mass_matrix_and_forces(model_, state_, released_, workspace_);
+    evaluate_constraint_rows(model_, state_, Stage::kPosition, released_, workspace_);
     out.M = workspace_.M;
   }
   out.Q = workspace_.Q;
@@ -209,8 +209,10 @@ bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) c
 void MultibodySystem::release_joints(double t, const Eigen::VectorXd& q) {
   state_.t = t;
   state_.q = q;
-  partition_ = analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_,
-                                  rows_released_by(model_, t));
+  const std::vector<bool> released = rows_released_by(model_, t);
+  partition_ = analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_, released);
+  // Their rows and markers are no longer evaluated.
+  released_ = released_joints(model_, released);
   chosen_pivot_ = -1.0;
 }
 

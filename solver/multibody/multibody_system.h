@@ -12,6 +12,7 @@
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
+#include "multibody/released_joints.h"
 #include "multibody/state.h"
 
 namespace limber::multibody {
@@ -62,7 +63,8 @@ class MultibodySystem final : public MechanicalSystem {
 
   // Removes the joints released at or before t (Joint::release_time ≤ t, redundancy.h's
   // rows_released_by) from the equations: the partition is analysed anew at (t, q) without
-  // their rows, so nc() may shrink. An integrator holding this system must be started afresh
+  // their rows, so nc() may shrink, and their rows and markers are no longer evaluated
+  // (released_joints.h). An integrator holding this system must be started afresh
   // after it (run_driver.h integrates from one release time to the next).
   void release_joints(double t, const Eigen::VectorXd& q);
 
@@ -92,6 +94,7 @@ class MultibodySystem final : public MechanicalSystem {
   mutable ConstraintPartition partition_;   // changed by reselect_constraints only
   mutable double chosen_pivot_ = -1.0;      // smallest_pivot when partition_ was chosen
   mutable std::vector<int> kept_rows_;      // rows of joints whose dropped rows degraded
+  ReleasedJoints released_;                 // rows and markers left out (release_joints)
   int num_moving_bodies_ = 0;
   std::vector<int> limits_;                 // model.forces indices of hinge latches and stops
   mutable std::vector<HingeEvent> events_;  // appended by apply_event

@@ -7,6 +7,7 @@
 #include "core/minimum_norm.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
+#include "multibody/released_joints.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -74,8 +75,11 @@ Reactions reactions_of(const Model& model, const State& state, Eigen::VectorXd l
     const Joint& joint = model.joints[k];
     const FrameKinematics& mi = ws.markers[joint.marker_i];
     const FrameKinematics& mj = ws.markers[joint.marker_j];
+    // A released joint carries nothing (its multipliers are zero): no wrench map to build.
     const Eigen::Matrix<double, 6, 1> wrench_j =
-        joint_wrench_map(model, ws, static_cast<int>(k)) * out.lambda.segment(joint.first_row, joint.rows);
+        partition.released(joint.first_row)
+            ? Eigen::Matrix<double, 6, 1>::Zero().eval()
+            : (joint_wrench_map(model, ws, static_cast<int>(k)) * out.lambda.segment(joint.first_row, joint.rows)).eval();
     JointReaction r;
     r.point_W = mj.p_W;
     r.indeterminate = partition.joint_indeterminate[k];
@@ -111,7 +115,8 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
 Reactions reactions_from_multipliers(const Model& model, const State& state,
                                      const Eigen::VectorXd& lambda_independent,
                                      const ConstraintPartition& partition, Workspace& ws) {
-  evaluate_constraints(model, state, Stage::kPosition, ws);
+  // Released joints' rows and markers are not needed: their reactions are zero.
+  evaluate_constraints(model, state, Stage::kPosition, released_joints(model, partition.row_released), ws);
   // Without redundant rows the multipliers are unique: the integrator's.
   if (partition.redundant.empty()) {
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(model.num_equations());

@@ -13,6 +13,9 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "multibody/redundancy.h"
+#include "multibody/released_joints.h"
+#include "multibody/state.h"
 #include "run/run_driver.h"
 #include "run_test_support.h"
 
@@ -131,6 +134,56 @@ TEST(HoldDown, StaticStartThenReleaseAtZeroFollowsTheSpringClosedForm) {
     // IDA at rtol 1e-9 on an angle of order 1: 1e-6 rad.
     EXPECT_NEAR(r.angle[i], free_angle * (1.0 - std::cos(omega * r.time[i])), 1e-6) << "t = " << r.time[i];
   }
+}
+
+// A released hold-down leaves the evaluation (multibody/released_joints.h): its rows and markers
+// are not written, while every other row and marker is the full evaluation's, to the bit (the
+// same arithmetic); and the powers of the energy integrals without the bodies' forces
+// (power_terms) are those of the full force pass, to the bit.
+TEST(HoldDown, ReleasedJointsLeaveTheEvaluation) {
+  const std::string spring = "forces:\n  spring: {type: rsda, marker_i: R.i, marker_j: R.j, stiffness: 4.0, "
+                             "free_angle: 0.5, damping: 0.3}\n";
+  const std::string path =
+      test::write_case("hold_down_evaluation", bar_case(kGravity, ", release: 0.0", spring, "t_end: 0.1"));
+  const io::Case input = io::read_case_file(path);
+  const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
+  const multibody::Model& model = built.model;
+  const multibody::Joint& hold_down = model.joints[static_cast<std::size_t>(model.find_joint("HD"))];
+  // A state off the assembly, moving: the rows and the marker kinematics are not trivial.
+  multibody::State state = multibody::initial_state(model);
+  const multibody::Body& bar = model.bodies[static_cast<std::size_t>(model.find_body("bar"))];
+  state.q.segment<4>(bar.q_offset + 3) = Eigen::Vector4d(0.98, 0.05, 0.17, -0.02).normalized();
+  state.v.segment<6>(bar.v_offset) << 0.1, -0.2, 0.3, 0.4, -1.5, 0.2;
+  multibody::Workspace full(model), left_out(model);
+  const multibody::ReleasedJoints released = multibody::released_joints(model, multibody::rows_released_by(model, 0.0));
+  multibody::evaluate_constraints(model, state, multibody::Stage::kVelocity, full);
+  multibody::evaluate_constraints(model, state, multibody::Stage::kVelocity, released, left_out);
+  for (int row = 0; row < model.num_equations(); ++row) {
+    const bool released_row = row >= hold_down.first_row && row < hold_down.first_row + hold_down.rows;
+    // Released rows: not written (zero, as the fresh workspace holds them).
+    EXPECT_EQ(left_out.g(row), released_row ? 0.0 : full.g(row)) << model.equations[row].name;
+    EXPECT_EQ(left_out.gamma(row), released_row ? 0.0 : full.gamma(row)) << model.equations[row].name;
+    EXPECT_TRUE(released_row ? left_out.G.row(row).isZero(0.0) : left_out.G.row(row) == full.G.row(row))
+        << model.equations[row].name;
+  }
+  // The hold-down's markers keep their unevaluated values (zero: a fresh workspace), the
+  // hinge's are evaluated.
+  for (const int marker : {hold_down.marker_i, hold_down.marker_j}) {
+    EXPECT_EQ(left_out.markers[static_cast<std::size_t>(marker)].p_W, Eigen::Vector3d::Zero());
+  }
+  EXPECT_NE(full.markers[static_cast<std::size_t>(hold_down.marker_j)].p_W, Eigen::Vector3d::Zero());
+  const multibody::Joint& hinge = model.joints[static_cast<std::size_t>(model.find_joint("R"))];
+  EXPECT_EQ(left_out.markers[static_cast<std::size_t>(hinge.marker_j)].p_W,
+            full.markers[static_cast<std::size_t>(hinge.marker_j)].p_W);
+
+  multibody::PowerTerms powers;
+  multibody::generalized_forces(model, state, full, &powers);
+  const multibody::PowerTerms reduced = multibody::power_terms(model, state, released, left_out);
+  EXPECT_GT(powers.dissipation, 0.0);  // the damper turns: the comparison is not of zeros
+  EXPECT_EQ(reduced.dissipation, powers.dissipation);
+  EXPECT_EQ(reduced.actuators, powers.actuators);
+  EXPECT_EQ(reduced.loads, powers.loads);
+  EXPECT_EQ(reduced.geometric, powers.geometric);
 }
 
 // A release time that is negative (at its key, line 9), and a driver on a released joint:
