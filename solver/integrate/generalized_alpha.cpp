@@ -11,6 +11,8 @@
 #include "integrate/singular_test.h"
 
 namespace limber::integrate {
+
+double GeneralizedAlpha::time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 namespace {
 
 // Newton contraction rate above which a reused iteration matrix is rebuilt.
@@ -36,16 +38,6 @@ constexpr double kSlowRate = 0.5;
 // the larger bound applies once the increments have stopped shrinking (stalled in the noise).
 constexpr double kRoundoff = 10.0 * std::numeric_limits<double>::epsilon();
 constexpr double kRoundoffStall = 1e3 * std::numeric_limits<double>::epsilon();
-
-// A compressed sparse matrix's pattern as one array: its outer, then its inner indices.
-std::vector<int> sparse_pattern(const Eigen::SparseMatrix<double>& A) {
-  std::vector<int> out(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-  out.insert(out.end(), A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-  return out;
-}
-
-// Two times closer than this (relative) are the same output time.
-double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 
 }  // namespace
 
@@ -337,68 +329,6 @@ GeneralizedAlpha::Attempt GeneralizedAlpha::attempt_step(double h) {
   return Attempt::kNewtonFailed;
 }
 
-Status GeneralizedAlpha::locate_events(double h) {
-  if (curr_.events.size() == 0) return Status::success(next_.t);
-  system_->event_functions(next_.t, next_.q, next_.v, next_.events);
-  // The functions that rose through 0 in this step, and the largest of them: it crosses first.
-  std::vector<int> rising;
-  for (Eigen::Index k = 0; k < curr_.events.size(); ++k) {
-    if (curr_.events(k) < 0.0 && next_.events(k) >= 0.0) rising.push_back(static_cast<int>(k));
-  }
-  if (rising.empty()) return Status::success(next_.t);
-  const auto largest = [&rising](const Eigen::VectorXd& e) {
-    double value = -std::numeric_limits<double>::infinity();
-    for (const int k : rising) value = std::max(value, e(k));
-    return value;
-  };
-  // Illinois bracketing of the crossing in the step size: e < 0 at h_lo, ≥ 0 at h_hi.
-  double h_lo = 0.0, e_lo = largest(curr_.events);
-  double h_hi = h, e_hi = largest(next_.events);
-  StepState at_hi = next_;
-  Eigen::VectorXd xi_hi = xi_last_;
-  int side = 0;
-  while (h_hi - h_lo > options_.event_tolerance) {
-    // Regula falsi, kept a hundredth of the bracket inside it.
-    const double width = h_hi - h_lo;
-    const double h_mid =
-        std::clamp(h_lo - e_lo * width / (e_hi - e_lo), h_lo + 0.01 * width, h_hi - 0.01 * width);
-    ++stats_.rejected_steps;
-    if (attempt_step(h_mid) != Attempt::kAccepted) {
-      return failure(StatusCode::kConvergenceFailures,
-                     fmt::format("Newton did not converge in a step h = {:.4g} s shortened to "
-                                 "locate an event", h_mid));
-    }
-    system_->event_functions(next_.t, next_.q, next_.v, next_.events);
-    const double e_mid = largest(next_.events);
-    if (e_mid >= 0.0) {
-      h_hi = h_mid;
-      e_hi = e_mid;
-      at_hi = next_;
-      xi_hi = xi_last_;
-      if (side == 1) e_lo *= 0.5;
-      side = 1;
-    } else {
-      h_lo = h_mid;
-      e_lo = e_mid;
-      if (side == -1) e_hi *= 0.5;
-      side = -1;
-    }
-  }
-  // The step that ends just past the crossing; its crossing events switch before the next,
-  // with those that cross within the event tolerance after it (at their rate over the step):
-  // a symmetric mechanism's twin latches switch together, not one a step of ~1e-9 s later,
-  // whose index-3 multipliers would carry the position round-off over β h² (kN spikes in the
-  // satellite's event peaks).
-  next_ = std::move(at_hi);
-  xi_last_ = xi_hi;
-  const double h_crossing = next_.t - curr_.t;
-  for (const int k : rising) {
-    const double rate = (next_.events(k) - curr_.events(k)) / h_crossing;
-    if (next_.events(k) + rate * options_.event_tolerance >= 0.0) pending_events_.push_back(k);
-  }
-  return Status::success(next_.t);
-}
-
 void GeneralizedAlpha::estimate_local_error() {
   // Leading term of the position increment's local error, (β − 1/6) h² (a_{n+1} − a_n)
   // (Zienkiewicz & Xie 1991); its largest value over the run against the run's largest
@@ -416,95 +346,6 @@ void GeneralizedAlpha::estimate_local_error() {
       stats_.max_local_error = std::max(stats_.max_local_error, largest_error_[k] / largest_increment_[k]);
     }
   }
-}
-
-void GeneralizedAlpha::open_event_window(double t) {
-  if (options_.event_step > 0.0 && options_.event_window > 0.0) window_end_ = t + options_.event_window;
-  start_grid(t);
-}
-
-void GeneralizedAlpha::start_grid(double t) {
-  grid_in_window_ = in_event_window(t);
-  grid_origin_ = t;
-  grid_index_ = 0;
-  grid_step_ = grid_in_window_ ? options_.event_step : options_.step;
-  h_try_ = grid_step_;
-  halvings_ = 0;
-}
-
-bool GeneralizedAlpha::in_event_window(double t) const { return t < window_end_ - time_tolerance(t); }
-
-Status GeneralizedAlpha::apply_pending_events() {
-  if (pending_events_.empty()) return Status::success(curr_.t);
-  for (const int k : pending_events_) system_->apply_event(k, curr_.t, curr_.q, curr_.v);
-  pending_events_.clear();
-  // New force law: consistent v̇ and λ, a = v̇, no extrapolation across the switch, and a
-  // fresh iteration matrix; the integrals carry on with the new integrand.
-  const Status status =
-      solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
-  if (!status.ok()) {
-    return failure(status.code, fmt::format("after an event, the accelerations could not be "
-                                            "solved: {}", status.message));
-  }
-  restart_at_current();
-  // Without event windows the scheme returns to its grid; with them a window opens here.
-  if (options_.event_step > 0.0 && options_.event_window > 0.0) open_event_window(curr_.t);
-  return Status::success(curr_.t);
-}
-
-void GeneralizedAlpha::restart_at_current() {
-  curr_.a = curr_.vdot;
-  evaluate_integrand(curr_);
-  system_->event_functions(curr_.t, curr_.q, curr_.v, curr_.events);
-  prev_ = curr_;
-  xi_last_.setZero();
-  jacobian_h_ = 0.0;
-}
-
-Status GeneralizedAlpha::apply_breakpoint() {
-  if (next_breakpoint_ >= breakpoints_.size() ||
-      curr_.t < breakpoints_[next_breakpoint_] - time_tolerance(curr_.t)) {
-    return Status::success(curr_.t);
-  }
-  ++next_breakpoint_;
-  // The impulsive velocity change the new g_t demands, then v̇ and λ after it; restart as
-  // after an event.
-  const Eigen::VectorXd v_before = curr_.v;
-  Status status = project_initial_state(*system_, curr_.t, curr_.q, curr_.v);
-  if (status.ok()) {
-    status = solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
-  }
-  if (!status.ok()) {
-    return failure(status.code, fmt::format("at a velocity jump of a prescribed motion, the state "
-                                            "after it could not be solved: {}", status.message));
-  }
-  if (options_.quadrature.jump && curr_.integrals.size() > 0) {
-    Eigen::VectorXd dz(curr_.integrals.size());
-    options_.quadrature.jump(curr_.t, curr_.q, v_before, curr_.v, dz);
-    curr_.integrals += dz;
-  }
-  restart_at_current();
-  return Status::success(curr_.t);
-}
-
-Status GeneralizedAlpha::reselect_constraints() {
-  // As IDA between its steps (ida_integrator.cpp): the system may pick new independent rows
-  // when the current ones turn ill-conditioned along the motion. Their multipliers change
-  // meaning, so the scheme restarts there like after an event: v̇ and λ from the saddle-point
-  // system, a = v̇, no extrapolation across the switch, a fresh iteration matrix.
-  if (!system_->reselect_constraints(curr_.t, curr_.q)) return Status::success(curr_.t);
-  return restart_on_new_rows();
-}
-
-Status GeneralizedAlpha::restart_on_new_rows() {
-  const Status status =
-      solve_accelerations(*system_, curr_.t, curr_.q, curr_.v, curr_.vdot, curr_.lambda);
-  if (!status.ok()) {
-    return failure(status.code, fmt::format("after new constraint rows were selected, the "
-                                            "accelerations could not be solved: {}", status.message));
-  }
-  restart_at_current();
-  return Status::success(curr_.t);
 }
 
 bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorXd& lambda_scaled,
@@ -547,200 +388,6 @@ void GeneralizedAlpha::scaled_residual(double h, const StepState& s,
   r.tail(nc_) = eval_.g;
 }
 
-bool GeneralizedAlpha::refresh_jacobian(double h, const Eigen::VectorXd& xi,
-                                        const Eigen::VectorXd& lambda_scaled,
-                                        const Eigen::VectorXd& r) {
-  ++stats_.jacobian_evaluations;
-  probe_.t = next_.t;
-  r_perturbed_.resize(nv_ + nc_);
-  // Columns for ξ: forward differences of the scaled residual (the √ε rule).
-  const double epsilon =
-      std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, curr_.q.lpNorm<Eigen::Infinity>());
-  Eigen::VectorXd xi_perturbed = xi;
-  for (int j = 0; j < nv_; ++j) {
-    xi_perturbed(j) = xi(j) + epsilon;
-    end_of_step_kinematics(h, xi_perturbed, probe_);
-    scaled_residual(h, probe_, lambda_scaled, r_perturbed_);
-    J_.col(j) = (r_perturbed_ - r) / epsilon;
-    xi_perturbed(j) = xi(j);
-  }
-  // Columns for λ̃ = βh²λ: [Gᵀ; 0] at the current iterate.
-  end_of_step_kinematics(h, xi, probe_);
-  system_->constraint_jacobian_v(probe_.t, probe_.q, eval_.G);
-  J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
-  J_.bottomRightCorner(nc_, nc_).setZero();
-  if (!J_.allFinite()) return false;
-  if (sparse_) {
-    J_sparse_ = J_.sparseView();
-    slots_valid_ = false;
-  }
-  if (has_structure_ && !sparse_) {
-    dense_structured_block(h, correction_);
-    correction_ = J_.topLeftCorner(nv_, nv_) - correction_;
-    correction_h_ = h;
-  }
-  jacobian_h_ = h;
-  jacobian_age_ = 0;
-  jacobian_structured_ = false;
-  return factorize_iteration_matrix();
-}
-
-void GeneralizedAlpha::dense_structured_block(double h, Eigen::MatrixXd& block) {
-  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
-  block = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
-  block.diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
-  if (system_->coupled_stiffness(next_.t, next_.q, coupled_)) block += beta * h * h * coupled_;
-}
-
-bool GeneralizedAlpha::build_structured_jacobian(double h) {
-  ++stats_.jacobian_evaluations;
-  jacobian_structured_ = true;
-  jacobian_h_ = h;
-  jacobian_age_ = 0;
-  // ∂r/∂ξ: βh² M ∂v̇/∂ξ = (1 − α_m)/(1 − α_f) M, βh² k ∂q/∂ξ, βh² c ∂v/∂ξ = γh c; ∂g/∂ξ = G;
-  // plus the internal forces that couple velocities (a nonlinear body's beams), at the last
-  // state evaluated.
-  if (!sparse_) {
-    Eigen::MatrixXd block;
-    dense_structured_block(h, block);
-    // What the last matrix of differences held beyond the structured one (force elements and
-    // constraint forces through the joints' node rotations), scaled to this h as a stiffness.
-    if (correction_h_ > 0.0) block += (h / correction_h_) * (h / correction_h_) * correction_;
-    J_.topLeftCorner(nv_, nv_) = block;
-    J_.topRightCorner(nv_, nc_) = eval_.G.transpose();
-    J_.bottomLeftCorner(nc_, nv_) = eval_.G;
-    J_.bottomRightCorner(nc_, nc_).setZero();
-    if (!J_.allFinite()) return false;
-    return factorize_iteration_matrix();
-  }
-  sparse_structured_matrix(h);
-  if (!Eigen::Map<const Eigen::VectorXd>(J_sparse_.valuePtr(), J_sparse_.nonZeros()).allFinite()) return false;
-  return factorize_iteration_matrix();
-}
-
-void GeneralizedAlpha::sparse_structured_matrix(double h) {
-  const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
-  const bool coupled = system_->coupled_stiffness(next_.t, next_.q, coupled_);
-  bool valid = slots_valid_ && slots_.mass_pattern == sparse_pattern(eval_.M_sparse) &&
-               slots_.coupled_pattern == (coupled ? sparse_pattern(coupled_) : std::vector<int>{});
-  // A constraint entry outside the pattern (G's zeros change with the configuration) renews it.
-  for (int j = 0; valid && j < nv_; ++j) {
-    for (int i = 0; i < nc_; ++i) {
-      if (eval_.G(i, j) != 0.0 && slots_.g[static_cast<std::size_t>(j * nc_ + i)] < 0) {
-        valid = false;
-        break;
-      }
-    }
-  }
-  if (!valid) build_sparse_pattern(coupled);
-  // Scatter: c M, k and c on the diagonal, the coupled derivatives, G in both places.
-  double* values = J_sparse_.valuePtr();
-  std::fill(values, values + J_sparse_.nonZeros(), 0.0);
-  const double c_mass = (1.0 - alpha_m) / (1.0 - alpha_f);
-  const double* mass = eval_.M_sparse.valuePtr();
-  for (std::size_t k = 0; k < slots_.mass.size(); ++k) values[slots_.mass[k]] += c_mass * mass[k];
-  if (has_structure_) {
-    for (int i = 0; i < nv_; ++i) values[slots_.diagonal[static_cast<std::size_t>(i)]] += beta * h * h * stiffness_(i) + gamma * h * damping_(i);
-  }
-  for (std::size_t k = 0; k < slots_.coupled.size(); ++k) values[slots_.coupled[k]] += beta * h * h * coupled_.valuePtr()[k];
-  for (int j = 0; j < nv_; ++j) {
-    for (int i = 0; i < nc_; ++i) {
-      const double g = eval_.G(i, j);
-      if (g == 0.0) continue;
-      const std::size_t at = static_cast<std::size_t>(j * nc_ + i);
-      values[slots_.g[at]] += g;
-      values[slots_.g_transposed[at]] += g;
-    }
-  }
-}
-
-void GeneralizedAlpha::build_sparse_pattern(bool coupled) {
-  // Every entry any source may write, with G's entries seen so far kept (no flip-flop).
-  std::vector<Eigen::Triplet<double>> entries;
-  const auto add_pattern = [&entries](const Eigen::SparseMatrix<double>& A) {
-    for (int j = 0; j < A.outerSize(); ++j) {
-      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) entries.emplace_back(static_cast<int>(it.row()), j, 0.0);
-    }
-  };
-  add_pattern(eval_.M_sparse);
-  if (coupled) add_pattern(coupled_);
-  for (int i = 0; i < nv_; ++i) entries.emplace_back(i, i, 0.0);
-  const bool had_g = slots_.g.size() == static_cast<std::size_t>(nv_ * nc_);
-  for (int j = 0; j < nv_; ++j) {
-    for (int i = 0; i < nc_; ++i) {
-      if (eval_.G(i, j) == 0.0 && !(had_g && slots_.g[static_cast<std::size_t>(j * nc_ + i)] >= 0)) continue;
-      entries.emplace_back(nv_ + i, j, 0.0);
-      entries.emplace_back(j, nv_ + i, 0.0);
-    }
-  }
-  J_sparse_.resize(nv_ + nc_, nv_ + nc_);
-  J_sparse_.setFromTriplets(entries.begin(), entries.end());
-  J_sparse_.makeCompressed();
-  // Slots: each entry's place in its column (rows ascending).
-  const auto slot = [this](int row, int col) {
-    const int* begin = J_sparse_.innerIndexPtr() + J_sparse_.outerIndexPtr()[col];
-    const int* end = J_sparse_.innerIndexPtr() + J_sparse_.outerIndexPtr()[col + 1];
-    const int* at = std::lower_bound(begin, end, row);
-    LIMBER_DEMAND(at != end && *at == row);
-    return static_cast<int>(at - J_sparse_.innerIndexPtr());
-  };
-  const auto slots_of = [&slot](const Eigen::SparseMatrix<double>& A, std::vector<int>& out) {
-    out.clear();
-    for (int j = 0; j < A.outerSize(); ++j) {
-      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) out.push_back(slot(static_cast<int>(it.row()), j));
-    }
-  };
-  slots_of(eval_.M_sparse, slots_.mass);
-  slots_.mass_pattern = sparse_pattern(eval_.M_sparse);
-  if (coupled) {
-    slots_of(coupled_, slots_.coupled);
-    slots_.coupled_pattern = sparse_pattern(coupled_);
-  } else {
-    slots_.coupled.clear();
-    slots_.coupled_pattern.clear();
-  }
-  slots_.diagonal.resize(static_cast<std::size_t>(nv_));
-  for (int i = 0; i < nv_; ++i) slots_.diagonal[static_cast<std::size_t>(i)] = slot(i, i);
-  std::vector<int> g(static_cast<std::size_t>(nv_ * nc_), -1), g_transposed = g;
-  for (int j = 0; j < nv_; ++j) {
-    for (int i = 0; i < nc_; ++i) {
-      const std::size_t at = static_cast<std::size_t>(j * nc_ + i);
-      if (eval_.G(i, j) == 0.0 && !(had_g && slots_.g[at] >= 0)) continue;
-      g[at] = slot(nv_ + i, j);
-      g_transposed[at] = slot(j, nv_ + i);
-    }
-  }
-  slots_.g = std::move(g);
-  slots_.g_transposed = std::move(g_transposed);
-  slots_valid_ = true;
-}
-
-bool GeneralizedAlpha::factorize_iteration_matrix() {
-  if (!sparse_) {
-    lu_.compute(J_);
-    return !is_singular(J_, lu_);
-  }
-  if (!sparse_lu_.factorize(J_sparse_)) return false;
-  if (sparse_lu_.rcond() > kSingularRcond) return true;
-  // A small estimate: judged as the dense matrices are, on the equilibrated matrix (rare).
-  const Eigen::MatrixXd dense(J_sparse_);
-  return !is_singular(dense, Eigen::PartialPivLU<Eigen::MatrixXd>(dense));
-}
-
-void GeneralizedAlpha::solve_iteration_matrix(const Eigen::VectorXd& r, Eigen::VectorXd& delta) {
-  if (sparse_) {
-    delta = -sparse_lu_.solve(r);
-  } else {
-    delta = -lu_.solve(r);
-  }
-}
-
-double GeneralizedAlpha::largest_mass_entry() const {
-  if (!sparse_) return eval_.M.lpNorm<Eigen::Infinity>();
-  return Eigen::Map<const Eigen::VectorXd>(eval_.M_sparse.valuePtr(), eval_.M_sparse.nonZeros())
-      .lpNorm<Eigen::Infinity>();
-}
-
 void GeneralizedAlpha::evaluate_integrand(StepState& s) const {
   s.integrand.resize(options_.quadrature.size);
   if (options_.quadrature.size > 0) {
@@ -764,42 +411,6 @@ void GeneralizedAlpha::interpolate(double t_out, Sample& out) const {
   out.lambda = (1.0 - theta) * prev_.lambda + theta * curr_.lambda;
   out.integrals = (1.0 - theta) * prev_.integrals + theta * curr_.integrals;
   out.statistics = stats_;
-}
-
-std::optional<Status> GeneralizedAlpha::step_over_singular_configuration(const std::string& why) {
-  // Land on a grid point, where the scheme goes on with its step.
-  const auto on_grid = [this](double t) {
-    return grid_origin_ + std::ceil((t - grid_origin_) / grid_step_ - 1e-9) * grid_step_;
-  };
-  const double limit = next_breakpoint_ < breakpoints_.size() ? breakpoints_[next_breakpoint_] : options_.t_stop;
-  const StepOverOutcome over = step_overs_.step_over(*system_, options_.quadrature, curr_.t, curr_.q, curr_.v,
-                                                     curr_.integrals, limit, why, kNearSingularRatio, on_grid);
-  if (over.kind == StepOverOutcome::kNotSingular) return std::nullopt;
-  if (over.kind == StepOverOutcome::kFailed) {
-    failed_ = true;
-    failure_ = over.status;
-    return failure_;
-  }
-  if (over.kind == StepOverOutcome::kRowsReselected) {
-    // Other rows hold there: the scheme restarts on them from curr_, with its step.
-    h_try_ = grid_step_;
-    halvings_ = 0;
-    return restart_on_new_rows();
-  }
-  // Restart at the landing point, as after an event, back on the grid.
-  const SteppedOverStretch& stretch = step_overs_.stretch();
-  curr_.t = stretch.t1;
-  curr_.q = stretch.q1;
-  curr_.v = stretch.v1;
-  curr_.vdot = stretch.vdot1;
-  curr_.lambda = stretch.lambda1;
-  curr_.integrals = stretch.z1;
-  restart_at_current();
-  grid_index_ = static_cast<long>(std::floor((curr_.t - grid_origin_) / grid_step_ + 1e-9));
-  h_try_ = grid_step_;
-  halvings_ = 0;
-  if (grid_in_window_ && !in_event_window(curr_.t)) start_grid(curr_.t);
-  return check_budgets();
 }
 
 Status GeneralizedAlpha::failure(StatusCode code, const std::string& why) {

@@ -113,6 +113,9 @@ class GeneralizedAlpha final : public Integrator {
   const Statistics& statistics() const override { return stats_; }
 
  private:
+  // Two times closer than this (relative) are the same output time.
+  static double time_tolerance(double t);
+
   // Everything known at a step boundary.
   struct StepState {
     double t = 0.0;
