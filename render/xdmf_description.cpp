@@ -2,6 +2,8 @@
 
 #include "xdmf_layout.h"
 
+#include "core/markup_escape.h"
+
 #include <fmt/core.h>
 
 namespace limber::render {
@@ -50,8 +52,11 @@ std::string xdmf_description(const XdmfGrid& grid, const std::vector<double>& ti
       "<?xml version=\"1.0\" ?>\n"
       "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
       "<Xdmf Version=\"2.0\">\n"
-      "<Domain>\n"
-      " <Grid Name=\"scene\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      "<Domain>\n";
+  for (std::size_t b = 0; b < grid.body_names.size(); ++b) {
+    text += fmt::format(" <Information Name=\"body {}\" Value=\"{}\"/>\n", b, markup_escape(grid.body_names[b]));
+  }
+  text += " <Grid Name=\"scene\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (std::size_t k = 0; k < times.size() && grid.points > 0; ++k) {
     text += sample_grid(grid, static_cast<long>(k), times[k]);
   }

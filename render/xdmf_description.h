@@ -13,10 +13,12 @@ namespace limber::render {
 struct XdmfGrid {
   long points = 0, cells = 0, topology = 0;  // np, nc, nt
   bool stress = false;                       // cell data "stress" present
+  std::vector<std::string> body_names;       // the value k of cell data `body` is body_names[k]
 };
 
 // The description of `grid` at `times` [s] (sample k's data under /samples/<k>); no grid at
-// all when it has no points.
+// all when it has no points. Each body's name is an Information element of the domain, "body k"
+// = its name, so that a reader of the file knows which value of `body` to pick.
 std::string xdmf_description(const XdmfGrid& grid, const std::vector<double>& times);
 
 }  // namespace limber::render

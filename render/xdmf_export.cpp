@@ -236,6 +236,7 @@ XdmfGrid write_constant_parts(const SceneFile& file, const std::vector<BodyOutpu
     file.int_attribute(group.get(), xdmf::body::kCellCountAttribute, out.grid.cells);
     grid.points += out.grid.points_B.rows();
     grid.stress = grid.stress || out.stress != nullptr;
+    grid.body_names.push_back(out.track->name);
   }
   file.ints(file.root(), xdmf::kTopology, topology);
   file.reals(file.root(), xdmf::kBeamRadius, {beam_radius.size()}, beam_radius.data());

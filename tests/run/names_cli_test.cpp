@@ -75,8 +75,9 @@ TEST(NamesCli, FreeTextNamesRunRenderAndReport) {
   EXPECT_EQ(read_string_attribute(file, "/joints/%2E.", "body_j"), "arm/left");
   H5Fclose(file);
 
-  // render: one VTU series per body under distinct safe names, the names in the PVD; in the
-  // XDMF scene each body's grid is named as the body and reads its body's group.
+  // render: one VTU series per body under distinct safe names, the names in the PVD; the XDMF
+  // scene names each body's value of cell data `body`, and scene.h5 has its group at its link
+  // name.
   const test::CommandRun render =
       run_limber("render " + dir.string() + " --no-video --size 320x180 --no-progress --paraview both");
   ASSERT_EQ(render.exit_code, 0) << render.err;
@@ -87,10 +88,22 @@ TEST(NamesCli, FreeTextNamesRunRenderAndReport) {
   const std::string pvd = test::read_text((dir / "vtk" / "scene.pvd").string());
   EXPECT_NE(pvd.find("name=\"arm%2Fleft\" file=\"arm~252Fleft_00000.vtu\""), std::string::npos);
   const std::string xmf = test::read_text((dir / "vtk" / "scene.xmf").string());
-  const std::size_t grid = xmf.find("<Grid Name=\"arm%2Fleft\" GridType=\"Uniform\">");
-  ASSERT_NE(grid, std::string::npos);
-  EXPECT_EQ(xmf.find("scene.h5:/bodies/arm%252Fleft/topology", grid), xmf.find("scene.h5:/bodies/", grid))
-      << "the grid of 'arm%2Fleft' reads its own group";
+  const hid_t scene = H5Fopen((dir / "vtk" / "scene.h5").string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(scene, 0);
+  for (const auto& [group, name] : std::vector<std::pair<std::string, std::string>>{
+           {"/bodies/arm%2Fleft", "arm/left"},
+           {"/bodies/arm%252Fleft", "arm%2Fleft"},
+           {"/bodies/arm.left", "arm.left"}}) {
+    EXPECT_EQ(read_string_attribute(scene, group, "name"), name) << group;
+    int index = -1;
+    const hid_t attribute = H5Aopen_by_name(scene, group.c_str(), "index", H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(attribute, 0) << group;
+    H5Aread(attribute, H5T_NATIVE_INT, &index);
+    H5Aclose(attribute);
+    EXPECT_NE(xmf.find("<Information Name=\"body " + std::to_string(index) + "\" Value=\"" + name + "\"/>"), std::string::npos)
+        << name;
+  }
+  H5Fclose(scene);
 
   // report: a reaction plot per joint, named apart, and the names on the page.
   const test::CommandRun report = run_limber("report " + dir.string());
