@@ -9,6 +9,7 @@
 #include "results/h5_write.h"
 #include "results/link_name.h"
 #include "results/results_layout.h"
+#include "results/sample_series.h"
 #include "results/shock_spectra_file.h"
 
 #include <algorithm>
@@ -21,16 +22,6 @@
 
 namespace limber::results {
 namespace {
-
-// Throws when an HDF5 call failed (negative return): the file is unusable from then on.
-herr_t check(herr_t status, const char* what) {
-  if (status < 0) throw std::runtime_error(std::string("results.h5: HDF5 failed to ") + what);
-  return status;
-}
-H5Handle checked(hid_t id, const char* what) {
-  check(static_cast<herr_t>(id < 0 ? -1 : 0), what);
-  return H5Handle(id);
-}
 
 // File access of every results file: the 1.8-compatible format, so that no "open for writing"
 // flag survives a crash.
@@ -135,17 +126,6 @@ H5Handle create_named_group(hid_t parent, std::set<std::string>& links, const st
   return group;
 }
 
-// A per-sample dataset: [ns] (width 0) or [ns, width], grown by a block of rows at a time; the
-// rows appended since the last block wait in `pending` (row-major, memory type).
-struct Series {
-  H5Handle dataset;
-  hid_t memory_type = H5T_NATIVE_DOUBLE;
-  int rank = 1;       // 1: [ns]; 2: [ns, width], width >= 0
-  hsize_t width = 0;
-  std::size_t row_bytes = 0;
-  std::vector<unsigned char> pending;
-};
-
 // /bodies/<body>/stress: the peak at every sample, the history at every `every`-th, and the
 // running peak of the run written as attributes at finish.
 struct StressSeries {
@@ -239,70 +219,6 @@ struct ResultsWriter::Impl {
     check(size < 0 ? -1 : 0, "copy the file from memory");
     image.resize(static_cast<std::size_t>(size));
     check(H5Fget_file_image(file.get(), image.data(), image.size()) < 0 ? -1 : 0, "copy the file from memory");
-  }
-
-  // Creates an empty, chunked, unlimited per-sample dataset.
-  // A per-sample dataset: [ns] for width 0, else [ns, width].
-  Series create_series(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
-                       hsize_t width) {
-    return create_series_of_rank(parent, name, file_type, memory_type, width == 0 ? 1 : 2, width);
-  }
-  // [ns, width] for any width, 0 included (a flexible body without modes).
-  Series create_columns(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
-                        hsize_t width) {
-    return create_series_of_rank(parent, name, file_type, memory_type, 2, width);
-  }
-  Series create_series_of_rank(hid_t parent, const char* name, hid_t file_type, hid_t memory_type,
-                               int rank, hsize_t width) {
-    const hsize_t dims[2] = {0, width};
-    // A chunk may not exceed a fixed dimension: zero columns stay extendible instead.
-    const hsize_t max_dims[2] = {H5S_UNLIMITED, width == 0 ? H5S_UNLIMITED : width};
-    // Chunks of about 8k values: few chunks to touch per flush, little waste.
-    const hsize_t chunk_rows = std::clamp<hsize_t>(8192 / std::max<hsize_t>(width, 1), 1, 256);
-    const hsize_t chunk[2] = {chunk_rows, std::max<hsize_t>(width, 1)};
-    H5Handle space = checked(H5Screate_simple(rank, dims, max_dims), "create a dataspace");
-    H5Handle properties = checked(H5Pcreate(H5P_DATASET_CREATE), "create properties");
-    check(H5Pset_chunk(properties.get(), rank, chunk), "set chunking");
-    Series series;
-    series.dataset = checked(H5Dcreate2(parent, name, file_type, space.get(), H5P_DEFAULT,
-                                        properties.get(), H5P_DEFAULT),
-                             "create a per-sample dataset");
-    series.memory_type = memory_type;
-    series.rank = rank;
-    series.width = width;
-    series.row_bytes = H5Tget_size(memory_type) * (rank == 1 ? 1 : width);
-    series.pending.reserve(kBlockRows * series.row_bytes);
-    return series;
-  }
-
-  // Buffers one row of a series (written by write_block).
-  void append_row(Series& series, const void* row) {
-    const auto* bytes = static_cast<const unsigned char*>(row);
-    series.pending.insert(series.pending.end(), bytes, bytes + series.row_bytes);
-  }
-  void append_vector3(Series& series, const Eigen::Vector3d& v) { append_row(series, v.data()); }
-
-  // Extends a series to `first` + `rows` rows and writes `rows` rows from `data` at row `first`.
-  static void write_rows(Series& series, std::int64_t first, std::int64_t rows, const void* data) {
-    if (rows == 0) return;
-    const hsize_t new_dims[2] = {static_cast<hsize_t>(first + rows), series.width};
-    check(H5Dset_extent(series.dataset.get(), new_dims), "extend a dataset");
-    if (series.rank == 2 && series.width == 0) return;  // rows of nothing: the extent says it all
-    H5Handle file_space = checked(H5Dget_space(series.dataset.get()), "get a dataspace");
-    const int rank = series.rank;
-    const hsize_t start[2] = {static_cast<hsize_t>(first), 0};
-    const hsize_t count[2] = {static_cast<hsize_t>(rows), series.width};
-    check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
-          "select rows");
-    H5Handle memory_space = checked(H5Screate_simple(rank, count, nullptr), "create a dataspace");
-    check(H5Dwrite(series.dataset.get(), series.memory_type, memory_space.get(), file_space.get(),
-                   H5P_DEFAULT, data),
-          "write rows");
-  }
-  static void write_pending(Series& series, std::int64_t first, std::int64_t rows) {
-    LIMBER_DEMAND(series.pending.size() == static_cast<std::size_t>(rows) * series.row_bytes);
-    write_rows(series, first, rows, series.pending.data());
-    series.pending.clear();
   }
 
   // Writes the buffered samples to every per-sample dataset, /time last, and flushes the file.
@@ -545,20 +461,20 @@ int ResultsWriter::add_flexible_body(const FlexibleBodySpec& body) {
 
   // Modal coordinates and rates; a flexible body without modes keeps [ns, 0] datasets.
   for (const char* name : {layout::body::kModalCoordinates, layout::body::kModalVelocities}) {
-    impl_->body_series.back().push_back(impl_->create_columns(
+    impl_->body_series.back().push_back(create_columns(
         group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(nm)));
   }
   impl_->body_nmodes.push_back(static_cast<int>(nm));
   std::vector<Series>& series = impl_->body_series.back();
   if (body.has_deflection) {
     impl_->body_deflection.back() = static_cast<int>(series.size());
-    series.push_back(impl_->create_series(group.get(), layout::body::kDeflection, H5T_IEEE_F64LE,
+    series.push_back(create_series(group.get(), layout::body::kDeflection, H5T_IEEE_F64LE,
                                           H5T_NATIVE_DOUBLE, 3));
   }
   if (body.has_node_displacements) {
     impl_->body_displacements.back() = static_cast<int>(series.size());
     impl_->body_displacement_width.back() = 3 * nn;
-    series.push_back(impl_->create_columns(group.get(), layout::body::kNodeDisplacements,
+    series.push_back(create_columns(group.get(), layout::body::kNodeDisplacements,
                                            H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, static_cast<hsize_t>(3 * nn)));
   }
   if (body.has_stress) impl_->body_stress.back() = impl_->create_stress(group.get(), body);
@@ -578,18 +494,18 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
        {layout::joint::kPosition, layout::joint::kForceJoint, layout::joint::kTorqueJoint,
         layout::joint::kForceGround, layout::joint::kTorqueGround}) {
     series.push_back(
-        impl_->create_series(group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
+        create_series(group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 3));
   }
   series.push_back(
-      impl_->create_series(group.get(), layout::joint::kIndeterminate, H5T_STD_I8LE, H5T_NATIVE_INT8, 0));
+      create_series(group.get(), layout::joint::kIndeterminate, H5T_STD_I8LE, H5T_NATIVE_INT8, 0));
   // The two marker frames: the frames a reader can express the reaction in.
   for (int side = 0; side < 2; ++side) {
     H5Handle marker = create_group(group.get(), layout::kMarkerGroups[side]);
     const std::string& marker_name = side == 0 ? joint.marker_i : joint.marker_j;
     if (!marker_name.empty()) write_string_attribute(marker.get(), kNameAttribute, marker_name);
-    series.push_back(impl_->create_series(marker.get(), layout::kMarkerPosition, H5T_IEEE_F64LE,
+    series.push_back(create_series(marker.get(), layout::kMarkerPosition, H5T_IEEE_F64LE,
                                           H5T_NATIVE_DOUBLE, 3));
-    series.push_back(impl_->create_series(marker.get(), layout::kMarkerOrientation,
+    series.push_back(create_series(marker.get(), layout::kMarkerOrientation,
                                           H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
   }
   impl_->joint_series.push_back(std::move(series));
@@ -603,7 +519,7 @@ int ResultsWriter::add_driver(const std::string& name, const std::string& unit) 
       create_named_group(impl_->group(impl_->drivers_group, layout::kDrivers), impl_->driver_links, name);
   if (!unit.empty()) write_string_attribute(group.get(), layout::driver::kUnitAttribute, unit);
   impl_->driver_series.push_back(
-      impl_->create_series(group.get(), layout::driver::kEffort, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
+      create_series(group.get(), layout::driver::kEffort, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0));
   return static_cast<int>(impl_->driver_series.size()) - 1;
 }
 
@@ -612,7 +528,7 @@ int ResultsWriter::add_energy(const std::string& name) {
   impl_->demand_declaring();
   // A dataset per energy, its name in its `name` attribute as for groups.
   const std::string link = new_link(impl_->energy_links, name);
-  impl_->energy_series.push_back(impl_->create_series(impl_->group(impl_->energy_group, layout::kEnergy),
+  impl_->energy_series.push_back(create_series(impl_->group(impl_->energy_group, layout::kEnergy),
                                                       link.c_str(), H5T_IEEE_F64LE,
                                                       H5T_NATIVE_DOUBLE, 0));
   write_string_attribute(impl_->energy_series.back().dataset.get(), kNameAttribute, name);
@@ -631,17 +547,17 @@ int ResultsWriter::add_hinge_limit(const HingeLimitSpec& limit) {
   // Groups list by name; the index keeps the model's order that /events/limit refers to.
   write_int_attribute(group.get(), layout::hinge_limit::kIndexAttribute, static_cast<int>(m.limit_series.size()));
   m.limit_series.push_back(
-      {m.create_series(group.get(), layout::hinge_limit::kAngle, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
-       m.create_series(group.get(), layout::hinge_limit::kTorque, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
-       m.create_series(group.get(), layout::hinge_limit::kEngaged, H5T_STD_I8LE, H5T_NATIVE_INT8, 0)});
+      {create_series(group.get(), layout::hinge_limit::kAngle, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+       create_series(group.get(), layout::hinge_limit::kTorque, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0),
+       create_series(group.get(), layout::hinge_limit::kEngaged, H5T_STD_I8LE, H5T_NATIVE_INT8, 0)});
   // The event table exists in every file with hinge limits, empty until the first switch.
   if (!m.events_group.valid()) {
     const hid_t events = m.group(m.events_group, layout::kEvents);
-    m.event_time = m.create_series(events, layout::events::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-    m.event_limit = m.create_series(events, layout::events::kLimit, H5T_STD_I32LE, H5T_NATIVE_INT32, 0);
-    m.event_engaged = m.create_series(events, layout::events::kEngaged, H5T_STD_I8LE, H5T_NATIVE_INT8, 0);
-    m.event_angle = m.create_series(events, layout::events::kAngle, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
-    m.event_rate = m.create_series(events, layout::events::kRate, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_time = create_series(events, layout::events::kTime, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_limit = create_series(events, layout::events::kLimit, H5T_STD_I32LE, H5T_NATIVE_INT32, 0);
+    m.event_engaged = create_series(events, layout::events::kEngaged, H5T_STD_I8LE, H5T_NATIVE_INT8, 0);
+    m.event_angle = create_series(events, layout::events::kAngle, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+    m.event_rate = create_series(events, layout::events::kRate, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
   }
   return static_cast<int>(m.limit_series.size()) - 1;
 }
@@ -654,7 +570,7 @@ int ResultsWriter::add_acceleration_probe(const AccelerationProbeSpec& probe) {
   write_string_attribute(group.get(), layout::acceleration_probe::kBodyAttribute, probe.body);
   write_int_attribute(group.get(), layout::acceleration_probe::kNodeAttribute, probe.node);
   write_doubles_attribute(group.get(), layout::acceleration_probe::kPointAttribute, probe.point.data(), 3);
-  m.probe_series.push_back(m.create_series(group.get(), layout::acceleration_probe::kAcceleration, H5T_IEEE_F64LE,
+  m.probe_series.push_back(create_series(group.get(), layout::acceleration_probe::kAcceleration, H5T_IEEE_F64LE,
                                            H5T_NATIVE_DOUBLE, 3));
   return static_cast<int>(m.probe_series.size()) - 1;
 }
@@ -666,12 +582,12 @@ void ResultsWriter::append_event(const HingeEventRecord& event) {
   LIMBER_DEMAND(event.limit >= 0 && event.limit < static_cast<int>(m.limit_series.size()));
   const std::int32_t limit = event.limit;
   const std::int8_t engaged = event.engaged ? 1 : 0;
-  m.write_rows(m.event_limit, m.ne, 1, &limit);
-  m.write_rows(m.event_engaged, m.ne, 1, &engaged);
-  m.write_rows(m.event_angle, m.ne, 1, &event.angle);
-  m.write_rows(m.event_rate, m.ne, 1, &event.rate);
+  write_rows(m.event_limit, m.ne, 1, &limit);
+  write_rows(m.event_engaged, m.ne, 1, &engaged);
+  write_rows(m.event_angle, m.ne, 1, &event.angle);
+  write_rows(m.event_rate, m.ne, 1, &event.rate);
   // Time last, as for samples.
-  m.write_rows(m.event_time, m.ne, 1, &event.time);
+  write_rows(m.event_time, m.ne, 1, &event.time);
   ++m.ne;
   check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
 }
@@ -695,9 +611,9 @@ void ResultsWriter::set_clearance_pairs(const std::vector<std::string>& pairs) {
   H5Handle group = create_group(impl_->file.get(), layout::kClearance);
   write_string_dataset(group.get(), layout::clearance::kPairs, pairs);
   impl_->clearance_minimum =
-      impl_->create_series(group.get(), layout::clearance::kMinimum, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
+      create_series(group.get(), layout::clearance::kMinimum, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0);
   impl_->clearance_pair =
-      impl_->create_series(group.get(), layout::clearance::kPair, H5T_STD_I32LE, H5T_NATIVE_INT, 0);
+      create_series(group.get(), layout::clearance::kPair, H5T_STD_I32LE, H5T_NATIVE_INT, 0);
   impl_->has_clearance = true;
 }
 
@@ -706,7 +622,7 @@ void ResultsWriter::record_momentum() {
   impl_->demand_declaring();
   LIMBER_DEMAND(!impl_->has_momentum);
   impl_->momentum =
-      impl_->create_series(impl_->file.get(), layout::kMomentum, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 6);
+      create_series(impl_->file.get(), layout::kMomentum, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 6);
   impl_->has_momentum = true;
 }
 
@@ -739,20 +655,20 @@ void ResultsWriter::append_sample(const Sample& sample) {
   for (std::size_t b = 0; b < sample.bodies.size(); ++b) {
     const BodySample& body = sample.bodies[b];
     std::vector<Series>& series = m.body_series[b];
-    m.append_vector3(series[0], body.position);
+    append_vector3(series[0], body.position);
     const Eigen::Quaterniond& q = body.orientation;
     const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
-    m.append_row(series[1], wxyz);
+    append_row(series[1], wxyz);
     if (m.body_nmodes[b] >= 0) {
       LIMBER_DEMAND(body.modal_coordinates.size() == m.body_nmodes[b]);
       LIMBER_DEMAND(body.modal_velocities.size() == m.body_nmodes[b]);
-      m.append_row(series[2], body.modal_coordinates.data());
-      m.append_row(series[3], body.modal_velocities.data());
+      append_row(series[2], body.modal_coordinates.data());
+      append_row(series[3], body.modal_velocities.data());
     }
-    if (const int k = m.body_deflection[b]; k >= 0) m.append_vector3(series[static_cast<std::size_t>(k)], body.deflection);
+    if (const int k = m.body_deflection[b]; k >= 0) append_vector3(series[static_cast<std::size_t>(k)], body.deflection);
     if (const int k = m.body_displacements[b]; k >= 0) {
       LIMBER_DEMAND(body.node_displacements.size() == m.body_displacement_width[b]);
-      m.append_row(series[static_cast<std::size_t>(k)], body.node_displacements.data());
+      append_row(series[static_cast<std::size_t>(k)], body.node_displacements.data());
     }
     if (m.body_stress[b]) m.append_stress(*m.body_stress[b], body, sample.time);
   }
@@ -761,45 +677,45 @@ void ResultsWriter::append_sample(const Sample& sample) {
   for (std::size_t j = 0; j < sample.joints.size(); ++j) {
     const JointSample& joint = sample.joints[j];
     std::vector<Series>& series = m.joint_series[j];
-    m.append_vector3(series[0], joint.position);
-    m.append_vector3(series[1], joint.force_joint);
-    m.append_vector3(series[2], joint.torque_joint);
-    m.append_vector3(series[3], joint.force_ground);
-    m.append_vector3(series[4], joint.torque_ground);
+    append_vector3(series[0], joint.position);
+    append_vector3(series[1], joint.force_joint);
+    append_vector3(series[2], joint.torque_joint);
+    append_vector3(series[3], joint.force_ground);
+    append_vector3(series[4], joint.torque_ground);
     const std::int8_t flag = joint.indeterminate ? 1 : 0;
-    m.append_row(series[5], &flag);
+    append_row(series[5], &flag);
     const MarkerPose* markers[2] = {&joint.marker_i, &joint.marker_j};
     for (int side = 0; side < 2; ++side) {
-      m.append_vector3(series[6 + 2 * side], markers[side]->position);
+      append_vector3(series[6 + 2 * side], markers[side]->position);
       const Eigen::Quaterniond& q = markers[side]->orientation;
       const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
-      m.append_row(series[7 + 2 * side], wxyz);
+      append_row(series[7 + 2 * side], wxyz);
     }
   }
 
   // Drivers, energies, constraint violations, step count.
   for (std::size_t d = 0; d < sample.driver_efforts.size(); ++d) {
-    m.append_row(m.driver_series[d], &sample.driver_efforts[d]);
+    append_row(m.driver_series[d], &sample.driver_efforts[d]);
   }
   for (std::size_t e = 0; e < sample.energies.size(); ++e) {
-    m.append_row(m.energy_series[e], &sample.energies[e]);
+    append_row(m.energy_series[e], &sample.energies[e]);
   }
   for (std::size_t k = 0; k < m.limit_series.size(); ++k) {
-    m.append_row(m.limit_series[k][0], &sample.hinge_limit_angles[k]);
-    m.append_row(m.limit_series[k][1], &sample.hinge_limit_torques[k]);
-    m.append_row(m.limit_series[k][2], &sample.hinge_limits_engaged[k]);
+    append_row(m.limit_series[k][0], &sample.hinge_limit_angles[k]);
+    append_row(m.limit_series[k][1], &sample.hinge_limit_torques[k]);
+    append_row(m.limit_series[k][2], &sample.hinge_limits_engaged[k]);
   }
-  for (std::size_t p = 0; p < m.probe_series.size(); ++p) m.append_vector3(m.probe_series[p], sample.probe_accelerations[p]);
-  m.append_row(m.position_violation, &sample.position_violation);
-  m.append_row(m.velocity_violation, &sample.velocity_violation);
-  m.append_row(m.steps, &sample.steps);
+  for (std::size_t p = 0; p < m.probe_series.size(); ++p) append_vector3(m.probe_series[p], sample.probe_accelerations[p]);
+  append_row(m.position_violation, &sample.position_violation);
+  append_row(m.velocity_violation, &sample.velocity_violation);
+  append_row(m.steps, &sample.steps);
   if (m.has_clearance) {
-    m.append_row(m.clearance_minimum, &sample.clearance_minimum);
-    m.append_row(m.clearance_pair, &sample.clearance_pair);
+    append_row(m.clearance_minimum, &sample.clearance_minimum);
+    append_row(m.clearance_pair, &sample.clearance_pair);
   }
-  if (m.has_momentum) m.append_row(m.momentum, sample.momentum.data());
+  if (m.has_momentum) append_row(m.momentum, sample.momentum.data());
 
-  m.append_row(m.time, &sample.time);
+  append_row(m.time, &sample.time);
   ++m.ns;
   // A block per kBlockRows samples or per kFlushInterval of wall time (results_writer.h).
   if (m.ns - m.ns_written >= static_cast<std::int64_t>(kBlockRows) ||
