@@ -1,6 +1,7 @@
 # `cmake --install build` and `cpack -G DEB` (docs/install.md): the `limber` command on PATH,
-# the Python module `limber`, the example cases under share/limber/cases and the documentation
-# under share/doc/limber.
+# the Python module `limber`, and under share/limber the example cases, the documentation and the
+# README, laid out as in the checkout: the cases' comments point at docs/*.md, which resolves
+# from share/limber as it does from the checkout's root.
 # limber reads no data files at run time (fonts and colour maps come from VTK), so an installed
 # limber needs nothing else of the checkout.
 include(GNUInstallDirs)
@@ -10,8 +11,8 @@ include(GNUInstallDirs)
 set_target_properties(limber PROPERTIES INSTALL_RPATH_USE_LINK_PATH TRUE)
 install(TARGETS limber RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cases/ DESTINATION ${CMAKE_INSTALL_DATADIR}/limber/cases)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/limber/docs)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/limber)
 
 # The Python module, where Debian's python3 finds it under both /usr (the .deb) and /usr/local
 # (its site folders include lib/python3.X/dist-packages under each; lib/python3/dist-packages

@@ -7,7 +7,7 @@ if(NOT status EQUAL 0)
 endif()
 
 foreach(file bin/limber share/limber/cases/satellite_deployment.yaml share/limber/cases/satellite_panel.bdf
-             share/doc/limber/README.md share/doc/limber/case-format.md)
+             share/limber/README.md share/limber/docs/case-format.md)
   if(NOT EXISTS ${PREFIX}/${file})
     message(FATAL_ERROR "not installed: ${file}")
   endif()
