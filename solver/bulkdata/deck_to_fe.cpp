@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "bulkdata/connector_matrices.h"
 #include "bulkdata/coordinate_systems.h"
 #include "fe/rigid_elements.h"
 
@@ -327,26 +328,8 @@ class Translator {
     return cid.axes;
   }
 
-  // A 6x6 block on the translations and rotations of a node rotated from `axes` to basic.
-  static Eigen::Matrix<double, 6, 6> rotated(const Eigen::Matrix<double, 6, 6>& local,
-                                             const Eigen::Matrix3d& axes) {
-    Eigen::Matrix<double, 6, 6> q = Eigen::Matrix<double, 6, 6>::Zero();
-    q.topLeftCorner<3, 3>() = axes;
-    q.bottomRightCorner<3, 3>() = axes;
-    return q * local * q.transpose();
-  }
-
-  // The 12 DOFs of two nodes, node-major.
-  static std::vector<int> two_node_dofs(int a, int b) {
-    std::vector<int> dofs;
-    for (int n : {a, b}) {
-      for (int k = 0; k < fe::kDofsPerNode; ++k) dofs.push_back(fe::FeModel::dof_index(n, static_cast<fe::Dof>(k)));
-    }
-    return dofs;
-  }
-
-  // CROD, CONROD: axial EA/L and torsional GJ/L along the axis; consistent mass (rho A + NSM) L
-  // on all translations (linear interpolation), rho J L on the axial rotation.
+  // CROD, CONROD: a rod of rigidities EA, GJ and mass per length rho A + NSM
+  // (connector_matrices.h).
   void add_rod(const RodCard& rod) {
     const std::string label = fmt::format("{} {}", rod.card, rod.id);
     const bool own = rod.card == "CONROD";
@@ -375,22 +358,11 @@ class Translator {
     if (!(length > 1e-12 * model_size())) {
       throw InputError(label + ": expected two grids apart, got coincident grids", rod.where);
     }
-    const Eigen::Matrix3d eet = axis * axis.transpose() / (length * length);
-    // Two-node blocks [X -X; -X X] and [2X X; X 2X] / 6.
-    const auto two_node = [](const Eigen::Matrix<double, 6, 6>& x, double a11, double a12) {
-      Eigen::MatrixXd m(12, 12);
-      m << a11 * x, a12 * x, a12 * x, a11 * x;
-      return m;
-    };
-    Eigen::Matrix<double, 6, 6> k = Eigen::Matrix<double, 6, 6>::Zero();
-    k.topLeftCorner<3, 3>() = mat.youngs_modulus * area / length * eet;
-    k.bottomRightCorner<3, 3>() = mat.shear_modulus() * torsion / length * eet;
-    Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
-    m.topLeftCorner<3, 3>() = (mat.density * area + nsm) * length / 6.0 * Eigen::Matrix3d::Identity();
-    m.bottomRightCorner<3, 3>() = mat.density * torsion * length / 6.0 * eet;
+    const RodMatrices matrices = rod_matrices(axis, mat.youngs_modulus * area, mat.shear_modulus() * torsion,
+                                              mat.density * area + nsm, mat.density * torsion);
     const std::vector<int> dofs = two_node_dofs(a, b);
-    builder_.add_dof_stiffness({dofs, two_node(k, 1.0, -1.0)}, label, rod.where);
-    builder_.add_dof_mass({dofs, two_node(m, 2.0, 1.0)}, label, rod.where);
+    builder_.add_dof_stiffness({dofs, matrices.stiffness}, label, rod.where);
+    builder_.add_dof_mass({dofs, matrices.mass}, label, rod.where);
   }
 
   // CELAS1/2, CMASS1/2: value v v^T with v the difference of the two ends' components, each
@@ -454,12 +426,12 @@ class Translator {
     }
     const int a = node(bush.grids[0], bush.grid_where[0], label + ", field 4 (GA)");
     const Eigen::Matrix3d axes = rectangular_axes(bush.system, bush.system_where, label + ", field 9 (CID)");
-    Eigen::Matrix<double, 6, 6> local = Eigen::Matrix<double, 6, 6>::Zero();
+    Block6 local = Block6::Zero();
     for (int k = 0; k < 6; ++k) local(k, k) = found->second.stiffness[static_cast<std::size_t>(k)];
-    const Eigen::Matrix<double, 6, 6> k6 = rotated(local, axes);
+    const Block6 k6 = rotated_to_basic(local, axes);
     fe::DofMatrix matrix;
     if (bush.grids[1] == 0) {
-      for (int k = 0; k < fe::kDofsPerNode; ++k) matrix.dofs.push_back(fe::FeModel::dof_index(a, static_cast<fe::Dof>(k)));
+      matrix.dofs = node_dofs(a);
       matrix.values = k6;
     } else {
       const int b = node(bush.grids[1], bush.grid_where[1], label + ", field 5 (GB)");
@@ -473,8 +445,7 @@ class Translator {
                          bush.where);
       }
       matrix.dofs = two_node_dofs(a, b);
-      matrix.values.resize(12, 12);
-      matrix.values << k6, -k6, -k6, k6;
+      matrix.values = spring_between(k6);
     }
     builder_.add_dof_stiffness(matrix, label, bush.where);
   }
@@ -485,8 +456,8 @@ class Translator {
     const int n = node(mass.grid, mass.grid_where, label + ", field 3 (G)");
     const Eigen::Matrix3d axes = rectangular_axes(mass.system, mass.system_where, label + ", field 4 (CID)");
     fe::DofMatrix matrix;
-    for (int k = 0; k < fe::kDofsPerNode; ++k) matrix.dofs.push_back(fe::FeModel::dof_index(n, static_cast<fe::Dof>(k)));
-    matrix.values = deck_.mass_factor * rotated(mass.mass, axes);
+    matrix.dofs = node_dofs(n);
+    matrix.values = deck_.mass_factor * rotated_to_basic(mass.mass, axes);
     builder_.add_dof_mass(matrix, label, mass.where);
   }
 
