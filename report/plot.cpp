@@ -149,25 +149,10 @@ struct ChartCanvas::Impl {
   }
 };
 
-ChartCanvas::ChartCanvas(int width, int height) : impl_(std::make_unique<Impl>(width, height)) {}
+namespace {
 
-ChartCanvas::~ChartCanvas() {
-  // Free VTK's OpenGL resources while the context is still current.
-  impl_->context.make_current();
-  impl_->window->Finalize();
-}
-
-int ChartCanvas::width() const { return impl_->width; }
-int ChartCanvas::height() const { return impl_->height; }
-
-PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& png) {
-  Impl& m = *impl_;
-  m.context.make_current();
-  vtkChartXY* chart = m.chart;
-  chart->ClearPlots();
-  chart->SetTitle(plot.title);
-
-  // Fixed, rounded axis ranges.
+// The plot's fixed, rounded axis ranges (pixel positions are filled in after drawing).
+PlotFrame axis_ranges(const PlotSpec& plot) {
   PlotFrame frame;
   const Bounds b = data_bounds(plot);
   const bool has_points = b.x_lo <= b.x_hi;
@@ -188,8 +173,11 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
                                                  : nice_range(b.y_lo, b.y_hi);
   frame.y_min = yr[0];
   frame.y_max = yr[1];
+  return frame;
+}
 
-  // One table and line per curve (curves may have different abscissae).
+// One table and line per curve (curves may have different abscissae).
+void add_curves(vtkChartXY* chart, const PlotSpec& plot) {
   for (std::size_t i = 0; i < plot.curves.size(); ++i) {
     const Curve& curve = plot.curves[i];
     vtkNew<vtkDoubleArray> x, y;
@@ -222,6 +210,10 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     }
   }
 
+}
+
+// The axes' titles, scales and ranges of `frame`.
+void set_axes(vtkChartXY* chart, const PlotSpec& plot, const PlotFrame& frame) {
   vtkAxis* x_axis = chart->GetAxis(vtkAxis::BOTTOM);
   vtkAxis* y_axis = chart->GetAxis(vtkAxis::LEFT);
   style_axis(x_axis, plot.x_label);
@@ -250,6 +242,32 @@ PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& p
     y_axis->SetRange(frame.y_min, frame.y_max);
     set_nice_ticks(y_axis, frame.y_min, frame.y_max);
   }
+}
+
+}  // namespace
+
+ChartCanvas::ChartCanvas(int width, int height) : impl_(std::make_unique<Impl>(width, height)) {}
+
+ChartCanvas::~ChartCanvas() {
+  // Free VTK's OpenGL resources while the context is still current.
+  impl_->context.make_current();
+  impl_->window->Finalize();
+}
+
+int ChartCanvas::width() const { return impl_->width; }
+int ChartCanvas::height() const { return impl_->height; }
+
+PlotFrame ChartCanvas::draw(const PlotSpec& plot, const std::filesystem::path& png) {
+  Impl& m = *impl_;
+  m.context.make_current();
+  vtkChartXY* chart = m.chart;
+  chart->ClearPlots();
+  chart->SetTitle(plot.title);
+  PlotFrame frame = axis_ranges(plot);
+  add_curves(chart, plot);
+  set_axes(chart, plot, frame);
+  vtkAxis* x_axis = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* y_axis = chart->GetAxis(vtkAxis::LEFT);
 
   // The chart at the top of the context: the plot's height plus one row per legend entry.
   int rows = 0;
