@@ -16,6 +16,10 @@
 
 namespace limber::render {
 
+// The DPI at which VTK draws texts in limber's windows (vtkWindow's default, which they keep):
+// overlays measure their texts with it before the first frame.
+inline constexpr int kTextDpi = 72;
+
 // A rectangle in normalised viewport coordinates (0..1, x right, y up).
 struct ViewRect {
   double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0;

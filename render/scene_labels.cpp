@@ -50,11 +50,10 @@ std::optional<PixelBox> text_box(vtkTextActor* text, vtkRenderer* renderer, int 
   return pixel_box(width, height, (*b)[0], (*b)[1], (*b)[2], (*b)[3], margin);
 }
 
-// A text's box in pixels before it is drawn (vtkTextActor measures at the window's DPI, 72 by
-// default, which limber's windows keep): width and height.
+// A text's box in pixels before it is drawn (at kTextDpi, frame_layout.h): width and height.
 Eigen::Vector2d measured_size(vtkTextActor* text) {
   int b[4];
-  if (!vtkTextRenderer::GetInstance()->GetBoundingBox(text->GetTextProperty(), text->GetInput(), b, 72)) {
+  if (!vtkTextRenderer::GetInstance()->GetBoundingBox(text->GetTextProperty(), text->GetInput(), b, kTextDpi)) {
     return Eigen::Vector2d::Zero();
   }
   return {b[1] - b[0] + 1.0, b[3] - b[2] + 1.0};
@@ -156,7 +155,8 @@ void SceneLabels::add_title_legend_and_stamps(const Results& results, const std:
 
 double SceneLabels::title_bottom() const {
   int b[4];  // about the anchor, bottom-left justified
-  if (!title_ || !vtkTextRenderer::GetInstance()->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, 72)) {
+  vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
+  if (!title_ || !measure->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, kTextDpi)) {
     return kTitleY;
   }
   // A gap of a quarter of the title's font under its lowest pixel.

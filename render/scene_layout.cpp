@@ -76,7 +76,8 @@ class Layout {
  public:
   Layout(const MotionExtent& motion, const CameraAxes& axes, const RenderOptions& options, SceneLabels& labels,
          WorldTriad* triad, vtkCamera* camera)
-      : camera_(camera), motion_(motion), hulls_(motion, axes), axes_(axes), options_(options), labels_(labels), triad_(triad),
+      : camera_(camera), motion_(motion), hulls_(motion, axes), axes_(axes), options_(options), labels_(labels),
+        triad_(triad),
         aspect_(static_cast<double>(options.width) / options.height), area_(free_area(options, labels)) {}
 
   // Fits, places the overlays, and gives a strip to any that found no free corner; after the

@@ -20,8 +20,6 @@ namespace {
 
 // vtkArrowSource's tip radius, as a fraction of the arrow's length: the arrows' half width.
 constexpr double kArrowRadius = 0.1;
-// The DPI vtkTextActor measures with (vtkWindow's default, which the render windows keep).
-constexpr int kTextDpi = 72;
 
 vtkSmartPointer<vtkTextActor> make_label(const std::string& text, int font) {
   auto label = vtkSmartPointer<vtkTextActor>::New();
@@ -98,7 +96,8 @@ ViewRect WorldTriad::footprint(const Eigen::Vector3d& origin_W,
                                int width, int height) const {
   ViewRect r{1e300, -1e300, 1e300, -1e300};
   auto add = [&r](const Eigen::Vector2d& v) {
-    r.x0 = std::min(r.x0, v.x()), r.x1 = std::max(r.x1, v.x()), r.y0 = std::min(r.y0, v.y()), r.y1 = std::max(r.y1, v.y());
+    r.x0 = std::min(r.x0, v.x()), r.x1 = std::max(r.x1, v.x());
+    r.y0 = std::min(r.y0, v.y()), r.y1 = std::max(r.y1, v.y());
   };
   // Each arrow inside the box from its origin to its tip widened by its tip's radius.
   const double pad = kArrowRadius * length_;
