@@ -82,8 +82,26 @@ CameraPlacement fit_camera(const std::vector<Eigen::Vector3d>& points_C, const C
   placement.eye = eye_C.x() * axes.right + eye_C.y() * axes.up + eye_C.z() * axes.back;
   placement.focal = placement.eye - (far - 0.5 * (all.lo.z() + all.hi.z())) * axes.back;
   placement.eye_back = far;
+  placement.eye_C = eye_C;
   placement.axis_at = centre;
   return placement;
+}
+
+Eigen::Vector2d viewport_point(const CameraPlacement& placement, const Eigen::Vector3d& p_C,
+                               double view_angle_deg, double aspect) {
+  const double ty = std::tan(0.5 * view_angle_deg * M_PI / 180.0);
+  const double z = placement.eye_C.z() - p_C.z();
+  const Eigen::Vector2d ndc(placement.axis_at.x() + (p_C.x() - placement.eye_C.x()) / (z * ty * aspect),
+                            placement.axis_at.y() + (p_C.y() - placement.eye_C.y()) / (z * ty));
+  return 0.5 * (ndc + Eigen::Vector2d::Ones());
+}
+
+Eigen::Vector3d point_at_viewport(const CameraPlacement& placement, const Eigen::Vector2d& v, double back,
+                                  double view_angle_deg, double aspect) {
+  const double ty = std::tan(0.5 * view_angle_deg * M_PI / 180.0);
+  const double z = placement.eye_C.z() - back;
+  const Eigen::Vector2d ndc = 2.0 * v - Eigen::Vector2d::Ones() - placement.axis_at;
+  return {placement.eye_C.x() + ndc.x() * z * ty * aspect, placement.eye_C.y() + ndc.y() * z * ty, back};
 }
 
 }  // namespace limber::render

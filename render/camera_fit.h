@@ -56,7 +56,18 @@ struct CameraPlacement {
   Eigen::Vector3d eye, focal;  // ground [m]; focal on the view axis at the content's mid depth
   Eigen::Vector2d axis_at = Eigen::Vector2d::Zero();  // the window's centre, device coordinates
   double eye_back = 0.0;       // the eye's camera coordinate along back: smaller is closer
+  Eigen::Vector3d eye_C = Eigen::Vector3d::Zero();  // the eye in camera coordinates [m]
 };
+
+// Where a point at camera coordinates p_C (in front of the eye) appears with `placement`:
+// normalised viewport coordinates (0..1, y up), the projection above.
+Eigen::Vector2d viewport_point(const CameraPlacement& placement, const Eigen::Vector3d& p_C,
+                               double view_angle_deg, double aspect);
+
+// The point at camera depth `back` (its camera coordinate along back, in front of the eye) that
+// appears at viewport point `v`: viewport_point's inverse on that plane.
+Eigen::Vector3d point_at_viewport(const CameraPlacement& placement, const Eigen::Vector2d& v, double back,
+                                  double view_angle_deg, double aspect);
 
 // The eye nearest to the content (to 1e-9 of its extent) from which every point (camera
 // coordinates, e.g. the corners of boxes holding each frame) projects inside `window`, centred

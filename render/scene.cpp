@@ -11,10 +11,10 @@
 #include "relative_deflection.h"
 #include "scene_extras.h"
 #include "scene_labels.h"
+#include "scene_layout.h"
 #include "world_triad.h"
 
 #include <vtkActor.h>
-#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
@@ -23,7 +23,6 @@
 #include <vtkMatrix4x4.h>
 #include <vtkPlaneSource.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPropCollection.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
@@ -35,8 +34,6 @@
 
 namespace limber::render {
 namespace {
-
-constexpr double kViewAngleDeg = 30.0;
 
 // The camera's up: ground z, or y when looking along z.
 Eigen::Vector3d up_hint(const Eigen::Vector3d& direction) {
@@ -100,25 +97,33 @@ double shape_radius(const Shape& shape) {
   return 0.0;
 }
 
-// Draws the 3D labels (billboard texts) as opaque geometry after every other prop: a
-// translucent prop makes VTK 9.1 run its order-independent translucency pass, several
-// full-frame passes that cost llvmpipe about 11 ms of CPU per 1280 x 720 frame
-// (docs/benchmarks.md). Drawn last, a label's anti-aliased edges blend over everything behind
-// it, as the translucent pass blends them: the same pixels.
-void draw_labels_last_and_opaque(vtkRenderer* renderer) {
-  std::vector<vtkBillboardTextActor3D*> labels;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it)) {
-    if (auto* label = vtkBillboardTextActor3D::SafeDownCast(prop)) labels.push_back(label);
+// A primitive's box in its own axes (a cylinder's about its axis z, a sphere's cube) [m].
+CameraBox shape_box(const Shape& shape) {
+  const Eigen::Vector3d half = shape.type == Shape::Type::kBox        ? Eigen::Vector3d(0.5 * shape.size)
+                               : shape.type == Shape::Type::kCylinder ? Eigen::Vector3d(shape.size.x(), shape.size.x(),
+                                                                                        0.5 * shape.size.z())
+                                                                      : Eigen::Vector3d::Constant(shape.size.x());
+  CameraBox box;
+  box.lo = -half;
+  box.hi = half;
+  return box;
+}
+
+// A box of no size at the origin: a point's eight corners.
+CameraBox point_box() {
+  CameraBox box;
+  box.add(Eigen::Vector3d::Zero());
+  return box;
+}
+
+// The samples in [t0, t1]; the sample bracket at t0 when none lies inside.
+std::vector<SampleBracket> samples_in(const Eigen::VectorXd& time, double t0, double t1) {
+  std::vector<SampleBracket> samples;
+  for (Eigen::Index i = 0; i < time.size(); ++i) {
+    if (time(i) >= t0 && time(i) <= t1) samples.push_back({i, 0.0});
   }
-  for (vtkBillboardTextActor3D* label : labels) {
-    label->ForceOpaqueOn();
-    vtkSmartPointer<vtkBillboardTextActor3D> keep = label;  // alive while out of the renderer
-    renderer->RemoveViewProp(label);
-    renderer->AddViewProp(label);
-  }
+  if (samples.empty()) samples.push_back(bracket(time, t0));
+  return samples;
 }
 
 // Axis-aligned bounds accumulated from points and spheres, ground axes.
@@ -145,6 +150,10 @@ struct Scene::Impl {
   std::vector<vtkSmartPointer<vtkActor>> joints;
   std::unique_ptr<SceneExtras> extras;  // joint axes, rails, ghost, force arrows
   SceneLabels labels;  // title, legend, stamps, colour bar (scene_labels.h)
+  std::unique_ptr<WorldTriad> triad;  // null without options.world_triad
+  // Layer 1, drawn over the bodies with the same camera: the reaction arrows and the world
+  // triad (which a ground plane nearer the eye would otherwise hide); null without either.
+  vtkSmartPointer<vtkRenderer> overlay;
   double umax = 0.0;
   LengthUnit unit;        // of the colour bar and the coloured values (stress: MPa)
   double per_unit = 1.0;  // coloured value = metres x per_unit
@@ -182,70 +191,125 @@ struct Scene::Impl {
     u_norm = u_rel.rowwise().norm();
   }
 
-  // Bounds of everything drawn at one time, in ground and in camera axes (`view`); and, in
-  // `hull_W` (ground), the corners of a box about each body in its own axes (its deformed mesh,
-  // each primitive) and the joints: points whose convex hull holds the frame's content, tighter
-  // than an axis-aligned box when bodies lie askew (a deployed wing seen from iso).
-  Bounds bounds_at(const SampleBracket& at, const CameraAxes& axes, CameraBox& view,
-                   std::vector<Eigen::Vector3d>& hull_W) const {
-    struct {
-      Bounds ground;
-      CameraBox* view;
-      const CameraAxes* axes;
-      void add(const Eigen::Vector3d& p, double r = 0.0) {
-        ground.add(p, r);
-        view->add(axes->of(p), r);
-      }
-    } b{Bounds{}, &view, &axes};
+  // One sample of the motion into `motion` (scene_layout.h): the boxes of everything drawn in
+  // camera and ground axes, and a box about each part in its own axes (a body's deformed mesh,
+  // each primitive; a joint point). Raises umax to the sample's largest |u_rel|. Returns the
+  // ground box.
+  Bounds add_sample(const SampleBracket& at, const CameraAxes& axes, MotionExtent& motion) {
+    CameraBox& view = motion.view_boxes.emplace_back();
+    Bounds ground;
+    auto add = [&](const Eigen::Vector3d& p, double r) {
+      ground.add(p, r);
+      view.add(axes.of(p), r);
+    };
+    auto add_part = [&](const CameraBox& box_B, const Eigen::Vector3d& p, const Eigen::Matrix3d& R) {
+      const std::vector<Eigen::Vector3d> corners = box_B.corners();
+      PartCorners& part = motion.parts_C.emplace_back();
+      for (std::size_t k = 0; k < part.size(); ++k) part[k] = axes.of(p + R * corners[k]);
+    };
     for (std::size_t index = 0; index < results.bodies.size(); ++index) {
       const BodyTrack& body = results.bodies[index];
       const BodyState state = body_state(body, at);
       const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
       for (const Shape& shape : body.shapes) {
-        b.add(state.position + R * shape.offset_position, shape_radius(shape));
-        add_shape_corners(shape, state.position, R, hull_W);
+        add(state.position + R * shape.offset_position, shape_radius(shape));
+        add_part(shape_box(shape), state.position + R * shape.offset_position,
+                 R * shape.offset_orientation.toRotationMatrix());
       }
       if (body.flexible) {
         RowMatrix3d x_W;
         Eigen::VectorXd u_norm;
         deformed_nodes(index, state, x_W, u_norm);
+        if (u_norm.size() > 0) umax = std::max(umax, u_norm.maxCoeff());
         CameraBox box_B;  // the deformed mesh in body axes
         for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
-          b.add(x_W.row(k).transpose(), body.mesh.beam_radius);
+          add(x_W.row(k).transpose(), body.mesh.beam_radius);
           box_B.add(R.transpose() * (x_W.row(k).transpose() - state.position), body.mesh.beam_radius);
         }
-        for (const Eigen::Vector3d& corner : box_B.corners()) hull_W.push_back(state.position + R * corner);
+        if (!box_B.empty()) add_part(box_B, state.position, R);
       }
       if (body.shapes.empty() && !body.flexible) {
-        b.add(state.position);
-        hull_W.push_back(state.position);
+        add(state.position, 0.0);
+        add_part(point_box(), state.position, R);
       }
     }
     for (const JointTrack& joint : results.joints) {
-      b.add(joint_position(joint, at));
-      hull_W.push_back(joint_position(joint, at));
+      add(joint_position(joint, at), 0.0);
+      add_part(point_box(), joint_position(joint, at), Eigen::Matrix3d::Identity());
     }
-    return b.ground;
+    motion.ground_boxes.push_back(ground);
+    return ground;
   }
 
-  // The 8 corners of a primitive's box in its own axes (a cylinder's about its axis z, a
-  // sphere's cube), for a body at (p, R), into `hull_W`.
-  static void add_shape_corners(const Shape& shape, const Eigen::Vector3d& p, const Eigen::Matrix3d& R,
-                                std::vector<Eigen::Vector3d>& hull_W) {
-    const Eigen::Vector3d half = shape.type == Shape::Type::kBox        ? Eigen::Vector3d(0.5 * shape.size)
-                                 : shape.type == Shape::Type::kCylinder ? Eigen::Vector3d(shape.size.x(), shape.size.x(),
-                                                                                          0.5 * shape.size.z())
-                                                                        : Eigen::Vector3d::Constant(shape.size.x());
-    const Eigen::Matrix3d R_shape = R * shape.offset_orientation.toRotationMatrix();
-    CameraBox box;
-    box.lo = -half;
-    box.hi = half;
-    for (const Eigen::Vector3d& corner : box.corners()) {
-      hull_W.push_back(p + R * shape.offset_position + R_shape * corner);
+  // The joint glyphs and rails at each sample (scene_extras.h) into the motion's boxes and parts.
+  void add_glyphs(const std::vector<SampleBracket>& samples, const CameraAxes& axes, MotionExtent& motion) {
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      extras->update(samples[k]);
+      const std::vector<Eigen::Vector3d> corners = extras->glyph_corners();  // 8 per glyph
+      for (std::size_t c = 0; c < corners.size(); ++c) {
+        motion.view_boxes[k].add(axes.of(corners[c]));
+        motion.ground_boxes[k].add(corners[c]);
+        if (c % 8 == 0) motion.parts_C.emplace_back();
+        motion.parts_C.back()[c % 8] = axes.of(corners[c]);
+      }
     }
   }
 
   bool by_stress() const { return options.color == ColorBy::kVonMises; }
+
+  // Colour by stress: the range is the largest recorded element stress in [t0, t1] [MPa].
+  void read_stress_range(double t0, double t1) {
+    stresses = read_stress_tracks(results);
+    if (std::none_of(stresses.begin(), stresses.end(), [](const auto& t) { return t.has_value(); })) {
+      throw InputError("--color von_mises: expected a results file with stress output ('stress: {elements: "
+                       "all}' on a flexible body of the case, docs/stress-recovery.md), got none in '" +
+                       results.file.string() + "'");
+    }
+    umax = 0.0;
+    for (const std::optional<StressTrack>& track : stresses) {
+      if (!track) continue;
+      for (Eigen::Index row = 0; row < track->time.size(); ++row) {
+        const double t = track->time(row);
+        const bool inside = t >= t0 && t <= t1;
+        if (inside || row == track->row_at(t0)) umax = std::max(umax, track->equivalent.row(row).maxCoeff() / 1e6);
+      }
+    }
+  }
+
+  // The lookup table over [0, umax] in the unit its largest value reads best in (mm for
+  // millimetres; stresses in MPa).
+  void set_color_range() {
+    if (umax <= 0.0) umax = 1.0;
+    unit = by_stress() ? LengthUnit{"MPa", 1.0} : length_unit_for(umax);
+    per_unit = unit.per_metre;
+    fill_lookup_table(lut, options.color_map, per_unit * umax);
+  }
+
+  // Bodies: meshes, primitives; joints as small spheres, sized by the scene's radius [m].
+  void add_bodies_and_joints(double radius) {
+    for (std::size_t b = 0; b < results.bodies.size(); ++b) {
+      const BodyTrack& body = results.bodies[b];
+      const StressTrack* stress = b < stresses.size() && stresses[b] ? &*stresses[b] : nullptr;
+      if (body.flexible) {
+        const FlexibleColoring coloring{lut, per_unit * umax, by_stress()};
+        flexible.push_back(add_flexible_view(renderer, body, b, stress, coloring));
+      }
+      for (const Shape& shape : body.shapes) add_shape(body, shape);
+    }
+    for (std::size_t j = 0; j < results.joints.size(); ++j) {
+      auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+      sphere->SetRadius(0.015 * radius);
+      sphere->SetThetaResolution(16);
+      sphere->SetPhiResolution(8);
+      auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+      mapper->SetInputConnection(sphere->GetOutputPort());
+      auto actor = vtkSmartPointer<vtkActor>::New();
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(kJointColor[0], kJointColor[1], kJointColor[2]);
+      renderer->AddActor(actor);
+      joints.push_back(actor);
+    }
+  }
 
   void add_shape(const BodyTrack& body, const Shape& shape) {
     auto actor = vtkSmartPointer<vtkActor>::New();
@@ -255,6 +319,44 @@ struct Scene::Impl {
     actor->SetUserMatrix(vtkSmartPointer<vtkMatrix4x4>::New());
     renderer->AddActor(actor);
     shapes.push_back({&body, &shape, actor});
+  }
+
+  // Ground: a plane under the whole motion (`all`, of radius `radius`), +z up.
+  void add_ground(const Bounds& all, double radius) {
+    auto plane = vtkSmartPointer<vtkPlaneSource>::New();
+    const Eigen::Vector3d c = all.center();
+    const double half = 1.5 * radius;
+    const double z = all.lo.z() - 0.02 * radius;
+    plane->SetOrigin(c.x() - half, c.y() - half, z);
+    plane->SetPoint1(c.x() + half, c.y() - half, z);
+    plane->SetPoint2(c.x() - half, c.y() + half, z);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(plane->GetOutputPort());
+    ground = vtkSmartPointer<vtkActor>::New();
+    ground->SetMapper(mapper);
+    ground->GetProperty()->SetColor(kGroundColor[0], kGroundColor[1], kGroundColor[2]);
+    ground->GetProperty()->SetAmbient(0.3);
+    renderer->AddActor(ground);
+    ground_point = Eigen::Vector3d(c.x(), c.y(), z);
+  }
+
+  // Colour bar with units, only when something is coloured.
+  void add_color_bar() {
+    if (flexible.empty()) return;
+    bool relative = false;
+    for (const RigidFitBasis& fit : fits) relative = relative || !fit.anchors.empty();
+    const std::string title = by_stress() ? "von Mises" : relative ? "|u rel.|" : "|u|";
+    labels.add_color_bar(lut, title + " [" + unit.name + "]");
+  }
+
+  // Background, lighting; VTK's FXAA pass only when asked for (the default FXAA runs on the
+  // read-back frame: far cheaper in software, docs/benchmarks.md). No multisampling.
+  void set_background_and_lights() {
+    renderer->SetBackground(kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
+    auto lights = vtkSmartPointer<vtkLightKit>::New();
+    lights->AddLightsToRenderer(renderer);
+    if (overlay) lights->AddLightsToRenderer(overlay);  // the triad's arrows lit as the bodies
+    renderer->SetUseFXAA(options.anti_aliasing == AntiAliasing::kGlFxaa);
   }
 
   // Camera at `distance` from `focal` along the preset's direction; the clipping range is
@@ -278,196 +380,57 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
   s.direction = Eigen::Vector3d(view_direction(options).data());
   const CameraAxes axes = camera_axes(s.direction, up_hint(s.direction));
 
-  // Colour range and camera extent from the samples in [t0, t1] (at least one sample).
+  // The motion over the samples in [t0, t1] (at least one): the camera's extent and the colour
+  // range.
+  const std::vector<SampleBracket> samples = samples_in(results.time, t0, t1);
+  MotionExtent motion;
   Bounds all;
   double frame_radius = 0.0;
-  // Per sample, two boxes holding what is drawn, in camera and in ground axes: the fixed
-  // camera fits the tighter of their hulls (a wing along ground y is tight in ground axes).
-  std::vector<CameraBox> frame_boxes, ground_boxes;
-  std::vector<Eigen::Vector3d> body_hull_W;  // per sample, boxes about each body (bounds_at)
-  std::vector<SampleBracket> samples;
-  for (Eigen::Index i = 0; i < results.sample_count(); ++i) {
-    if (results.time(i) >= t0 && results.time(i) <= t1) samples.push_back({i, 0.0});
-  }
-  if (samples.empty()) samples.push_back(bracket(results.time, t0));
   for (const SampleBracket& at : samples) {
-    CameraBox& view = frame_boxes.emplace_back();
-    const Bounds b = s.bounds_at(at, axes, view, body_hull_W);
-    ground_boxes.push_back(b);
+    const Bounds b = s.add_sample(at, axes, motion);
     if (b.empty()) continue;
     all.add(b.lo);
     all.add(b.hi);
     frame_radius = std::max(frame_radius, b.radius());
-    for (std::size_t b = 0; b < results.bodies.size(); ++b) {
-      const BodyTrack& body = results.bodies[b];
-      if (!body.flexible) continue;
-      const RowMatrix3d u = relative_displacements(
-          s.fits[b], body.mesh.nodes, elastic_displacements(body.mesh, body_state(body, at)));
-      if (u.rows() > 0) s.umax = std::max(s.umax, u.rowwise().norm().maxCoeff());
-    }
   }
-  // Colour by stress: the range is the largest recorded element stress in [t0, t1] [MPa].
-  if (s.by_stress()) {
-    s.stresses = read_stress_tracks(results);
-    if (std::none_of(s.stresses.begin(), s.stresses.end(), [](const auto& t) { return t.has_value(); })) {
-      throw InputError("--color von_mises: expected a results file with stress output ('stress: {elements: "
-                       "all}' on a flexible body of the case, docs/stress-recovery.md), got none in '" +
-                       results.file.string() + "'");
-    }
-    s.umax = 0.0;
-    for (const std::optional<StressTrack>& track : s.stresses) {
-      if (!track) continue;
-      for (Eigen::Index row = 0; row < track->time.size(); ++row) {
-        const double t = track->time(row);
-        const bool inside = t >= t0 && t <= t1;
-        if (inside || row == track->row_at(t0)) s.umax = std::max(s.umax, track->equivalent.row(row).maxCoeff() / 1e6);
-      }
-    }
-  }
+  if (s.by_stress()) s.read_stress_range(t0, t1);
   if (all.empty()) all.add(Eigen::Vector3d::Zero(), 1.0);
-  // The world triad (also the length scale) beside the motion, below its lowest corner, inside
-  // the camera's fit: close, so that it takes little of the frame from the motion.
-  const double triad_length = round_length(0.25 * std::max(all.radius(), 1e-6));
-  const Eigen::Vector3d triad_origin =
-      all.lo - Eigen::Vector3d(0.75 * triad_length, 0.0, 0.0);
-  if (options.world_triad) {
-    CameraBox& view = frame_boxes.emplace_back();
-    CameraBox& ground = ground_boxes.emplace_back();
-    for (const Eigen::Vector3d& p : {triad_origin, Eigen::Vector3d(triad_origin + 1.3 * triad_length * Eigen::Vector3d::Ones())}) {
-      all.add(p, 0.25 * triad_length);
-      view.add(axes.of(p), 0.25 * triad_length);
-      ground.add(p, 0.25 * triad_length);
-      CameraBox around;
-      around.add(p, 0.25 * triad_length);
-      for (const Eigen::Vector3d& corner : around.corners()) body_hull_W.push_back(corner);
-    }
-  }
   const double radius = std::max(all.radius(), 1e-6);
   frame_radius = std::max(frame_radius, 1e-6);
-  const double range_max = s.umax > 0.0 ? s.umax : 1.0;
-  s.umax = range_max;
-  // Lengths in the unit their largest value reads best in (mm for millimetres); stresses in MPa.
-  s.unit = s.by_stress() ? LengthUnit{"MPa", 1.0} : length_unit_for(range_max);
-  s.per_unit = s.unit.per_metre;
-  fill_lookup_table(s.lut, options.color_map, s.per_unit * range_max);
+  s.set_color_range();
 
-  // Bodies: meshes, primitives; joints as small spheres.
-  for (std::size_t b = 0; b < results.bodies.size(); ++b) {
-    const BodyTrack& body = results.bodies[b];
-    const StressTrack* stress = b < s.stresses.size() && s.stresses[b] ? &*s.stresses[b] : nullptr;
-    if (body.flexible) {
-      const FlexibleColoring coloring{s.lut, s.per_unit * s.umax, s.by_stress()};
-      s.flexible.push_back(add_flexible_view(s.renderer, body, b, stress, coloring));
-    }
-    for (const Shape& shape : body.shapes) s.add_shape(body, shape);
-  }
-  for (std::size_t j = 0; j < results.joints.size(); ++j) {
-    auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-    sphere->SetRadius(0.015 * radius);
-    sphere->SetThetaResolution(16);
-    sphere->SetPhiResolution(8);
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputConnection(sphere->GetOutputPort());
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(kJointColor[0], kJointColor[1], kJointColor[2]);
-    s.renderer->AddActor(actor);
-    s.joints.push_back(actor);
-  }
-
-  // Joint axes and rails, ghost outlines, force arrows (scene_extras.h).
+  // Actors: bodies, joints, their glyphs (which the camera also holds), ground.
+  s.add_bodies_and_joints(radius);
   s.extras = std::make_unique<SceneExtras>(results, options, s.renderer, radius, t0, t1);
   s.labels.add_texts(s.extras->texts());
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    s.extras->update(samples[k]);
-    for (const Eigen::Vector3d& corner : s.extras->glyph_corners()) {
-      frame_boxes[k].add(axes.of(corner));
-      ground_boxes[k].add(corner);
-      body_hull_W.push_back(corner);
-    }
-  }
-
-  // Ground: a plane under the whole motion, +z up.
-  if (options.ground) {
-    auto plane = vtkSmartPointer<vtkPlaneSource>::New();
-    const Eigen::Vector3d c = all.center();
-    const double half = 1.5 * radius;
-    const double z = all.lo.z() - 0.02 * radius;
-    plane->SetOrigin(c.x() - half, c.y() - half, z);
-    plane->SetPoint1(c.x() + half, c.y() - half, z);
-    plane->SetPoint2(c.x() - half, c.y() + half, z);
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputConnection(plane->GetOutputPort());
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(kGroundColor[0], kGroundColor[1], kGroundColor[2]);
-    actor->GetProperty()->SetAmbient(0.3);
-    s.renderer->AddActor(actor);
-    s.ground = actor;
-    s.ground_point = Eigen::Vector3d(c.x(), c.y(), z);
-  }
-
+  s.add_glyphs(samples, axes, motion);
+  if (options.ground) s.add_ground(all, radius);
+  // The world triad, also the length scale, in the overlay layer: sized and placed with the
+  // camera (a quarter of the motion's radius with --follow).
+  s.overlay = s.extras->overlay();
   if (options.world_triad) {
-    add_world_triad(s.renderer, triad_origin, triad_length, std::max(kMinFontSize, options.height / 45));
+    if (!s.overlay) s.overlay = overlay_layer(s.renderer);
+    s.triad = std::make_unique<WorldTriad>(s.overlay, round_length(0.25 * radius),
+                                           std::max(kMinFontSize, options.height / 45));
+    s.labels.add_texts(s.triad->labels());
   }
 
-  // Colour bar with units, only when something is coloured.
-  if (!s.flexible.empty()) {
-    bool relative = false;
-    for (const RigidFitBasis& fit : s.fits) relative = relative || !fit.anchors.empty();
-    const std::string title = s.by_stress() ? "von Mises" : relative ? "|u rel.|" : "|u|";
-    s.labels.add_color_bar(s.lut, title + " [" + s.unit.name + "]");
-  }
+  // Texts: colour bar, title, deformation legend, time and event stamps (scene_labels.h).
+  s.add_color_bar();
+  s.labels.add_title_legend_and_stamps(results, s.fits, s.fit_joints);
+  s.set_background_and_lights();
 
-  // Title, deformation legend, time and event stamps (scene_labels.h).
-  const int font = s.labels.stamp_font();
-  const double content_top = s.labels.add_title_legend_and_stamps(results, s.fits, s.fit_joints);
-
-  // Background, lighting; VTK's FXAA pass only when asked for (the default FXAA runs on the
-  // read-back frame: far cheaper in software, docs/benchmarks.md). No multisampling.
-  s.renderer->SetBackground(kBackgroundColor[0], kBackgroundColor[1], kBackgroundColor[2]);
-  auto lights = vtkSmartPointer<vtkLightKit>::New();
-  lights->AddLightsToRenderer(s.renderer);
-  s.renderer->SetUseFXAA(options.anti_aliasing == AntiAliasing::kGlFxaa);
-
-  // Camera: a fixed one fits the whole motion, a follow one fits the largest single frame.
-  // The scene is put at t0 first: clipping ranges read the actors' bounds.
+  // Camera: a fixed one fits the whole motion and puts the legend and triad where the motion
+  // leaves room (scene_layout.h); a follow one fits the largest single frame, the triad beside
+  // the motion's lowest corner. The scene is put at t0 first: clipping ranges read the actors'
+  // bounds.
   const double fit = 1.0 / std::sin(0.5 * kViewAngleDeg * M_PI / 180.0);
   s.follow_distance = 1.05 * fit * frame_radius;
   if (options.follow) {
     s.place_camera(all.center(), 1.05 * fit * radius);
+    if (s.triad) s.triad->place(all.lo - Eigen::Vector3d(0.75 * s.triad->length(), 0.0, 0.0));
   } else {
-    // The whole motion inside the frame less its texts: left of the colour bar, above the
-    // time and event stamps, under the title and legend (camera_fit.h).
-    ViewWindow window;
-    window.x0 = 0.02;
-    window.x1 = s.labels.has_color_bar() ? kColorBarBox[0] - 0.02 : 0.98;
-    window.y0 = options.time_stamp ? 0.03 + 1.6 * font / options.height : 0.03;
-    if (options.forces) window.y0 = 0.17;  // above the arrow legends (scene_extras.h)
-    window.y1 = content_top;
-    // Three hulls of the whole motion, each holding all of it: the corners of each frame's box
-    // in camera axes, in ground axes, and of the boxes about each body in its own axes; the
-    // camera fits the tightest (nearest eye).
-    std::vector<Eigen::Vector3d> view_hull, ground_hull, body_hull;
-    for (const CameraBox& box : frame_boxes) {
-      for (const Eigen::Vector3d& p : box.corners()) view_hull.push_back(p);
-    }
-    for (const CameraBox& box : ground_boxes) {
-      for (const Eigen::Vector3d& p : box.corners()) ground_hull.push_back(axes.of(p));
-    }
-    for (const Eigen::Vector3d& p : body_hull_W) body_hull.push_back(axes.of(p));
-    const double aspect = static_cast<double>(options.width) / options.height;
-    CameraPlacement placement = fit_camera(view_hull, axes, kViewAngleDeg, aspect, window);
-    for (const std::vector<Eigen::Vector3d>* hull : {&ground_hull, &body_hull}) {
-      const CameraPlacement other = fit_camera(*hull, axes, kViewAngleDeg, aspect, window);
-      if (other.eye_back < placement.eye_back) placement = other;
-    }
-    vtkCamera* camera = s.renderer->GetActiveCamera();
-    camera->SetViewAngle(kViewAngleDeg);
-    camera->SetPosition(placement.eye.data());
-    camera->SetFocalPoint(placement.focal.data());
-    camera->SetViewUp(axes.up.data());
-    camera->SetWindowCenter(-placement.axis_at.x(), -placement.axis_at.y());
+    fit_camera_and_overlays(s.renderer, motion, axes, options, s.labels, s.triad.get());
   }
   // The ground is flat and matte under the light kit's directional lights, and the camera's
   // direction is fixed: one colour, drawn unlit (flat_shading.h; the same pixels, cheaper).
@@ -476,7 +439,6 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
         s.renderer, s.ground->GetProperty(), s.ground_point, Eigen::Vector3d::UnitZ());
     if (color) set_unlit_color(s.ground->GetProperty(), *color);
   }
-  draw_labels_last_and_opaque(s.renderer);
   update(t0);
 }
 
@@ -484,7 +446,7 @@ Scene::~Scene() = default;
 
 vtkRenderer* Scene::renderer() const { return impl_->renderer; }
 
-vtkRenderer* Scene::overlay_renderer() const { return impl_->extras->overlay(); }
+vtkRenderer* Scene::overlay_renderer() const { return impl_->overlay; }
 
 const SceneExtras& Scene::extras() const { return *impl_->extras; }
 
@@ -534,10 +496,10 @@ void Scene::update(double t) {
     for (const BodyTrack& body : s.results.bodies) centroid += body_state(body, at).position;
     s.place_camera(centroid / static_cast<double>(s.results.bodies.size()), s.follow_distance);
   }
-  // The clipping range holds the bodies and the overlay's arrows (one camera for both).
+  // The clipping range holds the bodies and the overlay's arrows and triad (one camera for both).
   double bounds[6];
   s.renderer->ComputeVisiblePropBounds(bounds);
-  if (vtkRenderer* overlay = s.extras->overlay()) {
+  if (vtkRenderer* overlay = s.overlay) {
     double arrows[6];
     overlay->ComputeVisiblePropBounds(arrows);
     for (int k = 0; k < 6; k += 2) {

@@ -45,8 +45,8 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   vtkRenderer* renderer() const;
-  // The reaction arrows' renderer, to draw in layer 1 over renderer() (scene_extras.h); null
-  // without options.forces.
+  // The renderer of the reaction arrows (scene_extras.h) and the world triad, to draw in layer 1
+  // over renderer(); null without either.
   vtkRenderer* overlay_renderer() const;
   // Joint glyphs, ghosts and reaction arrows (their scales).
   const SceneExtras& extras() const;
@@ -59,12 +59,14 @@ class Scene {
   // Pixels of the texts and the colour bar (with a margin) as last drawn: anti-aliased by
   // FreeType or flat, so the CPU FXAA leaves them alone. Valid after a render.
   std::vector<PixelBox> overlay_boxes() const;
-  // Every 2D text as last drawn (title, legend, time and event stamps, arrow legends) with its
-  // pixel box (no margin) and its number of lines. Valid after a render.
+  // Every 2D text as last drawn (title, legend, time and event stamps, arrow legends, the world
+  // triad's labels) with its pixel box (no margin, clipped to the frame), its number of lines,
+  // and whether the frame cut part of it off. Valid after a render.
   struct DrawnText {
     std::string text;
     int lines = 1;
     PixelBox box;
+    bool clipped = false;
   };
   std::vector<DrawnText> drawn_texts() const;
   // The colour bar's unit: a length unit by magnitude (length_unit.h), or "MPa" with

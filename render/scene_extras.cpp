@@ -273,11 +273,7 @@ struct SceneExtras::Impl {
   }
 
   void add_reaction_arrows(double t0, double t1) {
-    // The overlay: layer 1, the scene's camera, its own depth buffer, the colour kept.
-    overlay = vtkSmartPointer<vtkRenderer>::New();
-    overlay->SetLayer(1);
-    overlay->SetActiveCamera(renderer->GetActiveCamera());
-    overlay->InteractiveOff();
+    overlay = overlay_layer(renderer);
     // The largest reaction force and torque over the samples in [t0, t1].
     double peak_force = 0.0, peak_torque = 0.0;
     for (const JointTrack& joint : results.joints) {
@@ -427,5 +423,14 @@ double SceneExtras::newtons_per_metre() const { return impl_->newtons_per_metre;
 double SceneExtras::newton_metres_per_metre() const { return impl_->newton_metres_per_metre; }
 
 vtkRenderer* SceneExtras::overlay() const { return impl_->overlay; }
+
+vtkSmartPointer<vtkRenderer> overlay_layer(vtkRenderer* scene) {
+  // Layer 1, the scene's camera, its own depth buffer, the colour kept.
+  auto overlay = vtkSmartPointer<vtkRenderer>::New();
+  overlay->SetLayer(1);
+  overlay->SetActiveCamera(scene->GetActiveCamera());
+  overlay->InteractiveOff();
+  return overlay;
+}
 
 }  // namespace limber::render

@@ -79,6 +79,10 @@ class SceneExtras {
   std::unique_ptr<Impl> impl_;
 };
 
+// A renderer drawn over `scene` in layer 1 with its camera: it clears only the depth buffer, so
+// what it draws shows whole over the scene's bodies and hides itself correctly.
+vtkSmartPointer<vtkRenderer> overlay_layer(vtkRenderer* scene);
+
 // Marker pose between samples: origin interpolated linearly, orientation by slerp.
 // Precondition: the marker track has the results' ns rows.
 void marker_pose(const MarkerTrack& marker, const SampleBracket& at, Eigen::Vector3d& p_W,

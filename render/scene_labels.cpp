@@ -8,8 +8,10 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -29,17 +31,37 @@ PixelBox pixel_box(int width, int height, double x_min, double x_max, double y_m
   return b;
 }
 
-// A text's pixels: its bounding box about the anchor (justification included) moved to the
-// anchor's pixel, widened by `margin`; nothing for an empty text.
-std::optional<PixelBox> text_box(vtkTextActor* text, vtkRenderer* renderer, int width, int height,
-                                 int margin) {
+// A text's display bounds (pixels, x right, y up: x min, x max, y min, y max): its bounding box
+// about the anchor (justification included) moved to the anchor's pixel; nothing for an empty
+// text.
+std::optional<std::array<double, 4>> display_bounds(vtkTextActor* text, vtkRenderer* renderer) {
   double b[4];  // x min, x max, y min, y max
   text->GetBoundingBox(renderer, b);
   const int* anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(renderer);
   if (b[1] < b[0] || b[3] < b[2]) return std::nullopt;  // nothing drawn
-  return pixel_box(width, height, anchor[0] + b[0], anchor[0] + b[1], anchor[1] + b[2],
-                   anchor[1] + b[3], margin);
+  return std::array<double, 4>{anchor[0] + b[0], anchor[0] + b[1], anchor[1] + b[2], anchor[1] + b[3]};
 }
+
+// A text's pixels widened by `margin`, clipped to the frame; nothing for an empty text.
+std::optional<PixelBox> text_box(vtkTextActor* text, vtkRenderer* renderer, int width, int height,
+                                 int margin) {
+  const auto b = display_bounds(text, renderer);
+  if (!b) return std::nullopt;
+  return pixel_box(width, height, (*b)[0], (*b)[1], (*b)[2], (*b)[3], margin);
+}
+
+// A text's box in pixels before it is drawn (at kTextDpi, frame_layout.h): width and height.
+Eigen::Vector2d measured_size(vtkTextActor* text) {
+  int b[4];
+  if (!vtkTextRenderer::GetInstance()->GetBoundingBox(text->GetTextProperty(), text->GetInput(), b, kTextDpi)) {
+    return Eigen::Vector2d::Zero();
+  }
+  return {b[1] - b[0] + 1.0, b[3] - b[2] + 1.0};
+}
+
+// Where the title is anchored (normalised viewport coordinates, bottom left of its last line).
+constexpr double kTitleX = 0.02;
+constexpr double kTitleY = 0.93;
 
 }  // namespace
 
@@ -82,12 +104,12 @@ void SceneLabels::add_color_bar(vtkLookupTable* lut, const std::string& title) {
 
 int SceneLabels::stamp_font() const { return std::max(kMinFontSize, options_.height / 36); }
 
-double SceneLabels::add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
-                                                const std::vector<std::vector<std::string>>& fit_joints) {
+void SceneLabels::add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
+                                              const std::vector<std::vector<std::string>>& fit_joints) {
   // Title, deformation scale note, time stamp.
   const RenderOptions& options = options_;
   const int font = stamp_font();
-  add_text(results.title, std::max(kMinFontSize, options.height / 30), 0.02, 0.93, false);
+  title_ = add_text(results.title, std::max(kMinFontSize, options.height / 30), kTitleX, kTitleY, false);
   // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
   // fit through each flexible body's joint nodes (those without joints: relative to their
   // floating frame).
@@ -102,19 +124,13 @@ double SceneLabels::add_title_legend_and_stamps(const Results& results, const st
     legend += "\n" + results.bodies[b].name + ": " +
               (joints.empty() ? "u in its floating frame" : "u relative to a rigid fit through " + joints);
   }
-  // Under the title, right-aligned: the content is fitted below its last line.
-  const int legend_font = std::max(kMinFontSize, options.height / 40);
-  double content_top = 0.88;
+  // Top right under the title until the layout places it (place_legend).
   if (options.scale != 1.0 || !legend.empty()) {
     char note[64];
     std::snprintf(note, sizeof note, legend.empty() ? "deformation x %g" : "deformation x %g of the elastic displacement u",
                   options.scale);
-    constexpr double kLegendTop = 0.905;
-    add_text(note + legend, legend_font, 0.98, kLegendTop, true);
-    texts_.back()->GetTextProperty()->SetVerticalJustificationToTop();
-    // VTK spaces lines by 1.1 font sizes (vtkTextProperty's LineSpacing); 1.25 leaves a gap.
-    const auto lines = 1 + std::count(legend.begin(), legend.end(), '\n');
-    content_top = kLegendTop - 1.25 * static_cast<double>(lines * legend_font) / options.height;
+    legend_ = add_text(note + legend, std::max(kMinFontSize, options.height / 40), 0.98, title_bottom(), true);
+    legend_->GetTextProperty()->SetVerticalJustificationToTop();
   }
   time_text_->GetTextProperty()->SetFontSize(font);
   time_text_->GetTextProperty()->SetColor(0.1, 0.1, 0.15);
@@ -135,7 +151,34 @@ double SceneLabels::add_title_legend_and_stamps(const Results& results, const st
     renderer_->AddViewProp(event_text_);
     texts_.push_back(event_text_);
   }
-  return content_top;
+}
+
+double SceneLabels::title_bottom() const {
+  int b[4];  // about the anchor, bottom-left justified
+  vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
+  if (!title_ || !measure->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, kTextDpi)) {
+    return kTitleY;
+  }
+  // A gap of a quarter of the title's font under its lowest pixel.
+  const double gap = 0.25 * title_->GetTextProperty()->GetFontSize();
+  return kTitleY + (std::min(b[2], 0) - gap) / options_.height;
+}
+
+Eigen::Vector2d SceneLabels::legend_size() const {
+  if (!legend_) return Eigen::Vector2d::Zero();
+  const Eigen::Vector2d pixels = measured_size(legend_);
+  return {pixels.x() / options_.width, pixels.y() / options_.height};
+}
+
+void SceneLabels::place_legend(const ViewRect& rect, bool right) {
+  if (!legend_) return;
+  vtkTextProperty* text = legend_->GetTextProperty();
+  if (right) {
+    text->SetJustificationToRight();
+  } else {
+    text->SetJustificationToLeft();
+  }
+  legend_->GetPositionCoordinate()->SetValue(right ? rect.x1 : rect.x0, rect.y1);
 }
 
 void SceneLabels::update(const Results& results, double t) {
@@ -150,7 +193,8 @@ void SceneLabels::update(const Results& results, double t) {
   event_text_->SetInput(event_stamp(results.events, t, event_hold_).c_str());
 }
 
-void SceneLabels::add_text(const std::string& text, int size, double x, double y, bool right) {
+vtkSmartPointer<vtkTextActor> SceneLabels::add_text(const std::string& text, int size, double x, double y,
+                                                    bool right) {
   auto actor = vtkSmartPointer<vtkTextActor>::New();
   actor->SetInput(text.c_str());
   actor->GetTextProperty()->SetFontSize(size);
@@ -160,6 +204,7 @@ void SceneLabels::add_text(const std::string& text, int size, double x, double y
   actor->GetPositionCoordinate()->SetValue(x, y);
   renderer_->AddViewProp(actor);
   texts_.push_back(actor);
+  return actor;
 }
 
 std::vector<PixelBox> SceneLabels::overlay_boxes() const {
@@ -188,7 +233,10 @@ std::vector<Scene::DrawnText> SceneLabels::drawn_texts() const {
     const auto b = text_box(text, renderer_, options_.width, options_.height, 0);
     if (!b) continue;
     const std::string input = text->GetInput() != nullptr ? text->GetInput() : "";
-    drawn.push_back({input, 1 + static_cast<int>(std::count(input.begin(), input.end(), '\n')), *b});
+    // Display pixels run from 0 to width - 1 (height - 1): a box past them is cut off.
+    const std::array<double, 4> d = *display_bounds(text, renderer_);
+    const bool clipped = d[0] < 0.0 || d[1] > options_.width - 1.0 || d[2] < 0.0 || d[3] > options_.height - 1.0;
+    drawn.push_back({input, 1 + static_cast<int>(std::count(input.begin(), input.end(), '\n')), *b, clipped});
   }
   return drawn;
 }

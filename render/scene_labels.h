@@ -1,10 +1,12 @@
 // The 2D texts of a scene and where they sit (render/scene.h): the title top left, the
-// deformation legend under it on the right, the time and event stamps bottom left, the colour
-// bar on the right, and the arrow legends of scene_extras.h; their pixels as last drawn (the CPU
+// deformation legend under it in a corner the motion leaves free (placed by the scene's layout,
+// frame_layout.h), the time and event stamps bottom left, the colour bar on the right, the
+// arrow legends of scene_extras.h and the world triad's labels; their pixels as last drawn (the CPU
 // FXAA leaves them alone; the layout tests read them). Sizes grow with the frame height (issue
 // 28: glyphs over 14 px tall at 720p). Internal to limber_render (exposes VTK types).
 #pragma once
 
+#include "frame_layout.h"
 #include "relative_deflection.h"
 #include "scene.h"
 
@@ -25,17 +27,22 @@ class SceneLabels {
   // Texts added to `renderer` (which must outlive this) for a frame of `options`' size.
   SceneLabels(vtkRenderer* renderer, const RenderOptions& options);
 
-  // Texts drawn by others (scene_extras.h's arrow legends), counted among the overlay's.
+  // Texts drawn by others (scene_extras.h's arrow legends, the world triad's labels), counted
+  // among the overlay's.
   void add_texts(const std::vector<vtkSmartPointer<vtkTextActor>>& texts);
   // The colour bar over `lut`, titled `title` (with its unit), in kColorBarBox.
   void add_color_bar(vtkLookupTable* lut, const std::string& title);
   // The title, the deformation legend (what is scaled; per flexible body, the joints its fit
-  // goes through: `fits` and `fit_joints` in results.bodies order) and the time and event
-  // stamps. Returns the top of what is left for the content, normalised viewport y: under the
-  // legend's last line.
-  double add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
-                                     const std::vector<std::vector<std::string>>& fit_joints);
-
+  // goes through: `fits` and `fit_joints` in results.bodies order; top right until placed) and
+  // the time and event stamps.
+  void add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
+                                   const std::vector<std::vector<std::string>>& fit_joints);
+  // Under the title, normalised viewport y: the top of what the content and legend may use.
+  double title_bottom() const;
+  // The legend's width and height (normalised viewport units); zero without a legend.
+  Eigen::Vector2d legend_size() const;
+  // Puts the legend in `rect` (from legend_size()): right-aligned when `right`, else left.
+  void place_legend(const ViewRect& rect, bool right);
   bool has_color_bar() const { return bar_ != nullptr; }
   // The time stamp's font size [pixels].
   int stamp_font() const;
@@ -47,12 +54,14 @@ class SceneLabels {
   std::vector<Scene::DrawnText> drawn_texts() const;
 
  private:
-  void add_text(const std::string& text, int size, double x, double y, bool right);
+  vtkSmartPointer<vtkTextActor> add_text(const std::string& text, int size, double x, double y, bool right);
 
   vtkRenderer* renderer_;
   RenderOptions options_;
   vtkSmartPointer<vtkTextActor> time_text_;
   vtkSmartPointer<vtkTextActor> event_text_;
+  vtkSmartPointer<vtkTextActor> title_;
+  vtkSmartPointer<vtkTextActor> legend_;  // null without a legend
   double event_hold_ = 0.0;  // simulated time an event stays stamped [s] (event_stamp.h)
   std::vector<vtkSmartPointer<vtkTextActor>> texts_;  // every text drawn (title, note, time)
   vtkSmartPointer<vtkScalarBarActor> bar_;            // null without flexible bodies
