@@ -18,6 +18,7 @@
 #include "app/stop_signal.h"
 #include "core/error.h"
 #include "io/case_reader.h"
+#include "io/formulation_override.h"
 #include "select/selection_json.h"
 #include "select/selection_procedure.h"
 #include "results/file_names.h"
@@ -37,6 +38,7 @@ struct SelectOptions {
   std::string static_kind = "attachment";
   int max_single = 6;
   int reference_normal = 0;
+  std::string reference = "modal";
   bool keep_step = false;
   bool whole_run = false;
   int max_refinement = 8;
@@ -144,6 +146,7 @@ select::SelectionRequest request_of(const SelectOptions& options) {
   request.candidates.static_kind = select::static_kind_from(options.static_kind);
   request.candidates.max_single = options.max_single;
   request.candidates.reference_normal = options.reference_normal;
+  request.nonlinear_reference = io::nonlinear_formulation_requested(options.reference, "--reference");
   request.policy = {options.keep_step, options.max_refinement, 1.0, options.whole_run};
   request.jobs = options.jobs;
   request.adjust = [overrides = options.overrides](const io::RunSettings& settings) {
@@ -246,7 +249,8 @@ Command add_select_command(CLI::App& app) {
       "or above --keep of the body's largest as boundary conditions for static modes; then runs\n"
       "and compares the mode sets: normal only, each kept component alone, all kept together,\n"
       "as many normal modes as that, and a reference (--reference-normal normal modes plus every\n"
-      "kept static mode). Each set runs at a step that resolves its highest natural frequency\n"
+      "kept static mode; with --reference nonlinear that set is 'richest', and the reference is\n"
+      "the case with every flexible body nonlinear, generalized-alpha at the case's step). Each set runs at a step that resolves its highest natural frequency\n"
       "f_max (20 steps per period; generalized-alpha's step, IDA's max_step), at most\n"
       "--max-refinement times shorter than the case's (longer: marked 'not resolved'); with\n"
       "generalized-alpha only in the event windows (--peak-window after the start and after\n"
@@ -293,6 +297,11 @@ Command add_select_command(CLI::App& app) {
   cli->add_option("--reference-normal", options->reference_normal,
                   "Normal modes per body in the reference set (0: four times the case's)")
       ->capture_default_str();
+  cli->add_option("--reference", options->reference,
+                  "modal (the richest modal set) or nonlinear (the case with every flexible body nonlinear: "
+                  "co-rotational FE beams, unreduced; docs/nonlinear-beams.md)")
+      ->check(CLI::IsMember({"modal", "nonlinear"}))
+      ->capture_default_str();
   cli->add_flag("--keep-step", options->keep_step,
                 "Run every set at the case's step (or --step) instead of one resolving its highest frequency");
   cli->add_flag("--whole-run", options->whole_run,
@@ -304,7 +313,7 @@ Command add_select_command(CLI::App& app) {
   cli->add_option("--jobs", options->jobs, "Sets run at a time (threads)")->capture_default_str();
   options->overrides.add_options(*cli);
   cli->add_flag("--json", options->json,
-                "Print one JSON object on stdout: {\"status\", \"ranking\": [{\"component\", \"body\", "
+                "Print one JSON object on stdout: {\"status\", \"reference\" (modal or nonlinear), \"ranking\": [{\"component\", \"body\", "
                 "\"joint\", \"node\", \"quantity\", \"axis\", \"peak\", \"rms\", \"relative\", \"kept\", "
                 "\"indeterminate\"}], \"comparison\": [{\"set\", \"description\", \"modes\", \"reduction_s\", "
                 "\"run_s\", \"status\", \"message\", \"f_max_hz\", \"step\", \"event_window\", "

@@ -24,9 +24,9 @@ bool undamped(const multibody::ModalDamping& damping) {
 }
 
 // The refusals of `formulation: nonlinear` (flexible_mechanism_body.cpp), on the read entry.
-void check_can_be_nonlinear(const Case& input, const FlexibleBodyEntry& body) {
+void check_can_be_nonlinear(const Case& input, const FlexibleBodyEntry& body, const std::string& option) {
   const auto fail = [&](const std::string& what) {
-    throw InputError(fmt::format("--formulation nonlinear: body '{}': expected {}", body.name, what), body.where);
+    throw InputError(fmt::format("{}: body '{}': expected {}", option, body.name, what), body.where);
   };
   const fe::FeModel& model = component_of(input, body).model;
   if (!model.shells.empty() || !model.triangles.empty()) {
@@ -51,13 +51,13 @@ bool nonlinear_formulation_requested(const std::string& name, const std::string&
   throw InputError(fmt::format("{}: expected modal or nonlinear, got '{}'", option, name));
 }
 
-void make_flexible_bodies_nonlinear(Case& input) {
+void make_flexible_bodies_nonlinear(Case& input, const std::string& option) {
   LIMBER_DEMAND(input.mechanism.has_value());
   MechanismCase& mechanism = *input.mechanism;
   for (BodyEntry& entry : mechanism.bodies) {
     auto* body = std::get_if<FlexibleBodyEntry>(&entry);
     if (!body || body->nonlinear) continue;
-    check_can_be_nonlinear(input, *body);
+    check_can_be_nonlinear(input, *body, option);
     body->nonlinear = true;
     body->formulation_where = body->where;
     mechanism.flexible_components.erase(body->name);

@@ -1,6 +1,7 @@
-// `--formulation nonlinear` (limber run, and limber sweep's `--reference nonlinear`): a case's
-// flexible bodies all made nonlinear (docs/nonlinear-beams.md), as if each entry said
-// `formulation: nonlinear`, so that a modal case runs its own accurate reference unchanged.
+// `--formulation nonlinear` (limber run, and the `--reference nonlinear` of limber sweep and
+// limber select): a case's flexible bodies all made nonlinear (docs/nonlinear-beams.md), as if
+// each entry said `formulation: nonlinear`, so that a modal case runs its own accurate reference
+// unchanged.
 #pragma once
 
 #include <string>
@@ -18,7 +19,8 @@ bool nonlinear_formulation_requested(const std::string& name, const std::string&
 // file:line:col): a model with shells or triangles, initial modal coordinates or velocities,
 // stress output, damping other than 0 (the nonlinear body is undamped; the modal default is a
 // ratio of 0.01). geometric_stiffening is a correction of the modes and means nothing
-// without them: it is ignored. Precondition: input.mechanism is set.
-void make_flexible_bodies_nonlinear(Case& input);
+// without them: it is ignored. `option` starts the messages (what the user asked for it with).
+// Precondition: input.mechanism is set.
+void make_flexible_bodies_nonlinear(Case& input, const std::string& option = "--formulation nonlinear");
 
 }  // namespace limber::io

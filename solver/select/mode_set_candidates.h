@@ -30,6 +30,9 @@ struct ModeSetCandidate {
   std::string description;  // what it holds, in words
   io::ModeOverrides requests;  // per `flexible_bodies` entry
   bool reference = false;
+  // Every flexible body nonlinear, unreduced (`--reference nonlinear`; io/formulation_override.h):
+  // no modes, `requests` empty.
+  bool nonlinear = false;
 };
 
 struct CandidateOptions {

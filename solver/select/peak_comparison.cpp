@@ -42,6 +42,9 @@ PeakComparison compare_peaks(const results::EventPeaks& run, const results::Even
       largest_force = std::max(largest_force, p.force);
       largest_torque = std::max(largest_torque, p.torque);
     }
+    const double round_off = kRoundOffFloor * std::max(largest_force, largest_torque);
+    const double force_floor = std::max(kPeakFloor * largest_force, round_off);
+    const double torque_floor = std::max(kPeakFloor * largest_torque, round_off);
     for (std::size_t j = 0; j < reference.joints.size(); ++j) {
       const auto at = std::find(run.joints.begin(), run.joints.end(), reference.joints[j]);
       if (at == run.joints.end()) continue;
@@ -51,8 +54,8 @@ PeakComparison compare_peaks(const results::EventPeaks& run, const results::Even
                          p.torque, r.torque, p.force_time, r.force_time};
       const auto release = released.find(row.joint);
       if (release == released.end() || release->second > ref.start.t) {
-        row.force_error = relative(p.force, r.force, kPeakFloor * largest_force);
-        row.torque_error = relative(p.torque, r.torque, kPeakFloor * largest_torque);
+        row.force_error = relative(p.force, r.force, force_floor);
+        row.torque_error = relative(p.torque, r.torque, torque_floor);
       }
       for (const auto& [error, kind] : {std::pair{row.force_error, "force"}, std::pair{row.torque_error, "torque"}}) {
         if (!std::isnan(error) && error > worst) {

@@ -8,7 +8,12 @@
 // other has not (an event that happened in one only) makes the comparison's error infinite and
 // is named. A joint whose reference peak is below kPeakFloor of the window's largest peak of
 // that kind (force or torque) is not compared: a relative difference of a load that is noise
-// beside the window's main loads means nothing. Nor is a joint released at or before the
+// beside the window's main loads means nothing; nor one below kRoundOffFloor of the window's
+// largest peak of either kind (forces in N and torques in N m compared as numbers, as `limber
+// sweep` filters its quantities): the out-of-plane torques of a planar mechanism are round-off
+// (1e-15 N m beside kN forces: an unreduced nonlinear rod makes them determinate and zero)
+// or the minimum-norm split of redundant joints, whose relative differences are meaningless.
+// Nor is a joint released at or before the
 // window's start (a hold-down released at t = 0): after its release it carries nothing, and
 // its value at the instant of release is its stowed preload, a static load that the
 // minimum-norm rule splits among redundant supports (and so depends on the mode set), not the
@@ -25,6 +30,7 @@
 namespace limber::select {
 
 inline constexpr double kPeakFloor = 0.01;
+inline constexpr double kRoundOffFloor = 1e-6;
 
 // The window [s] over which `limber select` tracks event peaks unless the case or the command
 // line sets one (RunSettings::peak_window): the first periods of a deployed panel's lowest

@@ -75,10 +75,12 @@ std::string json_reference_check(const ReferenceCheck& check) {
 
 std::string selection_json(const Selection& selection, const SelectionRequest& request) {
   const std::vector<CandidateRun>& runs = selection.runs;
-  return fmt::format("{{\"status\": \"ok\", \"ranking\": {}, \"comparison\": {}, \"reference_check\": {}, "
+  return fmt::format("{{\"status\": \"ok\", \"reference\": {}, \"ranking\": {}, \"comparison\": {}, "
+                     "\"reference_check\": {}, "
                      "\"chosen\": {}, \"target\": {}, \"target_met\": {}, \"norm\": {}, "
                      "\"steps_per_period_needed\": {}, \"fragment\": {}, \"directory\": {}}}",
-                     json_ranking(selection.ranking), json_comparison(runs, request.root),
+                     json_string(request.nonlinear_reference ? "nonlinear" : "modal"), json_ranking(selection.ranking),
+                     json_comparison(runs, request.root),
                      json_reference_check(selection.check),
                      selection.chosen ? json_string(runs[*selection.chosen].candidate.name) : std::string("null"),
                      request.target ? json_number(*request.target) : std::string("null"),

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "io/formulation_override.h"
 #include "results/directory_lock.h"
 #include "results/file_names.h"
 #include "select/selection_files.h"
@@ -25,23 +26,61 @@ std::string folder_name(const std::string& name) {
   return folder;
 }
 
-// One set into DIR/runs/<folder>, its step scaled by `scale`.
+// One set into DIR/runs/<folder>, its step scaled by `scale`; `columns` as run_candidate's.
 CandidateRun run_set(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
                      const SelectionHooks& hooks, const ModeSetCandidate& candidate, const std::string& folder,
-                     double scale, bool alone) {
+                     double scale, bool alone, const multibody::Model* columns = nullptr) {
   StepPolicy scaled = request.policy;
   scaled.scale = scale;
   return run_candidate(input, candidate, request.adjust, scaled,
                        request.root / results::kRunsFolder / folder_name(folder),
                        [&](const integrate::Sample& sample) {
                          if (hooks.on_sample) hooks.on_sample(sample, alone);
-                       });
+                       },
+                       columns);
+}
+
+// The cases a selection runs: the one read, and with `--reference nonlinear` the same case with
+// every flexible body nonlinear, for the reference.
+struct SelectionInputs {
+  std::shared_ptr<const io::Case> modal;
+  std::shared_ptr<const io::Case> nonlinear;  // null without a nonlinear reference
+  const multibody::Model* columns = nullptr;  // the ranking run's model (run_candidate's `columns`)
+};
+
+// `input` with every flexible body nonlinear. Refuses, before anything runs, what the nonlinear
+// body cannot be (at the body's entry) and the settings it cannot run with (run_driver.cpp).
+std::shared_ptr<const io::Case> nonlinear_case(const io::Case& input, const SelectionRequest& request) {
+  auto nonlinear = std::make_shared<io::Case>(input);
+  io::make_flexible_bodies_nonlinear(*nonlinear, "--reference nonlinear");
+  const io::RunSettings settings = request.adjust ? request.adjust(input.mechanism->run) : input.mechanism->run;
+  if (settings.integrator.method != integrate::Method::kGeneralizedAlpha) {
+    throw InputError(fmt::format("--reference nonlinear: expected integrator galpha (a nonlinear body runs with "
+                                 "the generalized-α only), got {}; give --integrator galpha --step H",
+                                 integrate::to_string(settings.integrator.method)));
+  }
+  if (settings.start == io::StartKind::kStatics) {
+    throw InputError("--reference nonlinear: expected run start: assembly (a static start of a nonlinear body is "
+                     "not available), got statics; give --start assembly");
+  }
+  return nonlinear;
+}
+
+// The sets with the nonlinear reference in place of the richest modal set, which stays as a
+// set of its own ("richest"): what the modal model reaches with many modes.
+std::vector<ModeSetCandidate> with_nonlinear_reference(std::vector<ModeSetCandidate> candidates) {
+  LIMBER_DEMAND(!candidates.empty() && candidates.back().reference);
+  candidates.back().name = "richest";
+  candidates.back().reference = false;
+  candidates.push_back({"nonlinear", "every flexible body nonlinear: co-rotational FE beams, unreduced", {}, true,
+                        true});
+  return candidates;
 }
 
 // The sets after `normal` (candidates[0]) and the reference at half its step, `jobs` at a
 // time, the longest first (the reference, then its twin); appended to `runs` in the candidates'
 // order. Returns the halved-step reference run.
-std::optional<CandidateRun> run_sets(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
+std::optional<CandidateRun> run_sets(const SelectionInputs& inputs, const SelectionRequest& request,
                                      const SelectionHooks& hooks, const std::vector<ModeSetCandidate>& candidates,
                                      std::vector<CandidateRun>& runs) {
   struct Job {
@@ -63,7 +102,11 @@ std::optional<CandidateRun> run_sets(const std::shared_ptr<const io::Case>& inpu
     if (hooks.on_set_start) {
       hooks.on_set_start({j + 2, order.size() + 1, order[j].folder, candidate.description, order[j].scale});
     }
-    done[j] = run_set(input, request, hooks, candidate, order[j].folder, order[j].scale, request.jobs <= 1);
+    done[j] = candidate.nonlinear
+                  ? run_set(inputs.nonlinear, request, hooks, candidate, order[j].folder, order[j].scale,
+                            request.jobs <= 1, inputs.columns)
+                  : run_set(inputs.modal, request, hooks, candidate, order[j].folder, order[j].scale,
+                            request.jobs <= 1);
     if (hooks.on_set_done) hooks.on_set_done(*done[j], order[j].folder);
   });
   std::optional<CandidateRun> half_step;
@@ -82,6 +125,12 @@ std::string refusal(const CandidateRun& reference, int max_refinement, const std
   std::string why = reference.ok() ? fmt::format("finished, but its own accuracy check failed ({})",
                                                  fmt::join(reference.summary.accuracy.warnings, "; "))
                                    : "failed: " + reference.summary.message;
+  if (reference.candidate.nonlinear) {
+    return fmt::format("the nonlinear reference ({}) {}, so differences to it mean nothing; run select with a "
+                       "shorter --step, or without --reference nonlinear; its run is in {}",
+                       step_text(reference.step), why,
+                       reference.directory.lexically_relative(root).generic_string());
+  }
   return fmt::format(
       "the reference set ({} modes, f_max {:.0f} Hz, {}, steps per period: {}) {}, so differences to it "
       "mean nothing; run select with a shorter step (--max-refinement {} allows one {} times shorter than the "
@@ -169,6 +218,7 @@ Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRe
     throw InputError("expected a mechanism with at least one flexible body, got none",
                      SourceLocation{input->file, 0, 0});
   }
+  SelectionInputs inputs{input, request.nonlinear_reference ? nonlinear_case(*input, request) : nullptr};
   std::filesystem::create_directories(request.root);
   const results::DirectoryLock lock(request.root);
   Selection selection;
@@ -187,9 +237,13 @@ Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRe
   if (hooks.on_ranking) hooks.on_ranking(selection.ranking);
 
   // Step 4: the other sets and the reference at half its step, then the comparison.
-  const std::vector<ModeSetCandidate> candidates =
+  std::vector<ModeSetCandidate> candidates =
       mode_set_candidates(*input, first.reduction, selection.ranking, request.candidates);
-  std::optional<CandidateRun> half_step = run_sets(input, request, hooks, candidates, selection.runs);
+  if (request.nonlinear_reference) candidates = with_nonlinear_reference(std::move(candidates));
+  // The ranking run's model lays out the nonlinear reference's columns; `runs` grows only after
+  // every set has run, so it stays in place meanwhile.
+  inputs.columns = &first.mechanism.model;
+  std::optional<CandidateRun> half_step = run_sets(inputs, request, hooks, candidates, selection.runs);
   const CandidateRun& reference = selection.runs.back();
   const std::vector<KeyQuantity> keys =
       key_quantities(selection.ranking, reference.ok() ? reference : selection.runs.front());

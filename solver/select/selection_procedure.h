@@ -37,6 +37,10 @@ struct SelectionRequest {
   StepPolicy policy;                 // its `scale` is set per run (the reference's half step)
   int jobs = 2;                      // sets run at a time (threads)
   SettingsAdjustment adjust;         // the runs' settings from the case's; empty: the case's
+  // `--reference nonlinear`: the sets are measured against the case with every flexible body
+  // nonlinear (io/formulation_override.h; generalized-α at the case's step), and the richest
+  // modal set runs as a set of its own ("richest"). Default: against the richest modal set.
+  bool nonlinear_reference = false;
 };
 
 // "event", "peak" or "rms".
@@ -91,7 +95,9 @@ struct Selection {
 };
 
 // Runs the procedure on `input` (read from a case file) and writes its files. Throws
-// InputError for bad input (check_request, a case without flexible bodies), NumericalError when
+// InputError for bad input (check_request, a case without flexible bodies; with a nonlinear
+// reference, before any run: a flexible body that cannot be nonlinear, at its entry's
+// file:line:col, and an integrator other than generalized-α or a static start), NumericalError when
 // the ranking run fails, and lets SelectionInterrupted from a hook through (the finished runs'
 // files stay, each closed).
 Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRequest& request,

@@ -42,7 +42,8 @@ Eigen::MatrixXd stack(const std::vector<Eigen::VectorXd>& rows, Eigen::Index col
 CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
                            const SettingsAdjustment& adjust, const StepPolicy& policy,
                            const std::filesystem::path& directory,
-                           const std::function<void(const integrate::Sample&)>& on_sample) {
+                           const std::function<void(const integrate::Sample&)>& on_sample,
+                           const multibody::Model* columns) {
   CandidateRun result;
   result.candidate = candidate;
   result.directory = directory;
@@ -69,9 +70,12 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   settings.integrator = apply_step(settings.integrator, result.step);
   run::check_settings(settings);
 
-  // Every sample's reactions on the flexible bodies and deflections, kept in memory.
-  const std::vector<JointOnFlexibleBody> sites = joints_on_flexible_bodies(model);
-  const std::vector<int> probed = probed_bodies(model);
+  // Every sample's reactions on the flexible bodies and deflections, kept in memory, in the
+  // columns of `layout`: its bodies and joints are the recorded ones.
+  const multibody::Model& layout = columns ? *columns : model;
+  const std::vector<JointOnFlexibleBody> sites = joints_on_flexible_bodies(layout);
+  const std::vector<int> probed = probed_bodies(layout);
+  for (const int body : probed) result.probed.push_back(layout.bodies[static_cast<std::size_t>(body)].name);
   result.indeterminate.assign(sites.size(), false);
   std::vector<double> times;
   std::vector<Eigen::VectorXd> reactions, deflections;
@@ -82,6 +86,8 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   run::RunHooks hooks;
   hooks.writer = &writer;
   hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
+    // Sample bodies leave out ground.
+    LIMBER_DEMAND(record.bodies.size() + 1 == layout.bodies.size() && record.joints.size() == layout.joints.size());
     times.push_back(record.time);
     Eigen::VectorXd r(6 * static_cast<Eigen::Index>(sites.size()));
     for (std::size_t s = 0; s < sites.size(); ++s) {
@@ -148,16 +154,14 @@ std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& rank
   for (const RankedComponent& component : ranking) {
     if (component.kept) keys.push_back({component.description(), false, 6 * component.site_index + component.column()});
   }
-  const multibody::Model& model = reference.mechanism.model;
-  const std::vector<int> probed = probed_bodies(model);
+  const std::vector<std::string>& probed = reference.probed;
   for (std::size_t p = 0; p < probed.size(); ++p) {
     const auto columns = reference.deflections.middleCols(3 * static_cast<Eigen::Index>(p), 3);
     if (columns.rows() == 0) continue;
     const Eigen::Vector3d peaks = columns.cwiseAbs().colwise().maxCoeff().transpose();
     for (int axis = 0; axis < 3; ++axis) {
       if (peaks(axis) > 0.0 && peaks(axis) >= 0.01 * peaks.maxCoeff()) {
-        keys.push_back({fmt::format("{} deflection {} [m]", model.bodies[static_cast<std::size_t>(probed[p])].name,
-                                    kAxisNames[axis]),
+        keys.push_back({fmt::format("{} deflection {} [m]", probed[p], kAxisNames[axis]),
                         true, 3 * static_cast<int>(p) + axis});
       }
     }

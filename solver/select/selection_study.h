@@ -51,6 +51,7 @@ struct CandidateRun {
   Eigen::MatrixXd reactions;         // samples x 6 · sites (reaction_ranking.h)
   std::vector<bool> indeterminate;   // per site, set when any sample had it
   Eigen::MatrixXd deflections;       // samples x 3 · probed bodies (body axes) [m]
+  std::vector<std::string> probed;   // the probed bodies' names, in the order of `deflections`
   // Against the reference (compare_runs); NaN when not measured.
   double error_peak = std::numeric_limits<double>::quiet_NaN();
   double error_rms = std::numeric_limits<double>::quiet_NaN();
@@ -83,10 +84,17 @@ struct SelectionInterrupted {};
 // (progress; it may throw SelectionInterrupted). Throws InputError on bad input; a numerical
 // failure is in the returned summary. Any exception closes the results file first
 // ("interrupted" or "failed"). Runs of different sets may run on different threads at once.
+// `columns` is the model whose joints on flexible bodies and deflection probes give the columns
+// of `reactions` and `deflections` (null: the run's own). A nonlinear set (`--reference
+// nonlinear`) passes the ranking run's modal model: its node bodies are recorded as the one body
+// of the case at that body's place (run/sample_record.h), so the recorded bodies and joints are
+// the modal model's, and a reaction "in the body's axes" is in the recorded body frame, the
+// nonlinear body's chord frame (docs/select.md, "The nonlinear reference").
 CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
                            const SettingsAdjustment& adjust, const StepPolicy& policy,
                            const std::filesystem::path& directory,
-                           const std::function<void(const integrate::Sample&)>& on_sample = {});
+                           const std::function<void(const integrate::Sample&)>& on_sample = {},
+                           const multibody::Model* columns = nullptr);
 
 // Calls job(k) for k in [0, count) on `workers` threads (1: in order on this one). After the
 // first exception a job throws, no further job starts; it is rethrown once the running ones end.
@@ -99,8 +107,9 @@ struct KeyQuantity {
   int column = 0;    // in CandidateRun::reactions or ::deflections
 };
 
-// The kept components of `ranking`, then every probed body's deflection axes whose peak in
-// `reference` is at least 1 % of its largest axis (a smaller axis is noise on a relative scale).
+// The kept components of `ranking`, then every probed body's deflection axes (`reference.probed`)
+// whose peak in `reference` is at least 1 % of its largest axis (a smaller axis is noise on a
+// relative scale).
 std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& ranking,
                                         const CandidateRun& reference);
 
