@@ -1,35 +1,13 @@
-// Reads the recovered stresses of results.h5 (docs/results-format.md, "Stress"): per flexible
-// body with stress output, the mesh's peak equivalent stress at every sample and the history of
-// the recorded elements. Shared by `limber render --color von_mises`, the VTU export and
-// `limber report`.
+// render's names for the stresses of results.h5 (results/stress_reader.h, read by limber_results'
+// typed reader): `limber render --color von_mises`, the VTU and XDMF exports.
 #pragma once
 
-#include <Eigen/Core>
-
-#include <optional>
-#include <vector>
-
+#include "results/stress_reader.h"
 #include "results_reader.h"
 
 namespace limber::render {
 
-struct StressTrack {
-  Eigen::VectorXd peak;          // ns: largest equivalent stress over the mesh [Pa]
-  Eigen::VectorXi peak_element;  // ns: its element (0-based: lines, then quads)
-  std::vector<int> elements;     // ne recorded elements (0-based, ascending)
-  Eigen::VectorXd time;          // nss history times [s]
-  Eigen::MatrixXd equivalent;    // nss x ne [Pa]: beams' extreme-fibre, shells' von Mises
-
-  // The history row at or before time t (the first row before the first time); -1 when empty.
-  Eigen::Index row_at(double t) const;
-  // Per element of the whole mesh (lines, then quads) the equivalent stress of history row
-  // `row` [Pa]; elements not recorded are NaN (drawn in the "no data" colour).
-  Eigen::VectorXd element_values(Eigen::Index row, int element_count) const;
-};
-
-// One entry per body of `results` (same order): the body's stresses, or none when it has no
-// stress output. Series are cut to results' sample count and to the last complete history row.
-// Throws InputError when a stress group is malformed.
-std::vector<std::optional<StressTrack>> read_stress_tracks(const Results& results);
+using results::read_stress_tracks;
+using results::StressTrack;
 
 }  // namespace limber::render

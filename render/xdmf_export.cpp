@@ -3,8 +3,7 @@
 #include "body_pose.h"
 #include "progress_bar.h"
 #include "relative_deflection.h"
-#include "results/h5_handle.h"
-#include "results/h5_write.h"
+#include "results/h5_group.h"
 #include "results/link_name.h"
 #include "stress_reader.h"
 #include "xdmf_description.h"
@@ -21,69 +20,14 @@
 namespace limber::render {
 namespace {
 
-using results::H5Handle;
+using results::Hdf5Group;
 
-// scene.h5 open for writing; every failure throws naming the file and the object.
-class SceneFile {
- public:
-  explicit SceneFile(std::filesystem::path path) : path_(std::move(path)) {
-    results::SilentHdf5Errors silent;
-    // The HDF5 1.8 file format (compact groups: a sixth smaller than the earliest format for the
-    // many small groups here), which ParaView 5.11 (HDF5 1.10) reads.
-    H5Handle access(H5Pcreate(H5P_FILE_ACCESS));
-    H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18);
-    file_ = H5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
-    if (!file_.valid()) fail("create the file");
-  }
-
-  hid_t root() const { return file_.get(); }
-
-  H5Handle group(hid_t parent, const std::string& name) const {
-    results::SilentHdf5Errors silent;
-    H5Handle group(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-    if (!group.valid()) fail("create group '" + name + "'");
-    return group;
-  }
-
-  // A whole float64 (or int32) dataset, row-major `data` of shape `dims`.
-  void reals(hid_t parent, const char* name, const std::vector<hsize_t>& dims, const double* data) const {
-    results::SilentHdf5Errors silent;
-    if (!results::try_write_dataset(parent, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data)) {
-      fail(std::string("write dataset '") + name + "'");
-    }
-  }
-  void ints(hid_t parent, const char* name, const std::vector<int>& data) const {
-    results::SilentHdf5Errors silent;
-    if (!results::try_write_dataset(parent, name, H5T_STD_I32LE, H5T_NATIVE_INT, {data.size()}, data.data())) {
-      fail(std::string("write dataset '") + name + "'");
-    }
-  }
-
-  void int_attribute(hid_t object, const char* name, int value) const {
-    results::SilentHdf5Errors silent;
-    if (!results::try_write_scalar_attribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT, &value)) {
-      fail(std::string("write attribute '") + name + "'");
-    }
-  }
-  void string_attribute(hid_t object, const char* name, const std::string& value) const {
-    results::SilentHdf5Errors silent;
-    const H5Handle type(H5Tcopy(H5T_C_S1));
-    const std::string padded = value.empty() ? std::string(1, '\0') : value;
-    if (!type.valid() || H5Tset_size(type.get(), padded.size()) < 0 ||
-        H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 ||
-        !results::try_write_scalar_attribute(object, name, type.get(), type.get(), padded.data())) {
-      fail(std::string("write attribute '") + name + "'");
-    }
-  }
-
-  [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("cannot write '" + path_.string() + "': HDF5 failed to " + what);
-  }
-
- private:
-  std::filesystem::path path_;
-  H5Handle file_;
-};
+// scene.h5 in the HDF5 1.8 file format (compact groups: a sixth smaller than the earliest format
+// for the many small groups here), which ParaView 5.11 (HDF5 1.10) reads; written through
+// limber_results' typed writer, which throws naming the file and the object.
+Hdf5Group create_scene_file(const std::filesystem::path& path) {
+  return Hdf5Group::create_file(path.string(), results::Hdf5Format::kOnly18);
+}
 
 // What a body needs at every sample: its grid, its joint-node fit, its stress history and
 // where its points and cells lie in the scene's grid.
@@ -164,16 +108,16 @@ void fill_body(SampleData& data, const BodyOutput& out, const BodyState& state, 
 }
 
 // Writes sample k's group.
-void write_sample(const SceneFile& file, hid_t samples, long k, const SampleData& data) {
-  const H5Handle group = file.group(samples, xdmf::sample_name(k));
-  const auto np = static_cast<hsize_t>(data.x_W.rows());
-  file.reals(group.get(), xdmf::sample::kPoints, {np, 3}, data.x_W.data());
-  file.reals(group.get(), xdmf::sample::kDisplacement, {np, 3}, data.u_W.data());
-  file.reals(group.get(), xdmf::sample::kDisplacementMagnitude, {np}, data.u_norm.data());
-  file.reals(group.get(), xdmf::sample::kRelativeDeflection, {np, 3}, data.u_rel_W.data());
-  file.reals(group.get(), xdmf::sample::kRelativeDeflectionMagnitude, {np}, data.u_rel_norm.data());
+void write_sample(const Hdf5Group& samples, long k, const SampleData& data) {
+  const Hdf5Group group = samples.create_group(xdmf::sample_name(k));
+  const auto np = static_cast<unsigned long long>(data.x_W.rows());
+  group.write_doubles(xdmf::sample::kPoints, {np, 3}, data.x_W.data());
+  group.write_doubles(xdmf::sample::kDisplacement, {np, 3}, data.u_W.data());
+  group.write_doubles(xdmf::sample::kDisplacementMagnitude, {np}, data.u_norm.data());
+  group.write_doubles(xdmf::sample::kRelativeDeflection, {np, 3}, data.u_rel_W.data());
+  group.write_doubles(xdmf::sample::kRelativeDeflectionMagnitude, {np}, data.u_rel_norm.data());
   if (data.stress.size() > 0) {
-    file.reals(group.get(), xdmf::sample::kStress, {static_cast<hsize_t>(data.stress.size())}, data.stress.data());
+    group.write_doubles(xdmf::sample::kStress, {static_cast<unsigned long long>(data.stress.size())}, data.stress.data());
   }
 }
 
@@ -215,32 +159,32 @@ std::vector<BodyOutput> body_outputs(const Results& results,
 
 // The grid's constant parts (topology, beam radius, body per cell) and one attribute group per
 // body saying where it lies.
-XdmfGrid write_constant_parts(const SceneFile& file, const std::vector<BodyOutput>& outputs) {
+XdmfGrid write_constant_parts(const Hdf5Group& file, const std::vector<BodyOutput>& outputs) {
   std::vector<int> topology, body;
   std::vector<double> beam_radius;
   XdmfGrid grid;
-  const H5Handle bodies = file.group(file.root(), xdmf::kBodies);
+  const Hdf5Group bodies = file.create_group(xdmf::kBodies);
   for (std::size_t b = 0; b < outputs.size(); ++b) {
     const BodyOutput& out = outputs[b];
     append_topology(topology, out.grid.topology, static_cast<int>(out.first_point));
     beam_radius.insert(beam_radius.end(), out.grid.beam_radius.data(),
                        out.grid.beam_radius.data() + out.grid.beam_radius.size());
     body.insert(body.end(), static_cast<std::size_t>(out.grid.cells), static_cast<int>(b));
-    const H5Handle group = file.group(bodies.get(), results::link_name(out.track->name));
-    file.string_attribute(group.get(), results::kNameAttribute, out.track->name);
-    file.string_attribute(group.get(), xdmf::body::kKindAttribute, out.track->flexible ? "flexible" : "rigid");
-    file.int_attribute(group.get(), xdmf::body::kIndexAttribute, static_cast<int>(b));
-    file.int_attribute(group.get(), xdmf::body::kFirstPointAttribute, static_cast<int>(out.first_point));
-    file.int_attribute(group.get(), xdmf::body::kPointCountAttribute, static_cast<int>(out.grid.points_B.rows()));
-    file.int_attribute(group.get(), xdmf::body::kFirstCellAttribute, static_cast<int>(out.first_cell));
-    file.int_attribute(group.get(), xdmf::body::kCellCountAttribute, out.grid.cells);
+    const Hdf5Group group = bodies.create_group(results::link_name(out.track->name));
+    group.write_fixed_attribute(results::kNameAttribute, out.track->name);
+    group.write_fixed_attribute(xdmf::body::kKindAttribute, out.track->flexible ? "flexible" : "rigid");
+    group.write_attribute(xdmf::body::kIndexAttribute, static_cast<int>(b));
+    group.write_attribute(xdmf::body::kFirstPointAttribute, static_cast<int>(out.first_point));
+    group.write_attribute(xdmf::body::kPointCountAttribute, static_cast<int>(out.grid.points_B.rows()));
+    group.write_attribute(xdmf::body::kFirstCellAttribute, static_cast<int>(out.first_cell));
+    group.write_attribute(xdmf::body::kCellCountAttribute, out.grid.cells);
     grid.points += out.grid.points_B.rows();
     grid.stress = grid.stress || out.stress != nullptr;
     grid.body_names.push_back(out.track->name);
   }
-  file.ints(file.root(), xdmf::kTopology, topology);
-  file.reals(file.root(), xdmf::kBeamRadius, {beam_radius.size()}, beam_radius.data());
-  file.ints(file.root(), xdmf::kBody, body);
+  file.write_ints(xdmf::kTopology, {topology.size()}, topology.data());
+  file.write_doubles(xdmf::kBeamRadius, {beam_radius.size()}, beam_radius.data());
+  file.write_ints(xdmf::kBody, {body.size()}, body.data());
   grid.cells = static_cast<long>(body.size());
   grid.topology = static_cast<long>(topology.size());
   return grid;
@@ -251,9 +195,9 @@ XdmfGrid write_constant_parts(const SceneFile& file, const std::vector<BodyOutpu
 XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem::path& vtk_directory,
                                   double t0, double t1, bool progress) {
   std::filesystem::create_directories(vtk_directory);
-  SceneFile file(vtk_directory / xdmf::kFileName);
-  file.string_attribute(file.root(), xdmf::kFormatAttribute, xdmf::kFormat);
-  file.int_attribute(file.root(), xdmf::kVersionAttribute, xdmf::kVersion);
+  const Hdf5Group file = create_scene_file(vtk_directory / xdmf::kFileName);
+  file.write_fixed_attribute(xdmf::kFormatAttribute, xdmf::kFormat);
+  file.write_attribute(xdmf::kVersionAttribute, xdmf::kVersion);
 
   // The samples in [t0, t1].
   std::vector<double> times;
@@ -263,8 +207,8 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
     times.push_back(results.time(i));
     rows.push_back(static_cast<int>(i));
   }
-  file.reals(file.root(), xdmf::kTime, {times.size()}, times.data());
-  file.ints(file.root(), xdmf::kSampleRows, rows);
+  file.write_doubles(xdmf::kTime, {times.size()}, times.data());
+  file.write_ints(xdmf::kSampleRows, {rows.size()}, rows.data());
 
   // The bodies one after the other in one grid; its constant parts.
   XdmfSceneSummary summary;
@@ -280,14 +224,14 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
   summary.stress = grid.stress;
 
   // Every sample.
-  const H5Handle samples = file.group(file.root(), xdmf::kSamples);
+  const Hdf5Group samples = file.create_group(xdmf::kSamples);
   ProgressBar bar("ParaView scene", static_cast<int>(times.size()), progress);
   for (std::size_t k = 0; k < times.size(); ++k) {
     SampleData data(grid.points, grid.cells, grid.stress);
     for (const BodyOutput& out : outputs) {
       fill_body(data, out, body_state(*out.track, {rows[k], 0.0}), times[k], summary);
     }
-    write_sample(file, samples.get(), static_cast<long>(k), data);
+    write_sample(samples, static_cast<long>(k), data);
     bar.update(static_cast<int>(k) + 1);
   }
   summary.samples = static_cast<int>(times.size());

@@ -1,20 +1,19 @@
 // Everything the report shows about one run directory, read from its files only:
-// DIR/results.h5 (docs/results-format.md) through render's reader plus, through the same HDF5
-// reader (results/h5_reader.h) at the layout's paths, what render does not need (reactions,
-// drivers, energies, violations, steps, momentum, acceleration probes, body masses, mode kinds
-// and labels) and the shock spectra (shock_data.h), DIR/modes.h5 (docs/modes-format.md) for
-// mode kinds and labels when results.h5 lacks them, the media `limber render` left in DIR, and
+// DIR/results.h5 (docs/results-format.md) through results' typed reader (results/results_reader.h
+// for the poses, results/run_records.h for the series: reactions, drivers, energies, violations,
+// steps, momentum, probes and shock spectra; results/stress_reader.h for the stresses),
+// DIR/modes.h5 (docs/modes-format.md) for mode kinds and labels when results.h5 lacks them, the media `limber render` left in DIR, and
 // the CSV files `limber select` left in DIR/selection (selection_data.h) and `limber sweep`'s
 // work-precision table in DIR/sweep (sweep_data.h).
 #pragma once
 
 #include "results_reader.h"
 #include "selection_data.h"
-#include "shock_data.h"
 #include "stress_reader.h"
 #include "sweep_data.h"
 #include "results/event_peaks.h"
 #include "results/results_layout.h"
+#include "results/run_records.h"
 
 #include <Eigen/Core>
 
@@ -29,49 +28,15 @@ namespace limber::report {
 
 using RowMatrix3d = render::RowMatrix3d;
 
-// Reactions on body_j of one joint, ns x 3 each.
-struct JointReactions {
-  std::string name;
-  RowMatrix3d force_joint;   // joint frame [N]
-  RowMatrix3d torque_joint;  // joint frame [N m]
-  RowMatrix3d force_ground;  // ground axes [N] (empty when the file has none)
-  RowMatrix3d torque_ground; // ground axes, about the joint point [N m] (empty when none)
-  Eigen::VectorXd indeterminate;  // ns, 1 where redundancy made the reaction minimum-norm (empty: none)
-
-  bool is_indeterminate() const { return indeterminate.size() > 0 && indeterminate.maxCoeff() > 0.0; }
-};
-
-// A flexible body's deflection probe (case key `deflection`): a node's elastic displacement
-// relative to a chord, body axes [m], ns x 3.
-struct DeflectionProbe {
-  std::string body;
-  RowMatrix3d values;
-};
-
-// A named per-sample series (driver effort, energy, violation).
-struct Series {
-  std::string name;
-  Eigen::VectorXd values;  // ns
-};
-
-// A hinge latch or stop (results.h5 /hinge_limits): its joint's angle, its torque, its mode.
-struct HingeLimitTrack {
-  std::string name;
-  std::string kind;             // "latch" or "stop"
-  std::string joint;
-  double limit_angle = 0.0;     // [rad]
-  Eigen::VectorXd angle;        // ns, joint angle [rad]
-  Eigen::VectorXd torque;       // ns, on body j about the joint axis [N m]
-};
-
-// A located mode switch (results.h5 /events).
-struct HingeEventRow {
-  double time = 0.0;     // [s]
-  int limit = 0;         // index into RunData::hinge_limits
-  bool engaged = false;  // mode after the switch
-  double angle = 0.0;    // [rad]
-  double rate = 0.0;     // [rad/s]
-};
+// The series of results.h5 as its typed reader returns them (results/run_records.h).
+using JointReactions = results::JointReactions;
+using DeflectionProbe = results::DeflectionProbe;
+using Series = results::NamedSeries;
+using HingeLimitTrack = results::HingeLimitTrack;
+using HingeEventRow = results::HingeEventRow;
+using AccelerationProbeTrack = results::AccelerationProbeTrack;
+using ProbeSpectrumData = results::ProbeSpectrumData;
+using ShockSpectraData = results::ShockSpectraData;
 
 // One row of a flexible body's mode table.
 struct ModeRow {

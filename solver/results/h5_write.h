@@ -1,4 +1,4 @@
-// The writing calls that results.h5's writer and H5Group (h5_group.h, for modes.h5) share:
+// The writing calls that results.h5's writer and Hdf5Group (h5_group.h: modes.h5, linear.h5, scene.h5) share:
 // whole datasets and scalar attributes through the HDF5 C API. Each returns false on an HDF5
 // failure; the caller says which file and object failed, in its own kind of error.
 #pragma once

@@ -3,7 +3,7 @@
 // frequencies of the modes are the same as in results.h5: results/results_layout.h
 // (layout::mesh, layout::modes).
 //
-// Every name here is a link name within its parent group (H5Group, h5_group.h, works relative
+// Every name here is a link name within its parent group (Hdf5Group, h5_group.h, works relative
 // to a group); a reader of absolute paths builds them with layout::at(parent, name), the root's
 // parent being "" (at("", kBodyNames) == "/body_names").
 #pragma once

@@ -1,11 +1,6 @@
 #include "run/linear_file.h"
 
-#include <stdexcept>
-
-#include <fmt/format.h>
-
-#include "results/h5_handle.h"
-#include "results/h5_write.h"
+#include "results/h5_group.h"
 #include "results/linear_layout.h"
 #include "results/results_layout.h"
 
@@ -16,52 +11,32 @@ namespace {
 namespace L = results::linear_layout;
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-// Writes datasets and attributes of one group, naming the file and object on failure.
+// Writes the datasets and attributes of one group of linear.h5 through limber_results' typed
+// writer (float64 values, fixed-length null-padded strings, as linear.h5 always had).
 class GroupWriter {
  public:
-  GroupWriter(hid_t group, std::string file) : group_(group), file_(std::move(file)) {}
+  explicit GroupWriter(results::Hdf5Group group) : group_(std::move(group)) {}
 
-  void matrix(const char* name, const Eigen::MatrixXd& value) {
+  GroupWriter group(const char* name) const { return GroupWriter(group_.create_group(name)); }
+  void matrix(const char* name, const Eigen::MatrixXd& value) const {
     const RowMajor rows = value;
-    check(results::try_write_dataset(group_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                                     {static_cast<hsize_t>(rows.rows()), static_cast<hsize_t>(rows.cols())},
-                                     rows.data()),
-          name);
+    group_.write_doubles(name, {static_cast<unsigned long long>(rows.rows()), static_cast<unsigned long long>(rows.cols())},
+                         rows.data());
   }
-  void vector(const char* name, const Eigen::VectorXd& value) {
-    check(results::try_write_dataset(group_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                                     {static_cast<hsize_t>(value.size())}, value.data()),
-          name);
+  void vector(const char* name, const Eigen::VectorXd& value) const {
+    group_.write_doubles(name, {static_cast<unsigned long long>(value.size())}, value.data());
   }
-  void scalar(const char* name, double value) {
-    check(results::try_write_dataset(group_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {}, &value), name);
+  void scalar(const char* name, double value) const { group_.write_doubles(name, {}, &value); }
+  void strings(const char* name, const std::vector<std::string>& values) const {
+    group_.write_fixed_strings(name, values);
   }
-  void strings(const char* name, const std::vector<std::string>& values) {
-    check(results::try_write_string_dataset(group_, name, values), name);
-  }
-  void attribute(const char* name, const std::string& value) {
-    check(results::try_write_string_attribute(group_, name, value), name);
-  }
-  void attribute(const char* name, double value) {
-    check(results::try_write_scalar_attribute(group_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value), name);
-  }
-  void attribute(const char* name, int value) {
-    check(results::try_write_scalar_attribute(group_, name, H5T_STD_I32LE, H5T_NATIVE_INT, &value), name);
-  }
+  void attribute(const char* name, const std::string& value) const { group_.write_fixed_attribute(name, value); }
+  void attribute(const char* name, double value) const { group_.write_attribute(name, value); }
+  void attribute(const char* name, int value) const { group_.write_attribute(name, value); }
 
  private:
-  void check(bool ok, const char* name) const {
-    if (!ok) throw std::runtime_error(fmt::format("cannot write {} in {}", name, file_));
-  }
-  hid_t group_;
-  std::string file_;
+  results::Hdf5Group group_;
 };
-
-results::H5Handle create_group(hid_t parent, const char* name, const std::string& file) {
-  results::H5Handle group(H5Gcreate2(parent, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  if (!group.valid()) throw std::runtime_error(fmt::format("cannot create group {} in {}", name, file));
-  return group;
-}
 
 }  // namespace
 
@@ -71,13 +46,9 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
   std::filesystem::create_directories(directory);
   const std::filesystem::path path = directory / "linear.h5";
   const std::string file = path.string();
-  const std::lock_guard<std::recursive_mutex> lock(results::hdf5_lock());
-  const results::SilentHdf5Errors silent;
-  results::H5Handle h5(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-  if (!h5.valid()) throw std::runtime_error(fmt::format("cannot create {}", file));
 
   // Root: what this is, and the system's coordinates and tangent matrices.
-  GroupWriter root(h5.get(), file);
+  const GroupWriter root(results::Hdf5Group::create_file(file, results::Hdf5Format::kLibraryDefault));
   root.attribute(results::layout::kFormatAttribute, std::string(L::kFormat));
   root.attribute(results::layout::kVersionAttribute, L::kVersion);
   root.attribute(results::layout::kTitleAttribute, title);
@@ -92,8 +63,7 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
 
   // The system modes.
   {
-    const results::H5Handle group = create_group(h5.get(), L::kModes, file);
-    GroupWriter modes(group.get(), file);
+    const GroupWriter modes = root.group(L::kModes);
     modes.vector(L::kFrequencies, summary.modes.frequencies_hz);
     modes.vector(L::kDampingRatios, summary.modes.damping);
     modes.vector(L::kUndamped, summary.modes.undamped_hz);
@@ -104,8 +74,7 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
   // The state-space model.
   {
     const multibody::StateSpace& ss = summary.state_space;
-    const results::H5Handle group = create_group(h5.get(), L::kStateSpace, file);
-    GroupWriter state_space(group.get(), file);
+    const GroupWriter state_space = root.group(L::kStateSpace);
     state_space.matrix(L::kStateMatrix, ss.A);
     state_space.matrix(L::kInputMatrix, ss.B);
     state_space.matrix(L::kOutputMatrix, ss.C);
@@ -116,8 +85,7 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
   }
   // The whole mechanism's mass properties.
   {
-    const results::H5Handle group = create_group(h5.get(), L::kMassProperties, file);
-    GroupWriter mass(group.get(), file);
+    const GroupWriter mass = root.group(L::kMassProperties);
     mass.scalar(L::kTotalMass, summary.mass.mass);
     mass.vector(L::kCenterOfMass, summary.mass.com_W);
     mass.matrix(L::kInertiaAboutCom, summary.mass.inertia_com_W);
@@ -125,8 +93,7 @@ std::filesystem::path write_linear_h5(const multibody::Model& model, const Linea
   // The modes with the reference body held.
   if (summary.cantilevered) {
     const multibody::CantileveredModes& c = *summary.cantilevered;
-    const results::H5Handle group = create_group(h5.get(), L::kCantilevered, file);
-    GroupWriter held(group.get(), file);
+    const GroupWriter held = root.group(L::kCantilevered);
     held.attribute(L::kReferenceBodyAttribute, model.bodies[static_cast<std::size_t>(c.reference_body)].name);
     held.vector(L::kReferencePoint, c.p_WP);
     held.vector(L::kFrequencies, c.modes.frequencies_hz);

@@ -6,9 +6,8 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
-#include "results/h5_reader.h"
-#include "results/link_name.h"
 #include "results/results_layout.h"
+#include "results/run_records.h"
 
 namespace limber::sweep {
 
@@ -18,10 +17,16 @@ namespace layout = results::layout;
 
 constexpr const char* kAxisNames = "xyz";
 
-// Every row of a dataset, row-major.
-std::vector<double> all_rows(const results::H5Reader& file, const std::string& path) {
-  const std::vector<hsize_t> dims = file.dims(path);
-  return file.read<double>(path, H5T_NATIVE_DOUBLE, dims.empty() ? 1 : dims[0]);
+// The items of a ", "-separated list ("R1.z, R3.z").
+std::vector<std::string> split_list(const std::string& with) {
+  std::vector<std::string> equations;
+  std::size_t start = 0;
+  while (start < with.size()) {
+    const std::size_t end = std::min(with.find(", ", start), with.size());
+    equations.push_back(with.substr(start, end - start));
+    start = end + 2;
+  }
+  return equations;
 }
 
 // The unit and kind of a quantity name: "[N]" force, "[N m]" torque, "[m]" deflection.
@@ -37,73 +42,54 @@ std::string without_unit(const std::string& name) { return name.substr(0, name.r
 
 RunSeries read_run_series(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) throw InputError("expected a results file, got none at '" + file.string() + "'");
-  const results::H5Reader root(file, "results file", "");
+  // Poses and series cut to the samples complete in all (a killed run may leave datasets one
+  // row apart: docs/results-format.md).
+  results::Results run = results::read_results_file(file);
+  const results::RunRecords records = results::read_run_records(run);
   RunSeries series;
-  series.status = root.string_attribute("/", layout::kStatusAttribute);
-  series.message = root.string_attribute("/", layout::kMessageAttribute, false);
-  const std::vector<double> time = all_rows(root, layout::kTime);
-  // A killed run may leave datasets one row apart: take the fewest rows (docs/results-format.md).
-  Eigen::Index ns = static_cast<Eigen::Index>(time.size());
-  std::vector<std::pair<std::string, std::vector<double>>> blocks;  // name prefix, ns x 3 row-major
+  series.status = run.status;
+  series.message = run.message;
+  series.time = run.time;
+  const Eigen::Index ns = run.sample_count();
+  // Blocks of three columns: each joint's force and torque (joint frame), each body's deflection.
+  std::vector<std::pair<std::string, const results::RowMatrix3d*>> blocks;
   std::vector<std::string> units;
-  // Groups are listed by link name and shown by name (the link in files older than names).
-  for (const std::string& link : root.members(layout::kJoints)) {
-    const std::string joint = layout::at(layout::kJoints, link);
-    const std::string name = root.string_attribute(joint, results::kNameAttribute, false, link);
-    blocks.emplace_back(name + " force", all_rows(root, layout::at(joint, layout::joint::kForceJoint)));
+  for (const results::JointReactions& joint : records.joints) {
+    blocks.emplace_back(joint.name + " force", &joint.force_joint);
     units.push_back("N");
-    blocks.emplace_back(name + " torque", all_rows(root, layout::at(joint, layout::joint::kTorqueJoint)));
+    blocks.emplace_back(joint.name + " torque", &joint.torque_joint);
     units.push_back("N m");
   }
-  for (const std::string& link : root.members(layout::kBodies)) {
-    const std::string body = layout::at(layout::kBodies, link);
-    const std::string frequencies = layout::at(layout::at(body, layout::body::kModes), layout::modes::kFrequenciesHz);
-    if (root.exists(frequencies)) {
-      for (const double f : all_rows(root, frequencies)) series.f_max_hz = std::max(series.f_max_hz, f);
-    }
-    const std::string deflection = layout::at(body, layout::body::kDeflection);
-    if (!root.exists(deflection)) continue;
-    const std::string name = root.string_attribute(body, results::kNameAttribute, false, link);
-    blocks.emplace_back(name + " deflection", all_rows(root, deflection));
+  for (const results::DeflectionProbe& probe : records.deflections) {
+    blocks.emplace_back(probe.body + " deflection", &probe.values);
     units.push_back("m");
   }
-  // Equations of the redundancy groups, as reaction components.
-  {
-    const std::string redundant = layout::at(layout::kConstraints, layout::constraints::kRedundant);
-    const std::string with = layout::at(layout::kConstraints, layout::constraints::kRedundantWith);
-    std::vector<std::string> equations;
-    if (root.exists(redundant)) equations = root.strings(redundant);
-    if (root.exists(with)) {
-      for (const std::string& list : root.strings(with)) {
-        std::size_t start = 0;
-        while (start < list.size()) {
-          const std::size_t end = std::min(list.find(", ", start), list.size());
-          equations.push_back(list.substr(start, end - start));
-          start = end + 2;
-        }
-      }
-    }
-    for (const std::string& equation : equations) {
-      const std::size_t dot = equation.rfind('.');
-      if (dot == std::string::npos) continue;
-      const std::string joint = equation.substr(0, dot), component = equation.substr(dot + 1);
-      const bool rotation = component.rfind("rot_", 0) == 0;
-      const std::string axis = rotation ? component.substr(4) : component;
-      series.indeterminate.push_back(fmt::format("{} {} {} [{}]", joint, rotation ? "torque" : "force", axis,
-                                                 rotation ? "N m" : "N"));
-    }
+  for (const results::BodyTrack& body : run.bodies) {
+    for (const double f : body.mesh.frequencies_hz) series.f_max_hz = std::max(series.f_max_hz, f);
   }
-  for (const auto& block : blocks) ns = std::min(ns, static_cast<Eigen::Index>(block.second.size() / 3));
-  series.time = Eigen::Map<const Eigen::VectorXd>(time.data(), ns);
+  // Equations of the redundancy groups, as reaction components: the redundant ones, then those
+  // they combine.
+  std::vector<std::string> equations;
+  for (const auto& pair : records.redundant_equations) equations.push_back(pair.first);
+  for (const auto& pair : records.redundant_equations) {
+    const std::vector<std::string> with = split_list(pair.second);
+    equations.insert(equations.end(), with.begin(), with.end());
+  }
+  for (const std::string& equation : equations) {
+    const std::size_t dot = equation.rfind('.');
+    if (dot == std::string::npos) continue;
+    const std::string joint = equation.substr(0, dot), component = equation.substr(dot + 1);
+    const bool rotation = component.rfind("rot_", 0) == 0;
+    const std::string axis = rotation ? component.substr(4) : component;
+    series.indeterminate.push_back(fmt::format("{} {} {} [{}]", joint, rotation ? "torque" : "force", axis,
+                                               rotation ? "N m" : "N"));
+  }
   series.values.resize(ns, 3 * static_cast<Eigen::Index>(blocks.size()));
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     for (int axis = 0; axis < 3; ++axis) {
       series.names.push_back(fmt::format("{} {} [{}]", blocks[b].first, kAxisNames[axis], units[b]));
-      for (Eigen::Index k = 0; k < ns; ++k) {
-        const std::size_t at = 3 * static_cast<std::size_t>(k) + static_cast<std::size_t>(axis);
-        series.values(k, 3 * static_cast<Eigen::Index>(b) + axis) = blocks[b].second[at];
-      }
     }
+    series.values.middleCols(3 * static_cast<Eigen::Index>(b), 3) = *blocks[b].second;
   }
   return series;
 }
@@ -111,7 +97,7 @@ RunSeries read_run_series(const std::filesystem::path& file) {
 std::string read_run_status(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return "";
   try {
-    return results::H5Reader(file, "results file", "").string_attribute("/", layout::kStatusAttribute);
+    return results::read_run_attributes(file).status;
   } catch (const InputError&) {
     return "";
   }

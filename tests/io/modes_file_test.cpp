@@ -245,7 +245,7 @@ TEST(ModesFile, ControlCharactersInNamesAreInputErrors) {
 TEST(ModesFile, ReadingSomethingElseIsAnInputError) {
   EXPECT_THROW(read_modes(scratch_path("does_not_exist.h5")), InputError);
   const std::string path = scratch_path("not_modes.h5");
-  results::H5Group::create_file(path).write_attribute("format", "something-else");
+  results::Hdf5Group::create_file(path).write_attribute("format", "something-else");
   EXPECT_THROW(read_modes(path), InputError);
   std::filesystem::remove(path);
 }

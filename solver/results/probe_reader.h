@@ -1,10 +1,7 @@
-// The acceleration probes and their shock response spectra in a run's results.h5
+// The typed reader of results.h5, the acceleration probes and their shock response spectra
 // (docs/results-format.md, /acceleration_probes and /shock_spectra; the spectra's method:
-// docs/shock-response-spectrum.md), read through limber_results' HDF5 reader at the layout's
-// paths.
+// docs/shock-response-spectrum.md). run_records.h reads them with the other series.
 #pragma once
-
-#include "results/h5_reader.h"
 
 #include <Eigen/Core>
 
@@ -13,7 +10,9 @@
 #include <string>
 #include <vector>
 
-namespace limber::report {
+namespace limber::results {
+
+class H5Reader;
 
 // A probe's absolute acceleration, ground axes [m/s²], ns x 3.
 struct AccelerationProbeTrack {
@@ -40,10 +39,10 @@ struct ShockSpectraData {
 
 // The probes of the file, in name order; each history has its file's rows (the caller cuts
 // them to the complete samples).
-std::vector<AccelerationProbeTrack> read_acceleration_probes(const results::H5Reader& file);
+std::vector<AccelerationProbeTrack> read_acceleration_probes(const H5Reader& file);
 
 // The spectra, or none when the file has no /shock_spectra (no probes, or the run did not
 // write them). A group of another shape is an InputError naming the file.
-std::optional<ShockSpectraData> read_shock_spectra(const results::H5Reader& file);
+std::optional<ShockSpectraData> read_shock_spectra(const H5Reader& file);
 
-}  // namespace limber::report
+}  // namespace limber::results

@@ -1,4 +1,4 @@
-#include "stress_reader.h"
+#include "results/stress_reader.h"
 
 #include <algorithm>
 #include <limits>
@@ -6,9 +6,7 @@
 #include "results/h5_reader.h"
 #include "results/results_layout.h"
 
-namespace limber::render {
-
-namespace layout = results::layout;
+namespace limber::results {
 
 Eigen::Index StressTrack::row_at(double t) const {
   if (time.size() == 0) return -1;
@@ -26,7 +24,7 @@ Eigen::VectorXd StressTrack::element_values(Eigen::Index row, int element_count)
 }
 
 std::vector<std::optional<StressTrack>> read_stress_tracks(const Results& results) {
-  const results::H5Reader r(results.file, "results file", " (run `limber run` first)");
+  const H5Reader r(results.file, "results file", " (run `limber run` first)");
   std::vector<std::optional<StressTrack>> tracks;
   const auto ns = static_cast<hsize_t>(results.sample_count());
   for (const BodyTrack& body : results.bodies) {
@@ -73,4 +71,4 @@ std::vector<std::optional<StressTrack>> read_stress_tracks(const Results& result
   return tracks;
 }
 
-}  // namespace limber::render
+}  // namespace limber::results

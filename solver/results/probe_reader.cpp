@@ -1,28 +1,28 @@
-#include "shock_data.h"
+#include "results/probe_reader.h"
 
+#include "results/h5_reader.h"
 #include "results/link_name.h"
 #include "results/results_layout.h"
 
-namespace limber::report {
+namespace limber::results {
 
 namespace {
 
-namespace layout = results::layout;
-namespace srs = results::layout::shock_spectra;
+namespace srs = layout::shock_spectra;
 
-double double_attribute(const results::H5Reader& file, const std::string& object, const char* name) {
+double double_attribute(const H5Reader& file, const std::string& object, const char* name) {
   return file.doubles_attribute(object, name, 1)[0];
 }
 
 }  // namespace
 
-std::vector<AccelerationProbeTrack> read_acceleration_probes(const results::H5Reader& file) {
+std::vector<AccelerationProbeTrack> read_acceleration_probes(const H5Reader& file) {
   std::vector<AccelerationProbeTrack> probes;
   for (const std::string& link : file.members(layout::kAccelerationProbes)) {
     const std::string group = layout::at(layout::kAccelerationProbes, link);
     const std::string path = layout::at(group, layout::acceleration_probe::kAcceleration);
     AccelerationProbeTrack probe;
-    probe.name = file.string_attribute(group, results::kNameAttribute, false, link);
+    probe.name = file.string_attribute(group, kNameAttribute, false, link);
     probe.body = file.string_attribute(group, layout::acceleration_probe::kBodyAttribute, false);
     for (const auto& [key, value] : file.attribute_texts(group)) {
       if (key == layout::acceleration_probe::kNodeAttribute) probe.node = std::stoi(value);
@@ -36,7 +36,7 @@ std::vector<AccelerationProbeTrack> read_acceleration_probes(const results::H5Re
   return probes;
 }
 
-std::optional<ShockSpectraData> read_shock_spectra(const results::H5Reader& file) {
+std::optional<ShockSpectraData> read_shock_spectra(const H5Reader& file) {
   if (!file.exists(layout::kShockSpectra)) return std::nullopt;
   const std::string g = layout::kShockSpectra;
   ShockSpectraData data;
@@ -63,7 +63,7 @@ std::optional<ShockSpectraData> read_shock_spectra(const results::H5Reader& file
       file.fail("a [" + std::to_string(nw) + ", 3, " + std::to_string(nf) + "] dataset " + path, "another shape");
     }
     const std::vector<double> values = file.read<double>(path, H5T_NATIVE_DOUBLE, nw);
-    ProbeSpectrumData probe{file.string_attribute(group, results::kNameAttribute, false, link), {}};
+    ProbeSpectrumData probe{file.string_attribute(group, kNameAttribute, false, link), {}};
     for (hsize_t w = 0; w < nw; ++w) {
       std::array<Eigen::VectorXd, 3> axes;
       for (hsize_t a = 0; a < 3; ++a) {
@@ -76,4 +76,4 @@ std::optional<ShockSpectraData> read_shock_spectra(const results::H5Reader& file
   return data;
 }
 
-}  // namespace limber::report
+}  // namespace limber::results
