@@ -118,9 +118,6 @@ int linearize_case(const LinearizeOptions& options) {
   settings.zero_threshold_hz = options.zero_hz;
   settings.inputs = io::linear_inputs(input.mechanism->linearize, model);
   settings.outputs = io::linear_outputs(input.mechanism->linearize, model);
-  if (options.at_given && options.statics) {
-    throw InputError("expected one of --at and --statics, got both");
-  }
   const run::LinearizeSummary s =
       options.at_given ? run::linearize_at(model, mechanism.assembly, input.mechanism->run, options.at, settings)
                         : run::linearize_mechanism(model, mechanism.assembly, settings);
@@ -143,7 +140,9 @@ int linearize_case(const LinearizeOptions& options) {
   }
 
   fmt::print(text, "about the {} at t = {:g} s: {} coordinates, {} free motions, {:.3f} s wall\n",
-             s.at >= 0.0 ? "state the run reaches" : s.statics ? "static equilibrium" : "assembled state", s.point.t, model.nv, s.free_motions, s.wall_seconds);
+             s.at >= 0.0 ? (s.statics ? "static equilibrium from the state the run reaches" : "state the run reaches")
+                         : s.statics ? "static equilibrium" : "assembled state",
+             s.point.t, model.nv, s.free_motions, s.wall_seconds);
   if (s.at >= 0.0) {
     // Engaged (a latch locked, a stop in contact) or seated (a locked latch, its damping in full).
     const auto seated = std::count(s.point.engaged.begin(), s.point.engaged.end(), multibody::kLatchSeated);
@@ -212,7 +211,9 @@ Command add_linearize_command(CLI::App& app) {
       "then the quadratic eigenproblem as a first-order problem (docs/linearize.md). Drivers are\n"
       "held; latches act in their current mode. Rigid-body modes are reported as zero frequencies.\n"
       "About the assembled start at t = 0 (default), the static equilibrium (--statics) or the\n"
-      "state a run of the case reaches at T (--at T: hold-downs released, latches as switched).\n"
+      "state a run of the case reaches at T (--at T: hold-downs released, latches as switched;\n"
+      "with --statics too, the static equilibrium reached from that state: a deployed spacecraft\n"
+      "at rest, which a run still ringing at T is not).\n"
       "The state-space model A, B, C, D has the inputs and outputs of the case's `linearize`\n"
       "section (forces, torques at markers, RSDA actuator torques, driver efforts with the driver\n"
       "released; marker motions, joint reactions).\n"
@@ -228,7 +229,8 @@ Command add_linearize_command(CLI::App& app) {
   cli->add_option("case", options->case_file, "Case file (YAML, docs/case-format.md)")->required();
   cli->add_option("-o,--output", options->output_dir,
                   "Output directory, created when missing (default: out/<case file stem>_linear)");
-  cli->add_flag("--statics", options->statics, "Linearize about the static equilibrium at t = 0 (docs/statics.md)");
+  cli->add_flag("--statics", options->statics, "Linearize about the static equilibrium at t = 0 (docs/statics.md), or with --at the one "
+                "reached from the run's state at T");
   CLI::Option* at = cli->add_option("--at", options->at,
                   "Linearize about the state a run of the case reaches at this time [s] (0 < T <= run.t_end; "
                   "the case's run settings, no results.h5)");

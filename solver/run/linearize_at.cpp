@@ -9,6 +9,7 @@
 #include "multibody/constraints.h"
 #include "multibody/hinge_limit.h"
 #include "multibody/redundancy.h"
+#include "multibody/statics.h"
 
 namespace limber::run {
 
@@ -70,6 +71,21 @@ LinearizeSummary linearize_at(const multibody::Model& model, const multibody::As
   const multibody::ConstraintPartition partition = multibody::analyse_redundancy(
       model, point, ws, multibody::kRedundancyThreshold, {}, multibody::rows_released_by(model, point.t));
   summary.start.partition = partition;
+  // With `statics`: the static equilibrium reached from there, at rest, the hinges in the same
+  // modes. A run still ringing at T is not an equilibrium (v̇0 ≠ 0), and about it the rigid
+  // modes take a spurious stiffness from ∂(M v̇0)/∂ξ and the responses a first-order error.
+  if (settings.statics) {
+    multibody::State still = point;
+    still.v.setZero();
+    summary.statics = multibody::solve_statics(model, partition, still);
+    if (summary.statics->status != multibody::StaticsStatus::kOk) {
+      summary.failure = "statics";
+      summary.message = fmt::format("statics from the run's state at t = {:g} s: {}", t_at, summary.statics->message);
+      return finish(false);
+    }
+    point = summary.statics->state;
+    point.engaged = engaged;
+  }
   return finish(linearize_about(model, partition, point, settings, summary));
 }
 

@@ -105,7 +105,7 @@ bool linearize_about(const multibody::Model& model, const multibody::ConstraintP
 }
 
 const char* linearization_point_kind(const LinearizeSummary& summary) {
-  return summary.at >= 0.0 ? "run" : summary.statics ? "statics" : "assembly";
+  return summary.statics ? "statics" : summary.at >= 0.0 ? "run" : "assembly";
 }
 
 std::vector<std::string> coordinate_names(const multibody::Model& model) {

@@ -59,7 +59,8 @@ LinearizeSummary linearize_mechanism(const multibody::Model& model, const multib
 bool linearize_about(const multibody::Model& model, const multibody::ConstraintPartition& partition,
                      const multibody::State& point, const LinearizeSettings& settings, LinearizeSummary& summary);
 
-// "assembly", "statics" or "run" (--at): what the summary was linearized about.
+// "assembly", "statics" (at t = 0, or from the run's state with --at T --statics) or "run"
+// (--at): what the summary was linearized about.
 const char* linearization_point_kind(const LinearizeSummary& summary);
 
 // "bus.vx", "bus.wz", "panel.eta3": the name of each velocity coordinate ξ (nv).

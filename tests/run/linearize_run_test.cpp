@@ -18,6 +18,7 @@
 #include "io/mechanism_builder.h"
 #include "../multibody/test_models.h"
 #include "multibody/model_builder.h"
+#include "multibody/rotation.h"
 #include "run/linearize_at.h"
 #include "run/linearize_run.h"
 
@@ -165,6 +166,51 @@ TEST(LinearizeRun, AtTimeTLinearizesAboutTheStateTheRunReaches) {
   // Beyond the run, or not after its start: bad input.
   EXPECT_THROW(linearize_at(model, {}, run, 12.5, {}), InputError);
   EXPECT_THROW(linearize_at(model, {}, run, 0.0, {}), InputError);
+}
+
+// The same pendulum at T = 1 s, still swinging (≈ 0.1 rad): about that state in motion the
+// linearization is indicative only (M v̇0 ≠ 0 and the velocity terms frozen at one instant);
+// with statics (--at T --statics) it is about the hanging equilibrium reached from there, the
+// bob straight below the pivot, and the closed form holds again. Tolerance 1e-8 as about the
+// equilibrium at t = 0 (Linearization.PendulumAboutItsHangingEquilibrium...): statics converges
+// to 1e-9 of the forces, the differences are exact to 1e-10.
+TEST(LinearizeRun, AtTimeTWithStaticsLinearizesAboutTheEquilibriumReachedFromThere) {
+  using multibody::testing::body_spec;
+  const double m = 2.0, l = 0.5, g = 9.81, Jy = 0.2, J = Jy + m * l * l;
+  const double w = std::sqrt(m * g * l / J), c = 2.0 * 0.2 * J * w;
+  multibody::ModelBuilder builder;
+  builder.set_gravity(Eigen::Vector3d(0, 0, -g));
+  builder.add_rigid_body(body_spec("bob", m, Eigen::Vector3d(0.1, Jy, 0.1), Eigen::Vector3d::Zero(),
+                                   multibody::axis_angle_matrix(Eigen::Vector3d::UnitY(), 0.3),
+                                   Eigen::Vector3d(0, 0, -l)));
+  const Eigen::Matrix3d R_y = multibody::frame_from_axes(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX());
+  builder.add_marker_at("P.ground", "ground", Eigen::Vector3d::Zero(), R_y);
+  builder.add_marker_at("P.bob", "bob", Eigen::Vector3d::Zero(), R_y);
+  builder.add_joint("P", multibody::JointType::kRevolute, "P.ground", "P.bob");
+  builder.add_rsda({"damper", "P.ground", "P.bob", 0.0, c, 0.0, {}, false, {}});
+  const multibody::Model model = builder.build();
+  io::RunSettings run;
+  run.t_end = 2.0;
+  run.sample_interval = 0.5;
+  run.integrator.rtol = 1e-8;
+  run.integrator.atol = 1e-10;
+  LinearizeSettings settings;
+  settings.statics = true;
+  const LinearizeSummary s = linearize_at(model, {}, run, 1.0, settings);
+  ASSERT_TRUE(s.ok) << s.message;
+  ASSERT_TRUE(s.statics.has_value());
+  EXPECT_STREQ(linearization_point_kind(s), "statics");
+  EXPECT_DOUBLE_EQ(s.at, 1.0);
+  EXPECT_LT(s.point.v.norm(), 1e-15);
+  // The bob hangs straight below the pivot: its orientation is the identity.
+  EXPECT_LT((multibody::rotation_matrix(s.point.q.segment<4>(3)) - Eigen::Matrix3d::Identity()).norm(), 1e-9);
+  ASSERT_EQ(s.free_motions, 1);
+  EXPECT_NEAR(s.modes.frequencies_hz(0) / (w / (2.0 * std::numbers::pi)), 1.0, 1e-8);
+  EXPECT_NEAR(s.modes.damping(0) / 0.2, 1.0, 1e-8);
+  // The snapshot in motion at the same instant is off by far more.
+  const LinearizeSummary moving = linearize_at(model, {}, run, 1.0, {});
+  ASSERT_TRUE(moving.ok) << moving.message;
+  EXPECT_GT(std::abs(moving.modes.frequencies_hz(0) / (w / (2.0 * std::numbers::pi)) - 1.0), 1e-4);
 }
 
 // A disc on a hinge about z driven by a preloaded spring (k_s, free angle 3 rad) into a latch at

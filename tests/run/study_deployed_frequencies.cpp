@@ -34,9 +34,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdlib>
-#include <fstream>
 #include <iterator>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -45,12 +43,11 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "io/case_reader.h"
-#include "io/case_reduction.h"
-#include "io/mechanism_builder.h"
 #include "multibody/body.h"
 #include "run/linearize_at.h"
 #include "run/run_driver.h"
 #include "matrix_pencil.h"
+#include "satellite_study.h"
 
 namespace {
 
@@ -60,38 +57,14 @@ constexpr double kLinearizeAt = 6.0;     // [s]: the latches locked, as docs/lin
 constexpr double kSignalInterval = 2e-3;  // [s]: every second 1 ms sample
 double kRecord = 30.0;                    // [s] from kLinearizeAt: T_END − 6
 bool kFallingWindow = false;              // the falling half-cosine instead of Hann
-constexpr const char* kPanels[] = {"panel_R1", "panel_R2", "panel_L1", "panel_L2"};
+const auto& kPanels = study::kSatellitePanels;
 
-// The case text with `what` inserted before `before` (which must be there).
-std::string inserted(std::string text, const std::string& before, const std::string& what) {
-  const std::size_t at = text.find(before);
-  if (at == std::string::npos) throw std::runtime_error("not in the case: " + before);
-  return text.insert(at, what);
-}
-
-std::string edited_case(const std::string& path, double t_end, bool sharp, double amplitude = 1.0,
-                        const std::string& step = "") {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  std::string edited = inserted(text.str(), "joints:\n", "markers:\n  bus_center: {body: bus}\n\n");
-  edited = inserted(edited, "  spring_R3:",
-                    fmt::format("  impulse: {{type: point_load, marker: bus_center, force: [0, 0, {3}], torque: [{4}, 0, 0],\n"
-                                "            scale: {{type: table, x: [{0}, {1}, {2}], y: [0, 1, 0]}}}}\n",
-                                kLinearizeAt, kLinearizeAt + 0.01, kLinearizeAt + 0.02, 20.0 * amplitude,
-                                2.0 * amplitude));
-  for (std::size_t depth = edited.find("damping_depth: 1.0e-3"); sharp && depth != std::string::npos;
-       depth = edited.find("damping_depth: 1.0e-3")) {
-    edited.replace(depth, 21, "damping_depth: 0");
-  }
-  if (!step.empty()) {
-    const std::size_t at_step = edited.find("step: 5.0e-4");
-    if (at_step == std::string::npos) throw std::runtime_error("no step: 5.0e-4 in the case");
-    edited.replace(at_step, 12, "step: " + step);
-  }
-  const std::size_t at = edited.find("t_end: 6.0");
-  if (at == std::string::npos) throw std::runtime_error("no t_end: 6.0 in the case");
-  return edited.replace(at, 10, fmt::format("t_end: {}", t_end));
+std::string edited_case(double t_end, bool sharp, double amplitude = 1.0, const std::string& step = "") {
+  const std::string impulse = fmt::format(
+      "  impulse: {{type: point_load, marker: bus_center, force: [0, 0, {3}], torque: [{4}, 0, 0],\n"
+      "            scale: {{type: table, x: [{0}, {1}, {2}], y: [0, 1, 0]}}}}\n",
+      kLinearizeAt, kLinearizeAt + 0.01, kLinearizeAt + 0.02, 20.0 * amplitude, 2.0 * amplitude);
+  return study::satellite_case_text(t_end, impulse, step, sharp);
 }
 
 // Local maxima of `power` (frequencies `f`), each refined by a parabola through log power.
@@ -134,43 +107,6 @@ std::vector<double> summed_spectrum_peaks(std::vector<std::vector<double>> chann
   return spectrum_peaks(f, power, 1e-6 * largest);
 }
 
-// The nonlinear record's channels from the linear model's state x: per panel its rotation
-// relative to the bus to first order, R_rel0 δθ_panel − δθ_bus (bus axes; ξ's rotations are in
-// body axes), and its modal coordinates (rows of ξ = Z y).
-class LinearChannels {
- public:
-  LinearChannels(const run::LinearizeSummary& linear, const multibody::Model& model)
-      : linear_(linear), model_(model), bus_(model.find_body("bus")), R_bus_(orientation(bus_)) {}
-
-  std::vector<double> operator()(const Eigen::VectorXd& x) const {
-    const Eigen::MatrixXd& Z = linear_.state_space.Z;
-    const Eigen::VectorXd xi = Z * x.head(Z.cols());
-    const multibody::Body& bus = model_.bodies[static_cast<std::size_t>(bus_)];
-    std::vector<double> values;
-    for (const char* name : kPanels) {
-      const int p = model_.find_body(name);
-      const multibody::Body& panel = model_.bodies[static_cast<std::size_t>(p)];
-      const Eigen::Vector3d turn = R_bus_.transpose() * orientation(p) * xi.segment<3>(panel.v_offset + 3) -
-                                   xi.segment<3>(bus.v_offset + 3);
-      for (int k = 0; k < 3; ++k) values.push_back(turn(k));
-      for (int k = 6; k < panel.nv; ++k) values.push_back(xi(panel.v_offset + k));
-    }
-    return values;
-  }
-
- private:
-  Eigen::Matrix3d orientation(int body) const {
-    multibody::FrameKinematics X;
-    multibody::body_frame_kinematics(model_, body, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(),
-                                     linear_.point.q, nullptr, X);
-    return X.R_WF;
-  }
-  const run::LinearizeSummary& linear_;
-  const multibody::Model& model_;
-  int bus_;
-  Eigen::Matrix3d R_bus_;
-};
-
 void append(std::vector<std::vector<double>>& channels, const std::vector<double>& values) {
   if (channels.empty()) channels.resize(values.size());
   for (std::size_t c = 0; c < values.size(); ++c) channels[c].push_back(values[c]);
@@ -188,7 +124,7 @@ std::vector<std::vector<double>> linear_response(const run::LinearizeSummary& li
   impulse(3) = 0.02;  // torque.x
   Eigen::VectorXd x = ss.B * impulse;
   const Eigen::MatrixXd step = (ss.A * kSignalInterval).exp();
-  const LinearChannels channels_of(linear, model);
+  const study::LinearPanelChannels channels_of(linear, model);
   std::vector<std::vector<double>> channels;
   for (int i = 0; i < record_samples(); ++i) {
     append(channels, channels_of(x));
@@ -214,7 +150,7 @@ std::vector<std::vector<double>> linear_triangle_response(const run::LinearizeSu
   peak(3) = 2.0 * amplitude;   // torque.x [N m]
   const Eigen::MatrixXd B_peak = ss.B * peak;
   const auto triangle = [&](double t) { return std::max(0.0, 1.0 - std::abs(t - 0.5 * duration) / (0.5 * duration)); };
-  const LinearChannels channels_of(linear, model);
+  const study::LinearPanelChannels channels_of(linear, model);
   std::vector<std::vector<double>> channels;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(ss.A.rows());
   for (int i = 0; i < record_samples(); ++i) {
@@ -261,15 +197,11 @@ std::vector<std::vector<double>> run_channels(const io::Mechanism& mechanism, ru
   return channels;
 }
 
-io::Mechanism built(const io::Case& input) {
-  return io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
-}
-
 // Option pencil: the impulse's own response (the run less the run without the impulse) against
 // the linear model's response to the same triangle, sample by sample and by their poles.
 int pencil_study(const io::Mechanism& mechanism, const io::Case& baseline_input, const run::LinearizeSummary& linear,
                  double f_max, double amplitude, double pencil_record, double floor, double min_weight) {
-  const io::Mechanism baseline = built(baseline_input);
+  const io::Mechanism baseline = study::built_mechanism(baseline_input);
   run::RunSummary ran, ran_baseline;
   std::vector<std::vector<double>> response = run_channels(mechanism, ran);
   const std::vector<std::vector<double>> rest = run_channels(baseline, ran_baseline);
@@ -351,7 +283,7 @@ int main(int argc, char** argv) {
   const double t_end = argc > 1 ? std::atof(argv[1]) : 36.0;
   kRecord = t_end - kLinearizeAt;
   const double f_max = argc > 2 ? std::atof(argv[2]) : 30.0;
-  const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
+  const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";  // for messages
   bool sharp = false, linear_only = false, pencil = false;
   double amplitude = 1.0, pencil_record = 1.5, floor = 1e-7, min_weight = 1e-3;
   std::string step;
@@ -367,8 +299,8 @@ int main(int argc, char** argv) {
     if (option.rfind("floor=", 0) == 0) floor = std::atof(option.c_str() + 6);
     if (option.rfind("weight=", 0) == 0) min_weight = std::atof(option.c_str() + 7);
   }
-  const io::Case input = io::read_case_text(edited_case(path, t_end, sharp, amplitude, step), path);
-  const io::Mechanism mechanism = built(input);
+  const io::Case input = io::read_case_text(edited_case(t_end, sharp, amplitude, step), path);
+  const io::Mechanism mechanism = study::built_mechanism(input);
   const multibody::Model& model = mechanism.model;
 
   // The linearized frequencies at 6 s (the impulse starts there: zero at the point).
@@ -384,7 +316,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (pencil) {
-    const io::Case baseline = io::read_case_text(edited_case(path, t_end, sharp, 0.0, step), path);
+    const io::Case baseline = io::read_case_text(edited_case(t_end, sharp, 0.0, step), path);
     return pencil_study(mechanism, baseline, linear, f_max, amplitude, pencil_record, floor, min_weight);
   }
 
