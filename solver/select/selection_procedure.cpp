@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "results/directory_lock.h"
 #include "results/file_names.h"
+#include "select/job_queue.h"
 #include "select/selection_files.h"
 #include "select/windowed_twin.h"
 
@@ -49,45 +50,36 @@ std::string stretch_folder(const std::string& reference, std::size_t k, const Tw
   return folder_name(reference) + "_half_step/" + folder_name(fmt::format("{}_{}", k + 1, stretch.windows.front()));
 }
 
-// The reference's event windows re-run at half its step, `jobs` at a time, each from the
-// reference's state before its event (windowed_twin.h). `first` numbers them for the hooks.
-HalfStepRuns run_half_step(const SelectionRequest& request, const SelectionHooks& hooks, const CandidateRun& reference,
-                           std::size_t first) {
-  HalfStepRuns half;
-  half.stretches = twin_stretches(reference.summary.peaks, reference.window_restarts, reference.summary.t_end);
+// Stretch k of the reference's windows re-run at half its step from the reference's state
+// before its event (windowed_twin.h); `number` and `count` for the hooks.
+CandidateRun run_stretch(const SelectionRequest& request, const SelectionHooks& hooks, const CandidateRun& reference,
+                         const TwinStretch& stretch, std::size_t k, std::size_t number, std::size_t count) {
+  const std::string folder = stretch_folder(reference.candidate.name, k, stretch);
+  const std::string description = fmt::format("{}, windows {} re-run from t = {:.6g} s", reference.candidate.description,
+                                              fmt::join(stretch.windows, ", "), stretch.t_start());
+  if (hooks.on_set_start) hooks.on_set_start({number, count, folder, description, 0.5});
   StepPolicy policy = request.policy;
   policy.scale = 0.5;
-  std::vector<std::optional<CandidateRun>> done(half.stretches.size());
-  const std::size_t count = first + half.stretches.size() - 1;
-  run_parallel(half.stretches.size(), request.jobs, [&](std::size_t k) {
-    const TwinStretch& stretch = half.stretches[k];
-    const std::string folder = stretch_folder(reference.candidate.name, k, stretch);
-    const std::string description = fmt::format("{}, windows {} re-run from t = {:.6g} s", reference.candidate.description,
-                                                fmt::join(stretch.windows, ", "), stretch.t_start());
-    if (hooks.on_set_start) hooks.on_set_start({first + k, count, folder, description, 0.5});
-    CandidateRun run;
-    run.candidate = reference.candidate;
-    run.input = reference.input;
-    run.modes = reference.modes;
-    run.directory = request.root / results::kRunsFolder / folder;
-    io::RunSettings settings = candidate_settings(reference.mechanism, request.adjust, policy, run.step);
-    settings.t_end = stretch.t_end;
-    const bool alone = request.jobs <= 1 || half.stretches.size() == 1;
-    run_mechanism_recorded(*reference.input, reference.mechanism, settings, reference.candidate.name + " at half its step",
-                           stretch.restart ? &*stretch.restart : nullptr,
-                           [&](const integrate::Sample& sample) {
-                             if (hooks.on_sample) hooks.on_sample(sample, alone);
-                           },
-                           run);
-    done[k] = std::move(run);
-    if (hooks.on_set_done) hooks.on_set_done(*done[k], folder);
-  });
-  for (std::optional<CandidateRun>& run : done) half.runs.push_back(std::move(*run));
-  return half;
+  CandidateRun run;
+  run.candidate = reference.candidate;
+  run.input = reference.input;
+  run.modes = reference.modes;
+  run.directory = request.root / results::kRunsFolder / folder;
+  io::RunSettings settings = candidate_settings(reference.mechanism, request.adjust, policy, run.step);
+  settings.t_end = stretch.t_end;
+  run_mechanism_recorded(*reference.input, reference.mechanism, settings, reference.candidate.name + " at half its step",
+                         stretch.restart ? &*stretch.restart : nullptr,
+                         [&](const integrate::Sample& sample) {
+                           if (hooks.on_sample) hooks.on_sample(sample, request.jobs <= 1);
+                         },
+                         run);
+  if (hooks.on_set_done) hooks.on_set_done(run, folder);
+  return run;
 }
 
-// The sets after `normal` (candidates[0]), `jobs` at a time, the longest (the reference) first;
-// appended to `runs` in the candidates' order. Then the reference's windows at half its step.
+// The sets after `normal` (candidates[0]), `jobs` at a time, the longest (the reference) first,
+// appended to `runs` in the candidates' order; and as soon as the reference has run (and passed
+// its own accuracy check), its event windows at half its step, ahead of the sets still waiting.
 HalfStepRuns run_sets(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
                       const SelectionHooks& hooks, const std::vector<ModeSetCandidate>& candidates,
                       std::vector<CandidateRun>& runs) {
@@ -96,21 +88,39 @@ HalfStepRuns run_sets(const std::shared_ptr<const io::Case>& input, const Select
     if (candidates[k].reference) order.insert(order.begin(), k);
     else order.push_back(k);
   }
-  // The count counts the reference's check as one set until its windows are known.
   std::vector<std::optional<CandidateRun>> done(order.size());
-  run_parallel(order.size(), request.jobs, [&](std::size_t j) {
-    const ModeSetCandidate& candidate = candidates[order[j]];
-    if (hooks.on_set_start) hooks.on_set_start({j + 2, order.size() + 2, candidate.name, candidate.description, 1.0});
-    done[j] = run_set(input, request, hooks, candidate, candidate.name, request.jobs <= 1);
-    if (hooks.on_set_done) hooks.on_set_done(*done[j], candidate.name);
-  });
+  HalfStepRuns half;
+  std::vector<std::optional<CandidateRun>> half_done;
+  // The stretches go to the front of the queue, the first to run first.
+  const auto queue_half_step = [&](JobQueue& queue, const CandidateRun& reference) {
+    half.stretches = twin_stretches(reference.summary.peaks, reference.window_restarts, reference.summary.t_end);
+    half_done.resize(half.stretches.size());
+    const std::size_t first = order.size() + 2, count = order.size() + 1 + half.stretches.size();
+    const CandidateRun* ran = &reference;  // in `done`, which outlives the queue
+    for (std::size_t k = half.stretches.size(); k-- > 0;) {
+      queue.push_front([&, ran, k, first, count](JobQueue&) {
+        half_done[k] = run_stretch(request, hooks, *ran, half.stretches[k], k, first + k, count);
+      });
+    }
+  };
+  // The count counts the reference's check as one set until its windows are known.
+  JobQueue queue;
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    queue.push_back([&, j](JobQueue& running) {
+      const ModeSetCandidate& candidate = candidates[order[j]];
+      if (hooks.on_set_start) hooks.on_set_start({j + 2, order.size() + 2, candidate.name, candidate.description, 1.0});
+      done[j] = run_set(input, request, hooks, candidate, candidate.name, request.jobs <= 1);
+      if (hooks.on_set_done) hooks.on_set_done(*done[j], candidate.name);
+      if (candidate.reference && done[j]->summary.accurate()) queue_half_step(running, *done[j]);
+    });
+  }
+  queue.run(std::max(1, std::min(request.jobs, static_cast<int>(order.size()))));
+  for (std::optional<CandidateRun>& run : half_done) half.runs.push_back(std::move(*run));
   for (std::size_t k = 1; k < candidates.size(); ++k) {
     const auto j = static_cast<std::size_t>(std::find(order.begin(), order.end(), k) - order.begin());
     runs.push_back(std::move(*done[j]));
   }
-  const CandidateRun& reference = runs.back();
-  if (!reference.summary.accurate()) return {};
-  return run_half_step(request, hooks, reference, order.size() + 2);
+  return half;
 }
 
 // Why a reference is refused, and what to change.

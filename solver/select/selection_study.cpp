@@ -1,17 +1,14 @@
 #include "select/selection_study.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "results/results_writer.h"
+#include "select/job_queue.h"
 #include "select/series_error.h"
 
 namespace limber::select {
@@ -125,33 +122,9 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
 }
 
 void run_parallel(std::size_t count, int workers, const std::function<void(std::size_t)>& job) {
-  if (workers <= 1 || count <= 1) {
-    for (std::size_t k = 0; k < count; ++k) job(k);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::mutex failure_mutex;
-  std::exception_ptr failure;
-  const auto worker = [&] {
-    for (;;) {
-      {
-        const std::lock_guard lock(failure_mutex);
-        if (failure) return;
-      }
-      const std::size_t k = next++;
-      if (k >= count) return;
-      try {
-        job(k);
-      } catch (...) {
-        const std::lock_guard lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int w = 0; w < std::min<int>(workers, static_cast<int>(count)); ++w) threads.emplace_back(worker);
-  for (std::thread& thread : threads) thread.join();
-  if (failure) std::rethrow_exception(failure);
+  JobQueue queue;
+  for (std::size_t k = 0; k < count; ++k) queue.push_back([&job, k](JobQueue&) { job(k); });
+  queue.run(static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(workers, 1)), std::max<std::size_t>(count, 1))));
 }
 
 std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& ranking,
