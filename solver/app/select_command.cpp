@@ -125,8 +125,9 @@ void print_reference_check(std::FILE* out, const select::ReferenceCheck& check) 
                     "convergence in the step is NOT checked\n", check.half_step, check.half_step_status);
     return;
   }
-  fmt::print(out, "\nreference check: at half its step ({:.3g} s instead of {:.3g} s) its event peaks change by up "
-                  "to {} ({}): {}\n", check.half_step, check.step, percent(check.change.error), check.change.worst,
+  fmt::print(out, "\nreference check: at half its step ({:.3g} s instead of {:.3g} s; its event windows re-run in {} "
+                  "stretch(es) from its own state) its event peaks change by up to {} ({}): {}\n", check.half_step,
+             check.step, check.windows_rerun, percent(check.change.error), check.change.worst,
              check.converged ? fmt::format("converged in the step (< {:g} %)", 100 * select::kConvergedChange)
                              : fmt::format("NOT converged in the step (>= {:g} %): differences to it below that "
                                            "are not measured", 100 * select::kConvergedChange));
@@ -255,9 +256,10 @@ Command add_select_command(CLI::App& app) {
       "--max-refinement times shorter than the case's (longer: marked 'not resolved'); with\n"
       "generalized-alpha only in the event windows (--peak-window after the start and after\n"
       "every event), the case's step between them (--whole-run: throughout);\n"
-      "--keep-step runs every set at the case's step. Sets run --jobs at a time, with the\n"
-      "reference a second time at half its step: a reference whose own accuracy check fails is\n"
-      "refused, and the change of its event peaks at half the step is reported (< 3 %: converged).\n"
+      "--keep-step runs every set at the case's step. Sets run --jobs at a time, the reference\n"
+      "first: a reference whose own accuracy check fails is refused; its event windows run again\n"
+      "at half its step, each from the reference's own state before its event, and the change of\n"
+      "its event peaks is reported (< 3 %: converged).\n"
       "Errors: event peaks (per joint, the largest force and torque at every step in --peak-window\n"
       "after the start and each latch engagement, against the reference's) and, sample by sample,\n"
       "the kept reactions and the deflection probes. Without --target the answer is 'kept' (the\n"
@@ -321,7 +323,7 @@ Command add_select_command(CLI::App& app) {
                 "\"error_event\", \"worst_event\", \"error_peak\", \"error_rms\", \"worst_quantity\", "
                 "\"event_peaks\": [{\"window\", \"joint\", \"start\", \"reference_start\", \"force\", "
                 "\"reference_force\", \"force_error\", \"torque\", \"reference_torque\", \"torque_error\"}], "
-                "\"directory\"}], \"reference_check\": {\"step\", \"half_step\", \"half_step_status\", "
+                "\"directory\"}], \"reference_check\": {\"step\", \"half_step\", \"half_step_status\", \"windows_rerun\", "
                 "\"peak_change\", \"worst\", \"threshold\", \"converged\"}, \"chosen\", \"target\", \"target_met\", "
                 "\"norm\", \"steps_per_period_needed\", \"fragment\", \"directory\"}; the text goes to stderr");
   return {cli, [options] { return select_case(*options); }};

@@ -73,7 +73,7 @@ results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const i
 
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
-                         const io::RunSettings& settings, const RunHooks& hooks) {
+                         const io::RunSettings& settings, const RunHooks& hooks, const RestartPoint* restart) {
   const auto wall_start = std::chrono::steady_clock::now();
   check_settings(settings);
   check_nonlinear_bodies(model, settings);
@@ -114,9 +114,14 @@ RunSummary run_mechanism(const multibody::Model& model,
         fmt::join(start.lost_at_singular_start, ", "));
     return finish(results::RunStatus::kFailed);
   }
-  // The static equilibrium at t = 0, every joint holding (hold-downs included), when asked.
+  // The static equilibrium at t = 0, every joint holding (hold-downs included), when asked;
+  // or the earlier run's state to restart from.
   multibody::State initial = start.state;
-  if (settings.start == io::StartKind::kStatics) {
+  if (restart) {
+    initial.t = restart->t;
+    initial.q = restart->q;
+    initial.v = restart->v;
+  } else if (settings.start == io::StartKind::kStatics) {
     summary.statics = multibody::solve_statics(model, start.partition, start.state);
     if (summary.statics->status != multibody::StaticsStatus::kOk) {
       summary.failure = "statics";
@@ -140,6 +145,10 @@ RunSummary run_mechanism(const multibody::Model& model,
 
   // Integration on the independent rows, energies accumulated by the integrator.
   multibody::MultibodySystem system(model, start.partition);
+  // A restart: the earlier run's released joints and hinge modes, whose switches are not
+  // reported again.
+  if (restart) restore_discrete_state(system, *restart);
+  const std::size_t first_event = system.events().size();
   // A motion whose velocity jumps demands impulses: say where, once.
   for (const multibody::Driver& driver : model.drivers) {
     std::vector<double> jumps;
@@ -173,7 +182,7 @@ RunSummary run_mechanism(const multibody::Model& model,
     if (std::holds_alternative<multibody::HingeLimit>(model.forces[k])) limit_index[k] = limits++;
   }
   const auto report_events = [&] {
-    for (std::size_t e = summary.events.size(); e < system.events().size(); ++e) {
+    for (std::size_t e = first_event + summary.events.size(); e < system.events().size(); ++e) {
       const multibody::HingeEvent& event = system.events()[e];
       summary.events.push_back(event);
       if (hooks.writer) {
@@ -186,14 +195,27 @@ RunSummary run_mechanism(const multibody::Model& model,
   // Event peaks at every integrator step when asked for (event_peaks.h), in windows from the
   // start (t = 0, where hold-downs released at 0 let go), from each later release
   // (releases.apply below) and from each latch engagement as the integrator locates it.
+  // Each window opened after the start goes to on_window with the last restart point before it.
   std::optional<EventPeakTracker> peaks;
-  std::size_t events_seen = 0;
+  std::optional<RestartPointRecorder> restart_points;
+  const auto report_window = [&] {
+    if (restart_points && restart_points->last()) {
+      hooks.on_window({peaks->peaks().windows.back().start, *restart_points->last()});
+    }
+  };
+  std::size_t events_seen = first_event;
   if (settings.peak_window > 0.0) {
     peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
-    peaks->open({0.0, "start"});
+    if (!restart) peaks->open({0.0, "start"});
+    if (hooks.on_window) restart_points.emplace(system.engaged());
     options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd&,
                           const Eigen::VectorXd& lambda) {
-      for (; events_seen < system.events().size(); ++events_seen) peaks->on_event(system.events()[events_seen]);
+      if (restart_points) restart_points->observe(t, q, v, system.events().size());
+      for (; events_seen < system.events().size(); ++events_seen) {
+        const std::size_t windows = peaks->peaks().windows.size();
+        peaks->on_event(system.events()[events_seen]);
+        if (peaks->peaks().windows.size() > windows) report_window();
+      }
       peaks->observe(t, q, v, lambda);
     };
   }
@@ -202,7 +224,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   AccuracyMonitor accuracy;
   // Re-made at each release: the rank it watches is that of the joints that remain.
   std::optional<SingularPassageMonitor> singular;
-  singular.emplace(model, static_cast<int>(start.partition.independent.size()));
+  singular.emplace(model, system.nc(), system.partition().row_released);
   // The probes' accelerations, kept for their spectra.
   std::vector<double> probe_times;
   std::vector<std::vector<Eigen::Vector3d>> probe_rows;
@@ -249,7 +271,10 @@ RunSummary run_mechanism(const multibody::Model& model,
   };
   // Hold-downs leave the equations at their release times; the integrator starts afresh there.
   integrate::Restarts releases;
-  releases.times = model.release_times();
+  // (Those at or before a restart are behind it: restore_discrete_state released them.)
+  for (const double t : model.release_times()) {
+    if (!restart || t > restart->t) releases.times.push_back(t);
+  }
   releases.apply = [&](double t, const integrate::Sample& at) {
     if (singular->finish()) report_singular();
     system.release_joints(t, at.q);
@@ -259,11 +284,14 @@ RunSummary run_mechanism(const multibody::Model& model,
       if (joint.release_time == t) release.joints.push_back(joint.name);
     }
     summary.releases.push_back(release);
-    if (peaks && t > 0.0) peaks->open({t, "release"});
+    if (peaks && t > 0.0) {
+      peaks->open({t, "release"});
+      report_window();
+    }
   };
   const integrate::SimulationResult result = integrate::simulate(
-      system, options, {0.0, initial.q, start.state.v},
-      integrate::SampleTimes::uniform(0.0, settings.t_end, settings.sample_interval), on_sample, check,
+      system, options, {initial.t, initial.q, initial.v},
+      integrate::SampleTimes::uniform(initial.t, settings.t_end, settings.sample_interval), on_sample, check,
       releases);
 
   // Outcome: a failure keeps every sample (and event) written before it.

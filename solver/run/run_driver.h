@@ -30,6 +30,7 @@
 #include "run/accuracy_check.h"
 #include "run/singular_passage.h"
 #include "run/prepared_start.h"
+#include "run/window_restart.h"
 
 namespace limber::run {
 
@@ -98,6 +99,9 @@ struct RunHooks {
   std::function<void(const std::string&)> on_warning;
   // A hinge latch or stop switched (reported once its time has been passed by a sample).
   std::function<void(const multibody::HingeEvent&)> on_event;
+  // An event-peak window opened after the start (RunSettings::peak_window > 0), with the last
+  // state before its event that a run can restart from (window_restart.h).
+  std::function<void(const WindowRestart&)> on_window;
 };
 
 // The tightest IDA tolerances `limber run` accepts (check_settings).
@@ -122,8 +126,12 @@ results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const i
 // Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings (a shock-spectrum
 // band the sample interval does not support included) or held coordinates (before writing any
 // sample).
+// With `restart` (a state of an earlier run of the same model, window_restart.h) the run starts
+// there instead, in its discrete state, with samples every settings.sample_interval from its
+// time: no statics, no "start" window; the events before it are not reported again.
 RunSummary run_mechanism(const multibody::Model& model,
                          const multibody::AssemblyOptions& assembly,
-                         const io::RunSettings& settings, const RunHooks& hooks = {});
+                         const io::RunSettings& settings, const RunHooks& hooks = {},
+                         const RestartPoint* restart = nullptr);
 
 }  // namespace limber::run

@@ -63,10 +63,11 @@ std::string json_comparison(const std::vector<CandidateRun>& runs, const std::fi
 }
 
 std::string json_reference_check(const ReferenceCheck& check) {
-  return fmt::format("{{\"step\": {}, \"half_step\": {}, \"half_step_status\": {}, \"peak_change\": {}, "
-                     "\"worst\": {}, \"threshold\": {}, \"converged\": {}}}",
+  return fmt::format("{{\"step\": {}, \"half_step\": {}, \"half_step_status\": {}, \"windows_rerun\": {}, "
+                     "\"peak_change\": {}, \"worst\": {}, \"threshold\": {}, \"converged\": {}}}",
                      json_number(check.step), json_number(check.half_step),
                      json_string(check.half_step_status.substr(0, check.half_step_status.find(':'))),
+                     check.windows_rerun,
                      json_number(check.change.error), json_string(check.change.worst), json_number(kConvergedChange),
                      check.converged ? "true" : "false");
 }

@@ -1,5 +1,6 @@
 #include "select/selection_procedure.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -10,7 +11,9 @@
 #include "io/formulation_override.h"
 #include "results/directory_lock.h"
 #include "results/file_names.h"
+#include "select/job_queue.h"
 #include "select/selection_files.h"
+#include "select/windowed_twin.h"
 
 namespace limber::select {
 
@@ -26,13 +29,11 @@ std::string folder_name(const std::string& name) {
   return folder;
 }
 
-// One set into DIR/runs/<folder>, its step scaled by `scale`; `columns` as run_candidate's.
+// One set into DIR/runs/<folder>; `columns` as run_candidate's.
 CandidateRun run_set(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
                      const SelectionHooks& hooks, const ModeSetCandidate& candidate, const std::string& folder,
-                     double scale, bool alone, const multibody::Model* columns = nullptr) {
-  StepPolicy scaled = request.policy;
-  scaled.scale = scale;
-  return run_candidate(input, candidate, request.adjust, scaled,
+                     bool alone, const multibody::Model* columns = nullptr) {
+  return run_candidate(input, candidate, request.adjust, request.policy,
                        request.root / results::kRunsFolder / folder_name(folder),
                        [&](const integrate::Sample& sample) {
                          if (hooks.on_sample) hooks.on_sample(sample, alone);
@@ -77,47 +78,97 @@ std::vector<ModeSetCandidate> with_nonlinear_reference(std::vector<ModeSetCandid
   return candidates;
 }
 
-// The sets after `normal` (candidates[0]) and the reference at half its step, `jobs` at a
-// time, the longest first (the reference, then its twin); appended to `runs` in the candidates'
-// order. Returns the halved-step reference run.
-std::optional<CandidateRun> run_sets(const SelectionInputs& inputs, const SelectionRequest& request,
-                                     const SelectionHooks& hooks, const std::vector<ModeSetCandidate>& candidates,
-                                     std::vector<CandidateRun>& runs) {
-  struct Job {
-    std::size_t candidate;
-    std::string folder;
-    double scale;
-  };
-  std::vector<Job> order;
+// The reference's stretches at half its step (windowed_twin.h) and their runs, in order.
+struct HalfStepRuns {
+  std::vector<TwinStretch> stretches;
+  std::vector<CandidateRun> runs;
+};
+
+// A stretch's folder under runs/<reference>_half_step: "1_start", "2_latch_latch_R3".
+std::string stretch_folder(const std::string& reference, std::size_t k, const TwinStretch& stretch) {
+  return folder_name(reference) + "_half_step/" + folder_name(fmt::format("{}_{}", k + 1, stretch.windows.front()));
+}
+
+// Stretch k of the reference's windows re-run at half its step from the reference's state
+// before its event (windowed_twin.h); `number` and `count` for the hooks, `columns` as the
+// reference's.
+CandidateRun run_stretch(const SelectionRequest& request, const SelectionHooks& hooks, const CandidateRun& reference,
+                         const TwinStretch& stretch, std::size_t k, std::size_t number, std::size_t count,
+                         const multibody::Model* columns) {
+  const std::string folder = stretch_folder(reference.candidate.name, k, stretch);
+  const std::string description = fmt::format("{}, windows {} re-run from t = {:.6g} s", reference.candidate.description,
+                                              fmt::join(stretch.windows, ", "), stretch.t_start());
+  if (hooks.on_set_start) hooks.on_set_start({number, count, folder, description, 0.5});
+  StepPolicy policy = request.policy;
+  policy.scale = 0.5;
+  CandidateRun run;
+  run.candidate = reference.candidate;
+  run.input = reference.input;
+  run.modes = reference.modes;
+  run.directory = request.root / results::kRunsFolder / folder;
+  io::RunSettings settings = candidate_settings(reference.mechanism, request.adjust, policy, run.step);
+  settings.t_end = stretch.t_end;
+  run_mechanism_recorded(*reference.input, reference.mechanism, settings, reference.candidate.name + " at half its step",
+                         stretch.restart ? &*stretch.restart : nullptr,
+                         [&](const integrate::Sample& sample) {
+                           if (hooks.on_sample) hooks.on_sample(sample, request.jobs <= 1);
+                         },
+                         run, columns);
+  if (hooks.on_set_done) hooks.on_set_done(run, folder);
+  return run;
+}
+
+// The sets after `normal` (candidates[0]), `jobs` at a time, the longest (the reference) first,
+// appended to `runs` in the candidates' order; and as soon as the reference has run (and passed
+// its own accuracy check), its event windows at half its step, ahead of the sets still waiting.
+HalfStepRuns run_sets(const SelectionInputs& inputs, const SelectionRequest& request,
+                      const SelectionHooks& hooks, const std::vector<ModeSetCandidate>& candidates,
+                      std::vector<CandidateRun>& runs) {
+  std::vector<std::size_t> order;
   for (std::size_t k = 1; k < candidates.size(); ++k) {
-    if (candidates[k].reference) {
-      order.insert(order.begin(), {{k, candidates[k].name, 1.0}, {k, candidates[k].name + "_half_step", 0.5}});
-    } else {
-      order.push_back({k, candidates[k].name, 1.0});
-    }
+    if (candidates[k].reference) order.insert(order.begin(), k);
+    else order.push_back(k);
   }
   std::vector<std::optional<CandidateRun>> done(order.size());
-  run_parallel(order.size(), request.jobs, [&](std::size_t j) {
-    const ModeSetCandidate& candidate = candidates[order[j].candidate];
-    if (hooks.on_set_start) {
-      hooks.on_set_start({j + 2, order.size() + 1, order[j].folder, candidate.description, order[j].scale});
+  HalfStepRuns half;
+  std::vector<std::optional<CandidateRun>> half_done;
+  // The stretches go to the front of the queue, the first to run first.
+  const auto queue_half_step = [&](JobQueue& queue, const CandidateRun& reference) {
+    // A nonlinear reference's windows re-run from t = 0: its restart points are not kept.
+    const multibody::Model* columns = reference.candidate.nonlinear ? inputs.columns : nullptr;
+    half.stretches = twin_stretches(reference.summary.peaks,
+                                    columns ? std::vector<run::WindowRestart>{} : reference.window_restarts,
+                                    reference.summary.t_end);
+    half_done.resize(half.stretches.size());
+    const std::size_t first = order.size() + 2, count = order.size() + 1 + half.stretches.size();
+    const CandidateRun* ran = &reference;  // in `done`, which outlives the queue
+    for (std::size_t k = half.stretches.size(); k-- > 0;) {
+      queue.push_front([&, ran, k, first, count, columns](JobQueue&) {
+        half_done[k] = run_stretch(request, hooks, *ran, half.stretches[k], k, first + k, count, columns);
+      });
     }
-    done[j] = candidate.nonlinear
-                  ? run_set(inputs.nonlinear, request, hooks, candidate, order[j].folder, order[j].scale,
-                            request.jobs <= 1, inputs.columns)
-                  : run_set(inputs.modal, request, hooks, candidate, order[j].folder, order[j].scale,
-                            request.jobs <= 1);
-    if (hooks.on_set_done) hooks.on_set_done(*done[j], order[j].folder);
-  });
-  std::optional<CandidateRun> half_step;
-  for (std::size_t k = 1; k < candidates.size(); ++k) {
-    for (std::size_t j = 0; j < order.size(); ++j) {
-      if (order[j].candidate != k) continue;
-      if (order[j].scale == 1.0) runs.push_back(std::move(*done[j]));
-      else half_step = std::move(done[j]);
-    }
+  };
+  // The count counts the reference's check as one set until its windows are known.
+  JobQueue queue;
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    queue.push_back([&, j](JobQueue& running) {
+      const ModeSetCandidate& candidate = candidates[order[j]];
+      if (hooks.on_set_start) hooks.on_set_start({j + 2, order.size() + 2, candidate.name, candidate.description, 1.0});
+      done[j] = candidate.nonlinear ? run_set(inputs.nonlinear, request, hooks, candidate, candidate.name,
+                                              request.jobs <= 1, inputs.columns)
+                                    : run_set(inputs.modal, request, hooks, candidate, candidate.name,
+                                              request.jobs <= 1);
+      if (hooks.on_set_done) hooks.on_set_done(*done[j], candidate.name);
+      if (candidate.reference && done[j]->summary.accurate()) queue_half_step(running, *done[j]);
+    });
   }
-  return half_step;
+  queue.run(std::max(1, std::min(request.jobs, static_cast<int>(order.size()))));
+  for (std::optional<CandidateRun>& run : half_done) half.runs.push_back(std::move(*run));
+  for (std::size_t k = 1; k < candidates.size(); ++k) {
+    const auto j = static_cast<std::size_t>(std::find(order.begin(), order.end(), k) - order.begin());
+    runs.push_back(std::move(*done[j]));
+  }
+  return half;
 }
 
 // Why a reference is refused, and what to change.
@@ -125,12 +176,6 @@ std::string refusal(const CandidateRun& reference, int max_refinement, const std
   std::string why = reference.ok() ? fmt::format("finished, but its own accuracy check failed ({})",
                                                  fmt::join(reference.summary.accuracy.warnings, "; "))
                                    : "failed: " + reference.summary.message;
-  if (reference.candidate.nonlinear) {
-    return fmt::format("the nonlinear reference ({}) {}, so differences to it mean nothing; run select with a "
-                       "shorter --step, or without --reference nonlinear; its run is in {}",
-                       step_text(reference.step), why,
-                       reference.directory.lexically_relative(root).generic_string());
-  }
   return fmt::format(
       "the reference set ({} modes, f_max {:.0f} Hz, {}, steps per period: {}) {}, so differences to it "
       "mean nothing; run select with a shorter step (--max-refinement {} allows one {} times shorter than the "
@@ -139,11 +184,26 @@ std::string refusal(const CandidateRun& reference, int max_refinement, const std
       2 * max_refinement, reference.directory.lexically_relative(root).generic_string());
 }
 
-ReferenceCheck check_reference(const CandidateRun& reference, const CandidateRun& half_step) {
-  ReferenceCheck check{reference.step.step, half_step.step.step, half_step.status(), {}, false};
-  if (!half_step.ok()) return check;
-  check.change = compare_peaks(half_step.summary.peaks, reference.summary.peaks,
-                               joint_release_times(reference.mechanism.model));
+ReferenceCheck check_reference(const CandidateRun& reference, const HalfStepRuns& half) {
+  ReferenceCheck check;
+  check.step = reference.step.step;
+  check.half_step = 0.5 * reference.step.step;
+  check.windows_rerun = half.stretches.size();
+  // The worst status of the stretches: a failure, else an inaccurate one, else ok.
+  check.half_step_status = results::layout::status::kOk;
+  for (const CandidateRun& run : half.runs) {
+    if (!run.ok()) {
+      check.half_step_status = run.status();
+      return check;
+    }
+    if (!run.summary.accurate()) check.half_step_status = run.status();
+  }
+  if (half.runs.empty()) return check;
+  check.half_step = half.runs.front().step.step;
+  std::vector<results::EventPeaks> peaks;
+  for (const CandidateRun& run : half.runs) peaks.push_back(run.summary.peaks);
+  check.change = compare_peaks(merge_stretch_peaks(reference.summary.peaks, half.stretches, peaks),
+                               reference.summary.peaks, joint_release_times(reference.mechanism.model));
   check.converged = check.change.error < kConvergedChange;
   return check;
 }
@@ -226,7 +286,7 @@ Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRe
   // Steps 1-3: normal modes only, then the ranking.
   const ModeSetCandidate normal{"normal", "normal modes only", normal_only(*input), false};
   if (hooks.on_set_start) hooks.on_set_start({1, 0, "normal", normal.description, 1.0});
-  selection.runs.push_back(run_set(input, request, hooks, normal, "normal", 1.0, true));
+  selection.runs.push_back(run_set(input, request, hooks, normal, "normal", true));
   if (hooks.on_set_done) hooks.on_set_done(selection.runs.front(), "");
   const CandidateRun& first = selection.runs.front();
   if (!first.ok()) {
@@ -243,7 +303,7 @@ Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRe
   // The ranking run's model lays out the nonlinear reference's columns; `runs` grows only after
   // every set has run, so it stays in place meanwhile.
   inputs.columns = &first.mechanism.model;
-  std::optional<CandidateRun> half_step = run_sets(inputs, request, hooks, candidates, selection.runs);
+  const HalfStepRuns half_step = run_sets(inputs, request, hooks, candidates, selection.runs);
   const CandidateRun& reference = selection.runs.back();
   const std::vector<KeyQuantity> keys =
       key_quantities(selection.ranking, reference.ok() ? reference : selection.runs.front());
@@ -256,7 +316,7 @@ Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRe
     selection.refusal = refusal(reference, request.policy.max_refinement, request.root);
     return selection;
   }
-  selection.check = check_reference(reference, *half_step);
+  selection.check = check_reference(reference, half_step);
   compare_runs(selection.runs, keys);
   selection.chosen = choose_run(selection.runs, request.target, request.norm);
 

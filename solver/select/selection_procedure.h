@@ -2,7 +2,7 @@
 // call, shared by `limber select` and Python's `limber.select` (docs/select.md): run with
 // normal modes only, rank the joint reactions on the flexible bodies, keep the large ones as
 // boundary conditions for static modes, run the mode sets that follow (its Fig. 6) with the
-// reference a second time at half its step, compare them and name the one to use.
+// reference's event windows again at half its step, compare them and name the one to use.
 //
 // Files under the request's root (selection_files.h): runs/<set>/results.h5, selection/*.csv,
 // selected_modes.yaml and results.h5 (the chosen set's). The caller prints: the hooks report
@@ -34,7 +34,7 @@ struct SelectionRequest {
   RankBy rank_by = RankBy::kPeak;
   ErrorNorm norm = ErrorNorm::kEvent;
   CandidateOptions candidates;
-  StepPolicy policy;                 // its `scale` is set per run (the reference's half step)
+  StepPolicy policy;                 // its `scale` is set per run (0.5: the reference's check)
   int jobs = 2;                      // sets run at a time (threads)
   SettingsAdjustment adjust;         // the runs' settings from the case's; empty: the case's
   // `--reference nonlinear`: the sets are measured against the case with every flexible body
@@ -74,11 +74,13 @@ struct SelectionHooks {
   std::function<void(const integrate::Sample&, bool alone)> on_sample;
 };
 
-// The reference's convergence in the step: its event peaks at half its step.
+// The reference's convergence in the step: its event peaks at half its step, each event window
+// re-run from the reference's own state before its event (windowed_twin.h).
 inline constexpr double kConvergedChange = 0.03;
 struct ReferenceCheck {
   double step = 0.0, half_step = 0.0;  // [s]
-  std::string half_step_status;        // the halved-step run's status
+  std::string half_step_status;        // the worst status of the re-runs ("ok" when all are)
+  std::size_t windows_rerun = 0;       // stretches re-run (windows that overlap share one)
   PeakComparison change;               // its event peaks against the reference's
   bool converged = false;              // finished and every compared peak moved < kConvergedChange
 };

@@ -1,17 +1,14 @@
 #include "select/selection_study.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "results/results_writer.h"
+#include "select/job_queue.h"
 #include "select/series_error.h"
 
 namespace limber::select {
@@ -39,6 +36,72 @@ Eigen::MatrixXd stack(const std::vector<Eigen::VectorXd>& rows, Eigen::Index col
 
 }  // namespace
 
+io::RunSettings candidate_settings(const io::Mechanism& mechanism, const SettingsAdjustment& adjust,
+                                   const StepPolicy& policy, StepChoice& step) {
+  io::RunSettings settings = adjust ? adjust(mechanism.run) : mechanism.run;
+  // Event peaks always (peak_comparison.h).
+  if (settings.peak_window == 0.0) settings.peak_window = kSelectPeakWindow;
+  // The step that resolves the set's highest frequency (step_choice.h).
+  step = choose_step(highest_frequency(mechanism.model), settings.integrator, policy, settings.peak_window);
+  settings.integrator = apply_step(settings.integrator, step);
+  run::check_settings(settings);
+  return settings;
+}
+
+void run_mechanism_recorded(const io::Case& input, const io::Mechanism& mechanism, const io::RunSettings& settings,
+                            const std::string& title, const run::RestartPoint* restart,
+                            const std::function<void(const integrate::Sample&)>& on_sample, CandidateRun& run,
+                            const multibody::Model* columns) {
+  const multibody::Model& model = mechanism.model;
+  // Every sample's reactions on the flexible bodies and deflections, kept in memory, in the
+  // columns of `layout`: its bodies and joints are the recorded ones.
+  const multibody::Model& layout = columns ? *columns : model;
+  const std::vector<JointOnFlexibleBody> sites = joints_on_flexible_bodies(layout);
+  const std::vector<int> probed = probed_bodies(layout);
+  run.probed.clear();
+  for (const int body : probed) run.probed.push_back(layout.bodies[static_cast<std::size_t>(body)].name);
+  run.indeterminate.assign(sites.size(), false);
+  std::vector<double> times;
+  std::vector<Eigen::VectorXd> reactions, deflections;
+  results::ResultsWriter writer(run.directory, input.title + " [" + title + "]", input.file);
+  if (input.axis_names.size() == 3) {
+    writer.set_axis_names({input.axis_names[0], input.axis_names[1], input.axis_names[2]});
+  }
+  run::RunHooks hooks;
+  hooks.writer = &writer;
+  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
+    // Sample bodies leave out ground.
+    LIMBER_DEMAND(record.bodies.size() + 1 == layout.bodies.size() && record.joints.size() == layout.joints.size());
+    times.push_back(record.time);
+    Eigen::VectorXd r(6 * static_cast<Eigen::Index>(sites.size()));
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+      r.segment<6>(6 * static_cast<Eigen::Index>(s)) = reaction_on_body(sites[s], record);
+      if (record.joints[static_cast<std::size_t>(sites[s].joint)].indeterminate) run.indeterminate[s] = true;
+    }
+    reactions.push_back(r);
+    Eigen::VectorXd d(3 * static_cast<Eigen::Index>(probed.size()));
+    for (std::size_t p = 0; p < probed.size(); ++p) {
+      d.segment<3>(3 * static_cast<Eigen::Index>(p)) =
+          record.bodies[static_cast<std::size_t>(probed[p] - 1)].deflection;
+    }
+    deflections.push_back(d);
+    if (on_sample) on_sample(sample);
+  };
+  hooks.on_window = [&](const run::WindowRestart& window) { run.window_restarts.push_back(window); };
+  try {
+    run.summary = run::run_mechanism(model, mechanism.assembly, settings, hooks, restart);
+  } catch (const SelectionInterrupted&) {
+    writer.finish(results::RunStatus::kInterrupted, "selection interrupted by a signal");
+    throw;
+  } catch (const std::exception& error) {
+    writer.finish(results::RunStatus::kFailed, error.what());
+    throw;
+  }
+  run.time = Eigen::Map<const Eigen::VectorXd>(times.data(), static_cast<Eigen::Index>(times.size()));
+  run.reactions = stack(reactions, 6 * static_cast<Eigen::Index>(sites.size()));
+  run.deflections = stack(deflections, 3 * static_cast<Eigen::Index>(probed.size()));
+}
+
 CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
                            const SettingsAdjustment& adjust, const StepPolicy& policy,
                            const std::filesystem::path& directory,
@@ -58,94 +121,18 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
     for (const std::string& notice : body.result.notices) result.notices.push_back(body.name + ": " + notice);
   }
   result.mechanism = io::build_mechanism(*input, result.reduction);
-  const multibody::Model& model = result.mechanism.model;
-  for (const multibody::Body& body : model.bodies) {
+  for (const multibody::Body& body : result.mechanism.model.bodies) {
     if (body.flexible) result.modes += static_cast<int>(body.flexible->shapes.cols());
   }
-  io::RunSettings settings = adjust ? adjust(result.mechanism.run) : result.mechanism.run;
-  // Event peaks always (peak_comparison.h).
-  if (settings.peak_window == 0.0) settings.peak_window = kSelectPeakWindow;
-  // The step that resolves the set's highest frequency (step_choice.h).
-  result.step = choose_step(highest_frequency(model), settings.integrator, policy, settings.peak_window);
-  settings.integrator = apply_step(settings.integrator, result.step);
-  run::check_settings(settings);
-
-  // Every sample's reactions on the flexible bodies and deflections, kept in memory, in the
-  // columns of `layout`: its bodies and joints are the recorded ones.
-  const multibody::Model& layout = columns ? *columns : model;
-  const std::vector<JointOnFlexibleBody> sites = joints_on_flexible_bodies(layout);
-  const std::vector<int> probed = probed_bodies(layout);
-  for (const int body : probed) result.probed.push_back(layout.bodies[static_cast<std::size_t>(body)].name);
-  result.indeterminate.assign(sites.size(), false);
-  std::vector<double> times;
-  std::vector<Eigen::VectorXd> reactions, deflections;
-  results::ResultsWriter writer(directory, input->title + " [" + candidate.name + "]", input->file);
-  if (input->axis_names.size() == 3) {
-    writer.set_axis_names({input->axis_names[0], input->axis_names[1], input->axis_names[2]});
-  }
-  run::RunHooks hooks;
-  hooks.writer = &writer;
-  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample& record) {
-    // Sample bodies leave out ground.
-    LIMBER_DEMAND(record.bodies.size() + 1 == layout.bodies.size() && record.joints.size() == layout.joints.size());
-    times.push_back(record.time);
-    Eigen::VectorXd r(6 * static_cast<Eigen::Index>(sites.size()));
-    for (std::size_t s = 0; s < sites.size(); ++s) {
-      r.segment<6>(6 * static_cast<Eigen::Index>(s)) = reaction_on_body(sites[s], record);
-      if (record.joints[static_cast<std::size_t>(sites[s].joint)].indeterminate) result.indeterminate[s] = true;
-    }
-    reactions.push_back(r);
-    Eigen::VectorXd d(3 * static_cast<Eigen::Index>(probed.size()));
-    for (std::size_t p = 0; p < probed.size(); ++p) {
-      d.segment<3>(3 * static_cast<Eigen::Index>(p)) =
-          record.bodies[static_cast<std::size_t>(probed[p] - 1)].deflection;
-    }
-    deflections.push_back(d);
-    if (on_sample) on_sample(sample);
-  };
-  try {
-    result.summary = run::run_mechanism(model, result.mechanism.assembly, settings, hooks);
-  } catch (const SelectionInterrupted&) {
-    writer.finish(results::RunStatus::kInterrupted, "selection interrupted by a signal");
-    throw;
-  } catch (const std::exception& error) {
-    writer.finish(results::RunStatus::kFailed, error.what());
-    throw;
-  }
-  result.time = Eigen::Map<const Eigen::VectorXd>(times.data(), static_cast<Eigen::Index>(times.size()));
-  result.reactions = stack(reactions, 6 * static_cast<Eigen::Index>(sites.size()));
-  result.deflections = stack(deflections, 3 * static_cast<Eigen::Index>(probed.size()));
+  const io::RunSettings settings = candidate_settings(result.mechanism, adjust, policy, result.step);
+  run_mechanism_recorded(*input, result.mechanism, settings, candidate.name, nullptr, on_sample, result, columns);
   return result;
 }
 
 void run_parallel(std::size_t count, int workers, const std::function<void(std::size_t)>& job) {
-  if (workers <= 1 || count <= 1) {
-    for (std::size_t k = 0; k < count; ++k) job(k);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::mutex failure_mutex;
-  std::exception_ptr failure;
-  const auto worker = [&] {
-    for (;;) {
-      {
-        const std::lock_guard lock(failure_mutex);
-        if (failure) return;
-      }
-      const std::size_t k = next++;
-      if (k >= count) return;
-      try {
-        job(k);
-      } catch (...) {
-        const std::lock_guard lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int w = 0; w < std::min<int>(workers, static_cast<int>(count)); ++w) threads.emplace_back(worker);
-  for (std::thread& thread : threads) thread.join();
-  if (failure) std::rethrow_exception(failure);
+  JobQueue queue;
+  for (std::size_t k = 0; k < count; ++k) queue.push_back([&job, k](JobQueue&) { job(k); });
+  queue.run(static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(workers, 1)), std::max<std::size_t>(count, 1))));
 }
 
 std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& ranking,

@@ -57,6 +57,9 @@ struct CandidateRun {
   double error_rms = std::numeric_limits<double>::quiet_NaN();
   std::string worst_quantity;      // the quantity of the larger of the two errors
   PeakComparison peaks;            // its event peaks against the reference's
+  // Each event window opened after the start, with the last state before it a run can restart
+  // from (run/window_restart.h): where the reference's check re-runs its windows.
+  std::vector<run::WindowRestart> window_restarts;
 
   bool ok() const { return summary.ok; }
   // "ok", "ok_inaccurate" (its own accuracy check failed) or "failed: <why>".
@@ -95,6 +98,22 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
                            const std::filesystem::path& directory,
                            const std::function<void(const integrate::Sample&)>& on_sample = {},
                            const multibody::Model* columns = nullptr);
+
+// The settings a set of `mechanism` runs with: the case's, adjusted, with event peaks (over
+// kSelectPeakWindow unless the settings give a window) and the step `policy` chooses for the
+// model's highest frequency, which goes to `step`. Throws InputError when they cannot run.
+io::RunSettings candidate_settings(const io::Mechanism& mechanism, const SettingsAdjustment& adjust,
+                                   const StepPolicy& policy, StepChoice& step);
+
+// Runs `mechanism` (a set's model, built from `input`) with `settings` into `run.directory`,
+// from `restart` when given (else from t = 0), and keeps in `run` what the comparison measures:
+// the summary, every sample's reactions on the flexible bodies and deflections, the windows'
+// restart points, in the columns of `columns` (run_candidate's). The file is titled
+// "<case title> [<title>]". Exceptions as run_candidate's.
+void run_mechanism_recorded(const io::Case& input, const io::Mechanism& mechanism, const io::RunSettings& settings,
+                            const std::string& title, const run::RestartPoint* restart,
+                            const std::function<void(const integrate::Sample&)>& on_sample, CandidateRun& run,
+                            const multibody::Model* columns = nullptr);
 
 // Calls job(k) for k in [0, count) on `workers` threads (1: in order on this one). After the
 // first exception a job throws, no further job starts; it is rethrown once the running ones end.

@@ -85,7 +85,7 @@ TEST(SelectCli, JsonFilesAndTheChosenRun) {
   for (const char* file : {"results.h5", "selected_modes.yaml", "selection/ranking.csv",
                            "selection/comparison.csv", "selection/key_series.csv", "selection/event_peaks.csv",
                            "runs/normal/results.h5", "runs/reference/results.h5",
-                           "runs/reference_half_step/results.h5"}) {
+                           "runs/reference_half_step/1_start/results.h5"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   }
   const std::string comparison_csv = test::read_text((dir / "selection/comparison.csv").string());
