@@ -126,7 +126,7 @@ std::vector<double> reduced_tip(const fe::FeModel& beam, double spin, GeometricS
   State start = initial_state(model);
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
-  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  MultibodySystem system(model, analyse_redundancy(model, start, ws));
   std::vector<double> tip;
   integrate::simulate(system, integrate::IntegratorOptions::ida(1e-8, 1e-10), {0.0, start.q, start.v},
                       integrate::uniform_sample_times(0.0, t_end, dt),
@@ -414,7 +414,7 @@ double rod_frequency(RodLoad path, GeometricStiffening stiffening, double ratio)
   State start = initial_state(model);
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
-  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  MultibodySystem system(model, analyse_redundancy(model, start, ws));
   const double period = 2 * kPi / w0;
   std::vector<double> crossings;
   double previous = 0.0, previous_t = 0.0;
@@ -471,7 +471,7 @@ BalanceResiduals balance_residuals(const Model& model, double t_end, double dt) 
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
   const ConstraintPartition partition = analyse_redundancy(model, start, ws);
-  const MultibodySystem system(model, partition);
+  MultibodySystem system(model, partition);
   integrate::IntegratorOptions options = integrate::IntegratorOptions::ida(1e-10, 1e-14);
   options.quadrature.size = 3;
   options.quadrature.integrand = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
