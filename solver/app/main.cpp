@@ -8,11 +8,14 @@
 #include "app/command.h"
 #include "cli/help_wrap.h"
 #include "core/error.h"
+#include "modal/blas_threads.h"
 #include "render_command.h"
 #include "report_command.h"
 
 int main(int argc, char** argv) {
   using namespace limber::app;
+  // A process-wide setting, the program's to choose: one BLAS thread (modal/blas_threads.h).
+  limber::modal::use_single_threaded_blas();
   CLI::App app{"limber " LIMBER_VERSION
                " - dynamics of mechanisms with flexible parts\n"
                "(component mode synthesis on a floating frame of reference)",

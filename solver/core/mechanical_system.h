@@ -13,6 +13,12 @@
 // coupled bodies (a nonlinear body's hundreds of node bodies) says it is `sparse`: its M and
 // coupled stiffness then come as sparse matrices, so that an integrator's cost follows their
 // nonzeros, not nv².
+//
+// Evaluations at (t, q[, v]) are non-const: a system carries the scratch space of its own
+// evaluations (Pinocchio's Data, MuJoCo's mjData), so one system serves one thread, while the
+// model it is built on is shared read-only. Its discrete state (the constraint rows held, the
+// event modes) changes only through reselect_constraints and apply_event; the geometry of
+// coordinates (N, ⊕, h) and the queries below that say so change nothing and stay const.
 #pragma once
 
 #include <vector>
@@ -52,27 +58,24 @@ class MechanicalSystem {
                                      Eigen::MatrixXd& h_q) const = 0;
 
   // M(t,q), nv x nv, symmetric positive definite.
-  virtual void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const = 0;
+  virtual void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) = 0;
   // Q(t,q,v), nv: applied, elastic and quadratic-velocity forces.
   virtual void generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                  Eigen::VectorXd& Q) const = 0;
+                                  Eigen::VectorXd& Q) = 0;
 
   // g(t,q) (nc), ∂g/∂q (nc x nq), G = ∂g/∂q N (nc x nv), ∂g/∂t (nc).
-  virtual void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const = 0;
-  virtual void constraint_jacobian_q(double t, const Eigen::VectorXd& q,
-                                     Eigen::MatrixXd& g_q) const = 0;
-  virtual void constraint_jacobian_v(double t, const Eigen::VectorXd& q,
-                                     Eigen::MatrixXd& G) const = 0;
-  virtual void constraint_time_derivative(double t, const Eigen::VectorXd& q,
-                                          Eigen::VectorXd& g_t) const = 0;
+  virtual void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) = 0;
+  virtual void constraint_jacobian_q(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& g_q) = 0;
+  virtual void constraint_jacobian_v(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& G) = 0;
+  virtual void constraint_time_derivative(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g_t) = 0;
   // γ(t,q,v) with G v' = γ: the acceleration-level right-hand side (nc).
   virtual void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                Eigen::VectorXd& gamma) const = 0;
+                                Eigen::VectorXd& gamma) = 0;
   // M, Q, g, G, g_t (and ∂g/∂q when `with_g_q`) at one (t, q, v), as the calls above return
   // them (M as M_sparse for a sparse system). A system overrides it to share the work of one pass (the kinematics of every body
   // and joint frame once); the default makes the separate calls.
   virtual void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                        bool with_g_q, SystemEvaluation& out) const {
+                        bool with_g_q, SystemEvaluation& out) {
     mass_matrix(t, q, out.M);
     generalized_forces(t, q, v, out.Q);
     constraints(t, q, out.g);
@@ -108,8 +111,16 @@ class MechanicalSystem {
   // a loop whose dependency coefficients turn with a crank makes a fixed choice of rows
   // singular twice a turn. A system that can, picks new independent rows (same nc) when its
   // current ones have become ill-conditioned at (t, q) and returns true; the integrator then
-  // restarts from (t, q, v) with new multipliers. Default: the rows never change.
-  virtual bool reselect_constraints(double /*t*/, const Eigen::VectorXd& /*q*/) const {
+  // restarts from (t, q, v) with new multipliers. The rows held are discrete state: only this
+  // call changes them (non-const). Default: the rows never change.
+  virtual bool reselect_constraints(double /*t*/, const Eigen::VectorXd& /*q*/) { return false; }
+  // The question reselect_constraints answers, without changing anything (not even the
+  // system's scratch space, so it is const): true when it would
+  // choose other rows at (t, q), with G (nc x nv) the velocity Jacobian of the rows it would
+  // choose, so that a caller can judge them before committing (the singular step-over's probe
+  // at a predicted instant, integrate/singular_step_over.h). Default: never.
+  virtual bool reselection_candidate(double /*t*/, const Eigen::VectorXd& /*q*/,
+                                     Eigen::MatrixXd& /*G*/) const {
     return false;
   }
 
@@ -129,12 +140,12 @@ class MechanicalSystem {
   virtual int num_events() const { return 0; }
   // e (num_events) at (t, q, v) in the current modes.
   virtual void event_functions(double /*t*/, const Eigen::VectorXd& /*q*/,
-                               const Eigen::VectorXd& /*v*/, Eigen::VectorXd& e) const {
+                               const Eigen::VectorXd& /*v*/, Eigen::VectorXd& e) {
     e.resize(0);
   }
-  // Event k has been located at (t, q, v): switch its mode.
+  // Event k has been located at (t, q, v): switch its mode (discrete state, hence non-const).
   virtual void apply_event(int /*k*/, double /*t*/, const Eigen::VectorXd& /*q*/,
-                           const Eigen::VectorXd& /*v*/) const {}
+                           const Eigen::VectorXd& /*v*/) {}
 };
 
 }  // namespace limber

@@ -22,7 +22,7 @@ Status failure(StatusCode code, double t, const std::string& why) {
 
 }  // namespace
 
-Status project_initial_state(const MechanicalSystem& system, double t, Eigen::VectorXd& q,
+Status project_initial_state(MechanicalSystem& system, double t, Eigen::VectorXd& q,
                              Eigen::VectorXd& v) {
   const int nq = system.nq();
   const int nv = system.nv();
@@ -78,7 +78,7 @@ Status project_initial_state(const MechanicalSystem& system, double t, Eigen::Ve
   return Status::success(t);
 }
 
-Status solve_accelerations(const MechanicalSystem& system, double t, const Eigen::VectorXd& q,
+Status solve_accelerations(MechanicalSystem& system, double t, const Eigen::VectorXd& q,
                            const Eigen::VectorXd& v, Eigen::VectorXd& vdot,
                            Eigen::VectorXd& lambda) {
   const int nv = system.nv();

@@ -18,13 +18,13 @@ namespace limber::integrate {
 // Meant for small corrections (assembly is the model builder's job). Returns
 // kConvergenceFailures when positions do not converge in 25 iterations, kSingularJacobian when
 // G M⁻¹ Gᵀ is singular (dependent constraints), kNaN on non-finite model values.
-Status project_initial_state(const MechanicalSystem& system, double t, Eigen::VectorXd& q,
+Status project_initial_state(MechanicalSystem& system, double t, Eigen::VectorXd& q,
                              Eigen::VectorXd& v);
 
 // Solves the saddle-point system [M Gᵀ; G 0] [v̇; λ] = [Q; γ] at (t, q, v).
 // Returns kSingularJacobian when it is singular (M not positive definite on the null space of
 // G, or dependent rows of G), kNaN on non-finite values.
-Status solve_accelerations(const MechanicalSystem& system, double t, const Eigen::VectorXd& q,
+Status solve_accelerations(MechanicalSystem& system, double t, const Eigen::VectorXd& q,
                            const Eigen::VectorXd& v, Eigen::VectorXd& vdot,
                            Eigen::VectorXd& lambda);
 

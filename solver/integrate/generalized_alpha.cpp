@@ -51,7 +51,7 @@ GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from_rho_inf(double r
   return c;
 }
 
-Status GeneralizedAlpha::init(const MechanicalSystem& system, const InitialState& x0,
+Status GeneralizedAlpha::init(MechanicalSystem& system, const InitialState& x0,
                               const IntegratorOptions& options) {
   options.validate();
   LIMBER_DEMAND(options.method == Method::kGeneralizedAlpha);

@@ -107,7 +107,7 @@ struct GeneralizedAlphaCoefficients {
 
 class GeneralizedAlpha final : public Integrator {
  public:
-  Status init(const MechanicalSystem& system, const InitialState& x0,
+  Status init(MechanicalSystem& system, const InitialState& x0,
               const IntegratorOptions& options) override;
   Status advance_to(double t_out, Sample& out) override;
   const Statistics& statistics() const override { return stats_; }
@@ -196,7 +196,7 @@ class GeneralizedAlpha final : public Integrator {
   // say so, with what to change (singular_failure_message).
   Status failure(StatusCode code, const std::string& why);
 
-  const MechanicalSystem* system_ = nullptr;
+  MechanicalSystem* system_ = nullptr;
   IntegratorOptions options_;
   GeneralizedAlphaCoefficients coef_;
   int nv_ = 0;

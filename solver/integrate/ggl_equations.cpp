@@ -23,7 +23,7 @@ GglLayout GglLayout::of(const MechanicalSystem& system, int nz) {
   return l;
 }
 
-GglEquations::GglEquations(const MechanicalSystem& system, const Quadrature& quadrature)
+GglEquations::GglEquations(MechanicalSystem& system, const Quadrature& quadrature)
     : system_(system), quadrature_(quadrature), layout_(GglLayout::of(system, quadrature.size)) {
   h_.resize(layout_.nh);
   f_.resize(layout_.nz);

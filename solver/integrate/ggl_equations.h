@@ -22,7 +22,7 @@ struct GglLayout {
 // must outlive it.
 class GglEquations {
  public:
-  GglEquations(const MechanicalSystem& system, const Quadrature& quadrature);
+  GglEquations(MechanicalSystem& system, const Quadrature& quadrature);
   const GglLayout& layout() const { return layout_; }
 
   // F(t, y, y') into r (n); false when a value is not finite.
@@ -53,7 +53,7 @@ class GglEquations {
   bool newton_matrix(double t, double c_j, const double* y, const double* yp, double* J);
 
  private:
-  const MechanicalSystem& system_;
+  MechanicalSystem& system_;
   const Quadrature& quadrature_;
   GglLayout layout_;
   // Scratch space: the unknowns, the system at (t, q, v), the invariants and the integrands.

@@ -13,7 +13,7 @@ double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double r
   return std::sqrt((x.array() * weight).square().mean());
 }
 
-double initial_step(const MechanicalSystem& system, const InitialState& x0,
+double initial_step(MechanicalSystem& system, const InitialState& x0,
                     const Eigen::VectorXd& vdot, const IntegratorOptions& options) {
   const int nq = system.nq(), nv = system.nv();
   Eigen::MatrixXd N(nq, nv), N1(nq, nv);

@@ -18,7 +18,7 @@ double weighted_rms(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double r
 // `vdot`. IDA's own choice, 0.5/‖y'‖, is first-order: a body at rest with an acceleration a and
 // atol = 1e-10 gets h0 ~ 1e-10/a, where the multipliers, which carry round-off divided by h,
 // cannot converge in Newton.
-double initial_step(const MechanicalSystem& system, const InitialState& x0, const Eigen::VectorXd& vdot,
+double initial_step(MechanicalSystem& system, const InitialState& x0, const Eigen::VectorXd& vdot,
                     const IntegratorOptions& options);
 
 }  // namespace limber::integrate

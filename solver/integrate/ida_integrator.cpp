@@ -64,7 +64,7 @@ struct IdaIntegrator::Impl : GglLayout {
   WallClockBudget budget;  // IntegratorOptions::max_wall_seconds
   std::optional<GglEquations> equations;  // F and its Newton matrix
 
-  const MechanicalSystem* system = nullptr;
+  MechanicalSystem* system = nullptr;
   IntegratorOptions options;
   double t0 = 0.0;
   bool stepped = false;
@@ -366,7 +366,7 @@ void ida_error_handler(int, const char* module, const char* function, char* mess
 IdaIntegrator::IdaIntegrator() : impl_(std::make_unique<Impl>()) {}
 IdaIntegrator::~IdaIntegrator() = default;
 
-Status IdaIntegrator::init(const MechanicalSystem& system, const InitialState& x0,
+Status IdaIntegrator::init(MechanicalSystem& system, const InitialState& x0,
                            const IntegratorOptions& options) {
   options.validate();
   LIMBER_DEMAND(options.method == Method::kIda);

@@ -31,7 +31,7 @@ class IdaIntegrator final : public Integrator {
   IdaIntegrator();
   ~IdaIntegrator() override;
 
-  Status init(const MechanicalSystem& system, const InitialState& x0,
+  Status init(MechanicalSystem& system, const InitialState& x0,
               const IntegratorOptions& options) override;
   Status advance_to(double t_out, Sample& out) override;
   const Statistics& statistics() const override { return stats_; }

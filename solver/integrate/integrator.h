@@ -38,9 +38,10 @@ class Integrator {
   virtual ~Integrator() = default;
 
   // Validates options (throws InputError), projects x0 onto the constraints and computes
-  // consistent accelerations and multipliers. `system` must outlive the integrator.
+  // consistent accelerations and multipliers. `system` must outlive the integrator, which
+  // changes its discrete state (constraint rows, event modes) as the motion goes.
   // Returns a failure status when that projection does not converge or is singular.
-  virtual Status init(const MechanicalSystem& system, const InitialState& x0,
+  virtual Status init(MechanicalSystem& system, const InitialState& x0,
                       const IntegratorOptions& options) = 0;
   // Advances to t_out ≥ the previous output time and fills `out`. On failure `out` is not
   // touched and the status says when and why; the integrator cannot continue.

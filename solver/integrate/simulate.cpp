@@ -11,7 +11,7 @@
 
 namespace limber::integrate {
 
-SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
+SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample) {
   return simulate(system, options, start, sample_times, on_sample,
@@ -24,7 +24,7 @@ double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 
 }  // namespace
 
-SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
+SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample,
                           const std::function<Status(const Sample&)>& check,

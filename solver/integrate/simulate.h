@@ -20,7 +20,7 @@ struct SimulationResult {
 // `sample_times` (all ≥ start.t; the run ends at the last one, which becomes options.t_stop). Samples are interpolated inside the integrator's steps, never forced
 // step ends. On a failure the samples before it have already been delivered and the result's
 // status says when and why. Throws InputError on bad options or a first sample before the start.
-SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
+SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample);
 
@@ -36,7 +36,7 @@ struct Restarts {
 
 // As above; after each delivered sample `check` judges it, and a status it returns that is not
 // ok ends the run with that status (the sample judged has been delivered).
-SimulationResult simulate(const MechanicalSystem& system, const IntegratorOptions& options,
+SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& options,
                           const InitialState& start, const SampleTimes& sample_times,
                           const std::function<void(const Sample&)>& on_sample,
                           const std::function<Status(const Sample&)>& check,

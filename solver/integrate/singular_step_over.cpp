@@ -10,14 +10,20 @@
 #include <Eigen/SVD>
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "integrate/consistent_state.h"
 
 namespace limber::integrate {
 
-double held_rows_margin(const MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
+double held_rows_margin(MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
   if (system.nc() == 0) return 1.0;
   Eigen::MatrixXd G;
   system.constraint_jacobian_v(t, q, G);
+  return unit_rows_margin(std::move(G));
+}
+
+double unit_rows_margin(Eigen::MatrixXd G) {
+  if (G.rows() == 0) return 1.0;
   // Unit rows: independent of units and of the mechanism's size (multibody/redundancy.h).
   for (Eigen::Index k = 0; k < G.rows(); ++k) {
     const double norm = G.row(k).norm();
@@ -27,7 +33,7 @@ double held_rows_margin(const MechanicalSystem& system, double t, const Eigen::V
   return svd.singularValues()(svd.singularValues().size() - 1);
 }
 
-bool predict_across(const MechanicalSystem& system, double t0, const Eigen::VectorXd& q0,
+bool predict_across(MechanicalSystem& system, double t0, const Eigen::VectorXd& q0,
                     const Eigen::VectorXd& v0, const Eigen::VectorXd& vdot0, double t,
                     Eigen::VectorXd& q, Eigen::VectorXd& v) {
   const double s = t - t0;
@@ -50,7 +56,7 @@ std::string singular_failure_message(double t, double ratio, const std::string& 
       t, what_failed, ratio);
 }
 
-StepOver step_over_singular(const MechanicalSystem& system, double t, const Eigen::VectorXd& q_failed,
+StepOver step_over_singular(MechanicalSystem& system, double t, const Eigen::VectorXd& q_failed,
                             const Eigen::VectorXd& v_failed, double margin_start, double t_limit,
                             const std::function<double(double)>& landing_time) {
   StepOver out;
@@ -88,9 +94,16 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
     Eigen::VectorXd q_instant, v_instant;
     const bool projected = predict_across(system, t, q, v, vdot, t_instant, q_instant, v_instant);
     out.near = !projected || held_rows_margin(system, t_instant, q_instant) < kRankLossConfirmRatio * sigma;
-    out.rows_reselected = out.near && projected && system.reselect_constraints(t_instant, q_instant) &&
-                          !(held_rows_margin(system, t_instant, q_instant) < kNearSingularRatio * margin_start);
-    if (out.rows_reselected) return out;
+    // Asked without a change; the system switches only to rows that hold there.
+    Eigen::MatrixXd G_candidate;
+    out.rows_reselected = out.near && projected &&
+                          system.reselection_candidate(t_instant, q_instant, G_candidate) &&
+                          !(unit_rows_margin(std::move(G_candidate)) < kNearSingularRatio * margin_start);
+    if (out.rows_reselected) {
+      const bool switched = system.reselect_constraints(t_instant, q_instant);
+      LIMBER_DEMAND(switched);  // the question just asked, at the same (t, q)
+      return out;
+    }
   }
   if (!out.near) return out;
   if (!(speed > 0.0)) return fail("the mechanism rests");
@@ -112,7 +125,7 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
                           kMaxStepOverDoublings));
 }
 
-void SteppedOverStretch::serve(const MechanicalSystem& system, double t, Sample& out) const {
+void SteppedOverStretch::serve(MechanicalSystem& system, double t, Sample& out) const {
   const double theta = (t - t0) / (t1 - t0);
   out.t = t;
   predict_across(system, t0, q0, v0, vdot0, t, out.q, out.v);
@@ -121,7 +134,7 @@ void SteppedOverStretch::serve(const MechanicalSystem& system, double t, Sample&
   out.integrals = (1.0 - theta) * z0 + theta * z1;
 }
 
-void SingularStepOvers::start(const MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
+void SingularStepOvers::start(MechanicalSystem& system, double t, const Eigen::VectorXd& q) {
   margin_start_ = held_rows_margin(system, t, q);
   in_a_row_ = 0;
   stretch_.reset();
@@ -132,7 +145,7 @@ const SteppedOverStretch* SingularStepOvers::holding(double t) const {
   return &*stretch_;
 }
 
-StepOverOutcome SingularStepOvers::step_over(const MechanicalSystem& system, const Quadrature& quadrature, double t,
+StepOverOutcome SingularStepOvers::step_over(MechanicalSystem& system, const Quadrature& quadrature, double t,
                                              const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& z,
                                              double t_limit, const std::string& what_failed, double near_ratio,
                                              const std::function<double(double)>& landing_time) {

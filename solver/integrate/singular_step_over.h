@@ -42,7 +42,9 @@ inline constexpr double kNearSingularRatio = 0.3;
 // singular configuration only when no other choice of rows holds there: the system is asked to
 // reselect its rows at t* (MechanicalSystem::reselect_constraints), and when the new rows'
 // margin there is not below kNearSingularRatio of the start's the integrator restarts from its
-// departure on them instead. Bricard's linkage (tests/run/data) has such a point at t ≈ 0.214 s:
+// departure on them instead. The system is asked first without a change
+// (MechanicalSystem::reselection_candidate) and switches only when those rows are taken: a
+// probe that switches nothing leaves the system as it was. Bricard's linkage (tests/run/data) has such a point at t ≈ 0.214 s:
 // its held rows' σ falls to 2e-3 of its start value while all 31 equations keep rank 30; at
 // rtol 1e-10, atol 1e-12 IDA's corrector failed 2 ms before it (σ at 0.16 of the start), before
 // the system's own trigger (a pivot below 0.1 of the chosen one) reselected, and the failure was
@@ -59,7 +61,9 @@ inline constexpr int kMaxStepOverDoublings = 20;
 inline constexpr int kMaxStepOversInARow = 3;
 
 // The smallest singular value of the held rows' G(t, q) with unit rows (1 with no rows).
-double held_rows_margin(const MechanicalSystem& system, double t, const Eigen::VectorXd& q);
+double held_rows_margin(MechanicalSystem& system, double t, const Eigen::VectorXd& q);
+// The same of given rows G (nc x nv; 1 with no rows).
+double unit_rows_margin(Eigen::MatrixXd G);
 
 // A consistent state past a singular configuration, and the jump's end points for the samples
 // inside it (served by the same prediction, projected).
@@ -80,7 +84,7 @@ struct StepOver {
 // when it is the held rows' own, cured by other rows (above; the system holds them now). Fails
 // (status, singular_failure_message) when the landing point's σ stays below the departure's
 // after kMaxStepOverDoublings doublings of Δ, or when the accelerations fail.
-StepOver step_over_singular(const MechanicalSystem& system, double t, const Eigen::VectorXd& q,
+StepOver step_over_singular(MechanicalSystem& system, double t, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double margin_start, double t_limit,
                             const std::function<double(double)>& landing_time = {});
 
@@ -88,7 +92,7 @@ StepOver step_over_singular(const MechanicalSystem& system, double t, const Eige
 // The jump's prediction at t in [from.t, from.t + Δ]: q ⊕ (s v + s²/2 v̇), v + s v̇ (s = t − t0),
 // projected onto the constraints; false (left unprojected) when the projection fails, as it may
 // exactly at the singular instant.
-bool predict_across(const MechanicalSystem& system, double t0, const Eigen::VectorXd& q0,
+bool predict_across(MechanicalSystem& system, double t0, const Eigen::VectorXd& q0,
                     const Eigen::VectorXd& v0, const Eigen::VectorXd& vdot0, double t,
                     Eigen::VectorXd& q, Eigen::VectorXd& v);
 
@@ -102,7 +106,7 @@ struct SteppedOverStretch {
   Eigen::VectorXd q0, v0, vdot0, lambda0, z0;  // at t0
   Eigen::VectorXd q1, v1, vdot1, lambda1, z1;  // at t1
   // A sample at t0 ≤ t ≤ t1: the departure's prediction, projected; v̇, λ and z linear.
-  void serve(const MechanicalSystem& system, double t, Sample& out) const;
+  void serve(MechanicalSystem& system, double t, Sample& out) const;
 };
 
 // What a step-over did: nothing (not at a rank loss: the caller reports its own failure), a
@@ -118,7 +122,7 @@ struct StepOverOutcome {
 class SingularStepOvers {
  public:
   // At the run's consistent start.
-  void start(const MechanicalSystem& system, double t, const Eigen::VectorXd& q);
+  void start(MechanicalSystem& system, double t, const Eigen::VectorXd& q);
   // After an accepted step: the count of step-overs in a row starts again.
   void accepted_step() { in_a_row_ = 0; }
   // After a failed (or struggling) step, from the state (t, q, v) with integrals z the
@@ -129,7 +133,7 @@ class SingularStepOvers {
   // without an accepted step between them, or step_over_singular's failures). `t_limit`: the
   // next velocity breakpoint or t_stop; `what_failed`: the integrator's failure, for the
   // messages; `landing_time` as step_over_singular's.
-  StepOverOutcome step_over(const MechanicalSystem& system, const Quadrature& quadrature, double t,
+  StepOverOutcome step_over(MechanicalSystem& system, const Quadrature& quadrature, double t,
                             const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& z,
                             double t_limit, const std::string& what_failed, double near_ratio,
                             const std::function<double(double)>& landing_time = {});

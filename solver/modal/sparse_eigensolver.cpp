@@ -13,7 +13,6 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
-#include "modal/blas_threads.h"
 #include "modal/dof_selection.h"
 #include "modal/shifted_factor.h"
 
@@ -147,14 +146,11 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
 
   EigenSolution solution;
   solution.shift = sigma;
-  // ARPACK keeps its iteration state in Fortran SAVE variables, and the BLAS guard below sets a
-  // process-wide thread count: one solve per process at a time (`limber select` reduces two
-  // mode sets at once, on two threads).
+  // ARPACK keeps its iteration state in Fortran SAVE variables: one solve per process at a
+  // time (`limber select` reduces two mode sets at once, on two threads). The BLAS threads are
+  // the program's choice (modal/blas_threads.h: one, set by limber's main and the Python module).
   static std::mutex arpack_mutex;
   const std::lock_guard arpack_lock(arpack_mutex);
-  // CHOLMOD's dense kernels and ARPACK's orthogonalisation on one BLAS thread: on a loaded
-  // machine extra threads spin more than they compute (docs/benchmarks.md).
-  const SingleThreadedBlas one_blas_thread;
 
   // Factorise K - sigma M once.
   const Clock::time_point factorisation_start = Clock::now();

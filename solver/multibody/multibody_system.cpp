@@ -19,7 +19,8 @@ MultibodySystem::MultibodySystem(const Model& model, ConstraintPartition partiti
   for (size_t k = 0; k < model_.forces.size(); ++k) {
     if (std::holds_alternative<HingeLimit>(model_.forces[k])) limits_.push_back(static_cast<int>(k));
   }
-  state_.engaged.assign(model_.forces.size(), 0);
+  engaged_.assign(model_.forces.size(), 0);
+  state_.engaged = engaged_;
 }
 
 void MultibodySystem::kinematic_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& N) const {
@@ -48,7 +49,7 @@ void MultibodySystem::coordinate_invariants(const Eigen::VectorXd& q, Eigen::Vec
   }
 }
 
-void MultibodySystem::mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const {
+void MultibodySystem::mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) {
   state_.t = t;
   state_.q = q;
   multibody::mass_matrix(model_, state_, workspace_);
@@ -56,7 +57,7 @@ void MultibodySystem::mass_matrix(double t, const Eigen::VectorXd& q, Eigen::Mat
 }
 
 void MultibodySystem::generalized_forces(double t, const Eigen::VectorXd& q,
-                                         const Eigen::VectorXd& v, Eigen::VectorXd& Q) const {
+                                         const Eigen::VectorXd& v, Eigen::VectorXd& Q) {
   state_.t = t;
   state_.q = q;
   state_.v = v;
@@ -64,7 +65,7 @@ void MultibodySystem::generalized_forces(double t, const Eigen::VectorXd& q,
   Q = workspace_.Q;
 }
 
-void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) const {
+void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) {
   state_.t = t;
   state_.q = q;
   if (v) state_.v = *v;
@@ -94,19 +95,19 @@ void MultibodySystem::map_to_q(const Eigen::VectorXd& q, const Eigen::MatrixXd& 
   for (size_t b = 0; b < model_.bodies.size(); ++b) map_body_jacobian_to_q(model_, b, q, G, g_q);
 }
 
-void MultibodySystem::constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const {
+void MultibodySystem::constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) {
   evaluate(t, q, nullptr);
   select_rows(workspace_.g, g);
 }
 
 void MultibodySystem::constraint_jacobian_v(double t, const Eigen::VectorXd& q,
-                                            Eigen::MatrixXd& G) const {
+                                            Eigen::MatrixXd& G) {
   evaluate(t, q, nullptr);
   select_rows(workspace_.G, G);
 }
 
 void MultibodySystem::constraint_jacobian_q(double t, const Eigen::VectorXd& q,
-                                            Eigen::MatrixXd& g_q) const {
+                                            Eigen::MatrixXd& g_q) {
   evaluate(t, q, nullptr);
   select_rows(workspace_.G, scratch_G_);
   map_to_q(q, scratch_G_, g_q);
@@ -130,7 +131,7 @@ bool MultibodySystem::coupled_stiffness(double /*t*/, const Eigen::VectorXd& q,
 }
 
 void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                               bool with_g_q, SystemEvaluation& out) const {
+                               bool with_g_q, SystemEvaluation& out) {
   state_.t = t;
   state_.q = q;
   state_.v = v;
@@ -152,57 +153,87 @@ void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::
 }
 
 void MultibodySystem::constraint_time_derivative(double t, const Eigen::VectorXd& q,
-                                                 Eigen::VectorXd& g_t) const {
+                                                 Eigen::VectorXd& g_t) {
   evaluate(t, q, nullptr);
   select_rows(workspace_.g_t, g_t);
 }
 
 void MultibodySystem::acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                       Eigen::VectorXd& gamma) const {
+                                       Eigen::VectorXd& gamma) {
   evaluate(t, q, &v);
   select_rows(workspace_.gamma, gamma);
 }
 
-double MultibodySystem::smallest_pivot(const std::vector<int>& rows) const {
+double MultibodySystem::smallest_pivot(const std::vector<int>& rows, const Workspace& ws) const {
   if (rows.empty()) return 1.0;
   Eigen::MatrixXd G_rows(rows.size(), model_.nv);
-  for (size_t k = 0; k < rows.size(); ++k) G_rows.row(k) = workspace_.G.row(rows[k]);
+  for (size_t k = 0; k < rows.size(); ++k) G_rows.row(k) = ws.G.row(rows[k]);
   // Pivoted QR as in analyse_redundancy: |R_kk| decrease, the last one measures the rank.
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(unit_rows(G_rows).transpose());
   return std::abs(qr.matrixR()(rows.size() - 1, rows.size() - 1));
 }
 
-bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) const {
+MultibodySystem::RowProposal MultibodySystem::propose_rows(double t, const Eigen::VectorXd& q, State& state,
+                                                          Workspace& ws) const {
+  RowProposal proposal;
   // Without redundant rows the choice is all rows, nothing to reselect.
-  if (partition_.redundant.empty()) return false;
-  evaluate(t, q, nullptr);
-  const double current = smallest_pivot(partition_.independent);
-  if (chosen_pivot_ < 0.0) chosen_pivot_ = current;
+  if (partition_.redundant.empty()) return proposal;
+  state.t = t;
+  state.q = q;
+  evaluate_constraints(model_, state, Stage::kPosition, released_, ws);
+  const double current = smallest_pivot(partition_.independent, ws);
+  proposal.current_pivot = current;
+  // The first measurement becomes the reference (reselect_constraints keeps it).
+  const double chosen = chosen_pivot_ < 0.0 ? current : chosen_pivot_;
   // Hysteresis: a tenth of the pivot at selection before re-analysing, twice better to switch.
-  if (current >= 0.1 * chosen_pivot_) return false;
-  state_.t = t;
-  state_.q = q;
+  if (current >= 0.1 * chosen) return proposal;
+  proposal.degraded = true;
   // The joints whose dropped rows lost their weight in the dependency are measured in frames
   // that turn with the motion (a crank's), and so are their other rows: keep them all, so the
   // redundancy falls on rows whose weight stays (without this, R2.rot_x and R2.rot_y of the
   // flexible slider-crank took turns every quarter turn, 50 000 rejected IDA steps at rtol 1e-8).
+  proposal.kept_rows = kept_rows_;
   for (const RedundantEquation& r : partition_.redundant) {
     const int joint = model_.equations[r.row].joint;
     for (int row = 0; row < model_.num_equations(); ++row) {
-      if (joint >= 0 && model_.equations[row].joint == joint) kept_rows_.push_back(row);
+      if (joint >= 0 && model_.equations[row].joint == joint) proposal.kept_rows.push_back(row);
     }
   }
-  ConstraintPartition fresh =
-      analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_,
-                         partition_.row_released);
+  ConstraintPartition fresh = analyse_redundancy(model_, state, ws, partition_.relative_threshold,
+                                                 proposal.kept_rows, partition_.row_released);
   if (fresh.independent.size() != partition_.independent.size() ||
       fresh.independent == partition_.independent) {
-    return false;
+    return proposal;
   }
-  const double better = smallest_pivot(fresh.independent);
-  if (better < 2.0 * current) return false;
-  partition_ = std::move(fresh);
-  chosen_pivot_ = better;
+  const double better = smallest_pivot(fresh.independent, ws);
+  if (better < 2.0 * current) return proposal;
+  proposal.fresh = std::move(fresh);
+  proposal.fresh_pivot = better;
+  return proposal;
+}
+
+bool MultibodySystem::reselect_constraints(double t, const Eigen::VectorXd& q) {
+  RowProposal proposal = propose_rows(t, q, state_, workspace_);
+  if (proposal.current_pivot && chosen_pivot_ < 0.0) chosen_pivot_ = *proposal.current_pivot;
+  // A degraded choice keeps its joints' rows from now on, whether or not it switches.
+  if (proposal.degraded) kept_rows_ = std::move(proposal.kept_rows);
+  if (!proposal.fresh) return false;
+  partition_ = std::move(*proposal.fresh);
+  chosen_pivot_ = proposal.fresh_pivot;
+  return true;
+}
+
+bool MultibodySystem::reselection_candidate(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& G) const {
+  // A state and workspace of its own: the system's stay as they are.
+  State state = state_;
+  Workspace ws(model_);
+  const RowProposal proposal = propose_rows(t, q, state, ws);
+  if (!proposal.fresh) return false;
+  // G of the rows it would hold, as constraint_jacobian_v gives it once they are held.
+  evaluate_constraints(model_, state, Stage::kPosition, released_, ws);
+  const std::vector<int>& rows = proposal.fresh->independent;
+  G.resize(static_cast<Eigen::Index>(rows.size()), model_.nv);
+  for (std::size_t k = 0; k < rows.size(); ++k) G.row(static_cast<Eigen::Index>(k)) = ws.G.row(rows[k]);
   return true;
 }
 
@@ -228,15 +259,14 @@ std::vector<double> MultibodySystem::velocity_breakpoints() const {
 }
 
 void MultibodySystem::event_functions(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                      Eigen::VectorXd& e) const {
+                                      Eigen::VectorXd& e) {
   state_.t = t;
   state_.q = q;
   state_.v = v;
   hinge_limit_events(model_, limits_, state_, workspace_, e);
 }
 
-void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q,
-                                  const Eigen::VectorXd& v) const {
+void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   const int force = limits_.at(static_cast<size_t>(k));
   const auto& limit = std::get<HingeLimit>(model_.forces[force]);
   state_.t = t;
@@ -245,8 +275,9 @@ void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q,
   update_marker_kinematics(model_, state_, Stage::kVelocity, workspace_);
   const RelativeAngle angle = hinge_limit_state(limit, workspace_);
   // A latch locks for good (and is seated later); a stop toggles between free and in contact.
-  unsigned char& mode = state_.engaged[force];
+  unsigned char& mode = engaged_[force];
   mode = hinge_limit_next_mode(limit, mode);
+  state_.engaged = engaged_;
   // A latch's seating changes only its damping's share: not a switch a user sees.
   if (mode == kLatchSeated) return;
   events_.push_back(HingeEvent{force, t, angle.theta, angle.rate, mode != kLimitFree});

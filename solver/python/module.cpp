@@ -2,6 +2,7 @@
 // as numpy arrays, over the libraries the `limber` command uses; no solver code of its own.
 #include <pybind11/pybind11.h>
 
+#include "modal/blas_threads.h"
 #include "python/case_binding.h"
 #include "python/results_binding.h"
 #include "python/run_binding.h"
@@ -16,6 +17,9 @@ PYBIND11_MODULE(limber, module) {
       "  limber.read_results('out/slider_crank')   # what `limber run` wrote\n"
       "  limber.modes(case), limber.select(case), limber.sweep(path, over=[...])   # their --json";
   module.attr("__version__") = LIMBER_VERSION;
+  // A process-wide setting, chosen once at import: one BLAS thread (modal/blas_threads.h;
+  // docs/python.md says so, since numpy in the same process shares it).
+  limber::modal::use_single_threaded_blas();
   limber::python::bind_case(module);
   limber::python::bind_results(module);
   limber::python::bind_run(module);

@@ -27,7 +27,7 @@ struct Run {
   std::vector<Sample> samples;
 };
 
-Run run(const CartesianPendulum& pendulum, const IntegratorOptions& options,
+Run run(CartesianPendulum& pendulum, const IntegratorOptions& options,
         const std::vector<double>& times) {
   const limber::integrate::InitialState start{0.0, pendulum.position(kTheta0),
                                               Eigen::VectorXd::Zero(2)};
@@ -59,7 +59,7 @@ void print_row(const char* integrator, const char* setting, const Run& r, const 
 }  // namespace
 
 int main() {
-  const CartesianPendulum pendulum(1.0, 1.0, 9.81);
+  CartesianPendulum pendulum(1.0, 1.0, 9.81);
   const auto times = limber::integrate::uniform_sample_times(0.0, kEnd, kSampleInterval);
   const Run reference = run(pendulum, IntegratorOptions::ida(1e-12, 1e-12), times);
 

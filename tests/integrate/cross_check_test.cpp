@@ -15,7 +15,7 @@ using testing::CartesianPendulum;
 
 constexpr double kMass = 1.0, kLength = 1.0, kGravity = 9.81, kTheta0 = 1.0;
 
-std::vector<Sample> run(const MechanicalSystem& system, const IntegratorOptions& options,
+std::vector<Sample> run(MechanicalSystem& system, const IntegratorOptions& options,
                         const InitialState& start, const std::vector<double>& times) {
   std::vector<Sample> samples;
   const auto result =
@@ -31,7 +31,7 @@ TEST(CrossCheck, IdaAndGeneralizedAlphaAgreeOnThePendulum) {
   // R = (4 y_{h/2} − y_h)/3 removes the leading error: IDA must be ≥ 10 times closer to R than
   // to y_h, for q, v, v̇ and λ alike. Two different solutions would give a ratio ~1, and a
   // first-order error (e = C h, R off by C h/3) a ratio of 3.
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   const InitialState start{0.0, pendulum.position(kTheta0), Eigen::VectorXd::Zero(2)};
   const auto times = uniform_sample_times(0.0, 2.0, 0.05);
   const auto ida = run(pendulum, IntegratorOptions::ida(1e-10, 1e-10), start, times);
@@ -70,7 +70,7 @@ TEST(CrossCheck, IdaAndGeneralizedAlphaAgreeOnThePendulum) {
 // Largest |E(t) + W(t) − E(0)| / (m g L) of a damped pendulum, W = ∫ c |v|² dt the energy the
 // damper dissipated, accumulated as a quadrature.
 double energy_balance_error(const IntegratorOptions& base) {
-  const CartesianPendulum pendulum(kMass, kLength, kGravity, 0.3);
+  CartesianPendulum pendulum(kMass, kLength, kGravity, 0.3);
   const InitialState start{0.0, pendulum.position(kTheta0), Eigen::VectorXd::Zero(2)};
   IntegratorOptions options = base;
   options.quadrature.size = 1;

@@ -23,7 +23,7 @@ struct FreeBodyErrors {
 // Axisymmetric body J = (1, 1, 2) kg m², ω(0) = (1, 0, 5) rad/s, u = (0.3, −0.2, 0.1) m/s.
 // Euler's equations give ω3 = 5 and (ω1 + i ω2)(t) = e^{iΩt} with Ω = (C − A)/A ω3 = 5 rad/s.
 FreeBodyErrors spin(const IntegratorOptions& options, double t_end) {
-  const FreeRigidBody body(2.0, Eigen::Vector3d(1.0, 1.0, 2.0));
+  FreeRigidBody body(2.0, Eigen::Vector3d(1.0, 1.0, 2.0));
   InitialState start;
   start.q.resize(7);
   start.q << 0.0, 0.0, 0.0, std::cos(0.2), std::sin(0.2), 0.0, 0.0;  // tilted 0.4 rad about x
@@ -88,7 +88,7 @@ struct TopErrors {
 
 TopErrors spin_top(const IntegratorOptions& options) {
   using testing::HeavyTop;
-  const HeavyTop top(2.0, Eigen::Vector3d(0.02, 0.02, 0.01), Eigen::Vector3d(0.0, 0.0, -0.1), 9.81);
+  HeavyTop top(2.0, Eigen::Vector3d(0.02, 0.02, 0.01), Eigen::Vector3d(0.0, 0.0, -0.1), 9.81);
   InitialState start;
   start.q.resize(7);
   start.q << 0.0, 0.0, 0.0, std::cos(0.15), std::sin(0.15), 0.0, 0.0;

@@ -55,7 +55,7 @@ TEST(GeneralizedAlpha, SecondOrderOnTheOscillator) {
   // remainder shifts the slope by ~ωh ≪ 0.15; ±0.15 around 2 separates order 2 from orders 1
   // and 3 with margin.
   const double omega = 2.0 * std::numbers::pi;
-  const Oscillator oscillator(1.0, omega * omega);
+  Oscillator oscillator(1.0, omega * omega);
   const InitialState start{0.0, Eigen::VectorXd::Ones(1), Eigen::VectorXd::Zero(1)};
   const std::vector<double> times = uniform_sample_times(0.0, 1.0, 0.1);
   const std::vector<double> steps{0.01, 0.005, 0.0025};
@@ -84,8 +84,8 @@ TEST(GeneralizedAlpha, KeepsWhatTheStructuredMatrixMissedForTheStepsAfter) {
   // 20 steps (the age limit), that is one matrix per 20 steps; leaving the coupling out again
   // would cost a structured matrix and a matrix of differences per 20 steps.
   const double h = 0.01, k = 1.0, k_c = 1e4;
-  const CoupledOscillators coupled(k, k_c);
-  const Oscillator in_phase(1.0, k);
+  CoupledOscillators coupled(k, k_c);
+  Oscillator in_phase(1.0, k);
   const std::vector<double> times = uniform_sample_times(0.0, 4.0, 0.5);
   Eigen::VectorXd x0(2);
   x0 << 1.0, 0.5;
@@ -110,7 +110,7 @@ TEST(GeneralizedAlpha, KeepsWhatTheStructuredMatrixMissedForTheStepsAfter) {
 // between step ends, exact to O(h³) where x'' = 0) over periods 10 to 60.
 double numerical_period(int steps_per_period) {
   const double omega = 2.0 * std::numbers::pi;
-  const Oscillator oscillator(1.0, omega * omega);
+  Oscillator oscillator(1.0, omega * omega);
   IntegratorOptions options = IntegratorOptions::generalized_alpha(1.0 / steps_per_period, 0.8);
   std::vector<double> t, x;
   options.on_step = [&](double time, const Eigen::VectorXd& q, const Eigen::VectorXd&, const Eigen::VectorXd&,
@@ -147,7 +147,7 @@ TEST(GeneralizedAlpha, LocalErrorEstimateMatchesItsClosedFormOnTheOscillator) {
   // Statistics::max_local_error → |β − 1/6| (ωh)² (generalized_alpha.h). At ωh ≤ 0.063 the
   // O(h) lag of a behind ẍ and the sampling of the peaks stay below 5 %; halving h quarters it.
   const double omega = 2.0 * std::numbers::pi;
-  const Oscillator oscillator(1.0, omega * omega);
+  Oscillator oscillator(1.0, omega * omega);
   const InitialState start{0.0, Eigen::VectorXd::Ones(1), Eigen::VectorXd::Zero(1)};
   const double beta = GeneralizedAlphaCoefficients::from_rho_inf(0.8).beta;
   std::vector<double> estimates;
@@ -168,7 +168,7 @@ TEST(GeneralizedAlpha, DampsUnresolvedFrequenciesByTheSpectralRadius) {
   // √(x² + (v/ω)²) must shrink by ρ∞ per step. Measured over steps 100…200, the double root
   // at −ρ∞ adds a factor (200/100)^(1/100) = 1.007 and the finite ωh a little more: ±3 %.
   const double omega = 1e5, h = 1e-2;
-  const Oscillator stiff(1.0, omega * omega);
+  Oscillator stiff(1.0, omega * omega);
   const InitialState start{0.0, Eigen::VectorXd::Ones(1), Eigen::VectorXd::Zero(1)};
   std::vector<double> times;
   for (int i = 0; i <= 200; ++i) times.push_back(i * h);
@@ -190,11 +190,11 @@ class OscillatorWithTimedEvents final : public testing::ForwardingSystem {
  public:
   using ForwardingSystem::ForwardingSystem;
   int num_events() const override { return 2; }
-  void event_functions(double t, const Eigen::VectorXd&, const Eigen::VectorXd&, Eigen::VectorXd& e) const override {
+  void event_functions(double t, const Eigen::VectorXd&, const Eigen::VectorXd&, Eigen::VectorXd& e) override {
     e.resize(2);
     e << t - 0.255, t - 1.255;
   }
-  void apply_event(int, double, const Eigen::VectorXd&, const Eigen::VectorXd&) const override {}
+  void apply_event(int, double, const Eigen::VectorXd&, const Eigen::VectorXd&) override {}
 };
 
 TEST(GeneralizedAlpha, TakesTheEventStepInTheEventWindowsAndTheStepBetween) {
@@ -202,8 +202,8 @@ TEST(GeneralizedAlpha, TakesTheEventStepInTheEventWindowsAndTheStepBetween) {
   // steps cut back to the events and the last are 5 ms). 1.5 s: 3 windows of 100 steps, and
   // 1.2 s at 10 ms (15 + 1 + 90 + 14 + 1 steps) around them.
   const double omega = 2.0 * std::numbers::pi;
-  const Oscillator oscillator(1.0, omega * omega);
-  const OscillatorWithTimedEvents system(oscillator);
+  Oscillator oscillator(1.0, omega * omega);
+  OscillatorWithTimedEvents system(oscillator);
   IntegratorOptions options = IntegratorOptions::generalized_alpha(1e-2, 0.8);
   options.event_step = 1e-3;
   options.event_window = 0.1;
@@ -253,7 +253,7 @@ TEST(GeneralizedAlpha, UndampedPendulumEnergyStaysBoundedWithoutDrift) {
   // 10 h²/s² relative to m g L (the order test measures ~4 h² in q). No secular drift: the
   // largest error over the second 10 s within 10 % of that over the first 10 s.
   const double h = 1e-3;
-  const CartesianPendulum pendulum(1.0, 1.0, 9.81);
+  CartesianPendulum pendulum(1.0, 1.0, 9.81);
   const InitialState start{0.0, pendulum.position(1.0), Eigen::VectorXd::Zero(2)};
   const double e0 = pendulum.energy(start.q, start.v);
   double first_half = 0.0, second_half = 0.0;
@@ -275,7 +275,7 @@ struct PendulumErrors {
 
 PendulumErrors pendulum_errors(const IntegratorOptions& options, const std::vector<double>& times) {
   const double m = 1.0, L = 1.0, g0 = 9.81, theta0 = 1.0;
-  const CartesianPendulum pendulum(m, L, g0);
+  CartesianPendulum pendulum(m, L, g0);
   const auto reference = pendulum.reference(theta0, 0.0, times);
   const InitialState start{0.0, pendulum.position(theta0), Eigen::VectorXd::Zero(2)};
   PendulumErrors errors;

@@ -20,7 +20,7 @@ constexpr double kMass = 1.0, kLength = 1.0, kGravity = 9.81, kTheta0 = 1.0;
 // Largest position error of an IDA pendulum run over samples every 0.05 s up to t_end.
 double ida_pendulum_error(double tol, double t_end, Statistics* stats = nullptr,
                           IdaNewtonMatrix matrix = IdaNewtonMatrix::kDifferences) {
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   const std::vector<double> times = uniform_sample_times(0.0, t_end, 0.05);
   const auto reference = pendulum.reference(kTheta0, 0.0, times);
   const InitialState start{0.0, pendulum.position(kTheta0), Eigen::VectorXd::Zero(2)};
@@ -81,7 +81,7 @@ TEST(IdaIntegrator, UndampedPendulumKeepsEnergyAndConstraint) {
   // 100 tol for the energy, which accumulates the local errors of ~2000 steps; 10 tol for g,
   // which IDA solves as an algebraic equation to its Newton tolerance).
   const double tol = 1e-8;
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   const InitialState start{0.0, pendulum.position(kTheta0), Eigen::VectorXd::Zero(2)};
   const double e0 = pendulum.energy(start.q, start.v);
   double energy_error = 0.0, constraint_error = 0.0;

@@ -65,7 +65,7 @@ TEST(Simulate, SamplesDoNotChangeTheSteps) {
   // Output times are interpolated, never forced step ends (PITFALLS): 1001 samples cost the
   // same steps as 11. Generalized-α: exactly t/h steps. IDA: the same step sequence, so the
   // common samples agree to round-off.
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   const auto sparse = uniform_sample_times(0.0, 1.0, 0.1);
   const auto dense = uniform_sample_times(0.0, 1.0, 0.001);
   for (const auto& options :
@@ -93,7 +93,7 @@ TEST(Simulate, OnStepSeesTheStartAndEveryStepEndInOrder) {
   // ascending time, the last at the end time with the state the last sample delivers; every
   // state satisfies the dynamics M v̇ + Gᵀλ = Q (the pendulum's, evaluated here) to the
   // integrators' Newton tolerance.
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   for (IntegratorOptions options :
        {IntegratorOptions::generalized_alpha(0.01, 0.8), IntegratorOptions::ida(1e-6, 1e-6)}) {
     std::vector<double> times;
@@ -132,7 +132,7 @@ TEST(Simulate, GeneralizedAlphaInterpolationIsSecondOrder) {
   // Samples every 13.7 ms fall inside steps of 4, 2, 1 ms: the interpolated q and v must keep
   // the scheme's order 2 (cubic Hermite for q, linear for v: both O(h²)); band ±0.15 as in the
   // order tests.
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   const auto times = uniform_sample_times(0.0, 1.0, 0.0137);
   const auto reference = pendulum.reference(kTheta0, 0.0, times);
   std::vector<double> q_errors, v_errors;
@@ -156,10 +156,10 @@ TEST(Simulate, GeneralizedAlphaInterpolationIsSecondOrder) {
 // A pendulum whose forces turn NaN after t_break.
 class BrokenPendulum final : public ForwardingSystem {
  public:
-  BrokenPendulum(const MechanicalSystem& base, double t_break)
+  BrokenPendulum(MechanicalSystem& base, double t_break)
       : ForwardingSystem(base), t_break_(t_break) {}
   void generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                          Eigen::VectorXd& Q) const override {
+                          Eigen::VectorXd& Q) override {
     base_.generalized_forces(t, q, v, Q);
     if (t > t_break_) Q(0) = std::numeric_limits<double>::quiet_NaN();
   }
@@ -173,26 +173,26 @@ class DoubledConstraint final : public ForwardingSystem {
  public:
   using ForwardingSystem::ForwardingSystem;
   int nc() const override { return 2; }
-  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const override {
+  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) override {
     base_.constraints(t, q, g);
     g = Eigen::Vector2d(g(0), g(0));
   }
   void constraint_jacobian_q(double t, const Eigen::VectorXd& q,
-                             Eigen::MatrixXd& g_q) const override {
+                             Eigen::MatrixXd& g_q) override {
     base_.constraint_jacobian_q(t, q, g_q);
     g_q = Eigen::MatrixXd(g_q.replicate(2, 1));
   }
   void constraint_jacobian_v(double t, const Eigen::VectorXd& q,
-                             Eigen::MatrixXd& G) const override {
+                             Eigen::MatrixXd& G) override {
     base_.constraint_jacobian_v(t, q, G);
     G = Eigen::MatrixXd(G.replicate(2, 1));
   }
   void constraint_time_derivative(double, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& g_t) const override {
+                                  Eigen::VectorXd& g_t) override {
     g_t = Eigen::VectorXd::Zero(2);
   }
   void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                        Eigen::VectorXd& gamma) const override {
+                        Eigen::VectorXd& gamma) override {
     base_.acceleration_rhs(t, q, v, gamma);
     gamma = Eigen::Vector2d(gamma(0), gamma(0));
   }
@@ -201,8 +201,8 @@ class DoubledConstraint final : public ForwardingSystem {
 TEST(Simulate, NonFiniteForcesEndTheRunWithNaNAfterTheLastGoodSample) {
   // Forces turn NaN after 0.33 s: samples 0, 0.1, 0.2, 0.3 are delivered, then kNaN at a time
   // within one step (gen-α: 10 ms) or one IDA step of 0.33 s, with the time in the message.
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
-  const BrokenPendulum broken(pendulum, 0.33);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
+  BrokenPendulum broken(pendulum, 0.33);
   for (const auto& options :
        {IntegratorOptions::generalized_alpha(0.01, 0.8), IntegratorOptions::ida(1e-6, 1e-6)}) {
     int samples = 0;
@@ -221,8 +221,8 @@ TEST(Simulate, NonFiniteForcesEndTheRunWithNaNAfterTheLastGoodSample) {
 }
 
 TEST(Simulate, DependentConstraintsAreASingularJacobian) {
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
-  const DoubledConstraint doubled(pendulum);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
+  DoubledConstraint doubled(pendulum);
   for (const auto& options :
        {IntegratorOptions::generalized_alpha(0.01, 0.8), IntegratorOptions::ida(1e-6, 1e-6)}) {
     const auto result = simulate(doubled, options, pendulum_start(pendulum), {0.0, 1.0},
@@ -236,9 +236,9 @@ TEST(Simulate, DependentConstraintsAreASingularJacobian) {
 // A pendulum whose constraint has no solution after t_break: x² + y² = −L².
 class ImpossibleConstraint final : public ForwardingSystem {
  public:
-  ImpossibleConstraint(const MechanicalSystem& base, double length, double t_break)
+  ImpossibleConstraint(MechanicalSystem& base, double length, double t_break)
       : ForwardingSystem(base), length_(length), t_break_(t_break) {}
-  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const override {
+  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) override {
     base_.constraints(t, q, g);
     if (t > t_break_) g(0) += length_ * length_;
   }
@@ -252,8 +252,8 @@ TEST(Simulate, NewtonFailureIsNeverAcceptedAndReportsConvergenceFailure) {
   // is rejected and halved 6 times (7 rejections at least), then the run stops near 0.255 s
   // with kConvergenceFailures instead of accepting an unconverged step; samples 0, 0.1, 0.2
   // were delivered.
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
-  const ImpossibleConstraint impossible(pendulum, kLength, 0.255);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
+  ImpossibleConstraint impossible(pendulum, kLength, 0.255);
   const auto result = simulate(impossible, IntegratorOptions::generalized_alpha(0.01, 0.8),
                                pendulum_start(pendulum), {0.0, 0.1, 0.2, 0.3},
                                [](const Sample&) {});
@@ -267,7 +267,7 @@ TEST(Simulate, NewtonFailureIsNeverAcceptedAndReportsConvergenceFailure) {
 }
 
 TEST(Simulate, StepBudgetEndsTheRun) {
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   for (auto options :
        {IntegratorOptions::generalized_alpha(0.01, 0.8), IntegratorOptions::ida(1e-6, 1e-6)}) {
     options.max_steps = 10;
@@ -290,7 +290,7 @@ std::string input_error(Call call) {
 }
 
 TEST(Simulate, BadInputThrowsWithExpectedAndGot) {
-  const CartesianPendulum pendulum(kMass, kLength, kGravity);
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
   const auto ignore = [](const Sample&) {};
   const auto ida = IntegratorOptions::ida(1e-6, 1e-6);
   EXPECT_NE(input_error([&] { simulate(pendulum, ida, pendulum_start(pendulum), {0.0, 0.5, 0.5}, ignore); })

@@ -74,7 +74,7 @@ class SparseHeavyTop final : public testing::ForwardingSystem {
   using ForwardingSystem::ForwardingSystem;
   bool sparse() const override { return true; }
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool with_g_q,
-                SystemEvaluation& out) const override {
+                SystemEvaluation& out) override {
     base_.evaluate(t, q, v, with_g_q, out);
     out.M_sparse = out.M.sparseView();
     out.M.resize(0, 0);
@@ -88,8 +88,8 @@ TEST(GeneralizedAlphaSparse, FollowsTheDensePathToTheNewtonTolerance) {
   // Over 500 steps such differences add up to at most ~500 × 5e-10 = 2.5e-7 in q; same step
   // counts and Newton iterations (within one per ten steps) say the paths behave alike.
   using testing::HeavyTop;
-  const HeavyTop top(2.0, Eigen::Vector3d(0.02, 0.02, 0.01), Eigen::Vector3d(0.0, 0.0, -0.1), 9.81);
-  const SparseHeavyTop sparse_top(top);
+  HeavyTop top(2.0, Eigen::Vector3d(0.02, 0.02, 0.01), Eigen::Vector3d(0.0, 0.0, -0.1), 9.81);
+  SparseHeavyTop sparse_top(top);
   InitialState start;
   start.q.resize(7);
   start.q << 0.0, 0.0, 0.0, std::cos(0.15), std::sin(0.15), 0.0, 0.0;

@@ -20,29 +20,29 @@ void Oscillator::coordinate_invariants(const Eigen::VectorXd&, Eigen::VectorXd& 
   h.resize(0);
   h_q.resize(0, 1);
 }
-void Oscillator::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const {
+void Oscillator::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) {
   M = Eigen::MatrixXd::Constant(1, 1, m_);
 }
 void Oscillator::generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd&,
-                                    Eigen::VectorXd& Q) const {
+                                    Eigen::VectorXd& Q) {
   Q = -k_ * q;
 }
-void Oscillator::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const {
+void Oscillator::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) {
   g.resize(0);
 }
 void Oscillator::constraint_jacobian_q(double, const Eigen::VectorXd&,
-                                       Eigen::MatrixXd& g_q) const {
+                                       Eigen::MatrixXd& g_q) {
   g_q.resize(0, 1);
 }
-void Oscillator::constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) const {
+void Oscillator::constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) {
   G.resize(0, 1);
 }
 void Oscillator::constraint_time_derivative(double, const Eigen::VectorXd&,
-                                            Eigen::VectorXd& g_t) const {
+                                            Eigen::VectorXd& g_t) {
   g_t.resize(0);
 }
 void Oscillator::acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& gamma) const {
+                                  Eigen::VectorXd& gamma) {
   gamma.resize(0);
 }
 
@@ -59,32 +59,32 @@ void CoupledOscillators::coordinate_invariants(const Eigen::VectorXd&, Eigen::Ve
   h.resize(0);
   h_q.resize(0, 2);
 }
-void CoupledOscillators::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const {
+void CoupledOscillators::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) {
   M = Eigen::MatrixXd::Identity(2, 2);
 }
 void CoupledOscillators::generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd&,
-                                            Eigen::VectorXd& Q) const {
+                                            Eigen::VectorXd& Q) {
   Q = -k_ * q;
   Q(0) -= k_c_ * (q(0) - q(1));
   Q(1) -= k_c_ * (q(1) - q(0));
 }
-void CoupledOscillators::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const {
+void CoupledOscillators::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) {
   g.resize(0);
 }
 void CoupledOscillators::constraint_jacobian_q(double, const Eigen::VectorXd&,
-                                               Eigen::MatrixXd& g_q) const {
+                                               Eigen::MatrixXd& g_q) {
   g_q.resize(0, 2);
 }
 void CoupledOscillators::constraint_jacobian_v(double, const Eigen::VectorXd&,
-                                               Eigen::MatrixXd& G) const {
+                                               Eigen::MatrixXd& G) {
   G.resize(0, 2);
 }
 void CoupledOscillators::constraint_time_derivative(double, const Eigen::VectorXd&,
-                                                    Eigen::VectorXd& g_t) const {
+                                                    Eigen::VectorXd& g_t) {
   g_t.resize(0);
 }
 void CoupledOscillators::acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                                          Eigen::VectorXd& gamma) const {
+                                          Eigen::VectorXd& gamma) {
   gamma.resize(0);
 }
 bool CoupledOscillators::diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const {
@@ -106,32 +106,32 @@ void CartesianPendulum::coordinate_invariants(const Eigen::VectorXd&, Eigen::Vec
   h.resize(0);
   h_q.resize(0, 2);
 }
-void CartesianPendulum::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const {
+void CartesianPendulum::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) {
   M = m_ * Eigen::MatrixXd::Identity(2, 2);
 }
 void CartesianPendulum::generalized_forces(double, const Eigen::VectorXd&,
-                                           const Eigen::VectorXd& v, Eigen::VectorXd& Q) const {
+                                           const Eigen::VectorXd& v, Eigen::VectorXd& Q) {
   Q = -c_ * v;
   Q(1) -= m_ * g0_;
 }
-void CartesianPendulum::constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) const {
+void CartesianPendulum::constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) {
   g.resize(1);
   g(0) = 0.5 * (q.squaredNorm() - L_ * L_);
 }
 void CartesianPendulum::constraint_jacobian_q(double, const Eigen::VectorXd& q,
-                                              Eigen::MatrixXd& g_q) const {
+                                              Eigen::MatrixXd& g_q) {
   g_q = q.transpose();
 }
 void CartesianPendulum::constraint_jacobian_v(double, const Eigen::VectorXd& q,
-                                              Eigen::MatrixXd& G) const {
+                                              Eigen::MatrixXd& G) {
   G = q.transpose();
 }
 void CartesianPendulum::constraint_time_derivative(double, const Eigen::VectorXd&,
-                                                   Eigen::VectorXd& g_t) const {
+                                                   Eigen::VectorXd& g_t) {
   g_t = Eigen::VectorXd::Zero(1);
 }
 void CartesianPendulum::acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd& v,
-                                         Eigen::VectorXd& gamma) const {
+                                         Eigen::VectorXd& gamma) {
   // d²g/dt² = |v|² + q·v̇ = 0.
   gamma = Eigen::VectorXd::Constant(1, -v.squaredNorm());
 }
@@ -207,34 +207,34 @@ void FreeRigidBody::coordinate_invariants(const Eigen::VectorXd& q, Eigen::Vecto
   h_q = Eigen::MatrixXd::Zero(1, 7);
   h_q.block<1, 4>(0, 3) = q.segment<4>(3).transpose();
 }
-void FreeRigidBody::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const {
+void FreeRigidBody::mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) {
   M = Eigen::MatrixXd::Zero(6, 6);
   M.topLeftCorner(3, 3) = m_ * Eigen::Matrix3d::Identity();
   M.bottomRightCorner(3, 3) = J_.asDiagonal();
 }
 void FreeRigidBody::generalized_forces(double, const Eigen::VectorXd&, const Eigen::VectorXd& v,
-                                       Eigen::VectorXd& Q) const {
+                                       Eigen::VectorXd& Q) {
   const Eigen::Vector3d w = v.segment<3>(3);
   Q = Eigen::VectorXd::Zero(6);
   Q.segment<3>(3) = -w.cross(J_.cwiseProduct(w));
 }
-void FreeRigidBody::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const {
+void FreeRigidBody::constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) {
   g.resize(0);
 }
 void FreeRigidBody::constraint_jacobian_q(double, const Eigen::VectorXd&,
-                                          Eigen::MatrixXd& g_q) const {
+                                          Eigen::MatrixXd& g_q) {
   g_q.resize(0, 7);
 }
 void FreeRigidBody::constraint_jacobian_v(double, const Eigen::VectorXd&,
-                                          Eigen::MatrixXd& G) const {
+                                          Eigen::MatrixXd& G) {
   G.resize(0, 6);
 }
 void FreeRigidBody::constraint_time_derivative(double, const Eigen::VectorXd&,
-                                               Eigen::VectorXd& g_t) const {
+                                               Eigen::VectorXd& g_t) {
   g_t.resize(0);
 }
 void FreeRigidBody::acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                                     Eigen::VectorXd& gamma) const {
+                                     Eigen::VectorXd& gamma) {
   gamma.resize(0);
 }
 Eigen::Vector3d FreeRigidBody::angular_momentum(const Eigen::VectorXd& q,
@@ -259,15 +259,15 @@ Eigen::Matrix3d rotation(const Eigen::VectorXd& q) {
 }  // namespace
 
 void HeavyTop::generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                  Eigen::VectorXd& Q) const {
+                                  Eigen::VectorXd& Q) {
   body_.generalized_forces(t, q, v, Q);
   Q(2) -= m_ * g0_;
 }
-void HeavyTop::constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) const {
+void HeavyTop::constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) {
   g = q.head<3>() + rotation(q) * r_B_;
 }
 void HeavyTop::constraint_jacobian_q(double, const Eigen::VectorXd& q,
-                                     Eigen::MatrixXd& g_q) const {
+                                     Eigen::MatrixXd& g_q) {
   // ∂(R(p) r)/∂w = 2 (w r + u × r), ∂(R(p) r)/∂u = 2 (u·r I + u rᵀ − r uᵀ − w [r]×).
   const double w = q(3);
   const Eigen::Vector3d u = q.segment<3>(4);
@@ -277,18 +277,18 @@ void HeavyTop::constraint_jacobian_q(double, const Eigen::VectorXd& q,
   g_q.rightCols(3) = 2.0 * (u.dot(r_B_) * Eigen::Matrix3d::Identity() + u * r_B_.transpose() -
                             r_B_ * u.transpose() - w * skew(r_B_));
 }
-void HeavyTop::constraint_jacobian_v(double, const Eigen::VectorXd& q, Eigen::MatrixXd& G) const {
+void HeavyTop::constraint_jacobian_v(double, const Eigen::VectorXd& q, Eigen::MatrixXd& G) {
   // d/dt (R r) = R (ω × r) = −R [r]× ω.
   G = Eigen::MatrixXd::Zero(3, 6);
   G.leftCols(3).setIdentity();
   G.rightCols(3) = -rotation(q) * skew(r_B_);
 }
 void HeavyTop::constraint_time_derivative(double, const Eigen::VectorXd&,
-                                          Eigen::VectorXd& g_t) const {
+                                          Eigen::VectorXd& g_t) {
   g_t = Eigen::VectorXd::Zero(3);
 }
 void HeavyTop::acceleration_rhs(double, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                Eigen::VectorXd& gamma) const {
+                                Eigen::VectorXd& gamma) {
   // d²/dt² (R r) = R (ω̇ × r + ω × (ω × r)): γ = −R (ω × (ω × r)).
   const Eigen::Vector3d w = v.segment<3>(3);
   gamma = -rotation(q) * w.cross(w.cross(r_B_));

@@ -22,16 +22,16 @@ class Oscillator final : public MechanicalSystem {
                              Eigen::VectorXd& q_out) const override;
   void coordinate_invariants(const Eigen::VectorXd&, Eigen::VectorXd& h,
                              Eigen::MatrixXd& h_q) const override;
-  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const override;
+  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) override;
   void generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd&,
-                          Eigen::VectorXd& Q) const override;
-  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const override;
-  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) const override;
-  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) const override;
+                          Eigen::VectorXd& Q) override;
+  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) override;
+  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) override;
+  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) override;
   void constraint_time_derivative(double, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& g_t) const override;
+                                  Eigen::VectorXd& g_t) override;
   void acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                        Eigen::VectorXd& gamma) const override;
+                        Eigen::VectorXd& gamma) override;
 
  private:
   double m_, k_;
@@ -54,16 +54,16 @@ class CoupledOscillators final : public MechanicalSystem {
                              Eigen::VectorXd& q_out) const override;
   void coordinate_invariants(const Eigen::VectorXd&, Eigen::VectorXd& h,
                              Eigen::MatrixXd& h_q) const override;
-  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const override;
+  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) override;
   void generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd&,
-                          Eigen::VectorXd& Q) const override;
-  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const override;
-  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) const override;
-  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) const override;
+                          Eigen::VectorXd& Q) override;
+  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) override;
+  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) override;
+  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) override;
   void constraint_time_derivative(double, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& g_t) const override;
+                                  Eigen::VectorXd& g_t) override;
   void acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                        Eigen::VectorXd& gamma) const override;
+                        Eigen::VectorXd& gamma) override;
   bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
 
  private:
@@ -86,17 +86,17 @@ class CartesianPendulum final : public MechanicalSystem {
                              Eigen::VectorXd& q_out) const override;
   void coordinate_invariants(const Eigen::VectorXd&, Eigen::VectorXd& h,
                              Eigen::MatrixXd& h_q) const override;
-  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const override;
+  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) override;
   void generalized_forces(double, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                          Eigen::VectorXd& Q) const override;
-  void constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) const override;
+                          Eigen::VectorXd& Q) override;
+  void constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) override;
   void constraint_jacobian_q(double, const Eigen::VectorXd& q,
-                             Eigen::MatrixXd& g_q) const override;
-  void constraint_jacobian_v(double, const Eigen::VectorXd& q, Eigen::MatrixXd& G) const override;
+                             Eigen::MatrixXd& g_q) override;
+  void constraint_jacobian_v(double, const Eigen::VectorXd& q, Eigen::MatrixXd& G) override;
   void constraint_time_derivative(double, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& g_t) const override;
+                                  Eigen::VectorXd& g_t) override;
   void acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd& v,
-                        Eigen::VectorXd& gamma) const override;
+                        Eigen::VectorXd& gamma) override;
 
   // State at angle θ [rad] and rate θ̇ [rad/s].
   Eigen::VectorXd position(double theta) const;
@@ -130,16 +130,16 @@ class FreeRigidBody final : public MechanicalSystem {
                              Eigen::VectorXd& q_out) const override;
   void coordinate_invariants(const Eigen::VectorXd& q, Eigen::VectorXd& h,
                              Eigen::MatrixXd& h_q) const override;
-  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) const override;
+  void mass_matrix(double, const Eigen::VectorXd&, Eigen::MatrixXd& M) override;
   void generalized_forces(double, const Eigen::VectorXd&, const Eigen::VectorXd& v,
-                          Eigen::VectorXd& Q) const override;
-  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) const override;
-  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) const override;
-  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) const override;
+                          Eigen::VectorXd& Q) override;
+  void constraints(double, const Eigen::VectorXd&, Eigen::VectorXd& g) override;
+  void constraint_jacobian_q(double, const Eigen::VectorXd&, Eigen::MatrixXd& g_q) override;
+  void constraint_jacobian_v(double, const Eigen::VectorXd&, Eigen::MatrixXd& G) override;
   void constraint_time_derivative(double, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& g_t) const override;
+                                  Eigen::VectorXd& g_t) override;
   void acceleration_rhs(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                        Eigen::VectorXd& gamma) const override;
+                        Eigen::VectorXd& gamma) override;
 
   // Angular momentum about the centre of mass in the world frame, R(p) J ω [kg m²/s].
   Eigen::Vector3d angular_momentum(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
@@ -173,18 +173,18 @@ class HeavyTop final : public MechanicalSystem {
                              Eigen::MatrixXd& h_q) const override {
     body_.coordinate_invariants(q, h, h_q);
   }
-  void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const override {
+  void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) override {
     body_.mass_matrix(t, q, M);
   }
   void generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                          Eigen::VectorXd& Q) const override;
-  void constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) const override;
-  void constraint_jacobian_q(double, const Eigen::VectorXd& q, Eigen::MatrixXd& g_q) const override;
-  void constraint_jacobian_v(double, const Eigen::VectorXd& q, Eigen::MatrixXd& G) const override;
+                          Eigen::VectorXd& Q) override;
+  void constraints(double, const Eigen::VectorXd& q, Eigen::VectorXd& g) override;
+  void constraint_jacobian_q(double, const Eigen::VectorXd& q, Eigen::MatrixXd& g_q) override;
+  void constraint_jacobian_v(double, const Eigen::VectorXd& q, Eigen::MatrixXd& G) override;
   void constraint_time_derivative(double, const Eigen::VectorXd&,
-                                  Eigen::VectorXd& g_t) const override;
+                                  Eigen::VectorXd& g_t) override;
   void acceleration_rhs(double, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                        Eigen::VectorXd& gamma) const override;
+                        Eigen::VectorXd& gamma) override;
 
   double energy(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   // Vertical component of the angular momentum about the joint (the world origin) [kg m²/s].
@@ -200,7 +200,7 @@ class HeavyTop final : public MechanicalSystem {
 // Forwards every call to another system; tests override single members to break it.
 class ForwardingSystem : public MechanicalSystem {
  public:
-  explicit ForwardingSystem(const MechanicalSystem& base) : base_(base) {}
+  explicit ForwardingSystem(MechanicalSystem& base) : base_(base) {}
   int nq() const override { return base_.nq(); }
   int nv() const override { return base_.nv(); }
   int nc() const override { return base_.nc(); }
@@ -216,35 +216,35 @@ class ForwardingSystem : public MechanicalSystem {
                              Eigen::MatrixXd& h_q) const override {
     base_.coordinate_invariants(q, h, h_q);
   }
-  void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) const override {
+  void mass_matrix(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& M) override {
     base_.mass_matrix(t, q, M);
   }
   void generalized_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                          Eigen::VectorXd& Q) const override {
+                          Eigen::VectorXd& Q) override {
     base_.generalized_forces(t, q, v, Q);
   }
-  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) const override {
+  void constraints(double t, const Eigen::VectorXd& q, Eigen::VectorXd& g) override {
     base_.constraints(t, q, g);
   }
   void constraint_jacobian_q(double t, const Eigen::VectorXd& q,
-                             Eigen::MatrixXd& g_q) const override {
+                             Eigen::MatrixXd& g_q) override {
     base_.constraint_jacobian_q(t, q, g_q);
   }
   void constraint_jacobian_v(double t, const Eigen::VectorXd& q,
-                             Eigen::MatrixXd& G) const override {
+                             Eigen::MatrixXd& G) override {
     base_.constraint_jacobian_v(t, q, G);
   }
   void constraint_time_derivative(double t, const Eigen::VectorXd& q,
-                                  Eigen::VectorXd& g_t) const override {
+                                  Eigen::VectorXd& g_t) override {
     base_.constraint_time_derivative(t, q, g_t);
   }
   void acceleration_rhs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                        Eigen::VectorXd& gamma) const override {
+                        Eigen::VectorXd& gamma) override {
     base_.acceleration_rhs(t, q, v, gamma);
   }
 
  protected:
-  const MechanicalSystem& base_;
+  MechanicalSystem& base_;
 };
 
 }  // namespace limber::integrate::testing

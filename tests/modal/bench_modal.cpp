@@ -34,6 +34,7 @@
 #include "fe/assembly.h"
 #include "fe/fe_model_builder.h"
 #include "fe/mesh_generators.h"
+#include "modal/blas_threads.h"
 #include "modal/component_modes.h"
 #include "modal/normal_modes.h"
 #include "modal/sparse_eigensolver.h"
@@ -190,6 +191,8 @@ void run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // As limber's main: one BLAS thread (modal/blas_threads.h), so the figures compare.
+  limber::modal::use_single_threaded_blas();
   Options options;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];

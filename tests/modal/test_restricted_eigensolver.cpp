@@ -1,5 +1,5 @@
 // The eigen-solution restricted to the free DOFs of a held component (no copy of K_ff or
-// M_ff), its default ARPACK tolerance, and the BLAS/OpenMP thread guard: against the same
+// M_ff), its default ARPACK tolerance, and the BLAS/OpenMP thread setting: against the same
 // solver on explicitly copied submatrices, against machine-precision tolerance, and against
 // a dense solver (second method) on a cantilever shell plate.
 #include <cmath>
@@ -16,7 +16,9 @@
 
 extern "C" {
 int openblas_get_num_threads() __attribute__((weak));
+void openblas_set_num_threads(int threads) __attribute__((weak));
 int omp_get_max_active_levels() __attribute__((weak));
+void omp_set_max_active_levels(int levels) __attribute__((weak));
 }
 
 namespace limber::modal {
@@ -134,19 +136,19 @@ TEST(RestrictedEigensolver, CantileverMatchesDenseSolver) {
   }
 }
 
-TEST(SingleThreadedBlas, OneThreadInsideAndTheSettingsRestoredAfter) {
+// The program's setting (modal/blas_threads.h): one OpenBLAS thread, no OpenMP parallel
+// regions; this test process's own settings are put back after.
+TEST(SingleThreadedBlas, OneThreadAndNoParallelRegionsAfterTheCall) {
   if (openblas_get_num_threads == nullptr || omp_get_max_active_levels == nullptr) {
     GTEST_SKIP() << "OpenBLAS or OpenMP not loaded";
   }
   const int threads = openblas_get_num_threads();
   const int levels = omp_get_max_active_levels();
-  {
-    const SingleThreadedBlas guard;
-    EXPECT_EQ(openblas_get_num_threads(), 1);
-    EXPECT_EQ(omp_get_max_active_levels(), 0);
-  }
-  EXPECT_EQ(openblas_get_num_threads(), threads);
-  EXPECT_EQ(omp_get_max_active_levels(), levels);
+  use_single_threaded_blas();
+  EXPECT_EQ(openblas_get_num_threads(), 1);
+  EXPECT_EQ(omp_get_max_active_levels(), 0);
+  openblas_set_num_threads(threads);
+  omp_set_max_active_levels(levels);
 }
 
 }  // namespace

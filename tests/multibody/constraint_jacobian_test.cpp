@@ -131,7 +131,7 @@ void check_model(const Model& model) {
   // γ involves second derivatives: differences of G v lose one more digit (tolerance 1e-7).
   EXPECT_LT((-Gv_fd - gtt_fd - gamma).cwiseAbs().maxCoeff(), 1e-7);
   // ∂g/∂q of the integrator interface against differences of the raw coordinates.
-  const MultibodySystem system(model, full_partition(model));
+  MultibodySystem system(model, full_partition(model));
   Eigen::MatrixXd g_q, N;
   system.constraint_jacobian_q(state.t, state.q, g_q);
   for (int k = 0; k < model.nq; ++k) {

@@ -46,7 +46,7 @@ TEST(Dynamics, CentreOfMassFallsWithGravity) {
 TEST(Dynamics, TorqueFreeBodyConservesEnergyAndMomentum) {
   // Classical RK4 on q' = N v, v' = M⁻¹ Q for 1 s at h = 1e-3 (global error ~ h⁴ ω⁵ ~ 1e-9).
   const Model model = free_body(Eigen::Vector3d::Zero());
-  const MultibodySystem system(model, full_partition(model));
+  MultibodySystem system(model, full_partition(model));
   Workspace ws(model);
   State state = initial_state(model);
   const Body& b = model.bodies[1];

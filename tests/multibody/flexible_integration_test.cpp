@@ -47,7 +47,7 @@ PreparedRun prepare(const Model& model) {
 void run(const Model& model, const integrate::IntegratorOptions& options, double t_end, double dt,
          const std::function<void(const State&)>& on_sample) {
   const PreparedRun prepared = prepare(model);
-  const MultibodySystem system(model, prepared.partition);
+  MultibodySystem system(model, prepared.partition);
   const auto result = integrate::simulate(system, options, {0.0, prepared.start.q, prepared.start.v},
                                           integrate::uniform_sample_times(0.0, t_end, dt),
                                           [&](const integrate::Sample& s) { on_sample(State{s.t, s.q, s.v}); });

@@ -306,7 +306,7 @@ double rod_frequency(RodLoad path, GeometricStiffening stiffening, double ratio)
   State start = initial_state(model);
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
-  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  MultibodySystem system(model, analyse_redundancy(model, start, ws));
   const double period = 2 * kPi / w0;
   std::vector<double> crossings;
   double previous = 0.0, previous_t = 0.0;
@@ -363,7 +363,7 @@ BalanceResiduals balance_residuals(const Model& model, double t_end, double dt) 
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
   const ConstraintPartition partition = analyse_redundancy(model, start, ws);
-  const MultibodySystem system(model, partition);
+  MultibodySystem system(model, partition);
   integrate::IntegratorOptions options = integrate::IntegratorOptions::ida(1e-10, 1e-14);
   options.quadrature.size = 3;
   options.quadrature.integrand = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,

@@ -58,7 +58,7 @@ HingeRun run(const Model& model, const integrate::IntegratorOptions& options, do
   State start = initial_state(model);
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
-  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  MultibodySystem system(model, analyse_redundancy(model, start, ws));
   HingeRun out;
   const int b = model.find_body("disk");
   const auto result = integrate::simulate(

@@ -75,7 +75,7 @@ TEST(Integration, PendulumSmallAmplitudePeriodAndTension) {
   const double m = 1.3, L = 0.8, J = 1e-5, theta0 = 0.01;
   const Model model = pendulum_chain(1, m, L, J, theta0);
   const PreparedRun run = prepare(model);
-  const MultibodySystem system(model, run.partition);
+  MultibodySystem system(model, run.partition);
   Workspace ws(model);
   const double period = 2 * std::numbers::pi * std::sqrt((J + m * L * L) / (m * kG * L)) * (1 + theta0 * theta0 / 16);
   std::vector<double> crossings;
@@ -111,7 +111,7 @@ TEST(Integration, PendulumSmallAmplitudePeriodAndTension) {
 double energy_drift(const Model& model, const integrate::IntegratorOptions& options, double t_end,
                     integrate::SimulationResult& result) {
   const PreparedRun run = prepare(model);
-  const MultibodySystem system(model, run.partition);
+  MultibodySystem system(model, run.partition);
   Workspace ws(model);
   double e0 = 0.0, drift = 0.0;
   bool first = true;
@@ -164,7 +164,7 @@ void check_slider_crank(integrate::IntegratorOptions options, double x_tolerance
   const Model model = testing::slider_crank(p);
   const PreparedRun run = prepare(model);
   ASSERT_EQ(run.partition.redundant.size(), 3u);
-  const MultibodySystem system(model, run.partition);
+  MultibodySystem system(model, run.partition);
   EXPECT_EQ(system.nc(), 18);
   Workspace ws(model), ws_power(model);
   options.quadrature.size = 2;

@@ -107,7 +107,7 @@ inline std::vector<double> reduced_tip(const fe::FeModel& beam, double spin, Geo
   State start = initial_state(model);
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
-  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  MultibodySystem system(model, analyse_redundancy(model, start, ws));
   std::vector<double> tip;
   integrate::simulate(system, integrate::IntegratorOptions::ida(1e-8, 1e-10), {0.0, start.q, start.v},
                       integrate::uniform_sample_times(0.0, t_end, dt),

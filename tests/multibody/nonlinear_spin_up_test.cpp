@@ -47,7 +47,7 @@ std::vector<double> nonlinear_tip(double spin, double t_end, double dt, double s
   State start = initial_state(model);
   LIMBER_DEMAND(assemble_positions(model, start, ws, {1e-12, 50, {}}).status == AssemblyStatus::kOk);
   assemble_velocities(model, start, ws);
-  const MultibodySystem system(model, analyse_redundancy(model, start, ws));
+  MultibodySystem system(model, analyse_redundancy(model, start, ws));
   std::vector<double> out;
   const integrate::SimulationResult result = integrate::simulate(
       system, integrate::IntegratorOptions::generalized_alpha(step, 0.9), {0.0, start.q, start.v},

@@ -109,7 +109,7 @@ TEST(Pendulum, LargeAmplitudePeriodByRk4MatchesEllipticIntegral) {
   Workspace ws(p.model);
   ASSERT_EQ(assemble_positions(p.model, p.state, ws).status, AssemblyStatus::kOk);
   const ConstraintPartition partition = analyse_redundancy(p.model, p.state, ws);
-  const MultibodySystem system(p.model, partition);
+  MultibodySystem system(p.model, partition);
   const double period =
       4.0 * std::sqrt((J + m * d * d) / (m * kG * d)) * std::comp_ellint_1(std::sin(theta0 / 2));
   auto rate = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& q_dot,

@@ -120,7 +120,7 @@ double step_response_difference(double torque, double t_end) {
       largest_output = std::max(largest_output, scale * std::abs(linear(r)));
     }
   };
-  const MultibodySystem system(loaded, start.partition);
+  MultibodySystem system(loaded, start.partition);
   const auto result = integrate::simulate(system, integrate::IntegratorOptions::ida(1e-10, 1e-13),
                                           {0.0, start.state.q, start.state.v},
                                           integrate::uniform_sample_times(0.0, t_end, 1e-2), on_sample);

@@ -20,6 +20,7 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "modal/blas_threads.h"
 #include "run/run_driver.h"
 
 namespace {
@@ -140,6 +141,8 @@ void compare_mode_sets(const std::string& path) {
 }
 
 int main() {
+  // As limber's main: one BLAS thread (modal/blas_threads.h), so the figures compare.
+  limber::modal::use_single_threaded_blas();
   const std::string path = std::string(LIMBER_CASES_DIR) + "/satellite_deployment.yaml";
   const io::Case input = io::read_case_file(path);
   const io::Mechanism mechanism = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));

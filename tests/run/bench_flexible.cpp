@@ -15,6 +15,7 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "modal/blas_threads.h"
 #include "run/run_driver.h"
 
 namespace {
@@ -66,6 +67,8 @@ void print_row(const char* method, const std::string& setting, const Outcome& ou
 }  // namespace
 
 int main() {
+  // As limber's main: one BLAS thread (modal/blas_threads.h), so the figures compare.
+  limber::modal::use_single_threaded_blas();
   const io::Case input = io::read_case_file(std::string(LIMBER_CASES_DIR) + "/slider_crank.yaml");
   const io::Mechanism mechanism = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
 

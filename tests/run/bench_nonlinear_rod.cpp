@@ -24,6 +24,7 @@
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
 #include "corotational_rod.h"
+#include "modal/blas_threads.h"
 #include "multibody/time_function.h"
 #include "run/run_driver.h"
 
@@ -87,6 +88,8 @@ double peak(const std::vector<double>& x, const std::vector<double>& t, double u
 }  // namespace
 
 int main(int argc, char** argv) {
+  // As limber's main: one BLAS thread (modal/blas_threads.h), so the figures compare.
+  limber::modal::use_single_threaded_blas();
   const double seed_end = argc > 1 ? std::atof(argv[1]) : 1.0;
   const double limit_end = argc > 2 ? std::atof(argv[2]) : 0.5;
   const double seed_step = argc > 3 ? std::atof(argv[3]) : 0.0;

@@ -29,6 +29,7 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "modal/blas_threads.h"
 #include "results/results_writer.h"
 #include "run/run_driver.h"
 
@@ -103,6 +104,8 @@ void print_row(const char* method, const std::string& setting, const Outcome& ou
 }  // namespace
 
 int main(int argc, char** argv) {
+  // As limber's main: one BLAS thread (modal/blas_threads.h), so the figures compare.
+  limber::modal::use_single_threaded_blas();
   int repetitions = 3;
   bool write_file = true;
   std::vector<std::string> settings;

@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <string>
 
+#include <Eigen/SVD>
+
 #include "bricard_linkage.h"
+#include "multibody/multibody_system.h"
 #include "parallelogram_chain.h"
 #include "run/prepared_start.h"
 
@@ -113,6 +116,57 @@ TEST(BricardLinkage, IdaAtRtol1e10ReselectsRowsWhereTheHeldOnesLoseRank) {
   EXPECT_LT(s.accuracy.energy_relative, 1e-7);
   EXPECT_TRUE(s.accurate());
   EXPECT_TRUE(s.singular_passages.empty()) << s.singular_passages.front().message();
+}
+
+// Smallest singular value of the unit rows of G (integrate/singular_step_over.h's margin).
+double unit_rows_margin(Eigen::MatrixXd G) {
+  for (Eigen::Index k = 0; k < G.rows(); ++k) G.row(k).normalize();
+  return Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues().minCoeff();
+}
+
+// The singular step-over's probe asks MultibodySystem::reselection_candidate, which must change
+// nothing (issue 31): at the sample of 0.19-0.23 s where the rows held from the start are worst
+// conditioned (above: other rows hold there) it answers that re-selection would switch, twice
+// the same, with the G of the rows it would choose, and the rows held stay until
+// reselect_constraints switches to exactly those: their G then, bit for bit (the same rows of
+// the same evaluation), better conditioned than the rows left.
+TEST(BricardLinkage, ReselectionCandidateAsksWithoutChangingTheRows) {
+  const io::Mechanism built = test::build_test_case(test::kBricardStem);
+  const PreparedStart start = prepare_start(built.model, built.assembly);
+  multibody::MultibodySystem system(built.model, start.partition);
+  const BricardRun run = run_bricard(integrate::Method::kGeneralizedAlpha, 1e-4, 0.23);
+  std::size_t worst = 0;
+  double worst_margin = 1.0;
+  Eigen::MatrixXd G;
+  for (std::size_t k = 0; k < run.t.size(); ++k) {
+    if (run.t[k] < 0.19) continue;
+    system.constraint_jacobian_v(run.t[k], run.q[k], G);
+    if (const double margin = unit_rows_margin(G); margin < worst_margin) {
+      worst_margin = margin;
+      worst = k;
+    }
+  }
+  const double t = run.t[worst];
+  const Eigen::VectorXd& q = run.q[worst];
+  std::printf("  held rows' margin %.2e at t = %.4f s\n", worst_margin, t);
+
+  // At the start: nothing to switch (this call sets the pivot the held rows are judged by).
+  Eigen::MatrixXd G_candidate, G_again, G_held;
+  EXPECT_FALSE(system.reselection_candidate(0.0, start.state.q, G_candidate));
+  EXPECT_FALSE(system.reselect_constraints(0.0, start.state.q));
+  const std::vector<int> held = system.partition().independent;
+  ASSERT_TRUE(system.reselection_candidate(t, q, G_candidate));
+  ASSERT_TRUE(system.reselection_candidate(t, q, G_again));
+  EXPECT_EQ(system.partition().independent, held);
+  ASSERT_EQ(G_again.rows(), G_candidate.rows());
+  EXPECT_EQ((G_again - G_candidate).cwiseAbs().maxCoeff(), 0.0);
+
+  ASSERT_TRUE(system.reselect_constraints(t, q));
+  EXPECT_NE(system.partition().independent, held);
+  system.constraint_jacobian_v(t, q, G_held);
+  ASSERT_EQ(G_held.rows(), G_candidate.rows());
+  EXPECT_EQ((G_held - G_candidate).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(unit_rows_margin(G_held), 2.0 * worst_margin);
 }
 
 }  // namespace
