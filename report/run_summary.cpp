@@ -96,7 +96,7 @@ std::string mass_table(const RunData& run) {
 // joints, total mass), then the bodies' masses, folded.
 std::string model_line(const RunData& run, const RunDigest& d) {
   const std::string flexible = flexible_text(run);
-  // A nonlinear body has no stored mass: then the total would be short.
+  // A file without every body's mass (older files: nonlinear bodies had none): the total would be short.
   const std::string mass = d.total_mass              ? fmt::format(", {:.4g} kg in all", *d.total_mass)
                            : run.body_masses.empty() ? std::string(" (masses not in this results.h5)")
                                                      : fmt::format(" (masses of {} of them stored)", run.body_masses.size());

@@ -101,6 +101,14 @@ class MechanicalSystem {
     return false;
   }
 
+  // The coupled damping C ≈ −∂Q/∂v (nv x nv) of the same internal forces: a nonlinear body's
+  // Rayleigh damping. The structured iteration matrix adds it as it adds the diagonal c (γh C).
+  // Returns false (C untouched) when the system has none.
+  virtual bool coupled_damping(double /*t*/, const Eigen::VectorXd& /*q*/,
+                               Eigen::SparseMatrix<double>& /*C*/) const {
+    return false;
+  }
+
   // True when M and the coupled stiffness are sparse and large enough that dense algebra on
   // them dominates a run: evaluate() then fills SystemEvaluation::M_sparse instead of M, and
   // integrators that can factorise sparse matrices do (generalized-α; IDA refuses such a

@@ -177,6 +177,9 @@ class GeneralizedAlpha final : public Integrator {
   void dense_structured_block(double h, Eigen::MatrixXd& block);
   // The same matrix for a sparse system, in J_sparse_ (its pattern kept across matrices).
   void sparse_structured_matrix(double h);
+  // coupled_ = K + γ/(βh) C from the system's coupled stiffness and damping at next_ (so that
+  // βh² coupled_ carries βh² K + γh C); false when it has neither.
+  bool coupled_derivatives(double h);
   // J_sparse_'s pattern for the structured matrix (M, the diagonal, the coupled derivatives, G
   // and Gᵀ, and G's entries seen before) and where each of their entries lands (slots_).
   void build_sparse_pattern(bool coupled);
@@ -247,6 +250,7 @@ class GeneralizedAlpha final : public Integrator {
   int structured_pause_ = 0;  // accepted steps left on difference matrices after a slow structured one
   Eigen::VectorXd stiffness_, damping_;  // k and c of the system, nv each
   Eigen::SparseMatrix<double> coupled_;  // the system's coupled stiffness (when it has one)
+  Eigen::SparseMatrix<double> coupled_damping_;  // and its coupled damping (when it has one)
   // The last matrix of differences minus the structured one at its step correction_h_ (0: none).
   Eigen::MatrixXd correction_;
   double correction_h_ = 0.0;

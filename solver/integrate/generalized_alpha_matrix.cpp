@@ -63,7 +63,20 @@ void GeneralizedAlpha::dense_structured_block(double h, Eigen::MatrixXd& block) 
   const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
   block = ((1.0 - alpha_m) / (1.0 - alpha_f)) * eval_.M;
   block.diagonal() += beta * h * h * stiffness_ + gamma * h * damping_;
-  if (system_->coupled_stiffness(next_.t, next_.q, coupled_)) block += beta * h * h * coupled_;
+  if (coupled_derivatives(h)) block += beta * h * h * coupled_;
+}
+
+bool GeneralizedAlpha::coupled_derivatives(double h) {
+  const bool stiffness = system_->coupled_stiffness(next_.t, next_.q, coupled_);
+  if (!system_->coupled_damping(next_.t, next_.q, coupled_damping_)) return stiffness;
+  // ∂v/∂ξ = γ/(βh) ∂q/∂ξ: the damping enters as a stiffness scaled by γ/(βh).
+  const double scale = coef_.gamma / (coef_.beta * h);
+  if (stiffness) {
+    coupled_ += scale * coupled_damping_;
+  } else {
+    coupled_ = scale * coupled_damping_;
+  }
+  return true;
 }
 
 bool GeneralizedAlpha::build_structured_jacobian(double h) {
@@ -94,7 +107,7 @@ bool GeneralizedAlpha::build_structured_jacobian(double h) {
 
 void GeneralizedAlpha::sparse_structured_matrix(double h) {
   const auto& [alpha_m, alpha_f, beta, gamma] = coef_;
-  const bool coupled = system_->coupled_stiffness(next_.t, next_.q, coupled_);
+  const bool coupled = coupled_derivatives(h);
   bool valid = slots_valid_ && slots_.mass_pattern == sparse_pattern(eval_.M_sparse) &&
                slots_.coupled_pattern == (coupled ? sparse_pattern(coupled_) : std::vector<int>{});
   // A constraint entry outside the pattern (G's zeros change with the configuration) renews it.

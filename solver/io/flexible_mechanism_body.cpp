@@ -80,11 +80,12 @@ void read_formulation(const YamlValue& value, const YamlValue& entry, const Flex
                               "no {} yet)", key, std::string(key) == "stress" ? "stress output" : "such input"));
     }
   }
-  // Undamped only, for now: Rayleigh damping of the beams is not wired into the mechanism.
+  // Rayleigh damping or none: a nonlinear body has no modes to give ratios to.
   if (const auto damping = entry.find("damping")) {
+    if (damping->is_map()) return;  // {rayleigh: [α, β]}, read by read_damping
     if (!damping->is_scalar() || damping->as_non_negative() != 0.0) {
-      damping->fail("expected 'damping: 0' with 'formulation: nonlinear' (the nonlinear body is "
-                    "undamped for now), got another value");
+      damping->fail("expected 'damping: 0' or 'damping: {rayleigh: [alpha, beta]}' with 'formulation: "
+                    "nonlinear' (it has no modes to give damping ratios to), got another value");
     }
   }
 }

@@ -17,7 +17,8 @@
 //                                  # (docs/geometric-stiffening.md)
 //     formulation: modal           # modal (default) | nonlinear: the FE beams unreduced and
 //                                  # geometrically nonlinear (docs/nonlinear-beams.md); beams
-//                                  # only, undamped (damping absent or 0), galpha only, and none
+//                                  # only, damping absent, 0 or {rayleigh: [α, β]} (of the
+//                                  # deformation only), galpha only, and none
 //                                  # of modal_coordinates, modal_velocities,
 //                                  # geometric_stiffening, stress (InputError at the key)
 //     stress: {elements: all, every: 1}   # results: recovered stresses (docs/stress-recovery.md):

@@ -18,8 +18,9 @@ const FlexibleBodyCase& component_of(const Case& input, const FlexibleBodyEntry&
   return *found;
 }
 
-bool undamped(const multibody::ModalDamping& damping) {
-  if (damping.kind == multibody::ModalDamping::Kind::kRayleigh) return damping.alpha == 0.0 && damping.beta == 0.0;
+// Rayleigh damping (any α, β) or none: what a nonlinear body can take.
+bool rayleigh_or_undamped(const multibody::ModalDamping& damping) {
+  if (damping.kind == multibody::ModalDamping::Kind::kRayleigh) return true;
   return (damping.ratios.array() == 0.0).all();
 }
 
@@ -37,9 +38,9 @@ void check_can_be_nonlinear(const Case& input, const FlexibleBodyEntry& body, co
     if (values->values.size() > 0) fail(fmt::format("no '{}' (a nonlinear body has no modes), got one", values->key));
   }
   if (body.stress) fail("no 'stress' (not recovered for a nonlinear body yet), got one");
-  if (!undamped(body.damping) || body.damping_ratios.values.size() > 0) {
-    fail("'damping: 0' (the nonlinear body is undamped; without the key a modal body has a ratio of 0.01), "
-         "got another damping");
+  if (!rayleigh_or_undamped(body.damping) || body.damping_ratios.values.size() > 0) {
+    fail("'damping: 0' or 'damping: {rayleigh: [alpha, beta]}' (a nonlinear body has no modes to give damping "
+         "ratios to; without the key a modal body has a ratio of 0.01), got damping ratios");
   }
 }
 

@@ -180,6 +180,11 @@ void add_nonlinear_body(const FlexibleBodyEntry& entry, const std::vector<Flexib
   spec.initial_angular_velocity_B = entry.initial_angular_velocity_B;
   spec.mesh = drawing_mesh(component.model);
   spec.deflection_probe = entry.deflection_probe;
+  // `damping: {rayleigh: [α, β]}`; absent or 0: undamped (the reader refuses ratios).
+  if (entry.damping.kind == multibody::ModalDamping::Kind::kRayleigh) {
+    spec.mass_damping = entry.damping.alpha;
+    spec.stiffness_damping = entry.damping.beta;
+  }
   builder.add_nonlinear_body(spec, entry.where);
 }
 

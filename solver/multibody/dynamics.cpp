@@ -159,8 +159,8 @@ namespace {
 // at the velocity stage by the caller when there are force elements) and the geometric
 // stiffening from joint loads and frame accelerations.
 void add_interaction_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
-  // The co-rotational beams of nonlinear bodies between their node bodies (conservative).
-  add_nonlinear_body_forces(model, state.q, ws.Q);
+  // The co-rotational beams of nonlinear bodies between their node bodies, and their damping.
+  add_nonlinear_body_forces(model, state.q, state.v, ws.Q, powers ? &powers->dissipation : nullptr);
   if (!model.forces.empty()) {
     ForceVisitor visitor{state, ws, powers};
     for (size_t k = 0; k < model.forces.size(); ++k) {

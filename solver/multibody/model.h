@@ -198,6 +198,10 @@ struct NonlinearBody {
   Eigen::Vector3d p_WC = Eigen::Vector3d::Zero();      // FE component origin in ground, t = 0 [m]
   std::optional<DeflectionProbe> deflection_probe;     // output only; node indices
   FlexibleMesh mesh;                                   // for drawing (results), as a modal body's
+  // Rayleigh damping of the deformation only (nonlinear_body_damping.h): α on the node
+  // velocities relative to the body's rigid motion, β on the elements' deformation rates.
+  double mass_damping = 0.0;       // α ≥ 0 [1/s]
+  double stiffness_damping = 0.0;  // β ≥ 0 [s]
 };
 
 struct Model {

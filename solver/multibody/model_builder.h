@@ -69,6 +69,7 @@ struct NonlinearBodySpec {
   Eigen::Vector3d initial_angular_velocity_B = Eigen::Vector3d::Zero();  // component axes [rad/s]
   FlexibleMesh mesh;                                // for drawing; node_ids name the node bodies
   std::optional<DeflectionProbe> deflection_probe;  // output only; node indices
+  double mass_damping = 0.0, stiffness_damping = 0.0;  // Rayleigh α [1/s], β [s] ≥ 0 (model.h)
 };
 
 struct RsdaSpec {

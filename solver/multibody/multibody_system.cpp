@@ -65,6 +65,10 @@ void MultibodySystem::generalized_forces(double t, const Eigen::VectorXd& q,
   Q = workspace_.Q;
 }
 
+bool MultibodySystem::coupled_damping(double /*t*/, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& C) const {
+  return nonlinear_body_damping(model_, q, C);
+}
+
 void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v) {
   state_.t = t;
   state_.q = q;

@@ -54,6 +54,8 @@ class MultibodySystem final : public MechanicalSystem {
   bool diagonal_stiffness_damping(Eigen::VectorXd& k, Eigen::VectorXd& c) const override;
   // The co-rotational beams of the nonlinear bodies (nonlinear_body.h); false without them.
   bool coupled_stiffness(double t, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& K) const override;
+  // Their Rayleigh damping (nonlinear_body.h); false when no nonlinear body is damped.
+  bool coupled_damping(double t, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& C) const override;
   // With nonlinear bodies: their node bodies make M and K large and block sparse.
   bool sparse() const override { return !model_.nonlinear_bodies.empty(); }
   // One pass: body terms, then the constraint set once (marker kinematics once).

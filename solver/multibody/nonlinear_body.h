@@ -28,14 +28,28 @@ namespace limber::multibody {
 nonlinear_beam::BeamState nonlinear_body_state(const Model& model, const NonlinearBody& body,
                                                const Eigen::VectorXd& q);
 
-// Q += −Tᵀ f_int over every nonlinear body of the model (Q: nv).
-void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, Eigen::VectorXd& Q);
+// Q += −Tᵀ f_int over every nonlinear body of the model (Q: nv), with its Rayleigh damping
+// (NonlinearBody::mass_damping α, stiffness_damping β), which acts on the deformation only:
+//  - β: Kelvin–Voigt damping of each element's local deformations, f_l = K_l (p_l + β ṗ_l)
+//    (nonlinear_beam/corotational_beam.h, DeformationRateDamping); a rigid velocity makes none;
+//  - α: −α M (v − v_r) on the node bodies, v_r the M-orthogonal projection of v on the body's
+//    six rigid velocities: no net force or moment on the body.
+// On a free-free mode φ_i about the undeformed state both give c_i = α + β ω_i², the modal
+// body's `damping: {rayleigh: [α, β]}`. `dissipation` (when given) += the power they remove [W].
+void add_nonlinear_body_forces(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                               Eigen::VectorXd& Q, double* dissipation = nullptr);
 
 // The beams' stiffness K above as one nv x nv sparse matrix. Its pattern (every element's
 // node-pair 6 x 6 blocks) is built on the first call, or when K has another size; later calls
 // write the values in place, so the pattern stays the same. Returns false (K untouched) when
 // the model has no nonlinear body.
 bool nonlinear_body_stiffness(const Model& model, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& K);
+
+// The damping above as C ≈ −∂Q/∂v (nv x nv sparse, the pattern of nonlinear_body_stiffness,
+// written in place the same way): β's element blocks exactly, α M per node body without the
+// rank-6 rigid projection (a Newton matrix: α h ≪ 1 makes what it leaves out small). Returns
+// false (C untouched) when no nonlinear body is damped.
+bool nonlinear_body_damping(const Model& model, const Eigen::VectorXd& q, Eigen::SparseMatrix<double>& C);
 
 // Strain energy of the beams of every nonlinear body [J] (f_int is its gradient).
 double nonlinear_body_strain_energy(const Model& model, const Eigen::VectorXd& q);

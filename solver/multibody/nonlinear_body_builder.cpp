@@ -22,8 +22,14 @@ int ModelBuilder::add_nonlinear_body(const NonlinearBodySpec& spec, const Source
       }
     }
   }
+  if (!(spec.mass_damping >= 0.0 && spec.stiffness_damping >= 0.0)) {
+    throw InputError(fmt::format("body \"{}\" damping: expected Rayleigh α, β ≥ 0, got {:g}, {:g}", spec.name,
+                                 spec.mass_damping, spec.stiffness_damping), where);
+  }
   NonlinearBody body;
   body.name = spec.name;
+  body.mass_damping = spec.mass_damping;
+  body.stiffness_damping = spec.stiffness_damping;
   body.structure = spec.structure;
   body.R_WC = rotation_matrix(spec.initial_pose.orientation.normalized());
   body.p_WC = spec.initial_pose.position;

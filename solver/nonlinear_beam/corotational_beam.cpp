@@ -74,7 +74,8 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
                                            const Eigen::Vector3d& x_b,
                                            const Eigen::Matrix3d& rotation_a,
                                            const Eigen::Matrix3d& rotation_b,
-                                           bool with_tangent) {
+                                           bool with_tangent,
+                                           const DeformationRateDamping& damping) {
   // Chord: current length and direction r1.
   const Eigen::Vector3d chord = x_b - x_a;
   const double ln = chord.norm();
@@ -91,19 +92,20 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
   // Element frame R_r = [r1 r2 r3].
   const Eigen::Matrix3d frame = element_frame(r1, triad_a, triad_b);
 
-  // Local deformations p_l and forces f_l = K_l p_l.
+  // Local deformations p_l and their elastic forces K_l p_l.
   const Eigen::Vector3d theta_a = log_so3(frame.transpose() * triad_a);
   const Eigen::Vector3d theta_b = log_so3(frame.transpose() * triad_b);
   Vector7d p_l;
   p_l << ln - element.length_0, theta_a, theta_b;
-  const Vector7d f_l = element.local_stiffness * p_l;
+  Vector7d f_l = element.local_stiffness * p_l;
 
-  // Forces on the spin-based local variables p_a: f_a = B_h^T f_l, B_h = diag(1, Ts_a^-1, Ts_b^-1).
+  // B_h = diag(1, Ts_a^-1, Ts_b^-1) maps the spin-based local variables p_a to p_l.
   const Eigen::Matrix3d ts_inv_a = inverse_left_jacobian(theta_a);
   const Eigen::Matrix3d ts_inv_b = inverse_left_jacobian(theta_b);
-  const double axial = f_l(0);
-  const Eigen::Vector3d m_a = ts_inv_a.transpose() * f_l.segment<3>(1);
-  const Eigen::Vector3d m_b = ts_inv_b.transpose() * f_l.segment<3>(4);
+  Matrix7d b_h = Matrix7d::Zero();
+  b_h(0, 0) = 1.0;
+  b_h.block<3, 3>(1, 1) = ts_inv_a;
+  b_h.block<3, 3>(4, 4) = ts_inv_b;
 
   // The mean vector's components in the element frame and the eta ratios.
   const Eigen::Vector3d ql = frame.transpose() * q;
@@ -141,21 +143,41 @@ ElementResponse corotational_beam_response(const CorotationalBeam& element,
   b_a.row(0) = r;
   b_a.bottomRows<6>() = p;
 
+  ElementResponse out;
+  // Kelvin-Voigt damping: f_l += beta K_l p_l', p_l' = B_h B_a E^T v (zero for a rigid velocity).
+  if (damping.beta > 0.0) {
+    Vector12d v_local;
+    for (int bi = 0; bi < 4; ++bi) v_local.segment<3>(3 * bi) = frame.transpose() * damping.velocity.segment<3>(3 * bi);
+    const Matrix7x12 b_local = b_h * b_a;
+    const Vector7d rate = b_local * v_local;
+    const Vector7d f_damping = damping.beta * (element.local_stiffness * rate);
+    f_l += f_damping;
+    out.dissipation = rate.dot(f_damping);
+    if (damping.with_matrix) {
+      const Matrix12d c_local = damping.beta * b_local.transpose() * element.local_stiffness * b_local;
+      for (int bi = 0; bi < 4; ++bi) {
+        for (int bj = 0; bj < 4; ++bj) {
+          out.damping.block<3, 3>(3 * bi, 3 * bj) = frame * c_local.block<3, 3>(3 * bi, 3 * bj) * frame.transpose();
+        }
+      }
+    }
+  }
+
+  // Forces on the spin-based local variables p_a: f_a = B_h^T f_l.
+  const double axial = f_l(0);
+  const Eigen::Vector3d m_a = ts_inv_a.transpose() * f_l.segment<3>(1);
+  const Eigen::Vector3d m_b = ts_inv_b.transpose() * f_l.segment<3>(4);
+
   // Internal force in local components: f = r^T N + P^T m.
   Vector7d f_a;
   f_a << axial, m_a, m_b;
   const Vector12d f_local = b_a.transpose() * f_a;
-  ElementResponse out;
   out.frame = frame;
   out.local_forces = f_l;
   for (int bi = 0; bi < 4; ++bi) out.force.segment<3>(3 * bi) = frame * f_local.segment<3>(3 * bi);
   if (!with_tangent) return out;
 
   // K_a = B_h^T K_l B_h + K_h.
-  Matrix7d b_h = Matrix7d::Zero();
-  b_h(0, 0) = 1.0;
-  b_h.block<3, 3>(1, 1) = ts_inv_a;
-  b_h.block<3, 3>(4, 4) = ts_inv_b;
   Matrix7d k_a = b_h.transpose() * element.local_stiffness * b_h;
   k_a.block<3, 3>(1, 1) += moment_rotation_stiffness(theta_a, f_l.segment<3>(1));
   k_a.block<3, 3>(4, 4) += moment_rotation_stiffness(theta_b, f_l.segment<3>(4));

@@ -49,11 +49,25 @@ struct CorotationalBeam {
 // The element of FE beam `beam` of `model`. Throws InputError as fe::beam_local_axes.
 CorotationalBeam make_corotational_beam(const fe::FeModel& model, const fe::BeamElement& beam);
 
+// Kelvin-Voigt damping of the local deformations (docs/nonlinear-beams.md, "Rayleigh damping in
+// a mechanism"): f_l = K_l (p_l + beta p_l'), p_l' = B_h B_a E^T v, v the nodes' velocities
+// (x_a', w_a, x_b', w_b: translation rates [m/s] and spatial angular velocities [rad/s],
+// component axes). Objective: B annihilates rigid velocities, so rigid motion is not damped.
+struct DeformationRateDamping {
+  double beta = 0.0;                       // [s]; 0: undamped (the force is then unchanged)
+  Vector12d velocity = Vector12d::Zero();  // v above
+  bool with_matrix = false;                // fill ElementResponse::damping
+};
+
 struct ElementResponse {
-  Vector12d force;         // internal force f_g (what the element exerts on its nodes, negated)
-  Matrix12d tangent;       // d f_g / d(x_a, w_a, x_b, w_b), exact; not symmetric off equilibrium
+  Vector12d force;         // internal force f_g (what the element exerts on its nodes, negated),
+                           // with the damping force when DeformationRateDamping::beta > 0
+  Matrix12d tangent;       // d f_g / d(x_a, w_a, x_b, w_b), exact without damping; not symmetric
+                           // off equilibrium
   Eigen::Matrix3d frame;   // element frame R_r (columns r1, r2, r3)
   Vector7d local_forces;   // f_l = (N, m_a, m_b) conjugate to p_l
+  double dissipation = 0.0;  // beta p_l'^T K_l p_l' [W]: the power the damping removes
+  Matrix12d damping;         // d f_g / d v = beta (B_h B_a E^T)^T K_l (B_h B_a E^T), with_matrix only
 };
 
 // Strain energy 1/2 p_l^T K_l p_l [J] of the element in the same configuration; f_g is its
@@ -67,11 +81,14 @@ double corotational_beam_energy(const CorotationalBeam& element, const Eigen::Ve
 // and the mean y axis q is not parallel to the chord (a relative rotation of the two node
 // triads near pi, outside any beam's small-strain range). Without `with_tangent` the tangent
 // is left unset: a residual needs only the force, and the tangent is three quarters of the cost.
+// With `damping` (beta > 0) the force carries the deformation-rate damping; the tangent then
+// leaves out the change of the damping force with the configuration (a Newton matrix term).
 ElementResponse corotational_beam_response(const CorotationalBeam& element,
                                            const Eigen::Vector3d& x_a,
                                            const Eigen::Vector3d& x_b,
                                            const Eigen::Matrix3d& rotation_a,
                                            const Eigen::Matrix3d& rotation_b,
-                                           bool with_tangent = true);
+                                           bool with_tangent = true,
+                                           const DeformationRateDamping& damping = {});
 
 }  // namespace limber::nonlinear_beam

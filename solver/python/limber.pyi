@@ -135,6 +135,7 @@ def run(
     output: _Path | None = None,
     progress: Callable[[float, float], object] | None = None,
     modes: int | None = None,
+    formulation: str | None = None,
 ) -> Results:
     """Runs a mechanism as `limber run` does; results in memory unless output names a folder."""
 

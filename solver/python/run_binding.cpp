@@ -26,10 +26,11 @@ namespace {
 
 py::object run(const py::object& case_or_path, std::optional<std::string> integrator, std::optional<double> step,
                std::optional<double> rtol, std::optional<double> t_end, std::optional<std::filesystem::path> output,
-               std::optional<py::function> progress, std::optional<int> modes) {
+               std::optional<py::function> progress, std::optional<int> modes, std::optional<std::string> formulation) {
   const std::shared_ptr<const io::Case> input = case_of(case_or_path);
   run::SettingsOverrides overrides;
   overrides.integrator = integrator.value_or("");
+  overrides.formulation = formulation.value_or("");
   overrides.step = step;
   overrides.rtol = rtol;
   overrides.t_end = t_end;
@@ -79,7 +80,8 @@ void bind_run(py::module_& module) {
   module.def("run", &run, py::arg("case_or_path"), py::kw_only(), py::arg("integrator") = py::none(),
              py::arg("step") = py::none(), py::arg("rtol") = py::none(), py::arg("t_end") = py::none(),
              py::arg("output") = py::none(), py::arg("progress") = py::none(), py::arg("modes") = py::none(),
-             R"(run(case_or_path, *, integrator=None, step=None, rtol=None, t_end=None, output=None, progress=None, modes=None) -> Results
+             py::arg("formulation") = py::none(),
+             R"(run(case_or_path, *, integrator=None, step=None, rtol=None, t_end=None, output=None, progress=None, modes=None, formulation=None) -> Results
 
 Runs a mechanism as `limber run` does, in this process, and returns its Results.
 
@@ -100,6 +102,9 @@ Arguments (None keeps the case's `run` settings, docs/case-format.md):
                 GIL held); an exception it raises stops the run like Ctrl-C
   modes         normal modes of every flexible body in place of the case's (>= 0; their
                 static modes kept), as `limber run --modes`
+  formulation   'nonlinear' makes every flexible body of the case a nonlinear (co-rotational,
+                unreduced) body, as `limber run --formulation nonlinear`; 'modal' or None
+                keeps the case's (docs/nonlinear-beams.md)
 
 The GIL is released while the mechanism is reduced, built and integrated, so threads can
 run cases side by side. Ctrl-C (in the main thread) or an exception from `progress` stops the

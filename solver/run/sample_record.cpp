@@ -114,9 +114,29 @@ results::FlexibleBodySpec flexible_body_spec(const multibody::Body& body,
   return spec;
 }
 
+// A nonlinear body's undeformed mass, centre of mass and inertia about it, component axes (its
+// recorded frame at t = 0): the node bodies' point masses at the nodes plus their rotary
+// inertias (node axes along the component axes when undeformed).
+results::MassProperties nonlinear_mass_properties(const multibody::Model& model, const multibody::NonlinearBody& body) {
+  const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
+  results::MassProperties out;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const multibody::Body& node = model.bodies[static_cast<std::size_t>(body.node_bodies[k])];
+    out.mass += node.mass;
+    out.com_B += node.mass * X[k];
+  }
+  out.com_B /= out.mass;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const multibody::Body& node = model.bodies[static_cast<std::size_t>(body.node_bodies[k])];
+    const Eigen::Vector3d d = X[k] - out.com_B;
+    out.inertia_com_B += node.inertia_com_B + node.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  }
+  return out;
+}
+
 // A nonlinear body as a flexible body of no modes (docs/results-format.md): its mesh in the
-// component frame, its node displacements and its deflection probe.
-results::FlexibleBodySpec nonlinear_body_spec(const multibody::NonlinearBody& body) {
+// component frame, its node displacements, its deflection probe and its mass properties.
+results::FlexibleBodySpec nonlinear_body_spec(const multibody::Model& model, const multibody::NonlinearBody& body) {
   const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
   Eigen::MatrixXd nodes(3, static_cast<Eigen::Index>(X.size()));
   for (std::size_t k = 0; k < X.size(); ++k) nodes.col(static_cast<Eigen::Index>(k)) = X[k];
@@ -124,6 +144,7 @@ results::FlexibleBodySpec nonlinear_body_spec(const multibody::NonlinearBody& bo
   spec.mode_translations.resize(nodes.size(), 0);
   spec.has_deflection = body.deflection_probe.has_value();
   spec.has_node_displacements = true;
+  spec.mass_properties = nonlinear_mass_properties(model, body);
   return spec;
 }
 
@@ -157,7 +178,7 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
     const multibody::Body& body = model.bodies[b];
     if (const int owner = nonlinear_of[b]; owner >= 0) {
       const multibody::NonlinearBody& nonlinear = model.nonlinear_bodies[static_cast<std::size_t>(owner)];
-      if (nonlinear.node_bodies.front() == static_cast<int>(b)) writer.add_flexible_body(nonlinear_body_spec(nonlinear));
+      if (nonlinear.node_bodies.front() == static_cast<int>(b)) writer.add_flexible_body(nonlinear_body_spec(model, nonlinear));
       continue;
     }
     std::vector<results::ShapeSpec> shapes;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "input_error_matchers.h"
 #include "nonlinear_beam/beam_structure.h"
@@ -94,6 +95,18 @@ TEST(NonlinearBodyReader, NodesBecomeBodiesJointsLandOnThemAndNoModesAreComputed
   EXPECT_EQ(arm.deflection_probe->chord_end, 10);
 }
 
+TEST(NonlinearBodyReader, RayleighDampingReachesTheBodyAndNoKeyLeavesItUndamped) {
+  const auto damping_of = [](const std::string& text) {
+    const Case input = read_case_text(text, "test.yaml");
+    const multibody::NonlinearBody& arm = build_mechanism(input, reduce_case(input, ReductionScope::kMechanismBodies)).model.nonlinear_bodies[0];
+    return std::pair{arm.mass_damping, arm.stiffness_damping};
+  };
+  EXPECT_EQ(damping_of(kCase), (std::pair{0.0, 0.0}));
+  EXPECT_EQ(damping_of(edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    damping: 0\n")), (std::pair{0.0, 0.0}));
+  EXPECT_EQ(damping_of(edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    damping: {rayleigh: [2.5, 3e-5]}\n")),
+            (std::pair{2.5, 3e-5}));
+}
+
 TEST(NonlinearBodyReader, WhatItCannotHaveFailsAtItsKey) {
   // A formulation that does not exist.
   std::string text = edited("formulation: nonlinear", "formulation: exact");
@@ -107,9 +120,14 @@ TEST(NonlinearBodyReader, WhatItCannotHaveFailsAtItsKey) {
   EXPECT_TRUE(fails_at(text, location_of(text, "true\n"), "'geometric_stiffening' is not available with 'formulation: nonlinear'"));
   text = edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    modal_coordinates: [0, 0, 0]\n");
   EXPECT_TRUE(fails_at(text, location_of(text, "[0, 0, 0]\n"), "'modal_coordinates' is not available"));
-  // Damping: undamped only, for now.
+  // Damping: Rayleigh or none; a ratio, or ratios per mode, need modes.
   text = edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    damping: 0.02\n");
-  EXPECT_TRUE(fails_at(text, location_of(text, "0.02\n"), "expected 'damping: 0' with 'formulation: nonlinear'"));
+  EXPECT_TRUE(fails_at(text, location_of(text, "0.02\n"),
+                       "expected 'damping: 0' or 'damping: {rayleigh: [alpha, beta]}' with 'formulation: nonlinear'"));
+  text = edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    damping: [0.01, 0.02]\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "[0.01, 0.02]\n"), "expected 'damping: 0' or"));
+  text = edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    damping: {rayleigh: [-1, 0]}\n");
+  EXPECT_TRUE(fails_at(text, location_of(text, "-1"), "-1"));
   // Force elements and acceleration probes on its nodes.
   text = kCase + "forces:\n  spring: {type: tsda, marker_i: end, marker_j: face, stiffness: 100}\n";
   EXPECT_TRUE(fails_at(text, location_of(text, "{type: tsda"), "TSDA \"spring\": expected its markers on rigid or modal bodies"));

@@ -58,6 +58,62 @@ TEST(NonlinearCli, SeedSetupWritesTheResultsTheReadersKnow) {
   H5Fclose(file);
 }
 
+// Every value of a double attribute of object `path`.
+std::vector<double> read_double_attribute(hid_t file, const std::string& path, const std::string& name) {
+  const hid_t attribute = H5Aopen_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  if (attribute < 0) return {};
+  const hid_t space = H5Aget_space(attribute);
+  std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data());
+  H5Sclose(space);
+  H5Aclose(attribute);
+  return values;
+}
+
+// The nonlinear rod's mass properties in results.h5, as the rigid and modal bodies' (body frame
+// = the FE component axes at t = 0): its 101 nodes' lumped masses and rotary inertias
+// (nonlinear_beam/beam_inertia.h). Mass ρ A L to round-off (lumping keeps it exactly); centre at
+// mid-span; inertia the slender rod's m L²/12 plus what the lumping adds, in closed form: the
+// half masses at the ends of n equal elements give m L²/12 (1 + 2/n²) (the trapezoidal rule is
+// exact to that term for x²), the HRZ rotary terms 2 n ρ A l³/78 = m l²/39 and the sections' ρ I L.
+TEST(NonlinearCli, SeedSetupStoresTheRodsMassAndInertia) {
+  const auto dir = test::fresh_directory("cli_nonlinear_mass");
+  const test::CommandRun run =
+      test::run_command(LIMBER_EXE, "run " + std::string(LIMBER_CASES_DIR) +
+                                        "/slider_crank_seed_setup_nonlinear.yaml -o " + dir.string() + " --t-end 0");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const hid_t file = H5Fopen((dir / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const std::vector<double> mass = read_double_attribute(file, "/bodies/rod", "mass");
+  const std::vector<double> com = read_double_attribute(file, "/bodies/rod", "center_of_mass");
+  const std::vector<double> inertia = read_double_attribute(file, "/bodies/rod", "inertia");
+  H5Fclose(file);
+  ASSERT_EQ(mass.size(), 1u);
+  ASSERT_EQ(com.size(), 3u);
+  ASSERT_EQ(inertia.size(), 9u);
+  // The case's rod: 1 m, 10 mm (ground y) x 20 mm (ground z), steel, 100 elements.
+  const double rho = 7820.0, width = 0.01, height = 0.02, length = 1.0, n = 100.0;
+  const double m = rho * width * height * length, l = length / n;
+  const double section_y = width * height * height * height / 12.0;  // ∫ z² dA
+  const double section_z = height * width * width * width / 12.0;    // ∫ y² dA
+  const double rod = m * length * length / 12.0;
+  const double lumped = rod * (1.0 + 2.0 / (n * n)) + m * l * l / 39.0;
+  EXPECT_NEAR(mass[0], m, 1e-14 * m);
+  EXPECT_NEAR(com[0], 0.5 * length, 1e-14);
+  EXPECT_NEAR(com[1], 0.0, 1e-15);
+  EXPECT_NEAR(com[2], 0.0, 1e-15);
+  // Row-major 3 x 3, about the centre: diagonal as above, off-diagonal zero (a straight rod on
+  // its principal axes); 1e-12 relative: sums of 101 terms.
+  const Eigen::Matrix3d expected = Eigen::Vector3d(rho * (section_y + section_z) * length, lumped + rho * section_y * length,
+                                                   lumped + rho * section_z * length).asDiagonal();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(inertia[static_cast<std::size_t>(3 * i + j)], expected(i, j), 1e-12 * rod) << i << j;
+  }
+  // Against the slender rod's m L²/12: the section's ρ I_y L adds 4.0e-4 of it, the lumping
+  // 2/n² = 2e-4 and the HRZ terms 3e-5 (6.3e-4 in all, the exact sum asserted above).
+  EXPECT_NEAR(inertia[4], rod, 7e-4 * rod);
+}
+
 // The node displacements describe the run's node states: the mid-span probe recomputed from the
 // written nodes (ground positions p + R (X + u), then the probe's own definition, nonlinear_body.h:
 // node 51's offset from the chord R2-R3 turned back by the smallest rotation taking the
