@@ -9,14 +9,14 @@ namespace limber::render {
 SampleBracket bracket(const Eigen::VectorXd& time, double t) {
   LIMBER_DEMAND(time.size() >= 1);
   const Eigen::Index ns = time.size();
-  if (ns == 1 || t <= time(0)) return {0, 0.0};
-  if (t >= time(ns - 1)) return {ns - 1, 0.0};
+  if (ns == 1 || t <= time(0)) return {0, 0.0, time(0)};
+  if (t >= time(ns - 1)) return {ns - 1, 0.0, time(ns - 1)};
   // First sample strictly after t, then the interval before it.
   const double* begin = time.data();
   const Eigen::Index after = std::upper_bound(begin, begin + ns, t) - begin;
   const Eigen::Index i = after - 1;
   const double span = time(i + 1) - time(i);
-  return {i, span > 0.0 ? (t - time(i)) / span : 0.0};
+  return {i, span > 0.0 ? (t - time(i)) / span : 0.0, t};
 }
 
 namespace {

@@ -21,6 +21,7 @@ struct BodyState {
 struct SampleBracket {
   Eigen::Index i = 0;
   double w = 0.0;
+  double t = 0.0;  // the time bracketed [s] (clamped to the samples' span)
 };
 SampleBracket bracket(const Eigen::VectorXd& time, double t);
 

@@ -486,6 +486,8 @@ void Scene::update(double t) {
   for (std::size_t j = 0; j < s.joints.size(); ++j) {
     const Eigen::Vector3d p = joint_position(s.results.joints[j], at);
     s.joints[j]->SetPosition(p.x(), p.y(), p.z());
+    // A released hold-down is gone.
+    s.joints[j]->SetVisibility(s.results.joints[j].held_at(at.t) ? 1 : 0);
   }
   s.extras->update(at);
 

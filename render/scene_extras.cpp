@@ -370,6 +370,9 @@ void SceneExtras::update(const SampleBracket& at) {
   for (std::size_t j = 0; j < s.glyphs.size(); ++j) {
     if (!s.glyphs[j]) continue;
     const JointTrack& joint = s.results.joints[j];
+    // A released hold-down is gone (with its rail).
+    s.glyphs[j]->SetVisibility(joint.held_at(at.t) ? 1 : 0);
+    if (s.rails[j]) s.rails[j]->SetVisibility(joint.held_at(at.t) ? 1 : 0);
     Eigen::Vector3d p_i, p_j;
     Eigen::Matrix3d R_i, R_j;
     marker_pose(joint.marker_i, at, p_i, R_i);

@@ -154,6 +154,12 @@ class MechanicalSystem {
   // Event k has been located at (t, q, v): switch its mode (discrete state, hence non-const).
   virtual void apply_event(int /*k*/, double /*t*/, const Eigen::VectorXd& /*q*/,
                            const Eigen::VectorXd& /*v*/) {}
+  // True after apply_event when the system's equations themselves must change there (a joint
+  // released at an event: nc changes), which no integrator can do inside its run. The
+  // integrator then ends its advance at the event with StatusCode::kRestartDue and the state
+  // there; its caller changes the system and starts a new integrator (integrate::simulate).
+  // Default: never.
+  virtual bool restart_due() const { return false; }
 };
 
 }  // namespace limber

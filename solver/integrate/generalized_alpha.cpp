@@ -123,6 +123,12 @@ Status GeneralizedAlpha::advance_to(double t_out, Sample& out) {
   // Step until the last step ends at or after t_out.
   while (curr_.t < t_out - time_tolerance(t_out)) {
     const Status status = take_step();
+    // New equations at an event: the state there, and this integrator ends.
+    if (status.code == StatusCode::kRestartDue) {
+      interpolate(curr_.t, out);
+      failed_ = true;
+      failure_ = status;
+    }
     if (!status.ok()) return status;
   }
   if ((stretch = step_overs_.holding(t_out)) != nullptr) {
@@ -162,6 +168,9 @@ Status GeneralizedAlpha::check_budgets() {
 
 Status GeneralizedAlpha::take_step() {
   if (const Status status = apply_pending_events(); !status.ok()) return status;
+  if (system_->restart_due()) {
+    return {StatusCode::kRestartDue, curr_.t, fmt::format("at t = {:.6g} s: the equations change", curr_.t)};
+  }
   if (const Status status = apply_breakpoint(); !status.ok()) return status;
   if (const Status status = reselect_constraints(); !status.ok()) return status;
   // The next grid point (or the end of the event window), or the next velocity breakpoint

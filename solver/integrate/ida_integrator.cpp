@@ -498,6 +498,7 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
   Impl& s = *impl_;
   LIMBER_DEMAND(s.system != nullptr);
   if (s.failed) return s.failure;
+  bool restart_due = false;  // an event changed the system's equations (restart_due)
   if (t_out < s.t0 - time_tolerance(t_out) || t_out > s.options.t_stop + time_tolerance(t_out)) {
     throw InputError(fmt::format("output time: expected {} ≤ t ≤ {}, got {}", s.t0,
                                  s.options.t_stop, t_out));
@@ -513,6 +514,12 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       // (Right after a step-over IDA has no history to interpolate a restart from.)
       if (s.stepped && !s.jumped) {
         s.apply_pending_events();
+        // New equations at the event: y, y' hold the state there (the restart loaded them).
+        if (s.system->restart_due()) {
+          t_out = s.t_reached;
+          restart_due = true;
+          break;
+        }
         s.apply_breakpoint();
         s.reselect_constraints(s.t_reached);
       }
@@ -553,15 +560,17 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       if (rejected >= kStruggle && s.pending_events.empty()) s.step_over_singular_configuration(kStruggleRatio);
     }
     // A sample inside a stretch stepped over (before IDA's restart there).
-    if (const SteppedOverStretch* stretch = s.step_overs.holding(t_out)) {
+    if (const SteppedOverStretch* stretch = restart_due ? nullptr : s.step_overs.holding(t_out)) {
       stretch->serve(*s.system, t_out, out);
       out.statistics = stats_;
       return Status::success(t_out);
     }
     // A sample on a velocity breakpoint: IDA stopped half a time tolerance before it.
     const double t_state = std::min(t_out, s.t_reached);
-    LIMBER_DEMAND(IDAGetDky(s.ida, t_state, 0, s.y) == IDA_SUCCESS);
-    LIMBER_DEMAND(IDAGetDky(s.ida, t_state, 1, s.yp) == IDA_SUCCESS);
+    if (!restart_due) {
+      LIMBER_DEMAND(IDAGetDky(s.ida, t_state, 0, s.y) == IDA_SUCCESS);
+      LIMBER_DEMAND(IDAGetDky(s.ida, t_state, 1, s.yp) == IDA_SUCCESS);
+    }
   }
 
   // Unpack y(t_out), y'(t_out).
@@ -578,6 +587,11 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
     s.failed = true;
     s.failure = {StatusCode::kNaN, t_out,
                  fmt::format("at t = {:.6g} s: the solution is not finite", t_out)};
+    return s.failure;
+  }
+  if (restart_due) {
+    s.failed = true;
+    s.failure = {StatusCode::kRestartDue, t_out, fmt::format("at t = {:.6g} s: the equations change", t_out)};
     return s.failure;
   }
   return Status::success(t_out);

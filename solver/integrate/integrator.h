@@ -44,7 +44,10 @@ class Integrator {
   virtual Status init(MechanicalSystem& system, const InitialState& x0,
                       const IntegratorOptions& options) = 0;
   // Advances to t_out ≥ the previous output time and fills `out`. On failure `out` is not
-  // touched and the status says when and why; the integrator cannot continue.
+  // touched and the status says when and why; the integrator cannot continue. When an event
+  // located before t_out leaves the system's restart_due() true, it stops there instead:
+  // StatusCode::kRestartDue, `out` the state at the event (after its mode switch), and the
+  // integrator cannot continue either (its caller starts a new one).
   virtual Status advance_to(double t_out, Sample& out) = 0;
   virtual const Statistics& statistics() const = 0;
 };

@@ -48,21 +48,27 @@ SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& opt
   Eigen::VectorXd integrals_before = Eigen::VectorXd::Zero(options.quadrature.size);
   Sample sample;
   std::size_t i = 0;  // next sample
-  for (std::size_t stretch = 0; stretch < ends.size(); ++stretch) {
+  std::size_t stretch = 0;
+  while (true) {
     // Integrate no further than the stretch's end.
     IntegratorOptions run_options = options;
     run_options.t_stop = ends[stretch];
     auto integrator = make_integrator(run_options.method);
     result.status = integrator->init(system, from, run_options);
     // The state at time t, with the integrals and work of the stretches before.
-    const auto advance = [&](double t) {
-      result.status = integrator->advance_to(t, sample);
-      if (!result.status.ok()) return false;
+    const auto add_before = [&] {
       sample.integrals += integrals_before;
       sample.statistics = combined(before, sample.statistics);
+    };
+    const auto advance = [&](double t) {
+      result.status = integrator->advance_to(t, sample);
+      if (result.status.code == StatusCode::kRestartDue) add_before();
+      if (!result.status.ok()) return false;
+      add_before();
       return true;
     };
-    // Deliver every sample of the stretch until its end or the first failure.
+    // Deliver every sample of the stretch until its end, a restart at an event or the first
+    // failure.
     bool at_end = false;
     for (; result.status.ok() && i < sample_times.size() &&
            sample_times[i] <= ends[stretch] + time_tolerance(ends[stretch]);
@@ -74,13 +80,21 @@ SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& opt
       result.status = check(sample);
     }
     result.statistics = combined(before, integrator->statistics());
-    if (!result.status.ok() || stretch + 1 == ends.size()) break;
+    // An event changed the equations (MechanicalSystem::restart_due): restart there, in the
+    // same stretch.
+    const bool at_event = result.status.code == StatusCode::kRestartDue;
+    LIMBER_DEMAND(!at_event || restarts.apply);
+    if (!at_event && (!result.status.ok() || stretch + 1 == ends.size())) break;
     // The restart: the state there (served already when it is a sample time), changed.
-    if (!at_end && !advance(ends[stretch])) break;
-    restarts.apply(ends[stretch], sample);
-    from = {ends[stretch], sample.q, sample.v};
+    if (!at_event && !at_end && !advance(ends[stretch])) break;
+    const double t_restart = at_event ? sample.t : ends[stretch];
+    restarts.apply(t_restart, sample);
+    LIMBER_DEMAND(!system.restart_due());  // or the next integrator would stop at once
+    from = {t_restart, sample.q, sample.v};
     integrals_before = sample.integrals;
     before = result.statistics;
+    result.status = Status::success(t_restart);
+    if (!at_event) ++stretch;
   }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

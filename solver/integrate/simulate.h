@@ -28,7 +28,9 @@ SimulationResult simulate(MechanicalSystem& system, const IntegratorOptions& opt
 // the change. At each time (ascending; those before the start or at or after the last sample
 // are ignored) the integrator stops exactly there, `apply` gets the time and the state reached
 // (a sample time or not), and a new integrator starts from it. Integrals
-// (IntegratorOptions::quadrature) and statistics run on across restarts.
+// (IntegratorOptions::quadrature) and statistics run on across restarts. `apply` is also called
+// at a located event after which the system's equations change (MechanicalSystem::restart_due,
+// a joint released at an event), with the state there; it must then leave restart_due() false.
 struct Restarts {
   std::vector<double> times;
   std::function<void(double t, const Sample& state)> apply;

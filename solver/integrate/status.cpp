@@ -12,6 +12,7 @@ const char* to_string(StatusCode code) {
     case StatusCode::kTooManySteps: return "too_many_steps";
     case StatusCode::kWallClock: return "wall_clock";
     case StatusCode::kRedundantViolated: return "redundant_equation_violated";
+    case StatusCode::kRestartDue: return "restart_due";
   }
   return "unknown";
 }

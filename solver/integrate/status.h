@@ -15,6 +15,9 @@ enum class StatusCode {
   kTooManySteps,         // the step budget (IntegratorOptions::max_steps) ran out
   kWallClock,            // the wall-clock budget (IntegratorOptions::max_wall_seconds) ran out
   kRedundantViolated,    // a redundant equation the run does not hold came loose (run/redundant_row_watch.h)
+  kRestartDue,           // not a failure: the system's equations change at a located event
+                         // (MechanicalSystem::restart_due); `out` holds the state there and the
+                         // caller restarts (simulate.h). Never leaves integrate::simulate.
 };
 
 // "ok", "error_test_failures", ... (stable names, used in results files and --json).

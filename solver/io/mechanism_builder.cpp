@@ -237,6 +237,15 @@ void add_mechanism(const MechanismCase& mechanism, const std::vector<FlexibleBod
     builder.add_driver(driver.name, driver.joint, driver.coordinate, driver.motion, driver.where);
   }
   for (const ForceEntry& force : mechanism.forces) add_force(force, builder);
+  // Releases at an event name a latch or stop: after the forces.
+  for (const JointEntry& joint : mechanism.joints) {
+    if (!joint.release_after.empty()) {
+      builder.release_joint_after(joint.name, joint.release_after, joint.release_delay, joint.release_where);
+    }
+    if (joint.release_duration) {
+      builder.set_release_duration(joint.name, *joint.release_duration, joint.release_duration_where);
+    }
+  }
   for (const AccelerationProbeEntry& probe : mechanism.acceleration_probes) {
     builder.add_acceleration_probe(probe.spec, probe.where);
   }

@@ -137,11 +137,23 @@ JointType read_joint_type(const YamlValue& value) {
 // <name>.i on body_i and <name>.j on body_j, frames `orientation` and `orientation_j`).
 JointEntry read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible) {
   entry.allow_only({"type", "marker_i", "marker_j", "body_i", "body_j", "position", "orientation",
-                    "orientation_j", "release"});
+                    "orientation_j", "release", "release_duration"});
   JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where(), {}, {}};
   if (const auto release = entry.find("release")) {
-    joint.release = release->as_non_negative();
     joint.release_where = release->where();
+    if (release->is_map()) {
+      // At an event: after a latch or stop first engages, and a delay.
+      release->allow_only({"after", "delay"});
+      joint.release_after = release->at("after").as_string();
+      joint.release_where = release->at("after").where();
+      if (const auto delay = release->find("delay")) joint.release_delay = delay->as_non_negative();
+    } else {
+      joint.release = release->as_non_negative();
+    }
+  }
+  if (const auto duration = entry.find("release_duration")) {
+    joint.release_duration = duration->as_non_negative();
+    joint.release_duration_where = duration->where();
   }
   if (entry.find("marker_i") || entry.find("marker_j")) {
     for (const char* key : {"body_i", "body_j", "position", "orientation", "orientation_j"}) {

@@ -112,7 +112,13 @@ struct JointEntry {
   std::vector<MarkerEntry> markers;  // <name>.i and <name>.j for a joint given at a point
   SourceLocation where;
   std::optional<double> release;     // [s]: a hold-down, removed then (Joint::release_time)
+  // `release: {after: <latch or stop>, delay: s}`: removed `release_delay` after that limit
+  // first engages (Joint::release_after); "" when not.
+  std::string release_after;
+  double release_delay = 0.0;  // [s]
   SourceLocation release_where;
+  std::optional<double> release_duration;  // [s]: Joint::release_duration
+  SourceLocation release_duration_where;
 };
 
 struct DriverEntry {

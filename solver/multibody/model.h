@@ -83,13 +83,21 @@ const char* to_string(JointType type);
 // A joint between marker i (on body_i) and marker j (on body_j); its equations are rows
 // [first_row, first_row + rows) of the full constraint vector. A joint with a finite
 // release_time (a hold-down) holds up to that time and is then removed: its rows leave the
-// equations and its reaction is zero from then on (docs/multibody.md, "Hold-downs").
+// equations and its reaction is zero from then on (docs/multibody.md, "Hold-downs"). A joint
+// with release_after ≥ 0 is released instead release_delay after that hinge limit first
+// engages (a latch locks, a stop first touches), a time known only when the run gets there
+// (event_releases.h).
 struct Joint {
   std::string name;
   JointType type = JointType::kRevolute;
   int marker_i = 0, marker_j = 0;
   int first_row = 0, rows = 0;
   double release_time = std::numeric_limits<double>::infinity();  // [s]
+  int release_after = -1;      // index into Model::forces of a HingeLimit, or −1
+  double release_delay = 0.0;  // [s] ≥ 0, after that limit's first engagement
+  // [s] ≥ 0: 0 lets go at once; > 0 leaves the last reaction as a load that fades over it
+  // (fading_loads.h).
+  double release_duration = 0.0;
 };
 
 // What a driver prescribes on its joint: the rotation angle of marker j about z_i (x_j

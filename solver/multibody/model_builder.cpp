@@ -205,16 +205,18 @@ int ModelBuilder::add_joint(const std::string& name, JointType type, const std::
   return static_cast<int>(model_.joints.size()) - 1;
 }
 
-void ModelBuilder::release_joint(const std::string& joint, double time, const SourceLocation& where) {
+Joint& ModelBuilder::releasable_joint(const std::string& joint, const std::string& when,
+                                      const SourceLocation& where) {
   const int j = model_.find_joint(joint);
   if (j < 0) throw InputError(fmt::format("release: expected an existing joint, got \"{}\"", joint), where);
   Joint& released = model_.joints[static_cast<std::size_t>(j)];
-  if (!std::isfinite(time) || time < 0.0) {
-    throw InputError(fmt::format("joint \"{}\": expected a release time >= 0 s, got {}", joint, time), where);
-  }
-  if (std::isfinite(released.release_time)) {
-    throw InputError(fmt::format("joint \"{}\": expected one release, got a second (at {} s after {} s)",
-                                 joint, time, released.release_time), where);
+  if (std::isfinite(released.release_time) || released.release_after >= 0) {
+    const std::string first =
+        released.release_after >= 0
+            ? fmt::format("after \"{}\"", force_name(model_.forces[static_cast<std::size_t>(released.release_after)]))
+            : fmt::format("at {} s", released.release_time);
+    throw InputError(fmt::format("joint \"{}\": expected one release, got a second ({} after one {})", joint,
+                                 when, first), where);
   }
   for (const Driver& driver : model_.drivers) {
     if (driver.joint == j) {
@@ -222,7 +224,48 @@ void ModelBuilder::release_joint(const std::string& joint, double time, const So
                                    "by \"{}\"", joint, driver.name), where);
     }
   }
-  released.release_time = time;
+  return released;
+}
+
+void ModelBuilder::release_joint(const std::string& joint, double time, const SourceLocation& where) {
+  if (!std::isfinite(time) || time < 0.0) {
+    throw InputError(fmt::format("joint \"{}\": expected a release time >= 0 s, got {}", joint, time), where);
+  }
+  releasable_joint(joint, fmt::format("at {} s", time), where).release_time = time;
+}
+
+void ModelBuilder::release_joint_after(const std::string& joint, const std::string& limit, double delay,
+                                       const SourceLocation& where) {
+  if (!std::isfinite(delay) || delay < 0.0) {
+    throw InputError(fmt::format("joint \"{}\": expected a release delay >= 0 s, got {}", joint, delay), where);
+  }
+  int force = -1;
+  for (std::size_t k = 0; k < model_.forces.size(); ++k) {
+    const auto* hinge = std::get_if<HingeLimit>(&model_.forces[k]);
+    if (hinge != nullptr && hinge->name == limit) force = static_cast<int>(k);
+  }
+  if (force < 0) {
+    throw InputError(fmt::format("joint \"{}\": expected the release's 'after' to name a latch or stop, got "
+                                 "\"{}\" (no such latch or stop)", joint, limit), where);
+  }
+  Joint& released = releasable_joint(joint, fmt::format("after \"{}\"", limit), where);
+  released.release_after = force;
+  released.release_delay = delay;
+}
+
+void ModelBuilder::set_release_duration(const std::string& joint, double duration, const SourceLocation& where) {
+  const int j = model_.find_joint(joint);
+  if (j < 0) throw InputError(fmt::format("release_duration: expected an existing joint, got \"{}\"", joint), where);
+  Joint& released = model_.joints[static_cast<std::size_t>(j)];
+  if (!std::isfinite(released.release_time) && released.release_after < 0) {
+    throw InputError(fmt::format("joint \"{}\": expected a 'release' with 'release_duration', got none", joint),
+                     where);
+  }
+  if (!std::isfinite(duration) || duration < 0.0) {
+    throw InputError(fmt::format("joint \"{}\": expected a release duration >= 0 s, got {}", joint, duration),
+                     where);
+  }
+  released.release_duration = duration;
 }
 
 int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
@@ -232,7 +275,8 @@ int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
   check_name_text("driver", name, where);
   const int j = model_.find_joint(joint);
   if (j < 0) throw InputError(fmt::format("driver \"{}\": expected an existing joint, got \"{}\"", name, joint), where);
-  if (std::isfinite(model_.joints[static_cast<std::size_t>(j)].release_time)) {
+  if (const Joint& held = model_.joints[static_cast<std::size_t>(j)];
+      std::isfinite(held.release_time) || held.release_after >= 0) {
     throw InputError(fmt::format("driver \"{}\": expected a joint that is not released, got \"{}\"", name, joint),
                      where);
   }

@@ -168,6 +168,14 @@ class ModelBuilder {
   // Throws InputError for an unknown joint, a time that is negative or not finite, a joint
   // released already, or a driven joint (its driver would prescribe a coordinate of nothing).
   void release_joint(const std::string& joint, double time, const SourceLocation& where = {});
+  // The joint holds until `delay` after the hinge limit `limit` (a latch or stop, added
+  // before) first engages, and is then removed (Joint::release_after). Throws InputError as
+  // release_joint does, and for a name that is no latch or stop, or a delay < 0 or not finite.
+  void release_joint_after(const std::string& joint, const std::string& limit, double delay,
+                           const SourceLocation& where = {});
+  // The released joint `joint` lets go over `duration` [s] (Joint::release_duration; 0: at
+  // once). Throws InputError for a joint without a release or a duration < 0 or not finite.
+  void set_release_duration(const std::string& joint, double duration, const SourceLocation& where = {});
   // Rotation drivers need a revolute or cylindrical joint, translation drivers a
   // translational or cylindrical one; at most one driver per joint coordinate; none on a
   // released joint.
@@ -202,6 +210,9 @@ class ModelBuilder {
   // Checks the text of a joint/driver/force name (core/names.h; `kind` for messages, e.g.
   // "joint") and that no element has it yet.
   void claim_element_name(const char* kind, const std::string& name, const SourceLocation& where);
+  // The joint `joint` checked for a release (`when` for messages): it exists, is not released
+  // yet and carries no driver.
+  Joint& releasable_joint(const std::string& joint, const std::string& when, const SourceLocation& where);
 
   // The frame-independent part of a flexible body: node positions, mesh, checked probe.
   std::shared_ptr<FlexibleBody> flexible_outline(const FlexibleBodySpec& spec, const SourceLocation& where) const;

@@ -8,11 +8,12 @@
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/nonlinear_body.h"
+#include "multibody/reactions.h"
 
 namespace limber::multibody {
 
 MultibodySystem::MultibodySystem(const Model& model, ConstraintPartition partition)
-    : model_(model), partition_(std::move(partition)), workspace_(model) {
+    : model_(model), partition_(std::move(partition)), event_releases_(model), workspace_(model) {
   for (const Body& b : model_.bodies) {
     if (b.kind != BodyKind::kGround) ++num_moving_bodies_;
   }
@@ -62,6 +63,7 @@ void MultibodySystem::generalized_forces(double t, const Eigen::VectorXd& q,
   state_.q = q;
   state_.v = v;
   multibody::generalized_forces(model_, state_, workspace_);
+  add_fading_loads(fading_, t, workspace_);
   Q = workspace_.Q;
 }
 
@@ -149,6 +151,7 @@ void MultibodySystem::evaluate(double t, const Eigen::VectorXd& q, const Eigen::
     evaluate_constraint_rows(model_, state_, Stage::kPosition, released_, workspace_);
     out.M = workspace_.M;
   }
+  add_fading_loads(fading_, t, workspace_);
   out.Q = workspace_.Q;
   select_rows(workspace_.g, out.g);
   select_rows(workspace_.G, out.G);
@@ -241,14 +244,48 @@ bool MultibodySystem::reselection_candidate(double t, const Eigen::VectorXd& q, 
   return true;
 }
 
-void MultibodySystem::release_joints(double t, const Eigen::VectorXd& q) {
+std::vector<int> MultibodySystem::release_joints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                                 const Eigen::VectorXd& lambda) {
   state_.t = t;
   state_.q = q;
-  const std::vector<bool> released = rows_released_by(model_, t);
+  state_.v = v;
+  // Timed releases up to t, and those of events: the ones due now and the ones before.
+  std::vector<bool> released = rows_released_by(model_, t);
+  event_releases_.take_due();
+  const std::vector<bool> before = partition_.row_released;
+  std::vector<int> now;
+  for (std::size_t j = 0; j < model_.joints.size(); ++j) {
+    const Joint& joint = model_.joints[j];
+    const auto first = static_cast<std::size_t>(joint.first_row);
+    if (joint.rows == 0) continue;
+    if (event_releases_.released_at()[j] <= t) {
+      released.resize(static_cast<std::size_t>(model_.num_equations()), false);
+      std::fill_n(released.begin() + joint.first_row, joint.rows, true);
+    }
+    const bool was = first < before.size() && before[first];
+    if (first < released.size() && released[first] && !was) now.push_back(static_cast<int>(j));
+  }
+  // Releases that take time: the reactions just before, as loads that fade (fading_loads.h).
+  const bool fading = std::any_of(now.begin(), now.end(), [&](int j) {
+    return model_.joints[static_cast<std::size_t>(j)].release_duration > 0.0;
+  });
+  if (fading) {
+    const Reactions before_release = reactions_from_multipliers(model_, state_, lambda, partition_, workspace_);
+    for (const int j : now) {
+      if (model_.joints[static_cast<std::size_t>(j)].release_duration <= 0.0) continue;
+      fading_.push_back(fading_load(model_, j, before_release.joints[static_cast<std::size_t>(j)], t));
+    }
+  }
   partition_ = analyse_redundancy(model_, state_, workspace_, partition_.relative_threshold, kept_rows_, released);
-  // Their rows and markers are no longer evaluated.
+  // Their rows and markers are no longer evaluated, but for the markers of fading loads.
   released_ = released_joints(model_, released);
+  for (const FadingLoad& load : fading_) {
+    if (released_.markers.empty()) break;
+    released_.markers[static_cast<std::size_t>(load.marker_i)] = false;
+    released_.markers[static_cast<std::size_t>(load.marker_j)] = false;
+  }
   chosen_pivot_ = -1.0;
+  return now;
 }
 
 std::vector<double> MultibodySystem::velocity_breakpoints() const {
@@ -268,9 +305,19 @@ void MultibodySystem::event_functions(double t, const Eigen::VectorXd& q, const 
   state_.q = q;
   state_.v = v;
   hinge_limit_events(model_, limits_, state_, workspace_, e);
+  // The delayed releases after them.
+  const auto nl = static_cast<Eigen::Index>(limits_.size());
+  e.conservativeResize(nl + event_releases_.num_events());
+  auto tail = e.tail(event_releases_.num_events());
+  event_releases_.event_functions(t, tail);
 }
 
 void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  // A delayed release: its joint is due, and the integrator hands back control here.
+  if (k >= static_cast<int>(limits_.size())) {
+    event_releases_.on_release_event(k - static_cast<int>(limits_.size()), t);
+    return;
+  }
   const int force = limits_.at(static_cast<size_t>(k));
   const auto& limit = std::get<HingeLimit>(model_.forces[force]);
   state_.t = t;
@@ -282,6 +329,7 @@ void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q, con
   unsigned char& mode = engaged_[force];
   mode = hinge_limit_next_mode(limit, mode);
   state_.engaged = engaged_;
+  event_releases_.on_limit_switch(force, mode == kLimitEngaged, t);
   // A latch's seating changes only its damping's share: not a switch a user sees.
   if (mode == kLatchSeated) return;
   events_.push_back(HingeEvent{force, t, angle.theta, angle.rate, mode != kLimitFree});

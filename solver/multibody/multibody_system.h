@@ -14,6 +14,8 @@
 #include <optional>
 
 #include "core/mechanical_system.h"
+#include "multibody/event_releases.h"
+#include "multibody/fading_loads.h"
 #include "multibody/hinge_limit.h"
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
@@ -71,22 +73,36 @@ class MultibodySystem final : public MechanicalSystem {
   bool reselection_candidate(double t, const Eigen::VectorXd& q, Eigen::MatrixXd& G) const override;
 
   // Removes the joints released at or before t (Joint::release_time ≤ t, redundancy.h's
-  // rows_released_by) from the equations: the partition is analysed anew at (t, q) without
-  // their rows, so nc() may shrink, and their rows and markers are no longer evaluated
-  // (released_joints.h). An integrator holding this system must be started afresh
-  // after it (run_driver.h integrates from one release time to the next).
-  void release_joints(double t, const Eigen::VectorXd& q);
+  // rows_released_by) and the joints due at an event (event_releases.h) from the equations:
+  // the partition is analysed anew at (t, q) without their rows, so nc() may shrink, and their
+  // rows and markers are no longer evaluated (released_joints.h). An integrator holding this
+  // system must be started afresh after it (run_driver.h integrates from one release time to
+  // the next). Returns the joints it released, in model order. A joint released over a
+  // duration (Joint::release_duration > 0) leaves its reaction at (t, q, v) from the
+  // multipliers `lambda` of the rows before (an integrator's, partition() order) as a load that
+  // fades (fading_loads.h), which evaluations add to Q from then on.
+  std::vector<int> release_joints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                  const Eigen::VectorXd& lambda);
+  // The loads of the joints released over a duration, in release order.
+  const std::vector<FadingLoad>& fading_loads() const { return fading_; }
 
   // The slope jumps of the drivers' motions (TimeFunction::slope_jumps), ascending, merged.
   std::vector<double> velocity_breakpoints() const override;
-  // One event per hinge latch and stop (hinge_limit.h), in model.forces order.
-  int num_events() const override { return static_cast<int>(limits_.size()); }
+  // One event per hinge latch and stop (hinge_limit.h), in model.forces order, then one per
+  // joint released with a delay after such an event (event_releases.h).
+  int num_events() const override {
+    return static_cast<int>(limits_.size()) + event_releases_.num_events();
+  }
   void event_functions(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                        Eigen::VectorXd& e) override;
   void apply_event(int k, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
   // Modes of the force elements now (State::engaged) and every switch so far, in order.
   const std::vector<unsigned char>& engaged() const { return engaged_; }
   const std::vector<HingeEvent>& events() const { return events_; }
+  // A joint released at an event is due (event_releases.h): the integrator hands back control.
+  bool restart_due() const override { return event_releases_.due(); }
+  // The releases at events: scheduled, due and done (event_releases.h).
+  const EventReleases& event_releases() const { return event_releases_; }
 
  private:
   // Evaluates the full constraint set at (t, q[, v]) into workspace_.
@@ -120,6 +136,8 @@ class MultibodySystem final : public MechanicalSystem {
   std::vector<HingeEvent> events_;          // appended by apply_event
   int num_moving_bodies_ = 0;
   std::vector<int> limits_;                 // model.forces indices of hinge latches and stops
+  EventReleases event_releases_;            // scheduled by apply_event
+  std::vector<FadingLoad> fading_;          // appended by release_joints
   // Scratch of the evaluations: the state last evaluated at (its engaged a copy of engaged_)
   // and its kinematics.
   Workspace workspace_;

@@ -133,6 +133,10 @@ std::string H5Reader::string_attribute(const std::string& object, const char* na
   return value.substr(0, value.find('\0'));
 }
 
+bool H5Reader::has_attribute(const std::string& object, const char* name) const {
+  return exists(object) && H5Aexists_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT) > 0;
+}
+
 std::vector<double> H5Reader::doubles_attribute(const std::string& object, const char* name,
                                                 std::size_t n) const {
   if (H5Aexists_by_name(file_.get(), object.c_str(), name, H5P_DEFAULT) <= 0) {

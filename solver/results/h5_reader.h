@@ -33,6 +33,7 @@ class H5Reader {
   // A string attribute (fixed or variable length); `fallback` when absent and optional.
   std::string string_attribute(const std::string& object, const char* name, bool required = true,
                                const std::string& fallback = "") const;
+  bool has_attribute(const std::string& object, const char* name) const;
   // A real attribute of exactly n values.
   std::vector<double> doubles_attribute(const std::string& object, const char* name,
                                         std::size_t n) const;

@@ -140,6 +140,8 @@ inline constexpr const char* kTorqueJoint = "torque_joint";    // float64 [ns, 3
 inline constexpr const char* kForceGround = "force_ground";    // float64 [ns, 3] ground axes [N]
 inline constexpr const char* kTorqueGround = "torque_ground";  // float64 [ns, 3] ground axes [N m]
 inline constexpr const char* kIndeterminate = "indeterminate";  // int8 [ns], 1: minimum-norm
+// float64 scalar [s]: when a hold-down let go (written and flushed then; absent while it holds).
+inline constexpr const char* kReleaseTimeAttribute = "release_time";
 }  // namespace joint
 
 // /joints/<joint>/marker_i and /joints/<joint>/marker_j: the joint's two markers, each a group

@@ -150,6 +150,9 @@ JointTrack read_joint(const H5Reader& r, const std::string& link, hsize_t ns) {
   track.type = r.string_attribute(g, layout::joint::kTypeAttribute, false);
   track.body_i = r.string_attribute(g, layout::joint::kBodyIAttribute, false);
   track.body_j = r.string_attribute(g, layout::joint::kBodyJAttribute, false);
+  if (r.has_attribute(g, layout::joint::kReleaseTimeAttribute)) {
+    track.release_time = r.doubles_attribute(g, layout::joint::kReleaseTimeAttribute, 1).front();
+  }
   const std::vector<double> p = r.read<double>(layout::at(g, layout::joint::kPosition), H5T_NATIVE_DOUBLE, ns);
   track.position = Eigen::Map<const RowMatrix3d>(p.data(), n, 3);
   for (const auto& [name, values] : {std::pair{layout::joint::kForceGround, &track.force_ground},

@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,8 +89,13 @@ struct JointTrack {
   MarkerTrack marker_i, marker_j;
   RowMatrix3d force_ground;  // ns x 3, reaction on body_j in ground axes [N] (0 rows: none)
   RowMatrix3d torque_ground;  // ns x 3, its torque about the joint point, ground axes [N m] (0 rows: none)
+  // When a hold-down let go (attribute release_time) [s]; +inf for a joint that held throughout.
+  double release_time = std::numeric_limits<double>::infinity();
 
   bool has_markers() const { return marker_i.orientation.rows() == position.rows(); }
+  // The joint exists at t [s]: not yet released (a hold-down is drawn up to its release time,
+  // where it still carries its load, and not after).
+  bool held_at(double t) const { return t <= release_time; }
 };
 
 // A hinge limit's mode switch (results.h5 /events with its /hinge_limits/<limit> attributes): a

@@ -170,6 +170,7 @@ struct ResultsWriter::Impl {
   // Per joint: position, force_joint, torque_joint, force_ground, torque_ground, indeterminate,
   // then marker_i's position and orientation, marker_j's position and orientation.
   std::vector<std::vector<Series>> joint_series;
+  std::vector<H5Handle> joint_groups;  // kept open for set_joint_release
   std::vector<Series> driver_series;
   std::vector<Series> energy_series;
   Series position_violation, velocity_violation, steps, time;
@@ -509,6 +510,7 @@ int ResultsWriter::add_joint(const JointSpec& joint) {
                                           H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 4));
   }
   impl_->joint_series.push_back(std::move(series));
+  impl_->joint_groups.push_back(std::move(group));
   return static_cast<int>(impl_->joint_series.size()) - 1;
 }
 
@@ -589,6 +591,19 @@ void ResultsWriter::append_event(const HingeEventRecord& event) {
   // Time last, as for samples.
   write_rows(m.event_time, m.ne, 1, &event.time);
   ++m.ne;
+  check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
+}
+
+void ResultsWriter::set_joint_release(int joint, double t) {
+  const std::lock_guard lock(hdf5_lock());
+  Impl& m = *impl_;
+  LIMBER_DEMAND(!m.finished && joint >= 0 && joint < static_cast<int>(m.joint_groups.size()));
+  const hid_t group = m.joint_groups[static_cast<std::size_t>(joint)].get();
+  LIMBER_DEMAND(H5Aexists(group, layout::joint::kReleaseTimeAttribute) == 0);
+  check(try_write_scalar_attribute(group, layout::joint::kReleaseTimeAttribute, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &t)
+            ? 0
+            : -1,
+        "write a real attribute");
   check(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "flush the file");
 }
 
@@ -838,6 +853,7 @@ void ResultsWriter::finish(RunStatus status, const std::string& message) {
   m.body_stress.clear();
   m.body_series.clear();
   m.joint_series.clear();
+  m.joint_groups.clear();
   m.driver_series.clear();
   m.energy_series.clear();
   m.probe_series.clear();

@@ -283,6 +283,10 @@ class ResultsWriter {
   void flush();
   // Appends one row to /events and flushes (at any time before finish()).
   void append_event(const HingeEventRecord& event);
+  // The attribute release_time [s] of /joints/<joint> (index from add_joint): the joint was
+  // released then (a hold-down). Written and flushed at once, at most once per joint, at any
+  // time before finish().
+  void set_joint_release(int joint, double t);
 
   // The run's accuracy estimate (run/accuracy_check.h), at most once before finish(): root
   // attributes accuracy_energy_relative, accuracy_local_error, accuracy_drift_relative

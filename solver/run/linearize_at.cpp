@@ -1,5 +1,6 @@
 #include "run/linearize_at.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -68,8 +69,17 @@ LinearizeSummary linearize_at(const multibody::Model& model, const multibody::As
   point.v = last->v;
   point.engaged = engaged;
   multibody::Workspace ws(model);
+  // Those released at events as well: the run's releases up to T.
+  std::vector<bool> released = multibody::rows_released_by(model, point.t);
+  released.resize(static_cast<std::size_t>(model.num_equations()), false);
+  for (const JointRelease& release : ran.releases) {
+    for (const std::string& name : release.joints) {
+      const multibody::Joint& joint = model.joints[static_cast<std::size_t>(model.find_joint(name))];
+      std::fill_n(released.begin() + joint.first_row, joint.rows, true);
+    }
+  }
   const multibody::ConstraintPartition partition = multibody::analyse_redundancy(
-      model, point, ws, multibody::kRedundancyThreshold, {}, multibody::rows_released_by(model, point.t));
+      model, point, ws, multibody::kRedundancyThreshold, {}, released);
   summary.start.partition = partition;
   // With `statics`: the static equilibrium reached from there, at rest, the hinges in the same
   // modes. A run still ringing at T is not an equilibrium (v̇0 ≠ 0), and about it the rigid

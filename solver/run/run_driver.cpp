@@ -170,7 +170,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   });
   if (options.max_order == 0 && flexible) options.max_order = 2;
   options.quadrature = energy_quadrature(model, system.partition(), system.engaged(), start.state,
-                                         settings.integrator.rtol);
+                                         settings.integrator.rtol, &system.fading_loads());
   // The system's partition, which it may re-select along the motion (multibody_system.h), and
   // its hinge modes, which the integrator switches at events.
   SampleRecorder recorder(model, system.partition(), system.engaged());
@@ -269,20 +269,22 @@ RunSummary run_mechanism(const multibody::Model& model,
   const auto check = [&](const integrate::Sample& sample) {
     return redundant_rows.check(sample.t, recorder.constraint_residuals(), accuracy.size());
   };
-  // Hold-downs leave the equations at their release times; the integrator starts afresh there.
+  // Hold-downs leave the equations at their release times, and at the events that release
+  // them (multibody/event_releases.h); the integrator starts afresh there.
   integrate::Restarts releases;
   // (Those at or before a restart are behind it: restore_discrete_state released them.)
   for (const double t : model.release_times()) {
     if (!restart || t > restart->t) releases.times.push_back(t);
   }
   releases.apply = [&](double t, const integrate::Sample& at) {
+    report_events();
     if (singular->finish()) report_singular();
-    system.release_joints(t, at.q);
-    singular.emplace(model, system.nc(), system.partition().row_released);
     JointRelease release{t, {}};
-    for (const multibody::Joint& joint : model.joints) {
-      if (joint.release_time == t) release.joints.push_back(joint.name);
+    for (const int j : system.release_joints(t, at.q, at.v, at.lambda)) {
+      release.joints.push_back(model.joints[static_cast<std::size_t>(j)].name);
+      if (hooks.writer) hooks.writer->set_joint_release(j, t);
     }
+    singular.emplace(model, system.nc(), system.partition().row_released);
     summary.releases.push_back(release);
     if (peaks && t > 0.0) {
       peaks->open({t, "release"});
@@ -297,6 +299,11 @@ RunSummary run_mechanism(const multibody::Model& model,
   // Outcome: a failure keeps every sample (and event) written before it.
   report_events();
   if (singular->finish()) report_singular();
+  if (hooks.on_warning) {
+    for (const std::string& warning : multibody::unreleased_warnings(model, system.event_releases(), summary.t_reached)) {
+      hooks.on_warning(warning);
+    }
+  }
   summary.samples = result.samples;
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);

@@ -229,20 +229,23 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
                                         const std::vector<unsigned char>& engaged,
-                                        const multibody::State& start, double rtol) {
+                                        const multibody::State& start, double rtol,
+                                        const std::vector<multibody::FadingLoad>* fading) {
   // The integrand runs inside the integrator: it gets its own workspace.
   auto ws = std::make_shared<multibody::Workspace>(model);
   integrate::Quadrature quadrature;
   quadrature.size = kEnergyIntegrals;
-  quadrature.integrand = [&model, &partition, &engaged, ws](double t, const Eigen::VectorXd& q,
+  quadrature.integrand = [&model, &partition, &engaged, fading, ws](double t, const Eigen::VectorXd& q,
                                                   const Eigen::VectorXd& v,
                                                   const Eigen::VectorXd& v_dot,
                                                   const Eigen::VectorXd& lambda,
                                                   Eigen::VectorXd& f) {
-    const multibody::EnergyRates rates =
-        multibody::energy_rates(model, partition, multibody::State{t, q, v, engaged}, v_dot, lambda, *ws);
-    // force_work counts the geometric stiffening's modal forces too (docs/results-format.md).
-    f << rates.dissipation, rates.driver, rates.forces + rates.geometric;
+    const multibody::State state{t, q, v, engaged};
+    const multibody::EnergyRates rates = multibody::energy_rates(model, partition, state, v_dot, lambda, *ws);
+    // force_work counts the geometric stiffening's modal forces and fading loads too
+    // (docs/results-format.md).
+    const double fade = fading != nullptr ? multibody::fading_load_power(model, *fading, state, *ws) : 0.0;
+    f << rates.dissipation, rates.driver, rates.forces + rates.geometric + fade;
   };
   // At a velocity jump of a prescribed motion the constraint impulses change the kinetic
   // energy; only the drivers' rows move with time (the joints' impulses do no work, G v = 0

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "integrate/integrator.h"
+#include "multibody/fading_loads.h"
 #include "multibody/model.h"
 #include "multibody/redundancy.h"
 #include "multibody/state.h"
@@ -41,11 +42,13 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
 // the hinge latches and stops as the integrator switches them (MultibodySystem::engaged).
 // At a velocity jump of a driver's motion the kinetic energy's change is added to the drivers'
 // work (the impulse's work).
-// References must outlive the run.
+// The work of the loads that fade after a release over a duration (`fading`, optional:
+// MultibodySystem::fading_loads) counts in force_work. References must outlive the run.
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
                                         const std::vector<unsigned char>& engaged,
-                                        const multibody::State& start, double rtol);
+                                        const multibody::State& start, double rtol,
+                                        const std::vector<multibody::FadingLoad>* fading = nullptr);
 
 // Turns integrator samples into results samples; one per run (holds a Workspace).
 class SampleRecorder {

@@ -18,13 +18,19 @@
 #include "world_triad.h"
 
 #include "test_dir.h"
+#include "test_results.h"
 
 #include <gtest/gtest.h>
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkRenderer.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <limits>
 
 namespace limber::render {
 namespace {
@@ -168,6 +174,40 @@ TEST(SceneExtras, PinGlyphAtTheProjectedRevoluteAndForceArrowAlongTheCentripetal
     for (int x = 0; x < image.width; ++x) torque_pixels += has_hue(image.pixel(x, y), kTorqueColor) ? 1 : 0;
   }
   EXPECT_EQ(torque_pixels, 0);
+}
+
+// The test scene's joint "pin" as a hold-down released at 0.5 s (results.h5
+// /joints/pin@release_time, test_results.h): read back, its joint sphere is drawn up to the
+// release (the frame at that instant included: it still carries its load there) and not
+// after; nothing else in the scene appears or goes.
+TEST(SceneExtras, ReleasedHoldDownIsNotDrawnAfterItsRelease) {
+  unsetenv("DISPLAY");
+  const auto dir = testing::fresh_directory("released_pin");
+  testing::TestScene test_scene;
+  test_scene.with_beam = false;
+  test_scene.pin_release_time = 0.5;
+  testing::write_test_results(dir, test_scene);
+  const Results results = read_results(dir);
+  ASSERT_EQ(results.joints.size(), 1u);
+  EXPECT_EQ(results.joints[0].release_time, 0.5);
+  Scene scene(results, front_view(), 0.0, 1.0);
+  const auto visible_actors = [&](double t) {
+    scene.update(t);
+    int visible = 0;
+    vtkActorCollection* actors = scene.renderer()->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* actor = actors->GetNextActor()) visible += actor->GetVisibility() != 0 ? 1 : 0;
+    return visible;
+  };
+  const int held = visible_actors(0.2);
+  EXPECT_EQ(visible_actors(0.5), held);
+  EXPECT_EQ(visible_actors(0.6), held - 1);
+  EXPECT_EQ(visible_actors(1.0), held - 1);
+  // A file without the attribute: the joint held throughout, drawn at every time.
+  const auto kept = testing::fresh_directory("kept_pin");
+  test_scene.pin_release_time = -1.0;
+  testing::write_test_results(kept, test_scene);
+  EXPECT_EQ(read_results(kept).joints[0].release_time, std::numeric_limits<double>::infinity());
 }
 
 TEST(SceneExtras, SlideArrowBeyondTheSliderAndTheRailOverItsTravel) {

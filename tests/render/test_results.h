@@ -41,6 +41,8 @@ struct TestScene {
   // >= 0: a latch "latch_pin" on joint "pin" (with the box) that locks at this time [s]: one
   // /events row.
   double latch_time = -1.0;
+  // >= 0: joint "pin" is a hold-down released at this time [s] (its attribute release_time).
+  double pin_release_time = -1.0;
   std::string title = "render test scene";
 };
 

@@ -108,6 +108,7 @@ std::filesystem::path write_full_run() {
   spectra.probes = {{"tip", {{axis, axis, axis}, {axis, axis, axis}}}};
   writer.set_shock_spectra(spectra);
   writer.append_event(HingeEventRecord{0.2, 0, true, 0.5, 1.5});
+  writer.set_joint_release(0, 0.25);
   writer.set_accuracy(1e-6, 1e-5, 1e-7, "");
   writer.set_singular_passages({0.1}, {1e-3}, {"R1"}, {-1.0});
   writer.finish(RunStatus::kOk);
@@ -244,7 +245,7 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
       {stress, {L::stress::kEveryAttribute, L::stress::kPeakValueAttribute,
                 L::stress::kPeakElementAttribute, L::stress::kPeakTimeAttribute}},
       {joint, {kNameAttribute, L::joint::kTypeAttribute, L::joint::kBodyIAttribute,
-               L::joint::kBodyJAttribute}},
+               L::joint::kBodyJAttribute, L::joint::kReleaseTimeAttribute}},
       {L::at(joint, L::kMarkerGroups[0]), {kNameAttribute}},
       {L::at(joint, L::kMarkerGroups[1]), {kNameAttribute}},
       {driver, {kNameAttribute, L::driver::kUnitAttribute}},
@@ -291,6 +292,7 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
   EXPECT_EQ(r.string_attribute(crank, kNameAttribute), "crank");
   EXPECT_EQ(r.string_attribute(rod, L::body::kComponentAttribute), "beam");
   EXPECT_EQ(r.doubles_attribute(crank, L::body::kMassAttribute, 1), std::vector<double>{2.0});
+  EXPECT_EQ(r.doubles_attribute(joint, L::joint::kReleaseTimeAttribute, 1), std::vector<double>{0.25});
   EXPECT_EQ(r.doubles_attribute(crank, L::body::kCenterOfMassAttribute, 3), (std::vector<double>{0.1, 0, 0}));
   EXPECT_EQ(r.doubles_attribute(crank, L::body::kInertiaAttribute, 9),
             (std::vector<double>{1, 0.25, 0, 0.25, 1, 0, 0, 0, 1}));

@@ -4,6 +4,7 @@
 // the case-file errors of a release.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -136,6 +137,55 @@ TEST(HoldDown, StaticStartThenReleaseAtZeroFollowsTheSpringClosedForm) {
   }
 }
 
+// θ of the preloaded, held bar released at t = 0 over d (fading_loads.h): the hold-down's
+// reaction, τ0 / L at the tip, frozen in the bar's axes, keeps a moment s(t) τ0 about the hinge,
+// s = 1 − t / d, so I θ̈ = −k (θ − θf) − s(t) k θf from rest at θ = 0. With φ = θ − θf and
+// ω² = k / I: for t ≤ d, θ = (θf / d) (t − sin(ω t) / ω); after d, the free oscillation about θf
+// from θ(d) and θ̇(d) = (θf / d) (1 − cos ω d).
+double fading_release_angle(double t, double k, double free_angle, double inertia, double d) {
+  const double omega = std::sqrt(k / inertia);
+  if (t <= d) return free_angle / d * (t - std::sin(omega * t) / omega);
+  const double offset = -free_angle * std::sin(omega * d) / (omega * d);
+  const double rate = free_angle / d * (1.0 - std::cos(omega * d));
+  return free_angle + offset * std::cos(omega * (t - d)) + rate / omega * std::sin(omega * (t - d));
+}
+
+// A release that takes 0.2 s (`release_duration`): the hinge's motion during the ramp and
+// after it against the closed form above, the hold-down's recorded reaction τ0 / L up to the
+// release and zero after (the fading load is an applied load, not a reaction), and the energy
+// balance closed with the fading load's work in force_work (the run is accurate).
+TEST(HoldDown, ReleaseOverADurationFollowsTheRampedTorqueClosedForm) {
+  const double k = 4.0, free_angle = 0.5, inertia = kMass * kLength * kLength / 3.0, duration = 0.2;
+  const std::string spring =
+      "forces:\n  spring: {type: rsda, marker_i: R.i, marker_j: R.j, stiffness: 4.0, free_angle: 0.5}\n";
+  struct Variant {
+    std::string run;
+    double tolerance;  // [rad]
+  };
+  // IDA at rtol 1e-9 on an angle of order 1: 1e-6 rad (as the instant release above; measured
+  // 1.0e-8 rad); generalized-α's O(h²) at 1e-4 s over 1 s with the ramp's kink at t = d,
+  // measured 6.2e-9 rad: 1e-6 rad too. An instant release differs by 0.02 rad at t = d.
+  for (const Variant& variant :
+       {Variant{"integrator: ida, rtol: 1.0e-9, atol: 1.0e-11, t_end: 1.0, sample_interval: 0.01, start: statics", 1e-6},
+        Variant{"integrator: galpha, step: 1.0e-4, t_end: 1.0, sample_interval: 0.01, start: statics", 1e-6}}) {
+    SCOPED_TRACE(variant.run);
+    const Recorded r = run_text("hold_down_duration",
+                                bar_case(0.0, ", release: 0.0, release_duration: 0.2", spring, variant.run));
+    ASSERT_TRUE(r.summary.ok) << r.summary.message;
+    EXPECT_TRUE(r.summary.accurate()) << r.summary.accuracy.warnings.front();
+    EXPECT_NEAR(r.hold_down_z.front(), k * free_angle / kLength, 1e-9);
+    double largest_during_ramp = 0.0;
+    for (std::size_t i = 0; i < r.time.size(); ++i) {
+      if (i > 0) EXPECT_EQ(r.hold_down_z[i], 0.0) << "t = " << r.time[i];
+      const double expected = fading_release_angle(r.time[i], k, free_angle, inertia, duration);
+      EXPECT_NEAR(r.angle[i], expected, variant.tolerance) << "t = " << r.time[i];
+      if (r.time[i] <= duration) largest_during_ramp = std::max(largest_during_ramp, std::abs(expected));
+    }
+    // The ramp's own motion is not negligible next to the tolerance: 0.0198 rad by t = d.
+    EXPECT_GT(largest_during_ramp, 0.019);
+  }
+}
+
 // A released hold-down leaves the evaluation (multibody/released_joints.h): its rows and markers
 // are not written, while every other row and marker is the full evaluation's, to the bit (the
 // same arithmetic); and the powers of the energy integrals without the bodies' forces
@@ -207,6 +257,13 @@ TEST(HoldDown, BadReleasesAreLocatedErrors) {
       bar_case(kGravity, ", release: 0.2",
                "drivers:\n  D: {joint: HD, motion: {type: constant_speed, initial: 0, speed: 1}}\n", "t_end: 0.1"));
   EXPECT_NE(driven.find("expected a joint that is not released, got \"HD\""), std::string::npos) << driven;
+  // A release_duration without a release, or negative: at its key, on HD's line 9.
+  const std::string alone = message_of("release_duration_alone", bar_case(kGravity, ", release_duration: 0.1", "", "t_end: 0.1"));
+  EXPECT_NE(alone.find(":9:"), std::string::npos) << alone;
+  EXPECT_NE(alone.find("expected a 'release' with 'release_duration', got none"), std::string::npos) << alone;
+  const std::string negative_duration =
+      message_of("release_duration_negative", bar_case(kGravity, ", release: 0.1, release_duration: -1", "", "t_end: 0.1"));
+  EXPECT_NE(negative_duration.find(":9:"), std::string::npos) << negative_duration;
 }
 
 }  // namespace
