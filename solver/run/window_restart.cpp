@@ -16,6 +16,12 @@ void RestartPointRecorder::observe(double t, const Eigen::VectorXd& q, const Eig
   previous_events_ = events;
 }
 
+bool restart_points_supported(const multibody::Model& model) {
+  return std::none_of(model.joints.begin(), model.joints.end(), [](const multibody::Joint& joint) {
+    return joint.release_after >= 0 || joint.release_duration > 0.0;
+  });
+}
+
 void restore_discrete_state(multibody::MultibodySystem& system, const RestartPoint& point) {
   const multibody::Model& model = system.model();
   LIMBER_DEMAND(point.modes.size() == model.forces.size());
@@ -23,7 +29,8 @@ void restore_discrete_state(multibody::MultibodySystem& system, const RestartPoi
   const bool released = std::any_of(model.joints.begin(), model.joints.end(), [&](const multibody::Joint& joint) {
     return std::isfinite(joint.release_time) && joint.release_time <= point.t;
   });
-  if (released) system.release_joints(point.t, point.q);
+  // (Instantly: restart_points_supported excludes releases that fade.)
+  if (released) system.release_joints(point.t, point.q, point.v, Eigen::VectorXd::Zero(system.nc()));
   // Each limit switched through its modes (a latch: free, locked, seated) to the point's.
   int limit = 0;
   for (std::size_t force = 0; force < model.forces.size(); ++force) {

@@ -57,6 +57,10 @@ class RestartPointRecorder {
   std::optional<RestartPoint> last_;
 };
 
+// Whether a run of `model` can restart from a RestartPoint: not when a joint is released at an
+// event (the schedule is not part of the point) or over a duration (nor is its fading load).
+bool restart_points_supported(const multibody::Model& model);
+
 // Puts `system` in the discrete state of `point`: the joints released at or before point.t
 // leave its equations (MultibodySystem::release_joints), and each hinge limit is switched
 // (apply_event, as the integrators do) until its mode is the point's. The switches append to
