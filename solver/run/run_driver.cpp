@@ -13,8 +13,8 @@
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/event_peaks.h"
-#include "results/shock_spectra_file.h"
 #include "run/redundant_row_watch.h"
+#include "run/run_outcome.h"
 #include "run/sample_record.h"
 #include "run/singular_passage.h"
 
@@ -106,12 +106,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   }
   if (!start.lost_at_singular_start.empty()) {
     summary.failure = "singular start";
-    summary.message = fmt::format(
-        "the mechanism is assembled at a singular configuration: equation(s) {} depend on the "
-        "others here but not next to it, so no choice of independent equations holds the "
-        "mechanism together once it moves; start it slightly off this position (e.g. a driver's "
-        "initial value, or a body's position, moved by 1e-3)",
-        fmt::join(start.lost_at_singular_start, ", "));
+    summary.message = singular_start_message(start.lost_at_singular_start);
     return finish(results::RunStatus::kFailed);
   }
   // The static equilibrium at t = 0, every joint holding (hold-downs included), when asked;
@@ -131,16 +126,7 @@ RunSummary run_mechanism(const multibody::Model& model,
     initial.q = summary.statics->state.q;
   }
   summary.redundant = start.redundant;
-  if (hooks.writer) {
-    std::vector<std::string> names, depends_on;
-    for (const RedundantEquationReport& r : start.redundant) {
-      names.push_back(r.name);
-      std::string list;
-      for (const std::string& name : r.depends_on) list += (list.empty() ? "" : ", ") + name;
-      depends_on.push_back(list);
-    }
-    hooks.writer->set_redundant_equations(names, depends_on);
-  }
+  if (hooks.writer) write_redundant_equations(start.redundant, *hooks.writer);
   if (hooks.on_start) hooks.on_start(start);
 
   // Integration on the independent rows, energies accumulated by the integrator.
@@ -149,20 +135,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   // reported again.
   if (restart) restore_discrete_state(system, *restart);
   const std::size_t first_event = system.events().size();
-  // A motion whose velocity jumps demands impulses: say where, once.
-  for (const multibody::Driver& driver : model.drivers) {
-    std::vector<double> jumps;
-    for (const double t : driver.motion.slope_jumps()) {
-      if (t > 0.0 && t < settings.t_end) jumps.push_back(t);
-    }
-    if (jumps.empty() || !hooks.on_warning) continue;
-    hooks.on_warning(fmt::format(
-        "driver {}'s motion changes its rate abruptly at t = {} s (the kinks of its table): "
-        "each is applied as an impulse (the integrators stop there and restart with the "
-        "velocities after it), which the reaction and effort histories do not show; use "
-        "`interpolation: cubic` and points that start and end at rest for a smooth motion",
-        driver.name, fmt::join(jumps, ", ")));
-  }
+  if (hooks.on_warning) warn_velocity_jumps(model, settings.t_end, hooks.on_warning);
   integrate::IntegratorOptions options = settings.integrator;
   // BDF2 at most when flexible modes are present (integrator_options.h, max_order).
   const bool flexible = std::any_of(model.bodies.begin(), model.bodies.end(), [](const auto& body) {
@@ -207,7 +180,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   if (settings.peak_window > 0.0) {
     peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
     if (!restart) peaks->open({0.0, "start"});
-    if (hooks.on_window) restart_points.emplace(system.engaged());
+    if (hooks.on_window && restart_points_supported(model)) restart_points.emplace(system.engaged());
     options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd&,
                           const Eigen::VectorXd& lambda) {
       if (restart_points) restart_points->observe(t, q, v, system.events().size());
@@ -308,51 +281,12 @@ RunSummary run_mechanism(const multibody::Model& model,
   summary.statistics = result.statistics;
   summary.accuracy = accuracy.estimate(result.statistics, options);
   if (peaks) summary.peaks = peaks->peaks();
-  // A body outside the linear range makes the linear floating-frame answer unphysical however
-  // accurately it was integrated: the run is not "ok" either.
-  for (const std::string& warning : summary.warnings) {
-    summary.accuracy.warnings.push_back(warning + " (the linear modal body's answer is not the physical one there)");
-  }
-  // A change of branch at a singular passage is an impulse no force gave: not accurate.
-  for (const SingularPassage& passage : summary.singular_passages) {
-    if (passage.changed_branch()) summary.accuracy.warnings.push_back(passage.message());
-  }
+  add_model_warnings(summary);
   // The probes' shock response spectra over the samples written.
   if (probes && probe_times.size() >= 2) {
-    const auto ns = static_cast<Eigen::Index>(probe_times.size());
-    std::vector<results::ProbeHistory> histories;
-    for (std::size_t p = 0; p < model.acceleration_probes.size(); ++p) {
-      results::ProbeHistory history{model.acceleration_probes[p].name, {}};
-      history.acceleration.resize(ns, 3);
-      for (Eigen::Index k = 0; k < ns; ++k) history.acceleration.row(k) = probe_rows[static_cast<std::size_t>(k)][p].transpose();
-      histories.push_back(std::move(history));
-    }
-    summary.shock_spectra = probe_shock_spectra(
-        model, settings, Eigen::Map<const Eigen::VectorXd>(probe_times.data(), ns), histories, summary.events);
-    if (hooks.writer) {
-      hooks.writer->set_shock_spectra(*summary.shock_spectra);
-      // Beside results.h5; an in-memory file has no folder, and the spectra stay in the file.
-      if (!hooks.writer->path().empty()) {
-        results::write_shock_spectra_csv(hooks.writer->path().parent_path(), *summary.shock_spectra);
-      }
-    }
+    record_shock_spectra(model, settings, probe_times, probe_rows, summary, hooks.writer);
   }
-  if (hooks.writer) {
-    std::string warnings;
-    for (const std::string& w : summary.accuracy.warnings) warnings += (warnings.empty() ? "" : "\n") + w;
-    hooks.writer->set_accuracy(summary.accuracy.energy_relative, summary.accuracy.local_error,
-                               summary.accuracy.drift_relative, warnings);
-    std::vector<double> passage_time, passage_ratio, passage_jump;
-    std::vector<std::string> passage_joints;
-    for (const SingularPassage& passage : summary.singular_passages) {
-      passage_time.push_back(passage.t);
-      passage_ratio.push_back(passage.ratio);
-      passage_joints.push_back(fmt::format("{}", fmt::join(passage.names, ", ")));
-      passage_jump.push_back(passage.velocity_jump);
-    }
-    hooks.writer->set_singular_passages(passage_time, passage_ratio, passage_joints, passage_jump);
-    if (peaks) hooks.writer->set_event_peaks(summary.peaks);
-  }
+  if (hooks.writer) write_run_tables(summary, peaks.has_value(), *hooks.writer);
   if (!result.status.ok()) {
     summary.failure = integrate::to_string(result.status.code);
     summary.message = result.status.message;
