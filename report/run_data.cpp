@@ -106,27 +106,7 @@ RunData read_run_data(const std::filesystem::path& directory) {
 
   // The series beside them (cut with the poses to the samples complete in all), the solver
   // settings, mode tables and masses.
-  results::RunRecords records = results::read_run_records(run.results);
-  run.joints = std::move(records.joints);
-  run.drivers = std::move(records.drivers);
-  run.driver_units = std::move(records.driver_units);
-  run.axis_names = records.axis_names;
-  run.axis_names_from_case = records.axis_names_from_case;
-  run.deflections = std::move(records.deflections);
-  run.acceleration_probes = std::move(records.acceleration_probes);
-  run.shock_spectra = std::move(records.shock_spectra);
-  run.energies = std::move(records.energies);
-  run.hinge_limits = std::move(records.hinge_limits);
-  run.events = std::move(records.events);
-  run.clearance = std::move(records.clearance);
-  run.clearance_pairs = std::move(records.clearance_pairs);
-  run.clearance_pair = std::move(records.clearance_pair);
-  run.position_violation = std::move(records.position_violation);
-  run.velocity_violation = std::move(records.velocity_violation);
-  run.steps = records.steps;
-  run.solver_attributes = std::move(records.solver_attributes);
-  run.redundant_equations = std::move(records.redundant_equations);
-  run.momentum = std::move(records.momentum);
+  static_cast<results::RunRecords&>(run) = results::read_run_records(run.results);
   read_mode_tables(run);
   collect_body_masses(run);
   // Event peaks (optional; a malformed group is a note).

@@ -63,38 +63,14 @@ struct BodyMass {
   Eigen::Matrix3d inertia_com_B = Eigen::Matrix3d::Zero();  // [kg m²]
 };
 
-struct RunData {
+// The series are results::RunRecords' (results/run_records.h), read by results' typed reader;
+// the report adds the poses, the tables and media beside them.
+struct RunData : results::RunRecords {
   std::filesystem::path directory;
   render::Results results;              // title, status, bodies, meshes, joints, time (ns)
-  std::vector<JointReactions> joints;   // in the order of results.joints
-  std::vector<Series> drivers;          // efforts [N or N m]
-  std::vector<std::string> driver_units;  // per driver: "N", "N m", or "" when the file does not say
-  // Names of the ground axes x, y, z (root attribute axis_names, case key `axis_names`).
-  std::array<std::string, 3> axis_names{"X", "Y", "Z"};
-  bool axis_names_from_case = false;
-  std::vector<DeflectionProbe> deflections;
-  std::vector<AccelerationProbeTrack> acceleration_probes;  // absolute, ground axes [m/s²]
-  std::optional<ShockSpectraData> shock_spectra;            // the probes' SRS per window
   results::EventPeaks event_peaks;      // per joint, the peaks after each event (may be empty)
-  std::vector<Series> energies;         // [J]
-  std::vector<HingeLimitTrack> hinge_limits;  // in the model's order
-  std::vector<HingeEventRow> events;
-  std::optional<Series> clearance;      // smallest clearance between bodies [m]
-  std::vector<std::string> clearance_pairs;  // "body_a, body_b"
-  std::vector<int> clearance_pair;      // ns, index into clearance_pairs (−1: none)
-  std::optional<Series> position_violation;
-  std::optional<Series> velocity_violation;
-  std::optional<std::int64_t> steps;    // cumulative accepted steps at the last sample
-  // Attributes of /solver and unknown root attributes (integrator, tolerances, wall time...),
-  // as text, in the file's order.
-  std::vector<std::pair<std::string, std::string>> solver_attributes;
-  // Redundant constraint equations ("R2.z") and the equations each combines ("R1.z, R3.z").
-  std::vector<std::pair<std::string, std::string>> redundant_equations;
   std::vector<ModeTable> mode_tables;   // one per distinct component of the flexible bodies
   std::vector<BodyMass> body_masses;    // the bodies whose file holds them, in results order
-  // The system's linear momentum [kg m/s] and angular momentum about the ground origin
-  // [kg m²/s], ground axes, ns x 6 (/momentum; 0 rows in files written before it).
-  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> momentum;
   // Per body of results.bodies: its recovered stresses, when it has stress output.
   std::vector<std::optional<render::StressTrack>> stresses;
   std::vector<std::filesystem::path> frames;  // DIR/frames/*.png, sorted
