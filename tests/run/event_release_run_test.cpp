@@ -15,6 +15,7 @@
 
 #include <Eigen/Geometry>
 
+#include "falling_bar.h"
 #include "core/error.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
@@ -85,22 +86,8 @@ Recorded run_text(const std::string& name, const std::string& text, results::Res
   return out;
 }
 
-// θ̈ = 3 g cos θ / (2 L) from rest at θ = 0 by RK4 at 1e-5 s (error ~1e-14): the bar's fall.
-double falling_bar_angle(double duration) {
-  const auto accel = [](double theta) { return 1.5 * kGravity * std::cos(theta) / kLength; };
-  const int n = std::max(1, static_cast<int>(std::lround(duration / 1e-5)));
-  const double h = duration / n;
-  double th = 0.0, w = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double k1t = w, k1w = accel(th);
-    const double k2t = w + 0.5 * h * k1w, k2w = accel(th + 0.5 * h * k1t);
-    const double k3t = w + 0.5 * h * k2w, k3w = accel(th + 0.5 * h * k2t);
-    const double k4t = w + h * k3w, k4w = accel(th + h * k3t);
-    th += h / 6.0 * (k1t + 2 * k2t + 2 * k3t + k4t);
-    w += h / 6.0 * (k1w + 2 * k2w + 2 * k3w + k4w);
-  }
-  return th;
-}
+// The bar's fall from rest (falling_bar.h), the second method.
+double falling_bar_angle(double duration) { return test::falling_bar_angle(duration, kLength, kGravity); }
 
 // The latch locks at the closed-form time; HD lets go exactly `delay` after the located
 // latch-up (0: at it), carrying m g / 2 up to then and nothing after; the bar then falls as
