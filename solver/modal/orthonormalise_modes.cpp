@@ -1,6 +1,9 @@
 #include "modal/orthonormalise_modes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -29,6 +32,74 @@ int rigid_dimension(const Eigen::SparseMatrix<double>& mass, const Eigen::Matrix
   return d;
 }
 
+// The candidates M-orthonormalised by Gram-Schmidt (two passes), nearly dependent ones dropped.
+struct GramSchmidtBasis {
+  Eigen::MatrixXd q;               // n x kept, M-orthonormal
+  Eigen::MatrixXd m_q;             // M q
+  Eigen::VectorXd candidate_norm;  // M-norm of each candidate, m
+  std::vector<bool> dropped;       // per candidate
+};
+
+GramSchmidtBasis gram_schmidt(const Eigen::SparseMatrix<double>& mass,
+                              const Eigen::MatrixXd& candidates, const std::vector<ModeInfo>& info,
+                              double dependency_tolerance, std::vector<std::string>& notices) {
+  const Eigen::Index n = candidates.rows();
+  const Eigen::Index m = candidates.cols();
+  GramSchmidtBasis basis{Eigen::MatrixXd(n, m), Eigen::MatrixXd(n, m), Eigen::VectorXd(m),
+                         std::vector<bool>(static_cast<std::size_t>(m), false)};
+  Eigen::MatrixXd& q = basis.q;
+  Eigen::MatrixXd& m_q = basis.m_q;
+  Eigen::Index kept = 0;
+  for (Eigen::Index j = 0; j < m; ++j) {
+    Eigen::VectorXd x = candidates.col(j);
+    basis.candidate_norm[j] = std::sqrt(x.dot(mass * x));
+    for (int pass = 0; pass < 2; ++pass) {
+      for (Eigen::Index i = 0; i < kept; ++i) x -= q.col(i) * m_q.col(i).dot(x);
+    }
+    Eigen::VectorXd m_x = mass * x;
+    const double norm = std::sqrt(std::max(x.dot(m_x), 0.0));
+    const double relative = basis.candidate_norm[j] > 0.0 ? norm / basis.candidate_norm[j] : 0.0;
+    if (relative < dependency_tolerance) {
+      notices.push_back(fmt::format(
+          "dropped {}: dependent on the vectors before it (M-norm left after projection {:.3g} "
+          "of its own, tolerance {:.3g})",
+          info[static_cast<std::size_t>(j)].label, relative, dependency_tolerance));
+      basis.dropped[static_cast<std::size_t>(j)] = true;
+      continue;
+    }
+    q.col(kept) = x / norm;
+    m_q.col(kept) = m_x / norm;
+    ++kept;
+  }
+  q.conservativeResize(n, kept);
+  m_q.conservativeResize(n, kept);
+  return basis;
+}
+
+// One-to-one origin labels: each final mode takes the candidate with the largest M-weighted
+// participation |phi^T M x| / |x|_M left, dropped candidates never.
+std::vector<int> origin_of_modes(const Eigen::MatrixXd& m_phi, const Eigen::MatrixXd& candidates,
+                                 const GramSchmidtBasis& basis) {
+  Eigen::MatrixXd participation = (m_phi.transpose() * candidates).cwiseAbs();
+  for (Eigen::Index j = 0; j < candidates.cols(); ++j) {
+    if (basis.dropped[static_cast<std::size_t>(j)]) {
+      participation.col(j).setConstant(-1.0);
+    } else {
+      participation.col(j) /= basis.candidate_norm[j];
+    }
+  }
+  std::vector<int> origin(static_cast<std::size_t>(m_phi.cols()), -1);
+  for (Eigen::Index assigned = 0; assigned < m_phi.cols(); ++assigned) {
+    Eigen::Index k = 0;
+    Eigen::Index j = 0;
+    participation.maxCoeff(&k, &j);
+    origin[static_cast<std::size_t>(k)] = static_cast<int>(j);
+    participation.row(k).setConstant(-1.0);
+    participation.col(j).setConstant(-1.0);
+  }
+  return origin;
+}
+
 }  // namespace
 
 OrthonormalisedModes orthonormalise_modes(const Eigen::SparseMatrix<double>& stiffness,
@@ -44,34 +115,11 @@ OrthonormalisedModes orthonormalise_modes(const Eigen::SparseMatrix<double>& sti
   OrthonormalisedModes result;
 
   // 1. M-Gram-Schmidt, two passes, dropping nearly dependent candidates.
-  Eigen::MatrixXd q(n, m);
-  Eigen::MatrixXd m_q(n, m);
-  Eigen::VectorXd candidate_norm(m);
-  std::vector<bool> dropped(static_cast<std::size_t>(m), false);
-  Eigen::Index kept = 0;
-  for (Eigen::Index j = 0; j < m; ++j) {
-    Eigen::VectorXd x = candidates.col(j);
-    candidate_norm[j] = std::sqrt(x.dot(mass * x));
-    for (int pass = 0; pass < 2; ++pass) {
-      for (Eigen::Index i = 0; i < kept; ++i) x -= q.col(i) * m_q.col(i).dot(x);
-    }
-    Eigen::VectorXd m_x = mass * x;
-    const double norm = std::sqrt(std::max(x.dot(m_x), 0.0));
-    const double relative = candidate_norm[j] > 0.0 ? norm / candidate_norm[j] : 0.0;
-    if (relative < dependency_tolerance) {
-      result.notices.push_back(fmt::format(
-          "dropped {}: dependent on the vectors before it (M-norm left after projection {:.3g} "
-          "of its own, tolerance {:.3g})",
-          info[static_cast<std::size_t>(j)].label, relative, dependency_tolerance));
-      dropped[static_cast<std::size_t>(j)] = true;
-      continue;
-    }
-    q.col(kept) = x / norm;
-    m_q.col(kept) = m_x / norm;
-    ++kept;
-  }
-  q.conservativeResize(n, kept);
-  m_q.conservativeResize(n, kept);
+  const GramSchmidtBasis basis =
+      gram_schmidt(mass, candidates, info, dependency_tolerance, result.notices);
+  const Eigen::MatrixXd& q = basis.q;
+  const Eigen::MatrixXd& m_q = basis.m_q;
+  const Eigen::Index kept = q.cols();
 
   // 2. Reduced eigenproblem on the span: K_r = Q^T K Q, M_r = I.
   Eigen::MatrixXd k_r = q.transpose() * (stiffness * q);
@@ -105,23 +153,7 @@ OrthonormalisedModes orthonormalise_modes(const Eigen::SparseMatrix<double>& sti
 
   // 4. One-to-one origin labels by decreasing M-weighted participation.
   const Eigen::MatrixXd m_phi = m_q * reduced.eigenvectors().rightCols(final_count);
-  Eigen::MatrixXd participation = (m_phi.transpose() * candidates).cwiseAbs();
-  for (Eigen::Index j = 0; j < m; ++j) {
-    if (dropped[static_cast<std::size_t>(j)]) {
-      participation.col(j).setConstant(-1.0);
-    } else {
-      participation.col(j) /= candidate_norm[j];
-    }
-  }
-  std::vector<int> origin(static_cast<std::size_t>(final_count), -1);
-  for (Eigen::Index assigned = 0; assigned < final_count; ++assigned) {
-    Eigen::Index k = 0;
-    Eigen::Index j = 0;
-    participation.maxCoeff(&k, &j);
-    origin[static_cast<std::size_t>(k)] = static_cast<int>(j);
-    participation.row(k).setConstant(-1.0);
-    participation.col(j).setConstant(-1.0);
-  }
+  const std::vector<int> origin = origin_of_modes(m_phi, candidates, basis);
 
   ModeSet& set = result.mode_set;
   set.shapes = phi;
