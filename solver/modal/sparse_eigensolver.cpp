@@ -119,6 +119,88 @@ std::vector<int> all_dofs(const SparseMatrix& stiffness) {
   return dofs;
 }
 
+// ARPACK's work arrays and settings for one solve of `nev` eigenpairs of an n x n operator
+// (ARPACK Users' Guide, dsaupd documentation).
+struct ArpackWork {
+  int n = 0;
+  int nev = 0;
+  int ncv = 0;     // Lanczos basis size, nev < ncv <= n
+  int lworkl = 0;  // ncv (ncv + 8)
+  double tol = 0.0;
+  std::vector<double> resid;
+  std::vector<double> v;  // n x ncv Lanczos basis
+  std::vector<double> workd;
+  std::vector<double> workl;
+  std::vector<double> scratch;  // one vector of size n for the operator
+  int iparam[11] = {};
+  int ipntr[11] = {};
+  int info = 1;  // 1: resid holds the start vector
+};
+
+ArpackWork arpack_work(int n, int nev, const EigenSolverOptions& options) {
+  ArpackWork work;
+  work.n = n;
+  work.nev = nev;
+  work.ncv = options.basis_size > 0 ? std::min(n, options.basis_size)
+                                    : std::min(n, default_basis_size(nev));
+  LIMBER_DEMAND(work.ncv > nev);
+  work.lworkl = work.ncv * (work.ncv + 8);
+  work.tol = options.tolerance;
+  work.resid.resize(static_cast<std::size_t>(n));
+  work.v.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(work.ncv));
+  work.workd.resize(3 * static_cast<std::size_t>(n));
+  work.workl.resize(static_cast<std::size_t>(work.lworkl));
+  work.scratch.resize(static_cast<std::size_t>(n));
+  work.iparam[0] = 1;                       // exact shifts
+  work.iparam[2] = options.max_iterations;  // restarts
+  work.iparam[6] = 1;                       // mode 1: standard problem C w = theta w
+  // Deterministic random start vector (info = 1: resid is supplied).
+  std::mt19937 generator(20240611u);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (double& r : work.resid) r = uniform(generator);
+  return work;
+}
+
+// Reverse-communication loop: y = C x = L^-1 P M P^T L^-T x in ARPACK's own work array
+// (nothing allocated per step). Leaves ARPACK's status in work.info.
+void iterate_lanczos(const Restricted& problem, ShiftedFactor& factor, ArpackWork& work) {
+  int ido = 0;
+  while (true) {
+    dsaupd_(&ido, "I", &work.n, "LM", &work.nev, &work.tol, work.resid.data(), &work.ncv,
+            work.v.data(), &work.n, work.iparam, work.ipntr, work.workd.data(), work.workl.data(),
+            &work.lworkl, &work.info, 1, 2);
+    if (ido != -1 && ido != 1) break;
+    const double* x = &work.workd[static_cast<std::size_t>(work.ipntr[0] - 1)];
+    double* y = &work.workd[static_cast<std::size_t>(work.ipntr[1] - 1)];
+    factor.solve_transposed_factor(x, work.scratch.data());
+    multiply_submatrix(problem.m, problem.dofs, problem.positions, work.scratch.data(), y);
+    factor.solve_factor(y, y);
+  }
+}
+
+// Ritz pairs (theta, w) of C; then lambda = sigma + 1 / theta, and w in solution.vectors (the
+// caller maps it to phi = P^T L^-T w). Sets the status kNotConverged when dseupd fails or
+// converged fewer than nev pairs.
+void extract_ritz_pairs(double sigma, ArpackWork& work, EigenSolution& solution) {
+  const int rvec = 1;
+  std::vector<int> select(static_cast<std::size_t>(work.ncv));
+  Eigen::VectorXd theta(work.nev);
+  solution.vectors.resize(work.n, work.nev);
+  dseupd_(&rvec, "A", select.data(), theta.data(), solution.vectors.data(), &work.n, &sigma, "I",
+          &work.n, "LM", &work.nev, &work.tol, work.resid.data(), &work.ncv, work.v.data(),
+          &work.n, work.iparam, work.ipntr, work.workd.data(), work.workl.data(), &work.lworkl,
+          &work.info, 1, 1, 2);
+  if (work.info != 0 || work.iparam[4] < work.nev) {
+    solution.arpack_info = work.info;
+    solution.status = ModalStatus::kNotConverged;
+    solution.message = fmt::format("ARPACK dseupd: info = {}, {} of {} eigenpairs converged",
+                                   work.info, work.iparam[4], work.nev);
+    solution.vectors.resize(0, 0);
+    return;
+  }
+  solution.eigenvalues = sigma + theta.cwiseInverse().array();
+}
+
 }  // namespace
 
 EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const SparseMatrix& mass,
@@ -165,75 +247,26 @@ EigenSolution solve_lowest_eigenpairs(const SparseMatrix& stiffness, const Spars
     return solution;
   }
 
-  // ARPACK work arrays (ARPACK Users' Guide, dsaupd documentation).
+  // Lanczos iterations, then the eigenpairs from the Ritz pairs.
   const Clock::time_point lanczos_start = Clock::now();
-  const int ncv = options.basis_size > 0 ? std::min(n, options.basis_size)
-                                         : std::min(n, default_basis_size(nev));
-  LIMBER_DEMAND(ncv > nev);
-  const int ldv = n;
-  const int lworkl = ncv * (ncv + 8);
-  const double tol = options.tolerance;
-  std::vector<double> resid(static_cast<std::size_t>(n));
-  std::vector<double> v(static_cast<std::size_t>(n) * static_cast<std::size_t>(ncv));
-  std::vector<double> workd(3 * static_cast<std::size_t>(n));
-  std::vector<double> workl(static_cast<std::size_t>(lworkl));
-  std::vector<double> scratch(static_cast<std::size_t>(n));
-  int iparam[11] = {};
-  int ipntr[11] = {};
-  iparam[0] = 1;                       // exact shifts
-  iparam[2] = options.max_iterations;  // restarts
-  iparam[6] = 1;                       // mode 1: standard problem C w = theta w
-
-  // Deterministic random start vector (info = 1: resid is supplied).
-  std::mt19937 generator(20240611u);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  for (double& r : resid) r = uniform(generator);
-  int info = 1;
-
-  // Reverse-communication loop: y = C x = L^-1 P M P^T L^-T x in ARPACK's own work array
-  // (nothing allocated per step).
-  int ido = 0;
-  while (true) {
-    dsaupd_(&ido, "I", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr,
-            workd.data(), workl.data(), &lworkl, &info, 1, 2);
-    if (ido != -1 && ido != 1) break;
-    const double* x = &workd[static_cast<std::size_t>(ipntr[0] - 1)];
-    double* y = &workd[static_cast<std::size_t>(ipntr[1] - 1)];
-    factor.solve_transposed_factor(x, scratch.data());
-    multiply_submatrix(mass, dofs, problem.positions, scratch.data(), y);
-    factor.solve_factor(y, y);
-  }
-  solution.arpack_info = info;
-  solution.operator_applications = iparam[8];
-  if (info != 0) {
+  ArpackWork work = arpack_work(n, nev, options);
+  iterate_lanczos(problem, factor, work);
+  solution.arpack_info = work.info;
+  solution.operator_applications = work.iparam[8];
+  if (work.info != 0) {
     solution.status = ModalStatus::kNotConverged;
     solution.message =
-        info == 1 ? fmt::format("ARPACK dsaupd reached the maximum of {} restarts with {} of {} "
-                                "eigenpairs converged (info = 1)",
-                                options.max_iterations, iparam[4], nev)
-                  : fmt::format("ARPACK dsaupd failed with info = {} (n = {}, nev = {}, ncv = {})",
-                                info, n, nev, ncv);
+        work.info == 1
+            ? fmt::format("ARPACK dsaupd reached the maximum of {} restarts with {} of {} "
+                          "eigenpairs converged (info = 1)",
+                          options.max_iterations, work.iparam[4], nev)
+            : fmt::format("ARPACK dsaupd failed with info = {} (n = {}, nev = {}, ncv = {})",
+                          work.info, n, nev, work.ncv);
     return solution;
   }
-
-  // Ritz pairs (theta, w) of C; then lambda = sigma + 1 / theta, phi = P^T L^-T w.
-  const int rvec = 1;
-  std::vector<int> select(static_cast<std::size_t>(ncv));
-  Eigen::VectorXd theta(nev);
-  solution.vectors.resize(n, nev);
-  dseupd_(&rvec, "A", select.data(), theta.data(), solution.vectors.data(), &ldv, &sigma, "I",
-          &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(),
-          workl.data(), &lworkl, &info, 1, 1, 2);
+  extract_ritz_pairs(sigma, work, solution);
   solution.lanczos_seconds = seconds_since(lanczos_start);
-  if (info != 0 || iparam[4] < nev) {
-    solution.arpack_info = info;
-    solution.status = ModalStatus::kNotConverged;
-    solution.message = fmt::format("ARPACK dseupd: info = {}, {} of {} eigenpairs converged", info,
-                                   iparam[4], nev);
-    solution.vectors.resize(0, 0);
-    return solution;
-  }
-  solution.eigenvalues = sigma + theta.cwiseInverse().array();
+  if (solution.status != ModalStatus::kOk) return solution;
   for (Eigen::Index j = 0; j < nev; ++j) {
     auto w = solution.vectors.col(j);
     factor.solve_transposed_factor(w.data(), w.data());
