@@ -69,6 +69,104 @@ std::vector<double> frame_times(double t0, double t1, double fps) {
   return times;
 }
 
+namespace {
+
+// Frames: rendered on this thread; FXAA and PNG encoding on the writer threads. Fills the
+// summary's frame count, backend and timings.
+void render_frames(const Results& results, const RenderOptions& options,
+                   const std::vector<double>& times, RenderSummary& summary) {
+  const std::filesystem::path frames = options.directory / results::kFramesFolder;
+  std::filesystem::create_directories(frames);
+  remove_stale(frames, "frame_", ".png");
+  remove_stale(frames, "frame_", ".png.part");  // left by an interrupted render
+  const auto start = std::chrono::steady_clock::now();
+  FrameRenderer renderer(results, options, summary.t0, summary.t1);
+  summary.backend = renderer.backend();
+  {
+    PngFrameWriter writer;
+    ProgressBar progress("rendering", static_cast<int>(times.size()), options.progress);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%05zu.png", k);
+      // The CPU FXAA runs on the writers, beside the next frame's draw.
+      auto [image, smooth] = renderer.render_deferred(times[k]);
+      writer.push(std::move(image), frames / name, std::move(smooth));
+      progress.update(static_cast<int>(k) + 1);
+    }
+    writer.finish();
+    summary.png_seconds = writer.encode_seconds();
+    summary.smoothing_seconds = writer.prepare_seconds();
+  }
+  summary.frames = static_cast<int>(times.size());
+  summary.timing = renderer.timing();
+  summary.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The one-file XDMF scene and the ParaView script that opens it, viewed and coloured as the
+// video; returns the number of samples written.
+int write_xdmf_output(const Results& results, const RenderOptions& options,
+                      const std::filesystem::path& vtk, double t0, double t1) {
+  const XdmfSceneSummary scene = write_xdmf_scene(results, vtk, t0, t1, options.progress);
+  ParaViewView view = fit_view(view_direction(options), scene.lo, scene.hi);
+  view.title = results.title;
+  view.scale = options.scale;
+  // Coloured as the video: by stress only with --color von_mises, in the same map.
+  view.color_by_stress = options.color == ColorBy::kVonMises && scene.stress;
+  view.viridis = options.color_map == ColorMap::kViridis;
+  view.beams = scene.beams;
+  view.relative = scene.relative;
+  view.color_max = view.color_by_stress ? scene.stress_max : scene.relative_deflection_max;
+  view.width = options.width;
+  view.height = options.height;
+  write_paraview_script(view, std::filesystem::absolute(vtk));
+  return scene.samples;
+}
+
+// ParaView output: the XDMF scene and/or the VTU/PVD series. The other kind's files of an
+// earlier render are removed, so DIR/vtk holds what was asked for.
+void write_paraview_output(const Results& results, const RenderOptions& options,
+                           RenderSummary& summary) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::filesystem::path vtk = options.directory / results::kVtkFolder;
+  const bool xdmf = options.paraview != ParaViewOutput::kPvd;
+  const bool pvd = options.paraview != ParaViewOutput::kXdmf;
+  remove_stale(vtk, "", ".vtu");
+  if (!pvd) remove_stale(vtk, results::kVtkSceneFileName, "");
+  if (!xdmf) {
+    for (const char* name : {xdmf::kFileName, xdmf::kDescriptionName, xdmf::kScriptName}) {
+      remove_stale(vtk, name, "");
+    }
+  }
+  if (xdmf) summary.xdmf_samples = write_xdmf_output(results, options, vtk, summary.t0, summary.t1);
+  if (pvd) summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
+  summary.paraview_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Videos (MP4, GIF) from the frames, when ffmpeg is installed; a warning otherwise.
+void encode_videos(const RenderOptions& options, RenderSummary& summary) {
+  const std::filesystem::path frames = options.directory / results::kFramesFolder;
+  const auto ffmpeg = find_ffmpeg();
+  if (!ffmpeg) {
+    summary.warnings.push_back(
+        "ffmpeg not found on PATH: no video written (install Debian's ffmpeg package); "
+        "the PNG frames are in " + frames.string());
+    return;
+  }
+  for (const auto& [wanted, name, target] :
+       {std::tuple{options.write_video, results::kAnimationVideoFileName, &summary.video},
+        std::tuple{options.write_gif, results::kAnimationGifFileName, &summary.gif}}) {
+    if (!wanted) continue;
+    const std::filesystem::path output = options.directory / name;
+    const std::string problem = encode_video(*ffmpeg, frames, options.playback_fps, output);
+    if (problem.empty()) *target = output;
+    else summary.warnings.push_back(problem);
+  }
+}
+
+}  // namespace
+
 RenderSummary render_results(const RenderOptions& options) {
   validate(options);
   // One render at a time writes into a run directory (results/directory_lock.h).
@@ -87,92 +185,14 @@ RenderSummary render_results(const RenderOptions& options) {
         std::to_string(results.sample_count()) + " samples written so far, up to t = " +
         seconds(results.time(results.sample_count() - 1)));
   }
-  const std::vector<double> times = frame_times(summary.t0, summary.t1, options.fps);
 
-  // Frames: render on this thread; FXAA and PNG encoding on the writer threads.
-  const std::filesystem::path frames = options.directory / results::kFramesFolder;
+  // Frames, ParaView output, then videos from the frames.
   if (options.write_png) {
-    std::filesystem::create_directories(frames);
-    remove_stale(frames, "frame_", ".png");
-    remove_stale(frames, "frame_", ".png.part");  // left by an interrupted render
-    const auto start = std::chrono::steady_clock::now();
-    FrameRenderer renderer(results, options, summary.t0, summary.t1);
-    summary.backend = renderer.backend();
-    {
-      PngFrameWriter writer;
-      ProgressBar progress("rendering", static_cast<int>(times.size()), options.progress);
-      for (std::size_t k = 0; k < times.size(); ++k) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%05zu.png", k);
-        // The CPU FXAA runs on the writers, beside the next frame's draw.
-        auto [image, smooth] = renderer.render_deferred(times[k]);
-        writer.push(std::move(image), frames / name, std::move(smooth));
-        progress.update(static_cast<int>(k) + 1);
-      }
-      writer.finish();
-      summary.png_seconds = writer.encode_seconds();
-      summary.smoothing_seconds = writer.prepare_seconds();
-    }
-    summary.frames = static_cast<int>(times.size());
-    summary.timing = renderer.timing();
-    summary.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    render_frames(results, options, frame_times(summary.t0, summary.t1, options.fps), summary);
   }
-
-  // ParaView output: the one-file XDMF scene and its script, and/or the VTU/PVD series. The
-  // other kind's files of an earlier render are removed, so DIR/vtk holds what was asked for.
-  if (options.paraview != ParaViewOutput::kNone) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::filesystem::path vtk = options.directory / results::kVtkFolder;
-    const bool xdmf = options.paraview != ParaViewOutput::kPvd;
-    const bool pvd = options.paraview != ParaViewOutput::kXdmf;
-    remove_stale(vtk, "", ".vtu");
-    if (!pvd) remove_stale(vtk, results::kVtkSceneFileName, "");
-    if (!xdmf) {
-      for (const char* name : {xdmf::kFileName, xdmf::kDescriptionName, xdmf::kScriptName}) {
-        remove_stale(vtk, name, "");
-      }
-    }
-    if (xdmf) {
-      const XdmfSceneSummary scene =
-          write_xdmf_scene(results, vtk, summary.t0, summary.t1, options.progress);
-      summary.xdmf_samples = scene.samples;
-      ParaViewView view = fit_view(view_direction(options), scene.lo, scene.hi);
-      view.title = results.title;
-      view.scale = options.scale;
-      // Coloured as the video: by stress only with --color von_mises, in the same map.
-      view.color_by_stress = options.color == ColorBy::kVonMises && scene.stress;
-      view.viridis = options.color_map == ColorMap::kViridis;
-      view.beams = scene.beams;
-      view.relative = scene.relative;
-      view.color_max = view.color_by_stress ? scene.stress_max : scene.relative_deflection_max;
-      view.width = options.width;
-      view.height = options.height;
-      write_paraview_script(view, std::filesystem::absolute(vtk));
-    }
-    if (pvd) summary.vtu_files = write_vtk_series(results, vtk, summary.t0, summary.t1);
-    summary.paraview_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-
-  // Videos from the frames, when ffmpeg is installed.
+  if (options.paraview != ParaViewOutput::kNone) write_paraview_output(results, options, summary);
   if (options.write_png && (options.write_video || options.write_gif)) {
-    const auto ffmpeg = find_ffmpeg();
-    if (!ffmpeg) {
-      summary.warnings.push_back(
-          "ffmpeg not found on PATH: no video written (install Debian's ffmpeg package); "
-          "the PNG frames are in " + frames.string());
-    } else {
-      for (const auto& [wanted, name, target] :
-           {std::tuple{options.write_video, results::kAnimationVideoFileName, &summary.video},
-            std::tuple{options.write_gif, results::kAnimationGifFileName, &summary.gif}}) {
-        if (!wanted) continue;
-        const std::filesystem::path output = options.directory / name;
-        const std::string problem = encode_video(*ffmpeg, frames, options.playback_fps, output);
-        if (problem.empty()) *target = output;
-        else summary.warnings.push_back(problem);
-      }
-    }
+    encode_videos(options, summary);
   }
   return summary;
 }
