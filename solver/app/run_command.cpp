@@ -188,18 +188,13 @@ void print_start_and_releases(std::FILE* out, const run::RunSummary& summary) {
   }
 }
 
-int run_case(const RunOptions& options) {
-  const io::Case input = io::read_case_file(options.case_file);
-  const run::CaseRun prepared = run::prepare_case_run(input, options.overrides, options.modes);
-  const io::RunSettings& settings = prepared.settings;
-  const io::CaseReduction& reduction = prepared.reduction;
+// The case, its model, the reduction and geometric stiffening on `text`; the decks' notices
+// and the distant-joint warnings on stderr.
+void print_case(std::FILE* text, const io::Case& input, const run::CaseRun& prepared) {
   const multibody::Model& model = prepared.mechanism.model;
-
-  // Human-readable text on stdout, or on stderr when stdout carries JSON.
-  std::FILE* text = options.json ? stderr : stdout;
   fmt::print(text, "limber run: {} ({})\n", input.title, input.file);
   print_model(text, model);
-  print_reduction(text, reduction);
+  print_reduction(text, prepared.reduction);
   print_stiffening(text, model);
   // Notes from reading bulk-data decks (cards ignored, approximations).
   for (const io::FlexibleBodyCase& body : input.flexible_bodies) {
@@ -210,57 +205,44 @@ int run_case(const RunOptions& options) {
   for (const std::string& warning : multibody::distant_joint_warnings(model)) {
     fmt::print(stderr, "limber: warning: {}\n", warning);
   }
+}
 
-  // Results file, written while the run goes.
-  const std::filesystem::path directory =
-      options.output_dir.empty()
-          ? std::filesystem::path("out") / std::filesystem::path(options.case_file).stem()
-          : std::filesystem::path(options.output_dir);
-  // Signals are caught from before the file exists, so a stop at any moment closes it.
-  const StopSignals stop_signals;
-  const std::unique_ptr<results::ResultsWriter> writer = run::open_case_results(directory, input);
-  const std::string results_path = writer->path().string();
-
-  // The run, with a progress line on a terminal.
-  std::optional<RunProgress> progress;
+// The run's callbacks: the start and the events on `text`, warnings on stderr, a progress line
+// on a terminal (in `progress`, from the start on), and a stop when a signal was received.
+run::RunHooks run_hooks(std::FILE* text, const run::CaseRun& prepared,
+                        std::optional<RunProgress>& progress) {
+  const multibody::Model& model = prepared.mechanism.model;
+  const io::RunSettings& settings = prepared.settings;
   run::RunHooks hooks;
-  hooks.on_start = [&](const run::PreparedStart& start) {
+  hooks.on_start = [text, &model, &settings, &progress](const run::PreparedStart& start) {
     print_start(text, model, start);
     fmt::print(text, "integrator: {}; t_end {:g} s, output every {:g} s\n",
                describe_integrator(settings.integrator), settings.t_end, settings.sample_interval);
     std::fflush(text);
     progress.emplace(settings.t_end, true);
   };
-  hooks.on_sample = [&](const integrate::Sample& sample, const results::Sample&) {
+  hooks.on_sample = [&progress](const integrate::Sample& sample, const results::Sample&) {
     if (progress) progress->update(sample.t, sample.statistics.steps);
     if (StopSignals::received() != 0) {
       throw run::RunStopped{fmt::format("interrupted by signal {} after t = {:g} s", StopSignals::received(), sample.t)};
     }
   };
-  hooks.on_warning = [&](const std::string& warning) {
+  hooks.on_warning = [&progress](const std::string& warning) {
     if (progress) progress->clear();
     fmt::print(stderr, "limber: warning: {}\n", warning);
   };
-  hooks.on_event = [&](const multibody::HingeEvent& event) {
+  hooks.on_event = [text, &model, &progress](const multibody::HingeEvent& event) {
     if (progress) progress->clear();
     fmt::print(text, "event: {}\n", describe_event(model, event));
   };
-  // A signal or an error mid-run still closes the file, as "interrupted" or "failed".
-  run::RunSummary summary;
-  try {
-    summary = run::run_case(prepared, *writer, hooks);
-  } catch (const run::RunStopped& stop) {
-    progress.reset();
-    fmt::print(stderr, "limber: {} ({} samples kept in {})\n", stop.message, writer->sample_count(),
-               results_path);
-    return kExitInterrupted;
-  } catch (const std::exception&) {
-    progress.reset();
-    throw;
-  }
-  progress.reset();
+  return hooks;
+}
 
-  // Summary, JSON, and the failure (exit code 2) if any.
+// Summary on `text`, the run record on stdout with --json, and the exit code: a numerical
+// failure (2) or an inaccurate answer (5) said on stderr.
+int report_outcome(std::FILE* text, const RunOptions& options, const multibody::Model& model,
+                   const run::RunSummary& summary, const std::filesystem::path& directory,
+                   const std::string& results_path) {
   const integrate::Statistics& s = summary.statistics;
   print_start_and_releases(text, summary);
   if (summary.failure != "assembly" && summary.failure != "statics") {
@@ -289,6 +271,44 @@ int run_case(const RunOptions& options) {
     return kExitInaccurate;
   }
   return kExitOk;
+}
+
+int run_case(const RunOptions& options) {
+  const io::Case input = io::read_case_file(options.case_file);
+  const run::CaseRun prepared = run::prepare_case_run(input, options.overrides, options.modes);
+
+  // Human-readable text on stdout, or on stderr when stdout carries JSON.
+  std::FILE* text = options.json ? stderr : stdout;
+  print_case(text, input, prepared);
+
+  // Results file, written while the run goes.
+  const std::filesystem::path directory =
+      options.output_dir.empty()
+          ? std::filesystem::path("out") / std::filesystem::path(options.case_file).stem()
+          : std::filesystem::path(options.output_dir);
+  // Signals are caught from before the file exists, so a stop at any moment closes it.
+  const StopSignals stop_signals;
+  const std::unique_ptr<results::ResultsWriter> writer = run::open_case_results(directory, input);
+  const std::string results_path = writer->path().string();
+
+  // The run, with a progress line on a terminal. A signal or an error mid-run still closes the
+  // file, as "interrupted" or "failed".
+  std::optional<RunProgress> progress;
+  const run::RunHooks hooks = run_hooks(text, prepared, progress);
+  run::RunSummary summary;
+  try {
+    summary = run::run_case(prepared, *writer, hooks);
+  } catch (const run::RunStopped& stop) {
+    progress.reset();
+    fmt::print(stderr, "limber: {} ({} samples kept in {})\n", stop.message, writer->sample_count(),
+               results_path);
+    return kExitInterrupted;
+  } catch (const std::exception&) {
+    progress.reset();
+    throw;
+  }
+  progress.reset();
+  return report_outcome(text, options, prepared.mechanism.model, summary, directory, results_path);
 }
 
 }  // namespace
