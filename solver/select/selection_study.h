@@ -46,6 +46,7 @@ struct CandidateRun {
   std::vector<std::string> notices;  // the reduction's, e.g. a static mode dropped as dependent
   StepChoice step;                   // the step it ran at and whether it resolves its modes
   run::RunSummary summary;
+  double cpu_seconds = 0.0;          // CPU time of its run on its own thread [s] (what it costs beside the others)
   std::filesystem::path directory;   // holds its results.h5
   Eigen::VectorXd time;              // samples [s]
   Eigen::MatrixXd reactions;         // samples x 6 · sites (reaction_ranking.h)
@@ -98,6 +99,12 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
                            const std::filesystem::path& directory,
                            const std::function<void(const integrate::Sample&)>& on_sample = {},
                            const multibody::Model* columns = nullptr);
+
+// run_candidate's first half: the set's modes and model (reduction, mechanism, modes, notices),
+// ready for candidate_settings and run_mechanism_recorded, for a caller that watches the run.
+// Throws as run_candidate.
+CandidateRun prepare_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
+                               const std::filesystem::path& directory);
 
 // The settings a set of `mechanism` runs with: the case's, adjusted, with event peaks (over
 // kSelectPeakWindow unless the settings give a window) and the step `policy` chooses for the
