@@ -140,7 +140,8 @@ ReferenceCheck check_reference(const CandidateRun& reference, const HalfStepRuns
   std::vector<results::EventPeaks> peaks;
   for (const CandidateRun& run : half.runs) peaks.push_back(run.summary.peaks);
   check.change = compare_peaks(merge_stretch_peaks(reference.summary.peaks, half.stretches, peaks),
-                               reference.summary.peaks, joint_release_times(reference.mechanism.model));
+                               reference.summary.peaks,
+                               joint_release_times(reference.mechanism.model, reference.summary));
   check.converged = check.change.error < kConvergedChange;
   return check;
 }

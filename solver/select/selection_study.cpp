@@ -178,10 +178,13 @@ Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity)
                              : Eigen::VectorXd(run.reactions.col(quantity.column));
 }
 
-ReleaseTimes joint_release_times(const multibody::Model& model) {
+ReleaseTimes joint_release_times(const multibody::Model& model, const run::RunSummary& run) {
   ReleaseTimes times;
   for (const multibody::Joint& joint : model.joints) {
     if (std::isfinite(joint.release_time)) times[joint.name] = joint.release_time;
+  }
+  for (const run::JointRelease& release : run.releases) {
+    for (const std::string& joint : release.joints) times.emplace(joint, release.t);
   }
   return times;
 }
@@ -194,7 +197,7 @@ void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity
     if (run.candidate.reference || !run.ok()) continue;
     if (run.time.size() == 0) continue;
     run.peaks = compare_peaks(run.summary.peaks, reference->summary.peaks,
-                              joint_release_times(reference->mechanism.model));
+                              joint_release_times(reference->mechanism.model, reference->summary));
     run.error_peak = run.error_rms = 0.0;
     double worst = -1.0;
     for (const KeyQuantity& key : keys) {

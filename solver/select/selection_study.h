@@ -142,9 +142,11 @@ std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& rank
 // The quantity's series in a run.
 Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity);
 
-// The release times of the model's joints that have one: the joints compare_peaks leaves out
-// of the windows their release opens.
-ReleaseTimes joint_release_times(const multibody::Model& model);
+// The release times of the model's joints that have one (Joint::release_time) and of those
+// `run` released at an event (`release: {after: <latch>, delay: s}`, at the time the run located
+// it: RunSummary::releases): the joints compare_peaks leaves out of the windows their release
+// opens (and of later ones).
+ReleaseTimes joint_release_times(const multibody::Model& model, const run::RunSummary& run);
 
 // Fills error_peak, error_rms and worst_quantity of every finished run against the run marked
 // reference (largest error over `keys`), on their common samples, and peaks (their event peaks
