@@ -1,9 +1,10 @@
 // The reference's convergence check at half its step, run beside the reference (docs/select.md,
 // "Reference check"): its event windows re-run in stretches (windowed_twin.h), each started on
 // the job queue as soon as the reference has run far enough past it that no later window can
-// join it, instead of all of them after the reference. On the satellite the check's three
-// stretches then run on the second core while the reference runs on the first; started after
-// it, they were the last quarter of the selection's critical path.
+// join it, instead of all of them after the reference. On the satellite two of the check's
+// three stretches (14 of its 21 CPU s) can then run on the second core while the reference runs
+// on the first (docs/benchmarks.md, "`limber select` on the satellite: the sets the answer
+// needs").
 //
 // The stretches of the reference's final windows decide: a stretch started early is used when it
 // is one of them (same windows, start and end), and any other runs once the queue is done. So

@@ -37,8 +37,9 @@ struct ModeSetCandidate {
 };
 
 // One-component sets run when a selection has a target and its request does not say: each can
-// be the answer then. Without a target the answer is `kept`, and they would only explain it at
-// 40 % of the satellite's selection (docs/select.md, "Which sets run"): none run unless asked for.
+// be the answer then. Without a target the answer is `kept`, and they would only explain it, at
+// 38 % of the satellite selection's CPU time (docs/select.md, "Which sets run"): none run unless
+// asked for.
 inline constexpr int kMaxSingle = 6;
 
 struct CandidateOptions {
