@@ -1,10 +1,10 @@
 // The reference's convergence check at half its step, run beside the reference (docs/select.md,
 // "Reference check"): its event windows re-run in stretches (windowed_twin.h), each started on
 // the job queue as soon as the reference has run far enough past it that no later window can
-// join it, instead of all of them after the reference. On the satellite two of the check's
-// three stretches (14 of its 21 CPU s) can then run on the second core while the reference runs
-// on the first (docs/benchmarks.md, "`limber select` on the satellite: the sets the answer
-// needs").
+// join it, instead of all of them after the reference. On the satellite all three of the
+// check's stretches (21 CPU s) are queued while the reference runs, the last at 4.8 s of its 6 s,
+// and the second core takes them between the other sets (docs/benchmarks.md, "`limber select`
+// on the satellite: the sets the answer needs").
 //
 // The stretches of the reference's final windows decide: a stretch started early is used when it
 // is one of them (same windows, start and end), and any other runs once the queue is done. So
