@@ -36,7 +36,7 @@ struct SelectOptions {
   std::string rank_by = "peak";
   std::string norm = "event";
   std::string static_kind = "attachment";
-  int max_single = 6;
+  std::optional<int> max_single;
   int reference_normal = 0;
   std::string reference = "modal";
   bool keep_step = false;
@@ -161,9 +161,9 @@ std::string outcome_lines(const select::CandidateRun& run, const std::string& na
   std::string lines;
   for (const std::string& notice : run.notices) lines += fmt::format("      notice: {}\n", notice);
   lines += fmt::format("      {}{} modes, f_max {:.0f} Hz, {}, steps per period {}, reduction {:.3f} s, "
-                       "run {:.3f} s{}\n",
+                       "run {:.3f} s (CPU {:.2f} s){}\n",
                        name.empty() ? "" : name + ": ", run.modes, run.step.f_max, select::step_text(run.step),
-                       select::resolution(run.step), run.reduction_seconds, run.summary.wall_seconds,
+                       select::resolution(run.step), run.reduction_seconds, run.summary.wall_seconds, run.cpu_seconds,
                        run.status() == results::layout::status::kOk ? "" : ", " + run.status());
   return lines;
 }
@@ -248,19 +248,20 @@ Command add_select_command(CLI::App& app) {
       "Runs the case with normal modes only on every flexible body; ranks every joint-reaction\n"
       "component acting on a flexible body (peak and rms, in the body's own axes); keeps those at\n"
       "or above --keep of the body's largest as boundary conditions for static modes; then runs\n"
-      "and compares the mode sets: normal only, each kept component alone, all kept together,\n"
-      "as many normal modes as that, and a reference (--reference-normal normal modes plus every\n"
-      "kept static mode; with --reference nonlinear that set is 'richest', and the reference is\n"
-      "the case with every flexible body nonlinear, generalized-alpha at the case's step). Each\n"
-      "set runs at a step that resolves its highest natural frequency f_max (20 steps per\n"
-      "period; generalized-alpha's step, IDA's max_step), at most\n"
-      "--max-refinement times shorter than the case's (longer: marked 'not resolved'); with\n"
+      "and compares the mode sets: normal only, each kept component alone (with --target, or\n"
+      "--max-single), all kept together, as many normal modes as that, and a reference\n"
+      "(--reference-normal normal modes plus every kept static mode; with --reference nonlinear\n"
+      "that set is 'richest', and the reference is the case with every flexible body nonlinear,\n"
+      "generalized-alpha at the case's step). Each set runs at a step that resolves its highest\n"
+      "natural frequency f_max (20 steps per period; generalized-alpha's step, IDA's max_step),\n"
+      "at most --max-refinement times shorter than the case's (longer: marked 'not resolved'); with\n"
       "generalized-alpha only in the event windows (--peak-window after the start and after\n"
       "every event), the case's step between them (--whole-run: throughout);\n"
       "--keep-step runs every set at the case's step. Sets run --jobs at a time, the reference\n"
       "first: a reference whose own accuracy check fails is refused; its event windows run again\n"
-      "at half its step, each from the reference's own state before its event, and the change of\n"
-      "its event peaks is reported (< 3 %: converged).\n"
+      "at half its step, each from the reference's own state before its event and as soon as\n"
+      "the reference has run past it, and the change of its event peaks is reported (< 3 %:\n"
+      "converged).\n"
       "Errors: event peaks (per joint, the largest force and torque at every step in --peak-window\n"
       "after the start and each latch engagement, against the reference's) and, sample by sample,\n"
       "the kept reactions and the deflection probes. Without --target the answer is 'kept' (the\n"
@@ -295,8 +296,8 @@ Command add_select_command(CLI::App& app) {
       ->check(CLI::IsMember({"attachment", "constraint"}))
       ->capture_default_str();
   cli->add_option("--max-single", options->max_single,
-                  "At most this many one-component sets (the largest kept first)")
-      ->capture_default_str();
+                  "At most this many one-component sets (the largest kept first; default: 6 with --target, "
+                  "where each can be the answer, 0 without)");
   cli->add_option("--reference-normal", options->reference_normal,
                   "Normal modes per body in the reference set (0: four times the case's)")
       ->capture_default_str();

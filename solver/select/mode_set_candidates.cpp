@@ -112,6 +112,7 @@ std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input, const i
   std::vector<std::string> kept_labels;
   std::vector<std::string> seen_keys = {request_key(normal)};
   int singles = 0;
+  const int max_single = options.max_single.value_or(kMaxSingle);
   for (const RankedComponent& component : ranking) {
     if (!component.kept) continue;
     const std::string& name = component_name(input, component);
@@ -120,7 +121,7 @@ std::vector<ModeSetCandidate> mode_set_candidates(const io::Case& input, const i
     if (is_fixed(entry.model, component.site.node, dof)) continue;
     if (!add_static_mode(kept.requests[name], options.static_kind, component.site.node, dof)) continue;
     kept_labels.push_back(component.label());
-    if (singles >= options.max_single) continue;
+    if (singles >= max_single) continue;
     ModeSetCandidate single{"normal+" + component.label(),
                             fmt::format("normal modes + the {} mode of {} at node {}", kind,
                                         component.label(), component.node_id),

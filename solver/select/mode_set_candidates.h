@@ -11,6 +11,7 @@
 // unit displacement (constraint mode) at the joint's FE node along the component's body axis.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,17 @@ struct ModeSetCandidate {
   bool nonlinear = false;
 };
 
+// One-component sets run when a selection has a target and its request does not say: each can
+// be the answer then. Without a target the answer is `kept`, and they would only explain it, at
+// 38 % of the satellite selection's CPU time (docs/select.md, "Which sets run"): none run unless
+// asked for.
+inline constexpr int kMaxSingle = 6;
+
 struct CandidateOptions {
   StaticModeKind static_kind = StaticModeKind::kAttachment;
-  int max_single = 6;        // at most this many one-component sets (the largest kept first)
+  // At most this many one-component sets (the largest kept first); empty: kMaxSingle with a
+  // target, none without (run_selection; mode_set_candidates alone takes kMaxSingle).
+  std::optional<int> max_single;
   int reference_normal = 0;  // normal modes per body in the reference; 0: 4 × the case's
 };
 

@@ -11,6 +11,7 @@
 #include "io/formulation_override.h"
 #include "results/directory_lock.h"
 #include "results/file_names.h"
+#include "select/half_step_runs.h"
 #include "select/job_queue.h"
 #include "select/selection_files.h"
 #include "select/windowed_twin.h"
@@ -18,16 +19,6 @@
 namespace limber::select {
 
 namespace {
-
-// A mode set's name as a folder name: letters, digits, '.', '+', '-', '_' kept.
-std::string folder_name(const std::string& name) {
-  std::string folder;
-  for (char c : name) {
-    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' || c == '_';
-    folder += plain ? c : '_';
-  }
-  return folder;
-}
 
 // One set into DIR/runs/<folder>; `columns` as run_candidate's.
 CandidateRun run_set(const std::shared_ptr<const io::Case>& input, const SelectionRequest& request,
@@ -78,97 +69,43 @@ std::vector<ModeSetCandidate> with_nonlinear_reference(std::vector<ModeSetCandid
   return candidates;
 }
 
-// The reference's stretches at half its step (windowed_twin.h) and their runs, in order.
-struct HalfStepRuns {
-  std::vector<TwinStretch> stretches;
-  std::vector<CandidateRun> runs;
-};
-
-// A stretch's folder under runs/<reference>_half_step: "1_start", "2_latch_latch_R3".
-std::string stretch_folder(const std::string& reference, std::size_t k, const TwinStretch& stretch) {
-  return folder_name(reference) + "_half_step/" + folder_name(fmt::format("{}_{}", k + 1, stretch.windows.front()));
-}
-
-// Stretch k of the reference's windows re-run at half its step from the reference's state
-// before its event (windowed_twin.h); `number` and `count` for the hooks, `columns` as the
-// reference's.
-CandidateRun run_stretch(const SelectionRequest& request, const SelectionHooks& hooks, const CandidateRun& reference,
-                         const TwinStretch& stretch, std::size_t k, std::size_t number, std::size_t count,
-                         const multibody::Model* columns) {
-  const std::string folder = stretch_folder(reference.candidate.name, k, stretch);
-  const std::string description = fmt::format("{}, windows {} re-run from t = {:.6g} s", reference.candidate.description,
-                                              fmt::join(stretch.windows, ", "), stretch.t_start());
-  if (hooks.on_set_start) hooks.on_set_start({number, count, folder, description, 0.5});
-  StepPolicy policy = request.policy;
-  policy.scale = 0.5;
-  CandidateRun run;
-  run.candidate = reference.candidate;
-  run.input = reference.input;
-  run.modes = reference.modes;
-  run.directory = request.root / results::kRunsFolder / folder;
-  io::RunSettings settings = candidate_settings(reference.mechanism, request.adjust, policy, run.step);
-  settings.t_end = stretch.t_end;
-  run_mechanism_recorded(*reference.input, reference.mechanism, settings, reference.candidate.name + " at half its step",
-                         stretch.restart ? &*stretch.restart : nullptr,
-                         [&](const integrate::Sample& sample) {
-                           if (hooks.on_sample) hooks.on_sample(sample, request.jobs <= 1);
-                         },
-                         run, columns);
-  if (hooks.on_set_done) hooks.on_set_done(run, folder);
-  return run;
-}
-
 // The sets after `normal` (candidates[0]), `jobs` at a time, the longest (the reference) first,
-// appended to `runs` in the candidates' order; and as soon as the reference has run (and passed
-// its own accuracy check), its event windows at half its step, ahead of the sets still waiting.
-HalfStepRuns run_sets(const SelectionInputs& inputs, const SelectionRequest& request,
-                      const SelectionHooks& hooks, const std::vector<ModeSetCandidate>& candidates,
-                      std::vector<CandidateRun>& runs) {
+// appended to `runs` in the candidates' order; and the reference's event windows at half its
+// step, each as soon as the reference has run past it (or, a nonlinear reference's, once it has
+// run and passed its own accuracy check), ahead of the sets still waiting.
+void run_sets(const SelectionInputs& inputs, const SelectionRequest& request, const SelectionHooks& hooks,
+              const std::vector<ModeSetCandidate>& candidates, std::vector<CandidateRun>& runs, HalfStepRuns& half) {
   std::vector<std::size_t> order;
   for (std::size_t k = 1; k < candidates.size(); ++k) {
     if (candidates[k].reference) order.insert(order.begin(), k);
     else order.push_back(k);
   }
   std::vector<std::optional<CandidateRun>> done(order.size());
-  HalfStepRuns half;
-  std::vector<std::optional<CandidateRun>> half_done;
-  // The stretches go to the front of the queue, the first to run first.
-  const auto queue_half_step = [&](JobQueue& queue, const CandidateRun& reference) {
-    // A nonlinear reference's windows re-run from t = 0: its restart points are not kept.
-    const multibody::Model* columns = reference.candidate.nonlinear ? inputs.columns : nullptr;
-    half.stretches = twin_stretches(reference.summary.peaks,
-                                    columns ? std::vector<run::WindowRestart>{} : reference.window_restarts,
-                                    reference.summary.t_end);
-    half_done.resize(half.stretches.size());
-    const std::size_t first = order.size() + 2, count = order.size() + 1 + half.stretches.size();
-    const CandidateRun* ran = &reference;  // in `done`, which outlives the queue
-    for (std::size_t k = half.stretches.size(); k-- > 0;) {
-      queue.push_front([&, ran, k, first, count, columns](JobQueue&) {
-        half_done[k] = run_stretch(request, hooks, *ran, half.stretches[k], k, first + k, count, columns);
-      });
-    }
-  };
   // The count counts the reference's check as one set until its windows are known.
   JobQueue queue;
   for (std::size_t j = 0; j < order.size(); ++j) {
     queue.push_back([&, j](JobQueue& running) {
       const ModeSetCandidate& candidate = candidates[order[j]];
       if (hooks.on_set_start) hooks.on_set_start({j + 2, order.size() + 2, candidate.name, candidate.description, 1.0});
-      done[j] = candidate.nonlinear ? run_set(inputs.nonlinear, request, hooks, candidate, candidate.name,
-                                              request.jobs <= 1, inputs.columns)
-                                    : run_set(inputs.modal, request, hooks, candidate, candidate.name,
-                                              request.jobs <= 1);
+      if (candidate.nonlinear) {
+        done[j] = run_set(inputs.nonlinear, request, hooks, candidate, candidate.name, request.jobs <= 1, inputs.columns);
+      } else if (candidate.reference) {
+        half.run_reference(inputs.modal, candidate, running, done[j]);
+      } else {
+        done[j] = run_set(inputs.modal, request, hooks, candidate, candidate.name, request.jobs <= 1);
+      }
       if (hooks.on_set_done) hooks.on_set_done(*done[j], candidate.name);
-      if (candidate.reference && done[j]->summary.accurate()) queue_half_step(running, *done[j]);
+      if (candidate.reference && done[j]->summary.accurate()) {
+        half.on_reference_done(running, *done[j], candidate.nonlinear ? inputs.columns : nullptr);
+      }
     });
   }
   queue.run(std::max(1, std::min(request.jobs, static_cast<int>(order.size()))));
-  for (std::optional<CandidateRun>& run : half_done) half.runs.push_back(std::move(*run));
+  half.collect();
   for (std::size_t k = 1; k < candidates.size(); ++k) {
     const auto j = static_cast<std::size_t>(std::find(order.begin(), order.end(), k) - order.begin());
     runs.push_back(std::move(*done[j]));
   }
-  return half;
 }
 
 // Why a reference is refused, and what to change.
@@ -203,7 +140,8 @@ ReferenceCheck check_reference(const CandidateRun& reference, const HalfStepRuns
   std::vector<results::EventPeaks> peaks;
   for (const CandidateRun& run : half.runs) peaks.push_back(run.summary.peaks);
   check.change = compare_peaks(merge_stretch_peaks(reference.summary.peaks, half.stretches, peaks),
-                               reference.summary.peaks, joint_release_times(reference.mechanism.model));
+                               reference.summary.peaks,
+                               joint_release_times(reference.mechanism.model, reference.summary));
   check.converged = check.change.error < kConvergedChange;
   return check;
 }
@@ -259,8 +197,8 @@ void check_request(const SelectionRequest& request) {
   if (request.target && !(*request.target > 0.0)) {
     throw InputError(fmt::format("expected --target > 0 (a fraction, 0.02 = 2 %), got {:g}", *request.target));
   }
-  if (request.candidates.max_single < 0) {
-    throw InputError(fmt::format("expected --max-single >= 0, got {}", request.candidates.max_single));
+  if (request.candidates.max_single && *request.candidates.max_single < 0) {
+    throw InputError(fmt::format("expected --max-single >= 0, got {}", *request.candidates.max_single));
   }
   if (request.candidates.reference_normal < 0) {
     throw InputError(fmt::format("expected --reference-normal >= 0, got {}", request.candidates.reference_normal));
@@ -297,13 +235,15 @@ Selection run_selection(std::shared_ptr<const io::Case> input, const SelectionRe
   if (hooks.on_ranking) hooks.on_ranking(selection.ranking);
 
   // Step 4: the other sets and the reference at half its step, then the comparison.
-  std::vector<ModeSetCandidate> candidates =
-      mode_set_candidates(*input, first.reduction, selection.ranking, request.candidates);
+  CandidateOptions options = request.candidates;
+  if (!options.max_single) options.max_single = request.target ? kMaxSingle : 0;
+  std::vector<ModeSetCandidate> candidates = mode_set_candidates(*input, first.reduction, selection.ranking, options);
   if (request.nonlinear_reference) candidates = with_nonlinear_reference(std::move(candidates));
   // The ranking run's model lays out the nonlinear reference's columns; `runs` grows only after
   // every set has run, so it stays in place meanwhile.
   inputs.columns = &first.mechanism.model;
-  const HalfStepRuns half_step = run_sets(inputs, request, hooks, candidates, selection.runs);
+  HalfStepRuns half_step(request, hooks, candidates.size() + 1, candidates.size());
+  run_sets(inputs, request, hooks, candidates, selection.runs, half_step);
   const CandidateRun& reference = selection.runs.back();
   const std::vector<KeyQuantity> keys =
       key_quantities(selection.ranking, reference.ok() ? reference : selection.runs.front());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 #include <fmt/format.h>
 
@@ -32,6 +33,14 @@ Eigen::MatrixXd stack(const std::vector<Eigen::VectorXd>& rows, Eigen::Index col
   Eigen::MatrixXd matrix(static_cast<Eigen::Index>(rows.size()), columns);
   for (std::size_t r = 0; r < rows.size(); ++r) matrix.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
   return matrix;
+}
+
+// This thread's CPU time [s]. A run is single-threaded, so the difference over it is its own cost
+// while other runs share the cores (a wall time then says more about the load than the run).
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
 }  // namespace
@@ -88,8 +97,10 @@ void run_mechanism_recorded(const io::Case& input, const io::Mechanism& mechanis
     if (on_sample) on_sample(sample);
   };
   hooks.on_window = [&](const run::WindowRestart& window) { run.window_restarts.push_back(window); };
+  const double cpu_start = thread_cpu_seconds();
   try {
     run.summary = run::run_mechanism(model, mechanism.assembly, settings, hooks, restart);
+    run.cpu_seconds = thread_cpu_seconds() - cpu_start;
   } catch (const SelectionInterrupted&) {
     writer.finish(results::RunStatus::kInterrupted, "selection interrupted by a signal");
     throw;
@@ -102,11 +113,8 @@ void run_mechanism_recorded(const io::Case& input, const io::Mechanism& mechanis
   run.deflections = stack(deflections, 3 * static_cast<Eigen::Index>(probed.size()));
 }
 
-CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
-                           const SettingsAdjustment& adjust, const StepPolicy& policy,
-                           const std::filesystem::path& directory,
-                           const std::function<void(const integrate::Sample&)>& on_sample,
-                           const multibody::Model* columns) {
+CandidateRun prepare_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
+                               const std::filesystem::path& directory) {
   CandidateRun result;
   result.candidate = candidate;
   result.directory = directory;
@@ -124,6 +132,15 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
   for (const multibody::Body& body : result.mechanism.model.bodies) {
     if (body.flexible) result.modes += static_cast<int>(body.flexible->shapes.cols());
   }
+  return result;
+}
+
+CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
+                           const SettingsAdjustment& adjust, const StepPolicy& policy,
+                           const std::filesystem::path& directory,
+                           const std::function<void(const integrate::Sample&)>& on_sample,
+                           const multibody::Model* columns) {
+  CandidateRun result = prepare_candidate(input, candidate, directory);
   const io::RunSettings settings = candidate_settings(result.mechanism, adjust, policy, result.step);
   run_mechanism_recorded(*input, result.mechanism, settings, candidate.name, nullptr, on_sample, result, columns);
   return result;
@@ -161,10 +178,13 @@ Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity)
                              : Eigen::VectorXd(run.reactions.col(quantity.column));
 }
 
-ReleaseTimes joint_release_times(const multibody::Model& model) {
+ReleaseTimes joint_release_times(const multibody::Model& model, const run::RunSummary& run) {
   ReleaseTimes times;
   for (const multibody::Joint& joint : model.joints) {
     if (std::isfinite(joint.release_time)) times[joint.name] = joint.release_time;
+  }
+  for (const run::JointRelease& release : run.releases) {
+    for (const std::string& joint : release.joints) times.emplace(joint, release.t);
   }
   return times;
 }
@@ -177,7 +197,7 @@ void compare_runs(std::vector<CandidateRun>& runs, const std::vector<KeyQuantity
     if (run.candidate.reference || !run.ok()) continue;
     if (run.time.size() == 0) continue;
     run.peaks = compare_peaks(run.summary.peaks, reference->summary.peaks,
-                              joint_release_times(reference->mechanism.model));
+                              joint_release_times(reference->mechanism.model, reference->summary));
     run.error_peak = run.error_rms = 0.0;
     double worst = -1.0;
     for (const KeyQuantity& key : keys) {

@@ -46,6 +46,7 @@ struct CandidateRun {
   std::vector<std::string> notices;  // the reduction's, e.g. a static mode dropped as dependent
   StepChoice step;                   // the step it ran at and whether it resolves its modes
   run::RunSummary summary;
+  double cpu_seconds = 0.0;          // CPU time of its run on its own thread [s] (what it costs beside the others)
   std::filesystem::path directory;   // holds its results.h5
   Eigen::VectorXd time;              // samples [s]
   Eigen::MatrixXd reactions;         // samples x 6 · sites (reaction_ranking.h)
@@ -99,6 +100,12 @@ CandidateRun run_candidate(std::shared_ptr<const io::Case> input, const ModeSetC
                            const std::function<void(const integrate::Sample&)>& on_sample = {},
                            const multibody::Model* columns = nullptr);
 
+// run_candidate's first half: the set's modes and model (reduction, mechanism, modes, notices),
+// ready for candidate_settings and run_mechanism_recorded, for a caller that watches the run.
+// Throws as run_candidate.
+CandidateRun prepare_candidate(std::shared_ptr<const io::Case> input, const ModeSetCandidate& candidate,
+                               const std::filesystem::path& directory);
+
 // The settings a set of `mechanism` runs with: the case's, adjusted, with event peaks (over
 // kSelectPeakWindow unless the settings give a window) and the step `policy` chooses for the
 // model's highest frequency, which goes to `step`. Throws InputError when they cannot run.
@@ -135,9 +142,11 @@ std::vector<KeyQuantity> key_quantities(const std::vector<RankedComponent>& rank
 // The quantity's series in a run.
 Eigen::VectorXd key_series(const CandidateRun& run, const KeyQuantity& quantity);
 
-// The release times of the model's joints that have one: the joints compare_peaks leaves out
-// of the windows their release opens.
-ReleaseTimes joint_release_times(const multibody::Model& model);
+// The release times of the model's joints that have one (Joint::release_time) and of those
+// `run` released at an event (`release: {after: <latch>, delay: s}`, at the time the run located
+// it: RunSummary::releases): the joints compare_peaks leaves out of the windows their release
+// opens (and of later ones).
+ReleaseTimes joint_release_times(const multibody::Model& model, const run::RunSummary& run);
 
 // Fills error_peak, error_rms and worst_quantity of every finished run against the run marked
 // reference (largest error over `keys`), on their common samples, and peaks (their event peaks

@@ -95,6 +95,12 @@ TEST(SelectionProcedure, TheAnswerIsTheProceduresSetWithItsFiles) {
   ASSERT_TRUE(o.selection.chosen.has_value());
   const CandidateRun& chosen = o.selection.runs[*o.selection.chosen];
   EXPECT_EQ(chosen.candidate.name, "kept");
+  // Without a target the answer is `kept`: no one-component set runs (docs/select.md, "Which
+  // sets run"), so normal, kept, more_normal and the reference.
+  EXPECT_EQ(o.selection.runs.size(), 4u);
+  for (const CandidateRun& run : o.selection.runs) {
+    EXPECT_NE(run.candidate.name.rfind("normal+", 0), 0u) << run.candidate.name;
+  }
   EXPECT_LT(chosen.error_peak, 0.01);
   EXPECT_LT(3.0 * chosen.error_peak, o.selection.runs.front().error_peak);
   EXPECT_EQ(read_text(o.request.root / "selected_modes.yaml"), o.selection.fragment);
