@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace limber::render {
 namespace {
@@ -50,18 +52,81 @@ std::optional<PixelBox> text_box(vtkTextActor* text, vtkRenderer* renderer, int 
   return pixel_box(width, height, (*b)[0], (*b)[1], (*b)[2], (*b)[3], margin);
 }
 
-// A text's box in pixels before it is drawn (at kTextDpi, frame_layout.h): width and height.
-Eigen::Vector2d measured_size(vtkTextActor* text) {
+// Where the title is anchored (normalised viewport coordinates, bottom left of its first line;
+// more lines go below it).
+constexpr double kTitleX = 0.02;
+constexpr double kTitleY = 0.93;
+// The right end of the title's lines (normalised viewport x): the frame's margin.
+constexpr double kTitleRight = 0.98;
+
+// The size of `text` drawn with `property` [pixels] (at kTextDpi, frame_layout.h).
+Eigen::Vector2d text_size(vtkTextProperty* property, const std::string& text) {
   int b[4];
-  if (!vtkTextRenderer::GetInstance()->GetBoundingBox(text->GetTextProperty(), text->GetInput(), b, kTextDpi)) {
+  if (text.empty() || !vtkTextRenderer::GetInstance()->GetBoundingBox(property, text, b, kTextDpi)) {
     return Eigen::Vector2d::Zero();
   }
   return {b[1] - b[0] + 1.0, b[3] - b[2] + 1.0};
 }
 
-// Where the title is anchored (normalised viewport coordinates, bottom left of its last line).
-constexpr double kTitleX = 0.02;
-constexpr double kTitleY = 0.93;
+// A text's box in pixels before it is drawn: width and height.
+Eigen::Vector2d measured_size(vtkTextActor* text) {
+  return text_size(text->GetTextProperty(), text->GetInput() != nullptr ? text->GetInput() : "");
+}
+
+// The pieces a line may be broken between: its phrases (each up to and with its ", " or "; "
+// separator's mark), and the words of a phrase wider than `max_width` pixels alone.
+std::vector<std::string> line_pieces(const std::string& line, vtkTextProperty* property, double max_width) {
+  std::vector<std::string> pieces;
+  const auto add_phrase = [&](const std::string& phrase) {
+    if (phrase.empty()) return;
+    if (text_size(property, phrase).x() <= max_width) {
+      pieces.push_back(phrase);
+      return;
+    }
+    std::size_t start = 0;
+    while (start < phrase.size()) {
+      const std::size_t space = phrase.find(' ', start);
+      const std::size_t end = space == std::string::npos ? phrase.size() : space;
+      if (end > start) pieces.push_back(phrase.substr(start, end - start));
+      start = end + 1;
+    }
+  };
+  std::size_t start = 0;
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+    if ((line[k] == ',' || line[k] == ';') && line[k + 1] == ' ') {
+      add_phrase(line.substr(start, k + 1 - start));
+      start = k + 2;
+    }
+  }
+  add_phrase(line.substr(start));
+  return pieces;
+}
+
+// `text` with each line wider than `max_width` pixels broken, greedily, between its phrases
+// (line_pieces), so that a long title stays whole inside a small frame.
+std::string wrap_to_width(const std::string& text, vtkTextProperty* property, double max_width) {
+  std::string wrapped;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t newline = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, newline - start);
+    std::string current;
+    for (const std::string& piece : text_size(property, line).x() <= max_width
+                                        ? std::vector<std::string>{line}
+                                        : line_pieces(line, property, max_width)) {
+      const std::string longer = current.empty() ? piece : current + " " + piece;
+      if (current.empty() || text_size(property, longer).x() <= max_width) {
+        current = longer;
+      } else {
+        wrapped += current + "\n";
+        current = piece;
+      }
+    }
+    wrapped += current + (newline < text.size() ? "\n" : "");
+    start = newline + 1;
+  }
+  return wrapped;
+}
 
 }  // namespace
 
@@ -109,7 +174,7 @@ void SceneLabels::add_title_legend_and_stamps(const Results& results, const std:
   // Title, deformation scale note, time stamp.
   const RenderOptions& options = options_;
   const int font = stamp_font();
-  title_ = add_text(results.title, std::max(kMinFontSize, options.height / 30), kTitleX, kTitleY, false);
+  add_title(results.title);
   // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
   // fit through each flexible body's joint nodes (those without joints: relative to their
   // floating frame).
@@ -153,15 +218,27 @@ void SceneLabels::add_title_legend_and_stamps(const Results& results, const std:
   }
 }
 
+void SceneLabels::add_title(const std::string& title) {
+  title_ = add_text(title, std::max(kMinFontSize, options_.height / 30), kTitleX, kTitleY, false);
+  vtkTextProperty* property = title_->GetTextProperty();
+  const std::string wrapped = wrap_to_width(title, property, (kTitleRight - kTitleX) * options_.width);
+  title_->SetInput(wrapped.c_str());
+  // The first line where a one-line title sits, the others below it (the text is anchored at
+  // its last line's bottom).
+  const std::string first_line = wrapped.substr(0, wrapped.find('\n'));
+  const double below = text_size(property, wrapped).y() - text_size(property, first_line).y();
+  title_y_ = kTitleY - below / options_.height;
+  title_->GetPositionCoordinate()->SetValue(kTitleX, title_y_);
+}
+
 double SceneLabels::title_bottom() const {
   int b[4];  // about the anchor, bottom-left justified
   vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
-  if (!title_ || !measure->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, kTextDpi)) {
-    return kTitleY;
-  }
+  if (!title_) return kTitleY;
+  if (!measure->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, kTextDpi)) return title_y_;
   // A gap of a quarter of the title's font under its lowest pixel.
   const double gap = 0.25 * title_->GetTextProperty()->GetFontSize();
-  return kTitleY + (std::min(b[2], 0) - gap) / options_.height;
+  return title_y_ + (std::min(b[2], 0) - gap) / options_.height;
 }
 
 Eigen::Vector2d SceneLabels::legend_size() const {

@@ -55,12 +55,15 @@ class SceneLabels {
 
  private:
   vtkSmartPointer<vtkTextActor> add_text(const std::string& text, int size, double x, double y, bool right);
+  // The title top left, its lines broken to the frame's width (title_y_ set).
+  void add_title(const std::string& title);
 
   vtkRenderer* renderer_;
   RenderOptions options_;
   vtkSmartPointer<vtkTextActor> time_text_;
   vtkSmartPointer<vtkTextActor> event_text_;
   vtkSmartPointer<vtkTextActor> title_;
+  double title_y_ = 0.0;  // the title's anchor, its last line's bottom (normalised viewport y)
   vtkSmartPointer<vtkTextActor> legend_;  // null without a legend
   double event_hold_ = 0.0;  // simulated time an event stays stamped [s] (event_stamp.h)
   std::vector<vtkSmartPointer<vtkTextActor>> texts_;  // every text drawn (title, note, time)
