@@ -169,32 +169,39 @@ void SceneLabels::add_color_bar(vtkLookupTable* lut, const std::string& title) {
 
 int SceneLabels::stamp_font() const { return std::max(kMinFontSize, options_.height / 36); }
 
-void SceneLabels::add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
-                                              const std::vector<std::vector<std::string>>& fit_joints) {
-  // Title, deformation scale note, time stamp.
-  const RenderOptions& options = options_;
-  const int font = stamp_font();
-  add_title(results.title);
+std::string SceneLabels::legend_text(const Results& results, double t) const {
   // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
-  // fit through each flexible body's joint nodes (those without joints: relative to their
-  // floating frame).
-  // Only when some body is fitted: otherwise what is scaled is plain u, as always.
-  std::string legend;
+  // fit through the joint nodes that hold each flexible body at t (those without joints:
+  // relative to their floating frame). Only when some body is fitted at some time: otherwise
+  // what is scaled is plain u, as always.
   bool fitted = false;
-  for (const RigidFitBasis& fit : fits) fitted = fitted || !fit.anchors.empty();
+  for (const TimedRigidFit& fit : *fits_) fitted = fitted || fit.any_anchor();
+  std::string bodies;
   for (std::size_t b = 0; b < results.bodies.size() && fitted; ++b) {
     if (!results.bodies[b].flexible) continue;
     std::string joints;
-    for (const std::string& name : fit_joints[b]) joints += (joints.empty() ? "" : ", ") + name;
-    legend += "\n" + results.bodies[b].name + ": " +
+    for (const std::string& name : (*fits_)[b].at(t).joints) joints += (joints.empty() ? "" : ", ") + name;
+    bodies += "\n" + results.bodies[b].name + ": " +
               (joints.empty() ? "u in its floating frame" : "u relative to a rigid fit through " + joints);
   }
-  // Top right under the title until the layout places it (place_legend).
-  if (options.scale != 1.0 || !legend.empty()) {
-    char note[64];
-    std::snprintf(note, sizeof note, legend.empty() ? "deformation x %g" : "deformation x %g of the elastic displacement u",
-                  options.scale);
-    legend_ = add_text(note + legend, std::max(kMinFontSize, options.height / 40), 0.98, title_bottom(), true);
+  if (options_.scale == 1.0 && bodies.empty()) return "";
+  char note[64];
+  std::snprintf(note, sizeof note, bodies.empty() ? "deformation x %g" : "deformation x %g of the elastic displacement u",
+                options_.scale);
+  return note + bodies;
+}
+
+void SceneLabels::add_title_legend_and_stamps(const Results& results, const std::vector<TimedRigidFit>& fits,
+                                              double t0) {
+  // Title, deformation legend, time stamp.
+  const RenderOptions& options = options_;
+  const int font = stamp_font();
+  add_title(results.title);
+  fits_ = &fits;
+  // Top right under the title until the layout places it (place_legend). Joints are only ever
+  // released: the legend at t0 is the longest the frames show, and the layout makes room for it.
+  if (const std::string legend = legend_text(results, t0); !legend.empty()) {
+    legend_ = add_text(legend, std::max(kMinFontSize, options.height / 40), 0.98, title_bottom(), true);
     legend_->GetTextProperty()->SetVerticalJustificationToTop();
   }
   time_text_->GetTextProperty()->SetFontSize(font);
@@ -268,6 +275,11 @@ void SceneLabels::update(const Results& results, double t) {
   }
   time_text_->SetInput(stamp);
   event_text_->SetInput(event_stamp(results.events, t, event_hold_).c_str());
+  // The legend without the joints released by t.
+  if (legend_) {
+    const std::string legend = legend_text(results, t);
+    if (legend != legend_->GetInput()) legend_->SetInput(legend.c_str());
+  }
 }
 
 vtkSmartPointer<vtkTextActor> SceneLabels::add_text(const std::string& text, int size, double x, double y,
