@@ -102,10 +102,8 @@ Results mode_results(const BodyModeShapes& body, Eigen::Index mode,
   return results;
 }
 
-ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
-                                   const std::filesystem::path& output_directory,
-                                   const ModeAnimationOptions& options) {
-  check(options);
+RenderOptions mode_render_options(const BodyModeShapes& body, Eigen::Index mode,
+                                  const ModeAnimationOptions& options) {
   RenderOptions view;
   view.width = options.width;
   view.height = options.height;
@@ -114,7 +112,22 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
   view.time_stamp = false;
   // The body sits at the origin unrotated: the triad shows its axes, which name the mode's plane.
   view.world_triad = options.plane_view;
-  validate(view);
+  view.ghost = options.ghost;
+  // The mode's plane for slender bodies (mode_view.h).
+  if (options.plane_view && mode < body.mesh.mode_translations.cols()) {
+    if (const std::optional<ModeView> plane = mode_view(body.mesh, mode)) {
+      view.camera_direction = {plane->direction.x(), plane->direction.y(), plane->direction.z()};
+    }
+  }
+  return view;
+}
+
+ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
+                                   const std::filesystem::path& output_directory,
+                                   const ModeAnimationOptions& options) {
+  check(options);
+  // Checked once: the options every mode is drawn with but its view.
+  validate(mode_render_options(BodyModeShapes{}, 0, options));
   // The bodies' meshes and mode translations, kinds and labels (not the full shapes).
   std::vector<BodyModeShapes> bodies;
   for (const results::ModesBody& body : results::read_modes(modes_file, results::ModesContent::kDrawing).bodies) {
@@ -145,15 +158,7 @@ ModeAnimationSummary animate_modes(const std::filesystem::path& modes_file,
       const std::filesystem::path frames =
           root / file_stem(body.name) / fmt::format("mode_{:02d}", mode + 1);
       std::filesystem::create_directories(frames);
-      // The mode's plane for slender bodies (mode_view.h); the undeformed outline under it.
-      RenderOptions mode_view_options = view;
-      mode_view_options.ghost = options.ghost;
-      if (options.plane_view) {
-        if (const std::optional<ModeView> plane = mode_view(body.mesh, mode)) {
-          mode_view_options.camera_direction = {plane->direction.x(), plane->direction.y(), plane->direction.z()};
-        }
-      }
-      FrameRenderer renderer(results, mode_view_options, 0.0, period);
+      FrameRenderer renderer(results, mode_render_options(body, mode, options), 0.0, period);
       PngFrameWriter writer;
       for (int k = 0; k < options.frames_per_cycle; ++k) {
         writer.push(renderer.render(results.time(k)), frames / fmt::format("frame_{:05d}.png", k));

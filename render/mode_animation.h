@@ -63,6 +63,12 @@ double mode_amplitude(const FlexibleMesh& mesh, Eigen::Index mode, double amplit
 Results mode_results(const BodyModeShapes& body, Eigen::Index mode,
                      const ModeAnimationOptions& options);
 
+// How mode `mode` of `body` is drawn: options.width x height, no ground, no time stamp, the
+// world triad (the body's axes) and, for a slender body, the view square to the mode's plane
+// (mode_view.h) when options.plane_view; the undeformed outline with options.ghost.
+RenderOptions mode_render_options(const BodyModeShapes& body, Eigen::Index mode,
+                                  const ModeAnimationOptions& options);
+
 // Renders every mode of every body of `modes_file` into
 // `output_directory`/modes/<body>/mode_<kk>/frame_00000.png ... (kk = mode number from 01, as
 // in the frequency table) and, with ffmpeg, modes/<body>/mode_<kk>.gif. Throws InputError for

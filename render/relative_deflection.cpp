@@ -5,6 +5,8 @@
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace limber::render {
 
@@ -46,7 +48,7 @@ RowMatrix3d relative_displacements(const RigidFitBasis& basis, const RowMatrix3d
 }
 
 std::vector<Eigen::Index> joint_nodes(const Results& results, const BodyTrack& body,
-                                      std::vector<std::string>* joint_names) {
+                                      std::vector<std::string>* joint_names, double held_after) {
   std::vector<Eigen::Index> nodes;
   if (!body.flexible || body.mesh.nodes.rows() == 0 || results.sample_count() == 0) return nodes;
   // Nodes in ground at the first sample.
@@ -59,7 +61,7 @@ std::vector<Eigen::Index> joint_nodes(const Results& results, const BodyTrack& b
       state.position.transpose();
   for (const JointTrack& joint : results.joints) {
     if (joint.body_i != body.name && joint.body_j != body.name) continue;
-    if (joint.position.rows() == 0) continue;
+    if (joint.position.rows() == 0 || !(joint.release_time > held_after)) continue;
     Eigen::Index nearest = 0;
     (x_W.rowwise() - joint.position.row(0)).rowwise().squaredNorm().minCoeff(&nearest);
     if (std::find(nodes.begin(), nodes.end(), nearest) == nodes.end()) {
@@ -68,6 +70,35 @@ std::vector<Eigen::Index> joint_nodes(const Results& results, const BodyTrack& b
     }
   }
   return nodes;
+}
+
+const TimedRigidFit::Span& TimedRigidFit::at(double t) const {
+  // The last span that starts before t.
+  const auto later = std::find_if(spans.begin() + 1, spans.end(), [t](const Span& s) { return !(s.after < t); });
+  return *(later - 1);
+}
+
+bool TimedRigidFit::any_anchor() const {
+  return std::any_of(spans.begin(), spans.end(), [](const Span& s) { return !s.basis.anchors.empty(); });
+}
+
+TimedRigidFit timed_rigid_fit(const Results& results, const BodyTrack& body) {
+  TimedRigidFit fit;
+  if (!body.flexible) return fit;
+  // A new span after each release time of the body's joints.
+  std::vector<double> starts{-std::numeric_limits<double>::infinity()};
+  for (const JointTrack& joint : results.joints) {
+    const bool on_body = joint.body_i == body.name || joint.body_j == body.name;
+    if (on_body && std::isfinite(joint.release_time)) starts.push_back(joint.release_time);
+  }
+  std::sort(starts.begin(), starts.end());
+  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+  for (double after : starts) {
+    TimedRigidFit::Span& span = fit.spans.emplace_back();
+    span.after = after;
+    span.basis = rigid_fit_basis(body.mesh.nodes, joint_nodes(results, body, &span.joints, after));
+  }
+  return fit;
 }
 
 }  // namespace limber::render

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,10 +34,30 @@ RigidFitBasis rigid_fit_basis(const RowMatrix3d& nodes, const std::vector<Eigen:
 RowMatrix3d relative_displacements(const RigidFitBasis& basis, const RowMatrix3d& nodes,
                                    const RowMatrix3d& u);
 
-// The joint nodes of a flexible body: for each joint with the body as body_i or body_j, the
-// node nearest the joint point at the first sample (deformed, scale 1), once each; with their
-// joints' names. Empty for a body without joints.
+// The joint nodes of a flexible body: for each joint with the body as body_i or body_j and
+// released after `held_after` [s] (JointTrack::release_time; the default takes every joint),
+// the node nearest the joint point at the first sample (deformed, scale 1), once each; with
+// their joints' names. Empty for a body without joints.
 std::vector<Eigen::Index> joint_nodes(const Results& results, const BodyTrack& body,
-                                      std::vector<std::string>* joint_names = nullptr);
+                                      std::vector<std::string>* joint_names = nullptr,
+                                      double held_after = -std::numeric_limits<double>::infinity());
+
+// A flexible body's rigid fits over a run (issue 28): through the joints that hold it at time t.
+// A released joint (a hold-down) is no support after its release, so the fit changes after each
+// release time of the body's joints; a joint is held up to and at its release time (held_at).
+struct TimedRigidFit {
+  struct Span {
+    double after = -std::numeric_limits<double>::infinity();  // the span holds for t > after [s]
+    RigidFitBasis basis;
+    std::vector<std::string> joints;  // the joints the fit goes through
+  };
+  std::vector<Span> spans;  // ascending `after`, the first at -inf; empty for a rigid body
+  // The span of time t [s]. Precondition: spans not empty.
+  const Span& at(double t) const;
+  // Whether the fit goes through some joint at some time.
+  bool any_anchor() const;
+};
+
+TimedRigidFit timed_rigid_fit(const Results& results, const BodyTrack& body);
 
 }  // namespace limber::render

@@ -120,7 +120,7 @@ CameraBox point_box() {
 std::vector<SampleBracket> samples_in(const Eigen::VectorXd& time, double t0, double t1) {
   std::vector<SampleBracket> samples;
   for (Eigen::Index i = 0; i < time.size(); ++i) {
-    if (time(i) >= t0 && time(i) <= t1) samples.push_back({i, 0.0});
+    if (time(i) >= t0 && time(i) <= t1) samples.push_back({i, 0.0, time(i)});
   }
   if (samples.empty()) samples.push_back(bracket(time, t0));
   return samples;
@@ -163,28 +163,23 @@ struct Scene::Impl {
   vtkSmartPointer<vtkActor> ground;  // null with --no-ground
   Eigen::Vector3d ground_point = Eigen::Vector3d::Zero();
 
-  // Per body (results.bodies order): the rigid fit through its joint nodes (relative_deflection.h;
-  // empty for rigid bodies and flexible ones without joints) and those joints' names.
-  std::vector<RigidFitBasis> fits;
-  std::vector<std::vector<std::string>> fit_joints;
+  // Per body (results.bodies order): the rigid fits through the joint nodes holding it at each
+  // time, with those joints' names (relative_deflection.h; no span for a rigid body, no anchor
+  // for a flexible one without joints).
+  std::vector<TimedRigidFit> fits;
 
   Impl(const Results& r, const RenderOptions& o) : results(r), options(o), labels(renderer, o) {
-    for (const BodyTrack& body : results.bodies) {
-      std::vector<std::string> names;
-      const std::vector<Eigen::Index> anchors = joint_nodes(results, body, &names);
-      fits.push_back(rigid_fit_basis(body.mesh.nodes, anchors));
-      fit_joints.push_back(std::move(names));
-    }
+    for (const BodyTrack& body : results.bodies) fits.push_back(timed_rigid_fit(results, body));
   }
 
   // Ground positions of a flexible body's nodes, the elastic displacement relative to the
   // rigid fit through its joint nodes scaled (the fitted rigid part at true size, so joints
   // stay connected), and that relative displacement's magnitudes [m].
-  void deformed_nodes(std::size_t b, const BodyState& state, RowMatrix3d& x_W,
+  void deformed_nodes(std::size_t b, const BodyState& state, double t, RowMatrix3d& x_W,
                       Eigen::VectorXd& u_norm) const {
     const BodyTrack& body = results.bodies[b];
     const RowMatrix3d u = elastic_displacements(body.mesh, state);
-    const RowMatrix3d u_rel = relative_displacements(fits[b], body.mesh.nodes, u);
+    const RowMatrix3d u_rel = relative_displacements(fits[b].at(t).basis, body.mesh.nodes, u);
     const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
     x_W = ((body.mesh.nodes + (u - u_rel) + options.scale * u_rel) * R.transpose()).rowwise() +
           state.position.transpose();
@@ -219,7 +214,7 @@ struct Scene::Impl {
       if (body.flexible) {
         RowMatrix3d x_W;
         Eigen::VectorXd u_norm;
-        deformed_nodes(index, state, x_W, u_norm);
+        deformed_nodes(index, state, at.t, x_W, u_norm);
         if (u_norm.size() > 0) umax = std::max(umax, u_norm.maxCoeff());
         CameraBox box_B;  // the deformed mesh in body axes
         for (Eigen::Index k = 0; k < x_W.rows(); ++k) {
@@ -344,7 +339,7 @@ struct Scene::Impl {
   void add_color_bar() {
     if (flexible.empty()) return;
     bool relative = false;
-    for (const RigidFitBasis& fit : fits) relative = relative || !fit.anchors.empty();
+    for (const TimedRigidFit& fit : fits) relative = relative || fit.any_anchor();
     const std::string title = by_stress() ? "von Mises" : relative ? "|u rel.|" : "|u|";
     labels.add_color_bar(lut, title + " [" + unit.name + "]");
   }
@@ -417,7 +412,7 @@ Scene::Scene(const Results& results, const RenderOptions& options, double t0, do
 
   // Texts: colour bar, title, deformation legend, time and event stamps (scene_labels.h).
   s.add_color_bar();
-  s.labels.add_title_legend_and_stamps(results, s.fits, s.fit_joints);
+  s.labels.add_title_legend_and_stamps(results, s.fits, t0);
   s.set_background_and_lights();
 
   // Camera: a fixed one fits the whole motion and puts the legend and triad where the motion
@@ -467,7 +462,7 @@ void Scene::update(double t) {
   Eigen::VectorXd u_norm;
   for (FlexibleView& view : s.flexible) {
     const BodyState state = body_state(*view.body, at);
-    s.deformed_nodes(view.index, state, x_W, u_norm);
+    s.deformed_nodes(view.index, state, at.t, x_W, u_norm);
     update_flexible_view(view, state, x_W, u_norm, s.per_unit, t);
   }
 

@@ -179,10 +179,10 @@ struct SceneExtras::Impl {
   vtkSmartPointer<vtkRenderer> overlay;
   std::vector<vtkSmartPointer<vtkActor>> arrows, torque_arrows;
   double newtons_per_metre = 0.0, newton_metres_per_metre = 0.0;
-  // Ghost outlines: per flexible body, its fit, points and the body index.
+  // Ghost outlines: per flexible body, its fits, points and the body index.
   struct Ghost {
     std::size_t body = 0;
-    RigidFitBasis fit;
+    TimedRigidFit fit;
     vtkSmartPointer<vtkPoints> points;
     vtkSmartPointer<vtkPolyData> outline;
   };
@@ -228,7 +228,7 @@ struct SceneExtras::Impl {
     const BodyTrack& body = results.bodies[b];
     Ghost ghost;
     ghost.body = b;
-    ghost.fit = rigid_fit_basis(body.mesh.nodes, joint_nodes(results, body));
+    ghost.fit = timed_rigid_fit(results, body);
     ghost.points = vtkSmartPointer<vtkPoints>::New();
     ghost.points->SetDataTypeToDouble();
     ghost.points->SetNumberOfPoints(body.mesh.nodes.rows());
@@ -400,7 +400,7 @@ void SceneExtras::update(const SampleBracket& at) {
     const BodyTrack& body = s.results.bodies[ghost.body];
     const BodyState state = body_state(body, at);
     const RowMatrix3d u = elastic_displacements(body.mesh, state);
-    const RowMatrix3d u_rel = relative_displacements(ghost.fit, body.mesh.nodes, u);
+    const RowMatrix3d u_rel = relative_displacements(ghost.fit.at(at.t).basis, body.mesh.nodes, u);
     const Eigen::Matrix3d R = state.orientation.toRotationMatrix();
     const RowMatrix3d x_W =
         ((body.mesh.nodes + (u - u_rel)) * R.transpose()).rowwise() + state.position.transpose();

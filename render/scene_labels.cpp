@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace limber::render {
 namespace {
@@ -50,18 +52,81 @@ std::optional<PixelBox> text_box(vtkTextActor* text, vtkRenderer* renderer, int 
   return pixel_box(width, height, (*b)[0], (*b)[1], (*b)[2], (*b)[3], margin);
 }
 
-// A text's box in pixels before it is drawn (at kTextDpi, frame_layout.h): width and height.
-Eigen::Vector2d measured_size(vtkTextActor* text) {
+// Where the title is anchored (normalised viewport coordinates, bottom left of its first line;
+// more lines go below it).
+constexpr double kTitleX = 0.02;
+constexpr double kTitleY = 0.93;
+// The right end of the title's lines (normalised viewport x): the frame's margin.
+constexpr double kTitleRight = 0.98;
+
+// The size of `text` drawn with `property` [pixels] (at kTextDpi, frame_layout.h).
+Eigen::Vector2d text_size(vtkTextProperty* property, const std::string& text) {
   int b[4];
-  if (!vtkTextRenderer::GetInstance()->GetBoundingBox(text->GetTextProperty(), text->GetInput(), b, kTextDpi)) {
+  if (text.empty() || !vtkTextRenderer::GetInstance()->GetBoundingBox(property, text, b, kTextDpi)) {
     return Eigen::Vector2d::Zero();
   }
   return {b[1] - b[0] + 1.0, b[3] - b[2] + 1.0};
 }
 
-// Where the title is anchored (normalised viewport coordinates, bottom left of its last line).
-constexpr double kTitleX = 0.02;
-constexpr double kTitleY = 0.93;
+// A text's box in pixels before it is drawn: width and height.
+Eigen::Vector2d measured_size(vtkTextActor* text) {
+  return text_size(text->GetTextProperty(), text->GetInput() != nullptr ? text->GetInput() : "");
+}
+
+// The pieces a line may be broken between: its phrases (each up to and with its ", " or "; "
+// separator's mark), and the words of a phrase wider than `max_width` pixels alone.
+std::vector<std::string> line_pieces(const std::string& line, vtkTextProperty* property, double max_width) {
+  std::vector<std::string> pieces;
+  const auto add_phrase = [&](const std::string& phrase) {
+    if (phrase.empty()) return;
+    if (text_size(property, phrase).x() <= max_width) {
+      pieces.push_back(phrase);
+      return;
+    }
+    std::size_t start = 0;
+    while (start < phrase.size()) {
+      const std::size_t space = phrase.find(' ', start);
+      const std::size_t end = space == std::string::npos ? phrase.size() : space;
+      if (end > start) pieces.push_back(phrase.substr(start, end - start));
+      start = end + 1;
+    }
+  };
+  std::size_t start = 0;
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+    if ((line[k] == ',' || line[k] == ';') && line[k + 1] == ' ') {
+      add_phrase(line.substr(start, k + 1 - start));
+      start = k + 2;
+    }
+  }
+  add_phrase(line.substr(start));
+  return pieces;
+}
+
+// `text` with each line wider than `max_width` pixels broken, greedily, between its phrases
+// (line_pieces), so that a long title stays whole inside a small frame.
+std::string wrap_to_width(const std::string& text, vtkTextProperty* property, double max_width) {
+  std::string wrapped;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t newline = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, newline - start);
+    std::string current;
+    for (const std::string& piece : text_size(property, line).x() <= max_width
+                                        ? std::vector<std::string>{line}
+                                        : line_pieces(line, property, max_width)) {
+      const std::string longer = current.empty() ? piece : current + " " + piece;
+      if (current.empty() || text_size(property, longer).x() <= max_width) {
+        current = longer;
+      } else {
+        wrapped += current + "\n";
+        current = piece;
+      }
+    }
+    wrapped += current + (newline < text.size() ? "\n" : "");
+    start = newline + 1;
+  }
+  return wrapped;
+}
 
 }  // namespace
 
@@ -104,32 +169,39 @@ void SceneLabels::add_color_bar(vtkLookupTable* lut, const std::string& title) {
 
 int SceneLabels::stamp_font() const { return std::max(kMinFontSize, options_.height / 36); }
 
-void SceneLabels::add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
-                                              const std::vector<std::vector<std::string>>& fit_joints) {
-  // Title, deformation scale note, time stamp.
-  const RenderOptions& options = options_;
-  const int font = stamp_font();
-  title_ = add_text(results.title, std::max(kMinFontSize, options.height / 30), kTitleX, kTitleY, false);
+std::string SceneLabels::legend_text(const Results& results, double t) const {
   // What is scaled, and what the colours measure: the elastic displacement relative to a rigid
-  // fit through each flexible body's joint nodes (those without joints: relative to their
-  // floating frame).
-  // Only when some body is fitted: otherwise what is scaled is plain u, as always.
-  std::string legend;
+  // fit through the joint nodes that hold each flexible body at t (those without joints:
+  // relative to their floating frame). Only when some body is fitted at some time: otherwise
+  // what is scaled is plain u, as always.
   bool fitted = false;
-  for (const RigidFitBasis& fit : fits) fitted = fitted || !fit.anchors.empty();
+  for (const TimedRigidFit& fit : *fits_) fitted = fitted || fit.any_anchor();
+  std::string bodies;
   for (std::size_t b = 0; b < results.bodies.size() && fitted; ++b) {
     if (!results.bodies[b].flexible) continue;
     std::string joints;
-    for (const std::string& name : fit_joints[b]) joints += (joints.empty() ? "" : ", ") + name;
-    legend += "\n" + results.bodies[b].name + ": " +
+    for (const std::string& name : (*fits_)[b].at(t).joints) joints += (joints.empty() ? "" : ", ") + name;
+    bodies += "\n" + results.bodies[b].name + ": " +
               (joints.empty() ? "u in its floating frame" : "u relative to a rigid fit through " + joints);
   }
-  // Top right under the title until the layout places it (place_legend).
-  if (options.scale != 1.0 || !legend.empty()) {
-    char note[64];
-    std::snprintf(note, sizeof note, legend.empty() ? "deformation x %g" : "deformation x %g of the elastic displacement u",
-                  options.scale);
-    legend_ = add_text(note + legend, std::max(kMinFontSize, options.height / 40), 0.98, title_bottom(), true);
+  if (options_.scale == 1.0 && bodies.empty()) return "";
+  char note[64];
+  std::snprintf(note, sizeof note, bodies.empty() ? "deformation x %g" : "deformation x %g of the elastic displacement u",
+                options_.scale);
+  return note + bodies;
+}
+
+void SceneLabels::add_title_legend_and_stamps(const Results& results, const std::vector<TimedRigidFit>& fits,
+                                              double t0) {
+  // Title, deformation legend, time stamp.
+  const RenderOptions& options = options_;
+  const int font = stamp_font();
+  add_title(results.title);
+  fits_ = &fits;
+  // Top right under the title until the layout places it (place_legend). Joints are only ever
+  // released: the legend at t0 is the longest the frames show, and the layout makes room for it.
+  if (const std::string legend = legend_text(results, t0); !legend.empty()) {
+    legend_ = add_text(legend, std::max(kMinFontSize, options.height / 40), 0.98, title_bottom(), true);
     legend_->GetTextProperty()->SetVerticalJustificationToTop();
   }
   time_text_->GetTextProperty()->SetFontSize(font);
@@ -153,15 +225,27 @@ void SceneLabels::add_title_legend_and_stamps(const Results& results, const std:
   }
 }
 
+void SceneLabels::add_title(const std::string& title) {
+  title_ = add_text(title, std::max(kMinFontSize, options_.height / 30), kTitleX, kTitleY, false);
+  vtkTextProperty* property = title_->GetTextProperty();
+  const std::string wrapped = wrap_to_width(title, property, (kTitleRight - kTitleX) * options_.width);
+  title_->SetInput(wrapped.c_str());
+  // The first line where a one-line title sits, the others below it (the text is anchored at
+  // its last line's bottom).
+  const std::string first_line = wrapped.substr(0, wrapped.find('\n'));
+  const double below = text_size(property, wrapped).y() - text_size(property, first_line).y();
+  title_y_ = kTitleY - below / options_.height;
+  title_->GetPositionCoordinate()->SetValue(kTitleX, title_y_);
+}
+
 double SceneLabels::title_bottom() const {
   int b[4];  // about the anchor, bottom-left justified
   vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
-  if (!title_ || !measure->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, kTextDpi)) {
-    return kTitleY;
-  }
+  if (!title_) return kTitleY;
+  if (!measure->GetBoundingBox(title_->GetTextProperty(), title_->GetInput(), b, kTextDpi)) return title_y_;
   // A gap of a quarter of the title's font under its lowest pixel.
   const double gap = 0.25 * title_->GetTextProperty()->GetFontSize();
-  return kTitleY + (std::min(b[2], 0) - gap) / options_.height;
+  return title_y_ + (std::min(b[2], 0) - gap) / options_.height;
 }
 
 Eigen::Vector2d SceneLabels::legend_size() const {
@@ -191,6 +275,11 @@ void SceneLabels::update(const Results& results, double t) {
   }
   time_text_->SetInput(stamp);
   event_text_->SetInput(event_stamp(results.events, t, event_hold_).c_str());
+  // The legend without the joints released by t.
+  if (legend_) {
+    const std::string legend = legend_text(results, t);
+    if (legend != legend_->GetInput()) legend_->SetInput(legend.c_str());
+  }
 }
 
 vtkSmartPointer<vtkTextActor> SceneLabels::add_text(const std::string& text, int size, double x, double y,

@@ -33,10 +33,9 @@ class SceneLabels {
   // The colour bar over `lut`, titled `title` (with its unit), in kColorBarBox.
   void add_color_bar(vtkLookupTable* lut, const std::string& title);
   // The title, the deformation legend (what is scaled; per flexible body, the joints its fit
-  // goes through: `fits` and `fit_joints` in results.bodies order; top right until placed) and
-  // the time and event stamps.
-  void add_title_legend_and_stamps(const Results& results, const std::vector<RigidFitBasis>& fits,
-                                   const std::vector<std::vector<std::string>>& fit_joints);
+  // goes through at the frame's time: `fits` in results.bodies order, which must outlive this;
+  // top right until placed; as at t0 [s] until update) and the time and event stamps.
+  void add_title_legend_and_stamps(const Results& results, const std::vector<TimedRigidFit>& fits, double t0);
   // Under the title, normalised viewport y: the top of what the content and legend may use.
   double title_bottom() const;
   // The legend's width and height (normalised viewport units); zero without a legend.
@@ -46,7 +45,8 @@ class SceneLabels {
   bool has_color_bar() const { return bar_ != nullptr; }
   // The time stamp's font size [pixels].
   int stamp_font() const;
-  // The time stamp (with the slow-motion factor) and the events at time t [s] (event_stamp.h).
+  // The time stamp (with the slow-motion factor), the events (event_stamp.h) and the legend's
+  // joints at time t [s].
   void update(const Results& results, double t);
 
   // See Scene::overlay_boxes and Scene::drawn_texts.
@@ -55,13 +55,19 @@ class SceneLabels {
 
  private:
   vtkSmartPointer<vtkTextActor> add_text(const std::string& text, int size, double x, double y, bool right);
+  // The title top left, its lines broken to the frame's width (title_y_ set).
+  void add_title(const std::string& title);
+  // The deformation legend at time t [s]; empty when nothing is scaled or fitted.
+  std::string legend_text(const Results& results, double t) const;
 
   vtkRenderer* renderer_;
   RenderOptions options_;
   vtkSmartPointer<vtkTextActor> time_text_;
   vtkSmartPointer<vtkTextActor> event_text_;
   vtkSmartPointer<vtkTextActor> title_;
+  double title_y_ = 0.0;  // the title's anchor, its last line's bottom (normalised viewport y)
   vtkSmartPointer<vtkTextActor> legend_;  // null without a legend
+  const std::vector<TimedRigidFit>* fits_ = nullptr;  // the scene's, per body
   double event_hold_ = 0.0;  // simulated time an event stays stamped [s] (event_stamp.h)
   std::vector<vtkSmartPointer<vtkTextActor>> texts_;  // every text drawn (title, note, time)
   vtkSmartPointer<vtkScalarBarActor> bar_;            // null without flexible bodies

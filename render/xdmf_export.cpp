@@ -29,12 +29,12 @@ Hdf5Group create_scene_file(const std::filesystem::path& path) {
   return Hdf5Group::create_file(path.string(), results::Hdf5Format::kOnly18);
 }
 
-// What a body needs at every sample: its grid, its joint-node fit, its stress history and
+// What a body needs at every sample: its grid, its joint-node fits, its stress history and
 // where its points and cells lie in the scene's grid.
 struct BodyOutput {
   const BodyTrack* track = nullptr;
   BodyGrid grid;
-  RigidFitBasis fit;
+  TimedRigidFit fit;
   const StressTrack* stress = nullptr;
   Eigen::Index first_point = 0, first_cell = 0;
 };
@@ -88,7 +88,7 @@ void fill_body(SampleData& data, const BodyOutput& out, const BodyState& state, 
   }
   const RowMatrix3d u_node_B = elastic_displacements(body.mesh, state);
   const RowMatrix3d u_B = at_grid_points(out.grid, u_node_B);
-  const RowMatrix3d u_rel_B = at_grid_points(out.grid, relative_displacements(out.fit, body.mesh.nodes, u_node_B));
+  const RowMatrix3d u_rel_B = at_grid_points(out.grid, relative_displacements(out.fit.at(t).basis, body.mesh.nodes, u_node_B));
   data.u_W.middleRows(p0, np) = u_B * R.transpose();
   data.u_rel_W.middleRows(p0, np) = u_rel_B * R.transpose();
   data.u_norm.segment(p0, np) = u_B.rowwise().norm();
@@ -147,7 +147,7 @@ std::vector<BodyOutput> body_outputs(const Results& results,
     BodyOutput& out = outputs[b];
     out.track = &track;
     out.grid = body_grid(track);
-    if (track.flexible) out.fit = rigid_fit_basis(track.mesh.nodes, joint_nodes(results, track));
+    out.fit = timed_rigid_fit(results, track);
     if (track.flexible && stresses[b]) out.stress = &*stresses[b];
     out.first_point = points;
     out.first_cell = cells;
@@ -219,7 +219,7 @@ XdmfSceneSummary write_xdmf_scene(const Results& results, const std::filesystem:
     // Tubes in ParaView only for beams without sections (files before them).
     const BodyTrack& track = *out.track;
     summary.beams = summary.beams || (track.flexible && track.mesh.lines.rows() > 0 && out.grid.solid_beam.empty());
-    summary.relative = summary.relative || !out.fit.anchors.empty();
+    summary.relative = summary.relative || out.fit.any_anchor();
   }
   summary.stress = grid.stress;
 

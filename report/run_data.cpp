@@ -148,15 +148,18 @@ Eigen::Index shape_samples(const render::BodyTrack& body) { return body.flexible
 
 Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
                                         std::vector<std::string>* joints) {
-  const render::RigidFitBasis fit =
-      render::rigid_fit_basis(body.mesh.nodes, render::joint_nodes(results, body, joints));
-  if (fit.anchors.empty()) return max_deflection(body);
+  // Through the joints holding the body at each sample, as the animation draws it: a released
+  // hold-down is no support after its release (render::TimedRigidFit).
+  const render::TimedRigidFit fit = render::timed_rigid_fit(results, body);
+  if (!fit.any_anchor()) return max_deflection(body);
+  if (joints != nullptr) *joints = fit.at(results.time(results.sample_count() - 1)).joints;
   const Eigen::Index ns = shape_samples(body);
   Eigen::VectorXd largest = Eigen::VectorXd::Zero(ns);
   if (!has_elastic_shape(body)) return largest;
   for (Eigen::Index s = 0; s < ns; ++s) {
     const render::RowMatrix3d u = render::elastic_displacements(body.mesh, render::body_state(body, {s, 0.0}));
-    largest(s) = render::relative_displacements(fit, body.mesh.nodes, u).rowwise().norm().maxCoeff();
+    const render::RigidFitBasis& basis = fit.at(results.time(s)).basis;
+    largest(s) = render::relative_displacements(basis, body.mesh.nodes, u).rowwise().norm().maxCoeff();
   }
   return largest;
 }

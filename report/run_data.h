@@ -96,9 +96,11 @@ RunData read_run_data(const std::filesystem::path& directory);
 // its stored node displacements (a nonlinear body).
 Eigen::VectorXd max_deflection(const render::BodyTrack& body);
 
-// Largest elastic displacement relative to the rigid fit through the body's joint nodes,
+// Largest elastic displacement relative to the rigid fit through the nodes of the joints that
+// hold the body at each sample (a released hold-down is no support after its release),
 // max_n |u_rel,n| per sample [m] (render/relative_deflection.h: what the animation scales and
-// colours); max_deflection when the body has no joints. `joints` receives the joints' names.
+// colours); max_deflection when the body has no joints. `joints` receives the names of those
+// holding it at the last sample.
 Eigen::VectorXd max_relative_deflection(const render::Results& results, const render::BodyTrack& body,
                                         std::vector<std::string>* joints = nullptr);
 

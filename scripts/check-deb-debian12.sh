@@ -14,7 +14,8 @@ if [ ! -x "$root/usr/bin/apt-get" ]; then
 fi
 cp "$deb" "$root/tmp/limber.deb"
 chroot "$root" apt-get update -q
-chroot "$root" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q /tmp/limber.deb
+# --reinstall: a root kept from an earlier check may hold a package of the same version.
+chroot "$root" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --reinstall /tmp/limber.deb
 mount -t proc proc "$root/proc"
 trap 'umount "$root/proc"' EXIT
 chroot "$root" env -i PATH=/usr/bin:/bin HOME=/root bash -euc '

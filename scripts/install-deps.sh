@@ -35,11 +35,13 @@ packages=(
 # a report (tests/report/browser_test.cpp). Not ParaView's pvpython (python3-paraview), which
 # tests/render/paraview_test.cpp uses when present: on Debian 12 it conflicts with python3-vtk9,
 # a dependency of libvtk9-dev, so installing it makes apt remove VTK's headers. pytest: the
-# Python module's tests (tests/python).
+# Python module's tests (tests/python); mypy: its type stubs' check. debootstrap: the .deb's
+# check in a fresh Debian 12 (tests/install/check_deb.sh).
 test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   chromium
-  python3-pytest
+  python3-pytest mypy
+  debootstrap
 )
 [ "$with_tests" -eq 0 ] || packages+=("${test_packages[@]}")
 

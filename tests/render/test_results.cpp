@@ -178,6 +178,9 @@ void write_test_results(const std::filesystem::path& dir, const TestScene& scene
   }
   if (latch) writer.append_event({scene.latch_time, 0, true, 0.0, 0.0});
   if (scene.with_box && scene.pin_release_time >= 0.0) writer.set_joint_release(0, scene.pin_release_time);
+  if (scene.with_beam && scene.beam_mid_joint && scene.mid_release_time >= 0.0) {
+    writer.set_joint_release(scene.with_box ? 1 : 0, scene.mid_release_time);
+  }
   writer.finish(results::RunStatus::kOk);
 }
 

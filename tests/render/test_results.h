@@ -43,6 +43,8 @@ struct TestScene {
   double latch_time = -1.0;
   // >= 0: joint "pin" is a hold-down released at this time [s] (its attribute release_time).
   double pin_release_time = -1.0;
+  // >= 0: joint "mid" (with beam_mid_joint) is a hold-down released at this time [s].
+  double mid_release_time = -1.0;
   std::string title = "render test scene";
 };
 
