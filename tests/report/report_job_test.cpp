@@ -103,6 +103,20 @@ TEST_F(ReportJobTest, SceneReportHasSectionsAndOnlyLinksToExistingFiles) {
   EXPECT_EQ(scripts, json + 2);
 }
 
+// A report mailed or moved elsewhere still opens: every link is relative to the report folder,
+// so the page's files resolve from its new place, without the run folder beside it.
+TEST_F(ReportJobTest, ReportFolderMovedElsewhereKeepsEveryLink) {
+  const auto dir = testing::fresh_directory("moved_from");
+  TestScene scene;
+  scene.samples = 11;
+  render::testing::write_test_results(dir, scene);
+  generate_report(options_for({dir}));
+  const auto target = testing::fresh_directory("moved_to") / "mailed_report";
+  std::filesystem::rename(dir / "report", target);
+  std::filesystem::remove_all(dir);
+  expect_links_resolve(target / "index.html");
+}
+
 TEST_F(ReportJobTest, ModalCoordinatePlotShowsTheBeamsClosedForm) {
   const auto dir = testing::fresh_directory("scene_plot");
   TestScene scene;
