@@ -1,4 +1,5 @@
 #include "multibody/clearance.h"
+#include "multibody/clearance_minimum.h"
 
 #include <algorithm>
 #include <array>

@@ -88,19 +88,4 @@ std::string pair_name(const Model& model, const ClearancePair& pair);
 Clearance compute_clearance(const Model& model, const State& state,
                             const ClearanceOptions& options = {});
 
-// The smallest clearance over all pairs and its pair (index into clearance_pairs(model)).
-struct ClearanceMinimum {
-  double minimum = std::numeric_limits<double>::infinity();  // [m], negative: interference
-  int pair = -1;  // −1 when no pair has a vertex to check
-};
-
-// compute_clearance's minimum and minimum_pair, equal to the bit, without the distances of the
-// pairs that cannot hold it: pairs are visited by the gap between their surfaces' bounding
-// boxes (a lower bound of their distance), nearest first, and the visit stops at the first
-// whose gap exceeds the smallest distance found. The satellite's 36 pairs (parallel stowed
-// panels 40 mm apart, the bus 30 mm from them) cost a few pairs' scans per sample.
-// Preconditions (DEMAND): as compute_clearance.
-ClearanceMinimum minimum_clearance(const Model& model, const State& state,
-                                   const ClearanceOptions& options = {});
-
 }  // namespace limber::multibody

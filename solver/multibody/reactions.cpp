@@ -59,7 +59,10 @@ namespace {
 Eigen::VectorXd full_rank_solve(const Eigen::MatrixXd& G_active, const Eigen::VectorXd& b,
                                 double relative_threshold) {
   if (G_active.rows() == 0) return Eigen::VectorXd::Zero(0);
-  const Eigen::MatrixXd gram = G_active * G_active.transpose();
+  // G Gᵀ from its lower half (LLT reads no other), mirrored for the norm.
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(G_active.rows(), G_active.rows());
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(G_active);
+  gram.triangularView<Eigen::StrictlyUpper>() = gram.transpose();
   const auto m = static_cast<double>(gram.rows());
   const double norm = gram.cwiseAbs().rowwise().sum().maxCoeff();
   const double cut = relative_threshold * relative_threshold * norm;

@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "multibody/acceleration_probe.h"
-#include "multibody/clearance.h"
+#include "multibody/clearance_minimum.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"

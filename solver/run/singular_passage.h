@@ -71,11 +71,6 @@ class SingularPassageMonitor {
   Moment before_[2];
   int moments_ = 0;
   bool close(const multibody::State* after);
-  // True when the measure is certainly above the passage threshold at this Gram matrix S Sᵀ
-  // of m rows (a Cholesky factor, no eigen-solve).
-  bool clearly_regular(const Eigen::MatrixXd& gram, int m) const;
-  // Records a sample outside any passage; true when it ends an open one.
-  bool sample_outside(const multibody::State& state);
   double branch_jump(const multibody::State& after, std::string& body) const;
 };
 
