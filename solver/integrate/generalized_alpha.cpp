@@ -364,13 +364,13 @@ bool GeneralizedAlpha::converged(const Eigen::VectorXd& xi, const Eigen::VectorX
   const double xi_floor = roundoff * (1.0 + curr_.q.lpNorm<Eigen::Infinity>());
   const bool xi_converged =
       delta.head(nv_).lpNorm<Eigen::Infinity>() <= tol * xi.lpNorm<Eigen::Infinity>() + xi_floor;
+  if (!xi_converged) return false;
   // λ̃ through the force Gᵀλ̃ it applies (M, G of eval_, the last evaluation), relative to that
-  // force, with the floor the ξ round-off causes in the O(1)-conditioned scaled system.
+  // force, with the floor the ξ round-off causes in the O(1)-conditioned scaled system (a
+  // pass over M, needed only when the relative test alone fails: the floor is ≥ 0).
   const double force_change = (eval_.G.transpose() * delta.tail(nc_)).lpNorm<Eigen::Infinity>();
   const double force = (eval_.G.transpose() * lambda_scaled).lpNorm<Eigen::Infinity>();
-  const bool lambda_converged =
-      force_change <= tol * force + largest_mass_entry() * xi_floor;
-  return xi_converged && lambda_converged;
+  return force_change <= tol * force || force_change <= tol * force + largest_mass_entry() * xi_floor;
 }
 
 void GeneralizedAlpha::end_of_step_kinematics(double h, const Eigen::VectorXd& xi,

@@ -1,4 +1,5 @@
 #include "multibody/clearance.h"
+#include "multibody/clearance_minimum.h"
 
 #include <algorithm>
 #include <array>
@@ -281,37 +282,104 @@ std::string pair_name(const Model& model, const ClearancePair& pair) {
          model.bodies[static_cast<std::size_t>(pair.body_b)].name;
 }
 
+namespace {
+
+// Every body's surface at this state, once; indexed by body (−1: none).
+struct Surfaces {
+  std::vector<Surface> list;
+  std::vector<int> of_body;
+};
+
+Surfaces build_surfaces(const Model& model, const Eigen::VectorXd& q) {
+  Surfaces out;
+  out.of_body.assign(model.bodies.size(), -1);
+  for (int b : bodies_with_surfaces(model)) {
+    out.of_body[static_cast<std::size_t>(b)] = static_cast<int>(out.list.size());
+    out.list.push_back(build_surface(model, b, q));
+  }
+  return out;
+}
+
+// One pair's clearance: vertices of either surface against the other's boxes and triangles.
+Best pair_clearance(const Model& model, const Surfaces& surfaces, const ClearancePair& pair,
+                    const Eigen::VectorXd& q, const ClearanceOptions& options) {
+  const Surface& a = surfaces.list[static_cast<std::size_t>(surfaces.of_body[static_cast<std::size_t>(pair.body_a)])];
+  const Surface& b = surfaces.list[static_cast<std::size_t>(surfaces.of_body[static_cast<std::size_t>(pair.body_b)])];
+  // Vertices near a joint between the two touch by design.
+  const std::vector<Eigen::Vector3d> joints = joint_points(model, pair.body_a, pair.body_b, q);
+  const std::vector<int> active_a = active_vertices(a, joints, options.joint_band);
+  const std::vector<int> active_b = active_vertices(b, joints, options.joint_band);
+  // Boxes first (signed, cheap), then triangles with the best distance as a cut.
+  Best best;
+  vertices_to_boxes(a, active_a, b, false, best);
+  vertices_to_boxes(b, active_b, a, true, best);
+  vertices_to_triangles(a, active_a, b, false, best);
+  vertices_to_triangles(b, active_b, a, true, best);
+  return best;
+}
+
+// Everything of a surface (its vertices, hence its triangles and its boxes' corners) lies in
+// this box.
+Aabb surface_box(const Surface& surface) {
+  Aabb box;
+  for (const Eigen::Vector3d& p : surface.vertices) box.add(p);
+  return box;
+}
+
+// A lower bound of every distance pair_clearance can find between two surfaces in these
+// boxes: the gap between the boxes, less a margin for the rounding of the distances (1e-9 of
+// the boxes' coordinates, a nanometre at a metre); −∞ when they overlap (a vertex inside a
+// box of the other has a negative distance).
+double lower_bound(const Aabb& a, const Aabb& b) {
+  const Eigen::Vector3d gap = (a.lower - b.upper).cwiseMax(b.lower - a.upper).cwiseMax(0.0);
+  if (gap.maxCoeff() <= 0.0) return -kInfinity;
+  const double scale = a.lower.cwiseAbs().cwiseMax(a.upper.cwiseAbs()).cwiseMax(b.lower.cwiseAbs()).cwiseMax(b.upper.cwiseAbs()).maxCoeff();
+  return gap.norm() - 1e-9 * (1.0 + scale);
+}
+
+}  // namespace
+
 Clearance compute_clearance(const Model& model, const State& state, const ClearanceOptions& options) {
   LIMBER_DEMAND(state.q.size() == model.nq);
   LIMBER_DEMAND(options.joint_band >= 0.0);
-  // Every surface at this state, once.
-  const std::vector<int> bodies = bodies_with_surfaces(model);
-  std::vector<Surface> surfaces;
-  std::vector<int> surface_of_body(model.bodies.size(), -1);
-  for (int b : bodies) {
-    surface_of_body[static_cast<std::size_t>(b)] = static_cast<int>(surfaces.size());
-    surfaces.push_back(build_surface(model, b, state.q));
-  }
-
+  const Surfaces surfaces = build_surfaces(model, state.q);
   Clearance result;
   for (const ClearancePair& pair : clearance_pairs(model)) {
-    const Surface& a = surfaces[static_cast<std::size_t>(surface_of_body[static_cast<std::size_t>(pair.body_a)])];
-    const Surface& b = surfaces[static_cast<std::size_t>(surface_of_body[static_cast<std::size_t>(pair.body_b)])];
-    // Vertices near a joint between the two touch by design.
-    const std::vector<Eigen::Vector3d> joints = joint_points(model, pair.body_a, pair.body_b, state.q);
-    const std::vector<int> active_a = active_vertices(a, joints, options.joint_band);
-    const std::vector<int> active_b = active_vertices(b, joints, options.joint_band);
-    // Boxes first (signed, cheap), then triangles with the best distance as a cut.
-    Best best;
-    vertices_to_boxes(a, active_a, b, false, best);
-    vertices_to_boxes(b, active_b, a, true, best);
-    vertices_to_triangles(a, active_a, b, false, best);
-    vertices_to_triangles(b, active_b, a, true, best);
-
+    const Best best = pair_clearance(model, surfaces, pair, state.q, options);
     result.pairs.push_back({pair, best.distance, best.point_a_W, best.point_b_W});
     if (best.distance < result.minimum) {
       result.minimum = best.distance;
       result.minimum_pair = static_cast<int>(result.pairs.size()) - 1;
+    }
+  }
+  return result;
+}
+
+ClearanceMinimum minimum_clearance(const Model& model, const State& state, const ClearanceOptions& options) {
+  LIMBER_DEMAND(state.q.size() == model.nq);
+  LIMBER_DEMAND(options.joint_band >= 0.0);
+  const Surfaces surfaces = build_surfaces(model, state.q);
+  std::vector<Aabb> boxes;
+  for (const Surface& surface : surfaces.list) boxes.push_back(surface_box(surface));
+  // Pairs by their lower bound, nearest first, so that the far ones are skipped.
+  const std::vector<ClearancePair> pairs = clearance_pairs(model);
+  std::vector<std::pair<double, int>> order;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const Aabb& a = boxes[static_cast<std::size_t>(surfaces.of_body[static_cast<std::size_t>(pairs[k].body_a)])];
+    const Aabb& b = boxes[static_cast<std::size_t>(surfaces.of_body[static_cast<std::size_t>(pairs[k].body_b)])];
+    order.emplace_back(lower_bound(a, b), static_cast<int>(k));
+  }
+  std::sort(order.begin(), order.end());
+  ClearanceMinimum result;
+  for (const auto& [bound, k] : order) {
+    // No distance of this pair can reach the smallest so far (nor tie it: the bound is
+    // strictly above), nor can any later pair's.
+    if (bound > result.minimum) break;
+    const double distance = pair_clearance(model, surfaces, pairs[static_cast<std::size_t>(k)], state.q, options).distance;
+    // Ties go to the first pair in clearance_pairs' order, as in compute_clearance.
+    if (distance < result.minimum || (distance == result.minimum && result.pair >= 0 && k < result.pair)) {
+      result.minimum = distance;
+      result.pair = k;
     }
   }
   return result;

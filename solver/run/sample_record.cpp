@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "multibody/acceleration_probe.h"
-#include "multibody/clearance.h"
+#include "multibody/clearance_minimum.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"
@@ -430,9 +430,9 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
 
   // Minimum clearance between the bodies' surfaces (default joint band).
   if (check_clearance_) {
-    const multibody::Clearance clearance = multibody::compute_clearance(model_, state);
+    const multibody::ClearanceMinimum clearance = multibody::minimum_clearance(model_, state);
     out.clearance_minimum = clearance.minimum;
-    out.clearance_pair = clearance.minimum_pair;
+    out.clearance_pair = clearance.pair;
   }
   return out;
 }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
@@ -34,6 +36,28 @@ std::string SingularPassage::message() const {
                      t, ratio, list, branch);
 }
 
+namespace {
+
+// True when the measure is certainly above the passage threshold at the Gram matrix S Sᵀ of
+// unit rows (m x m), with `rank` independent rows and the start value `start`. With every row
+// independent (rank = m) the measure is the smallest eigenvalue of S Sᵀ. A Cholesky factor of
+// S Sᵀ − s I exists only when that eigenvalue exceeds s less the factor's rounding, at most
+// (m + 1) m ε ‖S Sᵀ‖ (Higham, Accuracy and Stability of Numerical Algorithms, Thm. 10.3); with
+// s = 2 τ plus twice that, it is above the passage threshold τ = (kSingularRatio start)² by
+// more than the eigen-solve's own rounding, so the eigen-solve would find no passage either.
+bool clearly_regular(const Eigen::MatrixXd& gram, int rank, double start) {
+  const auto m = gram.rows();
+  if (rank != m) return false;
+  const double tau = kSingularRatio * kSingularRatio * start * start;
+  const double rounding = (static_cast<double>(m) + 1.0) * static_cast<double>(m) *
+                          std::numeric_limits<double>::epsilon() * gram.cwiseAbs().rowwise().sum().maxCoeff();
+  const double shift = 2.0 * (tau + rounding);
+  const Eigen::LLT<Eigen::MatrixXd> shifted(gram - shift * Eigen::MatrixXd::Identity(m, m));
+  return shifted.info() == Eigen::Success;
+}
+
+}  // namespace
+
 SingularPassageMonitor::SingularPassageMonitor(const multibody::Model& model, int rank,
                                                std::vector<bool> released)
     : model_(model), rank_(rank), workspace_(model) {
@@ -49,44 +73,51 @@ bool SingularPassageMonitor::add(const multibody::State& state) {
   // The rows still in force only: a released joint's rows would only add zero singular values,
   // and the eigen-solve below costs m³ (the satellite's 48 hold-down rows made it 5 times
   // dearer, 16 % of the run).
-  const Eigen::MatrixXd S = multibody::unit_rows(workspace_.G)(rows_, Eigen::all);
+  const Eigen::MatrixXd S = multibody::unit_rows(workspace_.G(rows_, Eigen::all));
   // Singular values and left vectors of S from its Gram matrix S Sᵀ (m x m, cheap for the
   // few equations of a mechanism; JacobiSVD of S made the deployment run 60 % slower). Its
   // eigenvalues ascend: the rank-th largest is at m − rank. Rounding in σ² (1e-16) is far
   // below the threshold (kSingularRatio² ~ 1e-4 of the start value).
   const int m = static_cast<int>(rows_.size());
   if (rank_ > m) return false;
-  const Eigen::MatrixXd gram = S * S.transpose();
-  // Eigenvalues only at every sample; the vectors (which joints) only near a singularity.
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram, Eigen::EigenvaluesOnly);
-  const double sigma = std::sqrt(std::max(0.0, eigen.eigenvalues()(m - rank_)));
-  if (start_ < 0.0) start_ = sigma;
-  const double ratio = start_ > 0.0 ? sigma / start_ : 1.0;
-  if (ratio < kSingularRatio) {
-    if (!open_) {
-      current_ = {};
-      current_.ratio = 2.0;  // above any ratio in a passage: the first sample sets it
-    }
-    if (ratio < current_.ratio) {
-      current_.t = state.t;
-      current_.ratio = ratio;
-      current_.names.clear();
-      eigen.compute(gram, Eigen::ComputeEigenvectors);
-      const Eigen::VectorXd u = eigen.eigenvectors().col(m - rank_);
-      const double largest = u.cwiseAbs().maxCoeff();
-      for (int k = 0; k < m; ++k) {
-        if (std::abs(u(k)) < 0.1 * largest) continue;
-        const multibody::ConstraintEquation& eq = model_.equations[static_cast<size_t>(rows_[k])];
-        const std::string name =
-            eq.joint >= 0 ? model_.joints[static_cast<size_t>(eq.joint)].name
-                          : eq.name.substr(0, eq.name.find('.'));
-        if (std::find(current_.names.begin(), current_.names.end(), name) == current_.names.end()) {
-          current_.names.push_back(name);
+  // S Sᵀ from its lower half (the Cholesky factor reads no other), mirrored for the eigen-solve.
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(m, m);
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(S);
+  gram.triangularView<Eigen::StrictlyUpper>() = gram.transpose();
+  // Far from a passage a Cholesky factor proves it (the usual sample), at a fifth of the
+  // eigen-solve's cost.
+  if (start_ <= 0.0 || !clearly_regular(gram, rank_, start_)) {
+    // Eigenvalues only; the vectors (which joints) only near a singularity.
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram, Eigen::EigenvaluesOnly);
+    const double sigma = std::sqrt(std::max(0.0, eigen.eigenvalues()(m - rank_)));
+    if (start_ < 0.0) start_ = sigma;
+    const double ratio = start_ > 0.0 ? sigma / start_ : 1.0;
+    if (ratio < kSingularRatio) {
+      if (!open_) {
+        current_ = {};
+        current_.ratio = 2.0;  // above any ratio in a passage: the first sample sets it
+      }
+      if (ratio < current_.ratio) {
+        current_.t = state.t;
+        current_.ratio = ratio;
+        current_.names.clear();
+        eigen.compute(gram, Eigen::ComputeEigenvectors);
+        const Eigen::VectorXd u = eigen.eigenvectors().col(m - rank_);
+        const double largest = u.cwiseAbs().maxCoeff();
+        for (int k = 0; k < m; ++k) {
+          if (std::abs(u(k)) < 0.1 * largest) continue;
+          const multibody::ConstraintEquation& eq = model_.equations[static_cast<size_t>(rows_[k])];
+          const std::string name =
+              eq.joint >= 0 ? model_.joints[static_cast<size_t>(eq.joint)].name
+                            : eq.name.substr(0, eq.name.find('.'));
+          if (std::find(current_.names.begin(), current_.names.end(), name) == current_.names.end()) {
+            current_.names.push_back(name);
+          }
         }
       }
+      open_ = true;
+      return false;
     }
-    open_ = true;
-    return false;
   }
   const bool ended = close(&state);
   // The latest two samples outside a passage.

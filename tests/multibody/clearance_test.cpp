@@ -2,8 +2,10 @@
 // parallel shell plates a known gap apart, a plate partly inside a box (penetration depth),
 // a plate's corner on and just inside a rotated box face, a plate bent by its modes under a
 // box face, a hinged pair whose hinge vertices the joint band leaves out, and a satellite
-// (bus and four panels, stowed and deployed) whose cost per evaluation is printed.
+// (bus and four panels, stowed and deployed) whose cost per evaluation is printed; the minimum
+// over pairs (minimum_clearance) against the full check.
 #include "multibody/clearance.h"
+#include "multibody/clearance_minimum.h"
 
 #include <array>
 #include <chrono>
@@ -288,6 +290,50 @@ TEST(Clearance, SatelliteStowedAndDeployedGapsAndCost) {
   expect_satellite_gaps(model, compute_clearance(model, deployed));
   std::printf("[ clearance ] bus + 4 x 165-node panels: stowed %.1f us, deployed %.1f us per evaluation\n",
               microseconds_per_evaluation(model, stowed), microseconds_per_evaluation(model, deployed));
+}
+
+// minimum_clearance skips pairs by a bound, so its answer must be compute_clearance's to the
+// bit (the same per-pair scans; ties to the first pair).
+void expect_same_minimum(const Model& model, const State& state, const ClearanceOptions& options = {}) {
+  const Clearance all = compute_clearance(model, state, options);
+  const ClearanceMinimum minimum = minimum_clearance(model, state, options);
+  EXPECT_EQ(minimum.minimum, all.minimum);
+  EXPECT_EQ(minimum.pair, all.minimum_pair);
+}
+
+TEST(Clearance, MinimumOverPairsEqualsTheFullCheck) {
+  // The satellite stowed, deployed, and with panel_py pushed 0.1 m into the bus (a negative
+  // minimum on the second pair, below panel_px's 30 mm).
+  const Model model = satellite();
+  const State stowed = initial_state(model);
+  expect_same_minimum(model, stowed);
+  State deployed = stowed, through = stowed;
+  for (int k = 0; k < 4; ++k) {
+    const Body& panel = model.bodies[static_cast<std::size_t>(2 + k)];
+    const Pose pose = panel_pose(k, true);
+    deployed.q.segment<3>(panel.q_offset) = pose.position;
+    deployed.q.segment<4>(panel.q_offset + 3) = pose.orientation;
+  }
+  expect_same_minimum(model, deployed);
+  const Body& panel_py = model.bodies[3];
+  through.q.segment<3>(panel_py.q_offset) -= 0.14 * Eigen::Vector3d::UnitY();
+  ASSERT_LT(compute_clearance(model, through).minimum, -0.05);
+  expect_same_minimum(model, through);
+  // Nothing to check: no pair, +∞.
+  expect_same_minimum(model, stowed, {.joint_band = 10.0});
+  // The mirror-image tie: two panels at the same gap; the first pair holds it.
+  const Plate plate = free_plate(1.0, 1.0, 4, 4);
+  ModelBuilder builder;
+  builder.add_rigid_body(box_body("bus", Eigen::Vector3d(1, 1, 1), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity()));
+  Eigen::Matrix3d R_right, R_left;
+  R_right << Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitY();
+  R_left << -Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY();
+  builder.add_flexible_body(plate_body("right", plate, Eigen::Vector3d(-0.5, 0.54, -0.5), R_right));
+  builder.add_flexible_body(plate_body("left", plate, Eigen::Vector3d(0.5, -0.54, -0.5), R_left));
+  const Model mirrored = builder.build();
+  const State state = initial_state(mirrored);
+  EXPECT_NEAR(compute_clearance(mirrored, state).pairs[1].distance, 0.04, kTolerance);
+  expect_same_minimum(mirrored, state);
 }
 
 }  // namespace
