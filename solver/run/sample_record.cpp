@@ -376,7 +376,9 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     const multibody::Body& body = model_.bodies[b];
     if (const int owner = nonlinear_of_[b]; owner >= 0) {
       const multibody::NonlinearBody& nonlinear = model_.nonlinear_bodies[static_cast<std::size_t>(owner)];
-      if (nonlinear.node_bodies.front() == static_cast<int>(b)) out.bodies.push_back(record_nonlinear(nonlinear, sample.q, index));
+      if (nonlinear.node_bodies.front() == static_cast<int>(b)) {
+        out.bodies.push_back(record_nonlinear(nonlinear, sample.q, index));
+      }
       continue;
     }
     const Eigen::Vector4d p = sample.q.segment<4>(body.q_offset + 3).normalized();

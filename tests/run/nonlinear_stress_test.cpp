@@ -182,7 +182,8 @@ TEST(NonlinearStress, IdaFindsTheSameStressesAsTheGeneralizedAlpha) {
   // The first swing (~0.06 s): the generalized-α at 120 steps per period with ρ∞ = 0.8 takes a
   // fraction of a per cent of it by its numerical damping (measured: IDA 0.41 % above); 1 %.
   EXPECT_NEAR(ida_largest, galpha_largest, 0.01 * galpha_largest);
-  const StressRun damped = run_cantilever("{rayleigh: [0, 0.0384]}", test::fresh_directory("nonlinear_stress_ida_damped"), true);
+  const StressRun damped =
+      run_cantilever("{rayleigh: [0, 0.0384]}", test::fresh_directory("nonlinear_stress_ida_damped"), true);
   ASSERT_TRUE(damped.summary.ok) << damped.summary.message;
   EXPECT_NEAR(damped.root_stress.back(), kSigmaStatic, 1e-3 * kSigmaStatic);
 }
