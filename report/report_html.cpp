@@ -4,6 +4,7 @@
 #include "run_summary.h"
 #include "html.h"
 #include "mode_origins.h"
+#include "model_description.h"
 #include "selection_html.h"
 #include "sizing_loads.h"
 #include "stress_summary.h"
@@ -197,11 +198,14 @@ std::string bodies_table(const RunData& run) {
       "<th>shell elements</th><th>modes</th></tr>\n";
   for (const render::BodyTrack& b : run.results.bodies) {
     if (b.flexible) {
+      // A nonlinear body: its beams unreduced, no modes.
+      const bool nonlinear = is_nonlinear(b);
       out += fmt::format(
-          "<tr><td>{}</td><td>flexible</td><td class=\"number\">{}</td><td class=\"number\">{}</td>"
+          "<tr><td>{}</td><td>{}</td><td class=\"number\">{}</td><td class=\"number\">{}</td>"
           "<td class=\"number\">{}</td><td class=\"number\">{}</td></tr>\n",
-          markup_escape(b.name), b.mesh.nodes.rows(), b.mesh.lines.rows(), b.mesh.quads.rows(),
-          b.mesh.mode_translations.cols());
+          markup_escape(b.name), nonlinear ? "flexible, nonlinear" : "flexible", b.mesh.nodes.rows(),
+          b.mesh.lines.rows(), b.mesh.quads.rows(),
+          nonlinear ? std::string("none (unreduced)") : std::to_string(b.mesh.mode_translations.cols()));
     } else {
       out += fmt::format("<tr><td>{}</td><td>rigid</td><td></td><td></td><td></td><td></td></tr>\n",
                          markup_escape(b.name));
@@ -320,6 +324,12 @@ std::string mode_tables(const RunData& run) {
           joints.empty() ? "" : ": " + markup_escape(joints));
     }
     out += "</table>\n";
+  }
+  // Nonlinear bodies have no modes: what they are instead.
+  for (const render::BodyTrack& body : run.results.bodies) {
+    if (!is_nonlinear(body)) continue;
+    out += fmt::format("<h4>{}</h4>\n<p class=\"note\">No modes: {}, integrated unreduced.</p>\n",
+                       markup_escape(body.name), markup_escape(nonlinear_description(body)));
   }
   return out;
 }

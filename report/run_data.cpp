@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "body_pose.h"
+#include "model_description.h"
 #include "relative_deflection.h"
 #include "results/file_names.h"
 #include "results/modes_reader.h"
@@ -43,7 +44,8 @@ void read_mode_tables(RunData& run) {
     return nullptr;
   };
   for (const render::BodyTrack& body : run.results.bodies) {
-    if (!body.flexible) continue;
+    // A nonlinear body has no modes to table (nonlinear_description says what it is).
+    if (!body.flexible || is_nonlinear(body)) continue;
     const std::string& component = body.component;
     // A body of a component already tabled joins its table.
     const auto shared = std::find_if(run.mode_tables.begin(), run.mode_tables.end(), [&](const ModeTable& t) {

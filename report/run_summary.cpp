@@ -2,6 +2,7 @@
 
 #include "hinge_summary.h"
 #include "html.h"
+#include "model_description.h"
 #include "results/results_layout.h"
 
 #include <fmt/format.h>
@@ -58,7 +59,8 @@ std::string badge(const std::string& status) {
   return fmt::format("<span class=\"badge {}\">{}</span>", kind, markup_escape(status));
 }
 
-// The flexible bodies by mode table: "panel_R1, panel_R2 (component panel): 8 modes".
+// The flexible bodies by mode table: "panel_R1, panel_R2 (component panel): 8 modes"; then
+// the nonlinear ones: "rod: nonlinear, 100 beam elements (101 nodes)".
 std::string flexible_text(const RunData& run) {
   std::string out;
   for (const ModeTable& table : run.mode_tables) {
@@ -69,6 +71,10 @@ std::string flexible_text(const RunData& run) {
             ? ""
             : " (component " + markup_escape(table.component) + ")";
     out += fmt::format("{}{}{}: {} modes", out.empty() ? "" : "; ", bodies, component, table.modes.size());
+  }
+  for (const render::BodyTrack& body : run.results.bodies) {
+    if (!is_nonlinear(body)) continue;
+    out += fmt::format("{}{}: {}", out.empty() ? "" : "; ", markup_escape(body.name), nonlinear_description(body));
   }
   return out;
 }

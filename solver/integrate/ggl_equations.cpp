@@ -8,6 +8,17 @@
 
 namespace limber::integrate {
 
+namespace {
+
+// block += scale · A, A sparse (its nonzeros only).
+void add_sparse(double scale, const Eigen::SparseMatrix<double>& A, Eigen::Block<Eigen::Map<Eigen::MatrixXd>> block) {
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) block(it.row(), it.col()) += scale * it.value();
+  }
+}
+
+}  // namespace
+
 GglLayout GglLayout::of(const MechanicalSystem& system, int nz) {
   GglLayout l;
   l.nq = system.nq();
@@ -24,7 +35,8 @@ GglLayout GglLayout::of(const MechanicalSystem& system, int nz) {
 }
 
 GglEquations::GglEquations(MechanicalSystem& system, const Quadrature& quadrature)
-    : system_(system), quadrature_(quadrature), layout_(GglLayout::of(system, quadrature.size)) {
+    : system_(system), quadrature_(quadrature), layout_(GglLayout::of(system, quadrature.size)),
+      sparse_(system.sparse()) {
   h_.resize(layout_.nh);
   f_.resize(layout_.nz);
   N_.resize(layout_.nq, layout_.nv);
@@ -60,7 +72,12 @@ bool GglEquations::residual(double t, const double* y, const double* yp, double*
   r.head(l.nq).noalias() = qdot - N_ * v_;
   r.head(l.nq).noalias() += eval_.g_q.transpose() * mu_g_;
   r.head(l.nq).noalias() += h_q_.transpose() * mu_h_;
-  r.segment(l.iv, l.nv).noalias() = eval_.M * vdot_ - eval_.Q;
+  if (sparse_) {
+    r.segment(l.iv, l.nv).noalias() = eval_.M_sparse * vdot_;
+  } else {
+    r.segment(l.iv, l.nv).noalias() = eval_.M * vdot_;
+  }
+  r.segment(l.iv, l.nv) -= eval_.Q;
   r.segment(l.iv, l.nv).noalias() += eval_.G.transpose() * lambda_;
   r.segment(l.ilambda, l.nc).noalias() = eval_.G * v_ + eval_.g_t;
   r.segment(l.imu, l.nc) = eval_.g;
@@ -107,8 +124,15 @@ bool GglEquations::newton_matrix(double t, double c_j, const double* y, const do
   J.block(0, l.imu + l.nc, l.nq, l.nh) = h_q_.transpose();
   // Dynamics rows.
   J.block(l.iv, 0, l.nv, l.nq).noalias() = stiffness_.asDiagonal() * N_pinv_;
-  J.block(l.iv, l.iv, l.nv, l.nv) = c_j * eval_.M;
+  if (sparse_) {
+    add_sparse(c_j, eval_.M_sparse, J.block(l.iv, l.iv, l.nv, l.nv));
+  } else {
+    J.block(l.iv, l.iv, l.nv, l.nv) = c_j * eval_.M;
+  }
   J.block(l.iv, l.iv, l.nv, l.nv).diagonal() += damping_;
+  // The internal forces that couple velocities (a nonlinear body's beams), at (t, q).
+  if (system_.coupled_stiffness(t, q_, coupled_)) J.block(l.iv, 0, l.nv, l.nq).noalias() += coupled_ * N_pinv_;
+  if (system_.coupled_damping(t, q_, coupled_)) add_sparse(1.0, coupled_, J.block(l.iv, l.iv, l.nv, l.nv));
   J.block(l.iv, l.ilambda, l.nv, l.nc) = eval_.G.transpose();
   // Velocity constraints.
   J.block(l.ilambda, 0, l.nc, l.nq) = (g_q_along_ - eval_.g_q) / epsilon;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "core/mechanical_system.h"
 #include "integrate/integrator_options.h"
@@ -37,7 +38,9 @@ class GglEquations {
   //   [0           0             0    0     0     c_j I]   z
   // D = ∂(N v)/∂q by differences of N alone (the quaternion rates), k and c the system's
   // diagonal stiffness and damping (as generalized-α's structured matrix; −∂Q/∂q ≈ k ∂ξ/∂q =
-  // k N⁺ on the tangent space, N⁺ = (NᵀN)⁻¹Nᵀ), and L = ∂(G v + g_t)/∂q = ∂(g_q q̇ + g_t)/∂q:
+  // k N⁺ on the tangent space, N⁺ = (NᵀN)⁻¹Nᵀ), with the coupled stiffness K and damping C of
+  // a nonlinear body's beams added to them where the system has them (k N⁺ + K N⁺, c + C;
+  // MechanicalSystem::coupled_stiffness, coupled_damping), and L = ∂(G v + g_t)/∂q = ∂(g_q q̇ + g_t)/∂q:
   // by the symmetry of g's second derivatives, [g_q(t + ε, q + ε q̇) − g_q(t, q)]/ε + g_q D with
   // q̇ = N v, one constraint pass. L is not small: the μ rows move q by O(g) whatever the step,
   // and without L the velocity rows' Newton error stays O(1) as h → 0 (the seed set-up then
@@ -63,6 +66,10 @@ class GglEquations {
   // For the Newton matrix: the system's diagonal stiffness and damping, and scratch space.
   Eigen::VectorXd stiffness_, damping_, qdot_, q_perturbed_;
   Eigen::MatrixXd N_pinv_, N_perturbed_, D_, g_q_along_;
+  // A sparse system (a nonlinear body) hands M over as eval_.M_sparse; its coupled stiffness
+  // and damping.
+  bool sparse_ = false;
+  Eigen::SparseMatrix<double> coupled_;
 
   void unpack(const double* y, const double* yp);
 };

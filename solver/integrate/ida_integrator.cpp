@@ -370,8 +370,6 @@ Status IdaIntegrator::init(MechanicalSystem& system, const InitialState& x0,
                            const IntegratorOptions& options) {
   options.validate();
   LIMBER_DEMAND(options.method == Method::kIda);
-  // Its residual uses the dense M, which a sparse system leaves empty (the run refuses IDA there).
-  LIMBER_DEMAND(!system.sparse());
   if (x0.q.size() != system.nq() || x0.v.size() != system.nv()) {
     throw InputError(fmt::format("initial state: expected {} coordinates and {} velocities, got "
                                  "{} and {}",

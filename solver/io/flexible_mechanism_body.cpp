@@ -74,10 +74,10 @@ void read_formulation(const YamlValue& value, const YamlValue& entry, const Flex
                            "formulation: modal)",
                            component.name, model.shells.size() + model.triangles.size()));
   }
-  for (const char* key : {"modal_coordinates", "modal_velocities", "geometric_stiffening", "stress"}) {
+  for (const char* key : {"modal_coordinates", "modal_velocities", "geometric_stiffening"}) {
     if (const auto found = entry.find(key)) {
       found->fail(fmt::format("'{}' is not available with 'formulation: nonlinear' (it has no modes, and "
-                              "no {} yet)", key, std::string(key) == "stress" ? "stress output" : "such input"));
+                              "no such input yet)", key));
     }
   }
   // Rayleigh damping or none: a nonlinear body has no modes to give ratios to.

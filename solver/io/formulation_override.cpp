@@ -37,7 +37,6 @@ void check_can_be_nonlinear(const Case& input, const FlexibleBodyEntry& body, co
   for (const PerModeValues* values : {&body.modal_coordinates, &body.modal_velocities}) {
     if (values->values.size() > 0) fail(fmt::format("no '{}' (a nonlinear body has no modes), got one", values->key));
   }
-  if (body.stress) fail("no 'stress' (not recovered for a nonlinear body yet), got one");
   if (!rayleigh_or_undamped(body.damping) || body.damping_ratios.values.size() > 0) {
     fail("'damping: 0' or 'damping: {rayleigh: [alpha, beta]}' (a nonlinear body has no modes to give damping "
          "ratios to; without the key a modal body has a ratio of 0.01), got damping ratios");

@@ -14,6 +14,7 @@
 #include "modal/geometric_stiffness.h"
 #include "modal/modal_stress.h"
 #include "multibody/model_builder.h"
+#include "multibody/nonlinear_body_stress.h"
 #include "nonlinear_beam/beam_inertia.h"
 #include "nonlinear_beam/beam_structure.h"
 
@@ -180,6 +181,9 @@ void add_nonlinear_body(const FlexibleBodyEntry& entry, const std::vector<Flexib
   spec.initial_angular_velocity_B = entry.initial_angular_velocity_B;
   spec.mesh = drawing_mesh(component.model);
   spec.deflection_probe = entry.deflection_probe;
+  // Output: the beams' stresses, with their sections for the extreme fibres.
+  spec.stress = entry.stress;
+  if (spec.stress) spec.beam_sections = multibody::beam_sections_of(component.model);
   // `damping: {rayleigh: [α, β]}`; absent or 0: undamped (the reader refuses ratios).
   if (entry.damping.kind == multibody::ModalDamping::Kind::kRayleigh) {
     spec.mass_damping = entry.damping.alpha;

@@ -210,6 +210,10 @@ struct NonlinearBody {
   // velocities relative to the body's rigid motion, β on the elements' deformation rates.
   double mass_damping = 0.0;       // α ≥ 0 [1/s]
   double stiffness_damping = 0.0;  // β ≥ 0 [s]
+  // Output only: which elements' stresses to record (0-based, FeModel::beams order), and with
+  // it every beam's section for the extreme-fibre stress (nonlinear_body_stress.h).
+  std::optional<StressOutput> stress;
+  std::vector<fe::BeamSection> beam_sections;  // one per element when stress is set, else empty
 };
 
 struct Model {

@@ -70,6 +70,10 @@ struct NonlinearBodySpec {
   FlexibleMesh mesh;                                // for drawing; node_ids name the node bodies
   std::optional<DeflectionProbe> deflection_probe;  // output only; node indices
   double mass_damping = 0.0, stiffness_damping = 0.0;  // Rayleigh α [1/s], β [s] ≥ 0 (model.h)
+  // Output only: the elements whose stresses to record and every beam's section (one per
+  // element; nonlinear_body_stress.h beam_sections_of), both or neither.
+  std::optional<StressOutput> stress;
+  std::vector<fe::BeamSection> beam_sections;
 };
 
 struct RsdaSpec {

@@ -8,6 +8,27 @@
 
 namespace limber::multibody {
 
+namespace {
+
+// The recorded elements are the structure's beams, and every beam has a section.
+void check_nonlinear_stress_output(const NonlinearBodySpec& spec, const StressOutput& stress,
+                                   const SourceLocation& where) {
+  const int elements = static_cast<int>(spec.structure->elements.size());
+  for (const int e : stress.elements) {
+    if (e < 0 || e >= elements) {
+      throw InputError(fmt::format("body \"{}\" stress output: expected element numbers in [1, {}], got {}",
+                                   spec.name, elements, e + 1), where);
+    }
+  }
+  if (stress.every < 1) {
+    throw InputError(fmt::format("body \"{}\" stress output: expected every ≥ 1, got {}", spec.name, stress.every),
+                     where);
+  }
+  LIMBER_DEMAND(static_cast<int>(spec.beam_sections.size()) == elements);
+}
+
+}  // namespace
+
 int ModelBuilder::add_nonlinear_body(const NonlinearBodySpec& spec, const SourceLocation& where) {
   check_new_body(spec.name, spec.initial_pose, where);
   const nonlinear_beam::BeamStructure& structure = *spec.structure;
@@ -26,8 +47,11 @@ int ModelBuilder::add_nonlinear_body(const NonlinearBodySpec& spec, const Source
     throw InputError(fmt::format("body \"{}\" damping: expected Rayleigh α, β ≥ 0, got {:g}, {:g}", spec.name,
                                  spec.mass_damping, spec.stiffness_damping), where);
   }
+  if (const auto& stress = spec.stress) check_nonlinear_stress_output(spec, *stress, where);
   NonlinearBody body;
   body.name = spec.name;
+  body.stress = spec.stress;
+  if (spec.stress) body.beam_sections = spec.beam_sections;
   body.mass_damping = spec.mass_damping;
   body.stiffness_damping = spec.stiffness_damping;
   body.structure = spec.structure;

@@ -162,6 +162,7 @@ def select(
     rtol: float | None = None,
     t_end: float | None = None,
     progress: Callable[[float, float], object] | None = None,
+    reference: str = "modal",
 ) -> dict[str, Any]:
     """The seed paper's mode selection: what `limber select --json` prints."""
 

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "io/case_reduction.h"
+#include "io/formulation_override.h"
 #include "io/modes_file.h"
 #include "io/modes_json.h"
 #include "python/case_binding.h"
@@ -72,7 +73,7 @@ py::object select(const py::object& case_or_path, std::optional<std::filesystem:
                   const std::string& static_modes, int max_single, int reference_normal, bool keep_step,
                   bool whole_run, int max_refinement, int jobs, std::optional<std::string> integrator,
                   std::optional<double> step, std::optional<double> rtol, std::optional<double> t_end,
-                  std::optional<py::function> progress) {
+                  std::optional<py::function> progress, const std::string& reference) {
   const std::shared_ptr<const io::Case> input = case_of(case_or_path);
   select::SelectionRequest request;
   request.root = output_folder(*input, output, "_select");
@@ -83,6 +84,7 @@ py::object select(const py::object& case_or_path, std::optional<std::filesystem:
   request.candidates.static_kind = select::static_kind_from(static_modes, "static_modes");
   request.candidates.max_single = max_single;
   request.candidates.reference_normal = reference_normal;
+  request.nonlinear_reference = io::nonlinear_formulation_requested(reference, "reference");
   request.policy = {keep_step, max_refinement, 1.0, whole_run};
   request.jobs = jobs;
   run::SettingsOverrides overrides;
@@ -142,8 +144,8 @@ computed.)");
              py::arg("reference_normal") = 0, py::arg("keep_step") = false, py::arg("whole_run") = false,
              py::arg("max_refinement") = 8, py::arg("jobs") = 2, py::arg("integrator") = py::none(),
              py::arg("step") = py::none(), py::arg("rtol") = py::none(), py::arg("t_end") = py::none(),
-             py::arg("progress") = py::none(),
-             R"(select(case_or_path, *, output=None, keep=0.1, target=None, rank_by='peak', norm='event', static_modes='attachment', max_single=6, reference_normal=0, keep_step=False, whole_run=False, max_refinement=8, jobs=2, integrator=None, step=None, rtol=None, t_end=None, progress=None) -> dict
+             py::arg("progress") = py::none(), py::arg("reference") = "modal",
+             R"(select(case_or_path, *, output=None, keep=0.1, target=None, rank_by='peak', norm='event', static_modes='attachment', max_single=6, reference_normal=0, keep_step=False, whole_run=False, max_refinement=8, jobs=2, integrator=None, step=None, rtol=None, t_end=None, progress=None, reference='modal') -> dict
 
 Chooses the modes of the flexible bodies by the seed paper's procedure, as `limber select`
 does (docs/select.md), in this process, and returns what its --json prints: 'ranking',
@@ -162,6 +164,10 @@ Arguments (the options of `limber select` of the same names):
   static_modes      'attachment' (unit loads) or 'constraint' (unit displacements)
   max_single        at most this many one-component sets (>= 0)
   reference_normal  normal modes per body in the reference set (0: four times the case's)
+  reference         'modal' (the richest modal set) or 'nonlinear' (the case with every
+                    flexible body nonlinear: co-rotational FE beams, unreduced; the bodies
+                    must be beams with damping 0 or Rayleigh; docs/select.md, "The nonlinear
+                    reference"); with 'nonlinear' the richest modal set is one of the sets
   keep_step         run every set at the case's step instead of one resolving its modes
   whole_run         generalized-alpha: the resolving step throughout, not only in the
                     event windows

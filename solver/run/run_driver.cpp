@@ -46,12 +46,14 @@ void check_settings(const io::RunSettings& settings) {
 void check_nonlinear_bodies(const multibody::Model& model, const io::RunSettings& settings) {
   if (model.nonlinear_bodies.empty()) return;
   const std::string& name = model.nonlinear_bodies.front().name;
-  // IDA's Newton matrix has no coupled stiffness (MechanicalSystem::coupled_stiffness), nor
-  // the statics solver: both would take differences over every node.
-  if (settings.integrator.method != integrate::Method::kGeneralizedAlpha) {
-    throw InputError(fmt::format("nonlinear body \"{}\": expected integrator galpha (a nonlinear body runs "
-                                 "with the generalized-α only, for now), got {}",
-                                 name, integrate::to_string(settings.integrator.method)));
+  // IDA's matrix of differences would take a residual per coordinate of every node (hundreds);
+  // its structured matrix carries the beams' coupled stiffness (ggl_equations.h). The statics
+  // solver has none.
+  if (settings.integrator.method == integrate::Method::kIda &&
+      settings.integrator.ida_newton_matrix != integrate::IdaNewtonMatrix::kStructured) {
+    throw InputError(fmt::format("nonlinear body \"{}\": expected 'newton_matrix: structured' with integrator "
+                                 "ida (its matrix of differences would take a residual per node coordinate), "
+                                 "got differences", name));
   }
   if (settings.start == io::StartKind::kStatics) {
     throw InputError(fmt::format("nonlinear body \"{}\": expected run start: assembly (a static start of a "

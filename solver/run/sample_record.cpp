@@ -15,6 +15,7 @@
 #include "multibody/hinge_limit.h"
 #include "multibody/momentum.h"
 #include "multibody/nonlinear_body.h"
+#include "multibody/nonlinear_body_stress.h"
 #include "multibody/reactions.h"
 #include "multibody/rotation.h"
 
@@ -145,6 +146,11 @@ results::FlexibleBodySpec nonlinear_body_spec(const multibody::Model& model, con
   spec.has_deflection = body.deflection_probe.has_value();
   spec.has_node_displacements = true;
   spec.mass_properties = nonlinear_mass_properties(model, body);
+  if (const auto& stress = body.stress) {
+    spec.has_stress = true;
+    spec.stress_elements = stress->elements;
+    spec.stress_every = stress->every;
+  }
   return spec;
 }
 
@@ -267,19 +273,18 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
 
 namespace {
 
-// Recovered stresses of one flexible body at its modal coordinates: the mesh's peak, and the
-// declared elements' history row on every `every`-th sample (docs/stress-recovery.md).
-void record_stress(const multibody::FlexibleBody& flexible, results::BodySample& pose, std::int64_t index) {
-  const multibody::StressOutput& output = *flexible.stress_output;
-  const modal::ModalStress& modal = flexible.modal_stress;
-  const modal::ElementStresses stresses = modal::recover_stresses(modal, pose.modal_coordinates);
+// Recorded stresses of one body from its elements' stresses (beams first, `beam_count` of
+// them): the mesh's peak, and the declared elements' history row on every `every`-th sample
+// (docs/stress-recovery.md). Modal and nonlinear bodies alike, so the file's layout is one.
+void record_element_stresses(const multibody::StressOutput& output, const modal::ElementStresses& stresses,
+                             int beam_count, results::BodySample& pose, std::int64_t index) {
   Eigen::Index peak = 0;
   pose.stress_peak = stresses.equivalent.size() > 0 ? stresses.equivalent.maxCoeff(&peak) : 0.0;
   pose.stress_peak_element = static_cast<int>(peak);
   if (index % output.every != 0) return;
   pose.stress_recorded = true;
   const auto n = static_cast<Eigen::Index>(output.elements.size());
-  const int nb = modal.beam_count;
+  const int nb = beam_count;
   const auto beams = static_cast<Eigen::Index>(
       std::count_if(output.elements.begin(), output.elements.end(), [nb](int e) { return e < nb; }));
   pose.stress_equivalent.resize(n);
@@ -299,6 +304,22 @@ void record_stress(const multibody::FlexibleBody& flexible, results::BodySample&
   }
 }
 
+// A modal body's stresses at its modal coordinates.
+void record_stress(const multibody::FlexibleBody& flexible, results::BodySample& pose, std::int64_t index) {
+  const modal::ModalStress& modal = flexible.modal_stress;
+  record_element_stresses(*flexible.stress_output, modal::recover_stresses(modal, pose.modal_coordinates),
+                          modal.beam_count, pose, index);
+}
+
+// A nonlinear body's stresses at its configuration (multibody/nonlinear_body_stress.h).
+void record_nonlinear_stress(const multibody::NonlinearBody& body, const nonlinear_beam::BeamState& state,
+                             results::BodySample& pose, std::int64_t index) {
+  modal::ElementStresses stresses;
+  stresses.beam_resultants = multibody::nonlinear_beam_resultants(*body.structure, state);
+  stresses.equivalent = multibody::nonlinear_beam_fibre_stresses(stresses.beam_resultants, body.beam_sections);
+  record_element_stresses(*body.stress, stresses, static_cast<int>(body.structure->elements.size()), pose, index);
+}
+
 }  // namespace
 
 SampleRecorder::SampleRecorder(const multibody::Model& model,
@@ -312,7 +333,7 @@ SampleRecorder::SampleRecorder(const multibody::Model& model,
       nonlinear_of_(multibody::nonlinear_body_of(model)) {}
 
 results::BodySample SampleRecorder::record_nonlinear(const multibody::NonlinearBody& body,
-                                                     const Eigen::VectorXd& q) const {
+                                                     const Eigen::VectorXd& q, std::int64_t index) const {
   // The node configurations in the component axes C of t = 0.
   const nonlinear_beam::BeamState state = multibody::nonlinear_body_state(model_, body, q);
   const std::vector<Eigen::Vector3d>& X = body.structure->reference_positions;
@@ -337,6 +358,7 @@ results::BodySample SampleRecorder::record_nonlinear(const multibody::NonlinearB
     pose.node_displacements.segment<3>(3 * static_cast<Eigen::Index>(k)) = R_CF.transpose() * (x[k] - p_CF) - X[k];
   }
   if (body.deflection_probe) pose.deflection = multibody::nonlinear_probe_deflection(model_, body, q);
+  if (body.stress) record_nonlinear_stress(body, state, pose, index);
   return pose;
 }
 
@@ -354,7 +376,9 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     const multibody::Body& body = model_.bodies[b];
     if (const int owner = nonlinear_of_[b]; owner >= 0) {
       const multibody::NonlinearBody& nonlinear = model_.nonlinear_bodies[static_cast<std::size_t>(owner)];
-      if (nonlinear.node_bodies.front() == static_cast<int>(b)) out.bodies.push_back(record_nonlinear(nonlinear, sample.q));
+      if (nonlinear.node_bodies.front() == static_cast<int>(b)) {
+        out.bodies.push_back(record_nonlinear(nonlinear, sample.q, index));
+      }
       continue;
     }
     const Eigen::Vector4d p = sample.q.segment<4>(body.q_offset + 3).normalized();

@@ -63,8 +63,10 @@ class SampleRecorder {
   const Eigen::VectorXd& constraint_residuals() const { return workspace_.g; }
 
  private:
-  // A nonlinear body's sample: its chord frame, its node displacements in it, its probe.
-  results::BodySample record_nonlinear(const multibody::NonlinearBody& body, const Eigen::VectorXd& q) const;
+  // A nonlinear body's sample: its chord frame, its node displacements in it, its probe, and
+  // its stresses when it has stress output (`index`: this sample's, for the history's `every`).
+  results::BodySample record_nonlinear(const multibody::NonlinearBody& body, const Eigen::VectorXd& q,
+                                       std::int64_t index) const;
 
   const multibody::Model& model_;
   const multibody::ConstraintPartition& partition_;

@@ -63,6 +63,28 @@ def test_select_equals_the_command(coarse_slider_crank, limber_cli, tmp_path):
     assert seen and all(t_end == 0.15 for _, t_end in seen)
 
 
+def test_select_nonlinear_reference_equals_the_command(coarse_slider_crank, limber_cli, tmp_path):
+    # The nonlinear body takes damping 0 or Rayleigh, not the case's ratio (docs/select.md).
+    text = coarse_slider_crank.read_text()
+    assert "damping: 0.01 " in text
+    undamped = tmp_path / "undamped_rod.yaml"
+    undamped.write_text(text.replace("damping: 0.01 ", "damping: 0 ", 1))
+    options = dict(t_end=0.05, max_single=1, norm="peak")
+    from_cli = limber_cli("select", undamped, "-o", tmp_path / "cli", "--t-end", 0.05, "--max-single", 1,
+                          "--norm", "peak", "--reference", "nonlinear")
+    in_process = limber.select(undamped, output=tmp_path / "py", reference="nonlinear", **options)
+    timing = {"reduction_s", "run_s", "directory"}
+    assert without(in_process, timing) == without(from_cli, timing)
+    # Against the nonlinear rod: the richest modal set is one of the sets, the reference has no
+    # modes (docs/select.md, "The nonlinear reference").
+    names = [row["set"] for row in in_process["comparison"]]
+    assert "richest" in names and "nonlinear" in names
+    assert (tmp_path / "py" / "runs" / "nonlinear" / "results.h5").is_file()
+    # The names are the command's: another is a CaseError, before anything runs.
+    with pytest.raises(limber.CaseError, match="reference: expected modal or nonlinear, got 'exact'"):
+        limber.select(undamped, output=tmp_path / "bad", reference="exact", **options)
+
+
 def test_select_bad_input_raises_case_error(coarse_slider_crank, cases, tmp_path):
     with pytest.raises(limber.CaseError, match="--keep"):
         limber.select(coarse_slider_crank, output=tmp_path, keep=0.0)

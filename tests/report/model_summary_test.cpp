@@ -2,9 +2,11 @@
 // free-floating system against a hand calculation, and mode tables one per distinct component
 // with static modes told by the joints at their node.
 #include "mode_origins.h"
+#include "model_description.h"
 #include "momentum_drift.h"
 #include "report_test_util.h"
 #include "run_data.h"
+#include "report_html.h"
 #include "run_summary.h"
 #include "results/results_writer.h"
 
@@ -112,6 +114,58 @@ TEST(ModelSummary, BodiesSharingAComponentShareOneModeTableWithStaticModesToldBy
   EXPECT_EQ(mode_origin_joints(run, table, table.modes[1].label), "R1 on B1a, R2 on B1b");
   EXPECT_EQ(mode_origin_joints(run, table, table.modes[0].label), "");
   EXPECT_EQ(mode_table_of(run, "B1b"), &table);
+}
+
+// A nonlinear body (formulation: nonlinear: its nodes stored one by one, no modes; 2 beams over
+// 3 nodes) beside a rigid one: the model line, the bodies table and the mode tables say what it
+// is, not "0 modes".
+TEST(ModelSummary, NonlinearBodyIsDescribedByItsElementsNotByModes) {
+  const auto dir = fresh_directory("nonlinear_body");
+  {
+    results::ResultsWriter writer(dir, "rod", "model_summary_test.cpp");
+    writer.add_rigid_body({"crank", {}, {}});
+    results::FlexibleBodySpec rod;
+    rod.name = "rod";
+    rod.nodes.resize(3, 3);
+    rod.nodes << 0, 0, 0, 0.5, 0, 0, 1, 0, 0;
+    rod.lines.resize(2, 2);
+    rod.lines << 0, 1, 1, 2;
+    rod.mode_translations.resize(9, 0);
+    rod.has_node_displacements = true;
+    rod.component = "rod";
+    writer.add_flexible_body(rod);
+    results::Sample sample;
+    sample.bodies.resize(2);
+    sample.bodies[1].modal_coordinates.resize(0);
+    sample.bodies[1].modal_velocities.resize(0);
+    sample.bodies[1].node_displacements = Eigen::VectorXd::Zero(9);
+    writer.append_sample(sample);
+    writer.finish(results::RunStatus::kOk);
+  }
+  RunData run = read_run_data(dir);
+  ASSERT_EQ(run.results.bodies.size(), 2u);
+  EXPECT_FALSE(is_nonlinear(run.results.bodies[0]));
+  ASSERT_TRUE(is_nonlinear(run.results.bodies[1]));
+  EXPECT_EQ(nonlinear_description(run.results.bodies[1]), "nonlinear, 2 beam elements (3 nodes)");
+  EXPECT_TRUE(run.mode_tables.empty());
+  EXPECT_EQ(mode_table_of(run, "rod"), nullptr);
+
+  ReportContent content;
+  RunSection section;
+  section.run = &run;
+  section.label = "run 1: rod";
+  section.anchor = "run1";
+  content.runs.push_back(section);
+  const std::string summary = summary_section(content);
+  EXPECT_NE(summary.find("1 rigid and 1 flexible (rod: nonlinear, 2 beam elements (3 nodes))"), std::string::npos)
+      << summary;
+  EXPECT_EQ(summary.find("0 modes"), std::string::npos) << summary;
+  const std::string html = report_html(content);
+  EXPECT_NE(html.find("<td>rod</td><td>flexible, nonlinear</td><td class=\"number\">3</td><td class=\"number\">2</td>"
+                      "<td class=\"number\">0</td><td class=\"number\">none (unreduced)</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("No modes: nonlinear, 2 beam elements (3 nodes), integrated unreduced."), std::string::npos);
+  EXPECT_EQ(html.find("0 modes"), std::string::npos);
 }
 
 }  // namespace

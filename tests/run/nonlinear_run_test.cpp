@@ -165,11 +165,14 @@ std::string refusal(const io::Mechanism& built, const io::RunSettings& settings)
   return "";
 }
 
-TEST(NonlinearRun, IdaAndAStaticStartAreRefused) {
+TEST(NonlinearRun, IdaWithDifferencesAndAStaticStartAreRefused) {
   const io::Mechanism built = nonlinear_seed_setup();
   io::RunSettings settings = built.run;
   settings.integrator.method = integrate::Method::kIda;
-  EXPECT_NE(refusal(built, settings).find("nonlinear body \"rod\": expected integrator galpha"), std::string::npos);
+  settings.integrator.ida_newton_matrix = integrate::IdaNewtonMatrix::kDifferences;
+  EXPECT_NE(refusal(built, settings).find("nonlinear body \"rod\": expected 'newton_matrix: structured' with "
+                                          "integrator ida"),
+            std::string::npos);
   settings = built.run;
   settings.start = io::StartKind::kStatics;
   EXPECT_NE(refusal(built, settings).find("expected run start: assembly"), std::string::npos);

@@ -18,7 +18,7 @@ namespace limber::select {
 namespace {
 
 // The coarse slider-crank (20 beams) with 2 normal modes, undamped (the nonlinear body is), no
-// stress output (not recorded for a nonlinear body), 0.15 s: the spin-up and half a turn after.
+// stress output (not what is compared), 0.15 s: the spin-up and half a turn after.
 std::string two_mode_rod_case() {
   std::string text = test::coarse_slider_crank_text();
   const auto replace = [&](const std::string& from, const std::string& to) {

@@ -109,7 +109,7 @@ TEST(SelectCli, BadOptionsAreInputErrors) {
   EXPECT_EQ(target.exit_code, 1);
   EXPECT_NE(target.err.find("expected --target > 0"), std::string::npos) << target.err;
   // --reference: modal or nonlinear; a body the nonlinear reference cannot take is refused at
-  // its entry before any set runs (the shipped rod records stresses).
+  // its entry before any set runs (the shipped rod has modal damping ratios).
   const test::CommandRun reference = run_limber("select " + file + " --reference exact");
   EXPECT_EQ(reference.exit_code, 1);
   EXPECT_NE(reference.err.find("--reference"), std::string::npos) << reference.err;
@@ -117,7 +117,7 @@ TEST(SelectCli, BadOptionsAreInputErrors) {
   const test::CommandRun refused = run_limber("select " + std::string(LIMBER_CASES_DIR) +
                                               "/slider_crank.yaml --reference nonlinear -o " + refused_dir.string());
   EXPECT_EQ(refused.exit_code, 1);
-  EXPECT_NE(refused.err.find("slider_crank.yaml:88:5: --reference nonlinear: body 'rod': expected no 'stress'"),
+  EXPECT_NE(refused.err.find("slider_crank.yaml:88:5: --reference nonlinear: body 'rod': expected 'damping: 0' or"),
             std::string::npos)
       << refused.err;
   EXPECT_FALSE(std::filesystem::exists(refused_dir));
