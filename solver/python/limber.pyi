@@ -151,7 +151,7 @@ def select(
     rank_by: str = "peak",
     norm: str = "event",
     static_modes: str = "attachment",
-    max_single: int = 6,
+    max_single: int | None = None,
     reference_normal: int = 0,
     keep_step: bool = False,
     whole_run: bool = False,

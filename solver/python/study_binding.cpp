@@ -70,7 +70,7 @@ py::object modes(const py::object& case_or_path, std::optional<std::filesystem::
 
 py::object select(const py::object& case_or_path, std::optional<std::filesystem::path> output, double keep,
                   std::optional<double> target, const std::string& rank_by, const std::string& norm,
-                  const std::string& static_modes, int max_single, int reference_normal, bool keep_step,
+                  const std::string& static_modes, std::optional<int> max_single, int reference_normal, bool keep_step,
                   bool whole_run, int max_refinement, int jobs, std::optional<std::string> integrator,
                   std::optional<double> step, std::optional<double> rtol, std::optional<double> t_end,
                   std::optional<py::function> progress, const std::string& reference) {
@@ -140,12 +140,12 @@ computed.)");
 
   module.def("select", &select, py::arg("case_or_path"), py::kw_only(), py::arg("output") = py::none(),
              py::arg("keep") = 0.1, py::arg("target") = py::none(), py::arg("rank_by") = "peak",
-             py::arg("norm") = "event", py::arg("static_modes") = "attachment", py::arg("max_single") = 6,
+             py::arg("norm") = "event", py::arg("static_modes") = "attachment", py::arg("max_single") = py::none(),
              py::arg("reference_normal") = 0, py::arg("keep_step") = false, py::arg("whole_run") = false,
              py::arg("max_refinement") = 8, py::arg("jobs") = 2, py::arg("integrator") = py::none(),
              py::arg("step") = py::none(), py::arg("rtol") = py::none(), py::arg("t_end") = py::none(),
              py::arg("progress") = py::none(), py::arg("reference") = "modal",
-             R"(select(case_or_path, *, output=None, keep=0.1, target=None, rank_by='peak', norm='event', static_modes='attachment', max_single=6, reference_normal=0, keep_step=False, whole_run=False, max_refinement=8, jobs=2, integrator=None, step=None, rtol=None, t_end=None, progress=None, reference='modal') -> dict
+             R"(select(case_or_path, *, output=None, keep=0.1, target=None, rank_by='peak', norm='event', static_modes='attachment', max_single=None, reference_normal=0, keep_step=False, whole_run=False, max_refinement=8, jobs=2, integrator=None, step=None, rtol=None, t_end=None, progress=None, reference='modal') -> dict
 
 Chooses the modes of the flexible bodies by the seed paper's procedure, as `limber select`
 does (docs/select.md), in this process, and returns what its --json prints: 'ranking',
@@ -162,7 +162,8 @@ Arguments (the options of `limber select` of the same names):
   rank_by           'peak' or 'rms' over the run
   norm              error measure for target: 'event' (event peaks), 'peak' or 'rms'
   static_modes      'attachment' (unit loads) or 'constraint' (unit displacements)
-  max_single        at most this many one-component sets (>= 0)
+  max_single        at most this many one-component sets (>= 0); None: 6 with a target
+                    (each can be the answer), 0 without
   reference_normal  normal modes per body in the reference set (0: four times the case's)
   reference         'modal' (the richest modal set) or 'nonlinear' (the case with every
                     flexible body nonlinear: co-rotational FE beams, unreduced; the bodies
