@@ -165,14 +165,9 @@ std::vector<StiffeningLoads> solved_stiffening_loads(const Model& model, const S
 std::vector<StiffeningLoads> accepted_step_stiffening_loads(const Model& model, const State& state,
                                                             const Eigen::VectorXd& v_dot, const std::vector<int>& rows,
                                                             const Eigen::VectorXd& lambda_rows, Workspace& ws) {
-  // The constraint forces Gᵀλ of the rows held, then the least-norm λ over all rows giving them.
-  Eigen::VectorXd constraint_force = Eigen::VectorXd::Zero(model.nv);
-  for (size_t k = 0; k < rows.size(); ++k) {
-    constraint_force += ws.G.row(rows[k]).transpose() * lambda_rows(static_cast<Eigen::Index>(k));
-  }
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(ws.G.transpose());
-  cod.setThreshold(kRedundancyThreshold);
-  const Eigen::VectorXd lambda = cod.solve(constraint_force);
+  // The rows held carry the loads; the rows left out (redundant or released) none.
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(ws.G.rows());
+  for (size_t k = 0; k < rows.size(); ++k) lambda(rows[k]) = lambda_rows(static_cast<Eigen::Index>(k));
   return stiffening_loads(model, state, v_dot, lambda, ws);
 }
 

@@ -57,9 +57,11 @@ std::vector<StiffeningLoads> solved_stiffening_loads(const Model& model, const S
 
 // The loads of an integrator's accepted step: its accelerations v_dot and the multipliers
 // lambda_rows of the rows `rows` of ws.G (the partition's independent rows, redundancy.h),
-// spread over all rows as the λ of least norm with the same constraint forces Gᵀλ (redundant
-// joints share their loads as in estimate_accelerations; a relative cut kRedundancyThreshold
-// on the rank). No solve of the equations of motion: v̇ and λ satisfy them already.
+// the other rows carrying none: the indeterminate part of redundant joints' loads goes where
+// the partition puts it, not spread by least norm as in estimate_accelerations (a least-norm
+// spread of the integrator's Gᵀλ over the raw rows blew up on the seed's set-up, whose
+// deformation makes its redundant row R2.rot_x slightly independent). No solve of the
+// equations of motion: v̇ and λ satisfy them already.
 // Precondition: ws.G and ws.markers evaluated at `state` (velocity stage).
 std::vector<StiffeningLoads> accepted_step_stiffening_loads(const Model& model, const State& state,
                                                             const Eigen::VectorXd& v_dot, const std::vector<int>& rows,
