@@ -84,6 +84,16 @@ class MechanicalSystem {
     if (with_g_q) constraint_jacobian_q(t, q, out.g_q);
   }
 
+  // Called by the integrators at the start (after the consistent initial state) and after
+  // every accepted step, with t, q, v, v̇ and λ (the rows held) there: the stage of state that
+  // lags the solution by one step, taken from what the integrator has solved rather than
+  // solved for again inside each evaluation (multibody's geometric-stiffening loads,
+  // multibody/geometric_stiffening.h). Generalized-α leaves out the steps it keeps from
+  // IntegratorOptions::on_step (their v̇ and λ carry amplified round-off). Discrete state,
+  // hence non-const. Default: nothing lags.
+  virtual void step_accepted(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/,
+                             const Eigen::VectorXd& /*v_dot*/, const Eigen::VectorXd& /*lambda*/) {}
+
   // The diagonal parts k ≈ −∂Q/∂q and c ≈ −∂Q/∂v (nv each) that dominate the force
   // derivatives of a structured iteration matrix (elastic stiffness and damping of modal
   // coordinates); what they leave out (quadratic-velocity forces, force elements) only slows

@@ -312,15 +312,17 @@ struct IdaIntegrator::Impl : GglLayout {
     return false;
   }
 
-  // IntegratorOptions::on_step with the state IDA returned at t (the end of its step, or a
-  // located event): y and y' as IDASolve left them.
+  // MechanicalSystem::step_accepted, then IntegratorOptions::on_step when set, with the state
+  // IDA returned at t (the end of its step, or a located event): y and y' as IDASolve left them.
   void report_step(double t) const {
     const double* y_data = N_VGetArrayPointer(y);
     const double* yp_data = N_VGetArrayPointer(yp);
-    options.on_step(t, Eigen::Map<const Eigen::VectorXd>(y_data, nq),
-                    Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv),
-                    Eigen::Map<const Eigen::VectorXd>(yp_data + iv, nv),
-                    Eigen::Map<const Eigen::VectorXd>(y_data + ilambda, nc));
+    const Eigen::VectorXd q_t = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
+    const Eigen::VectorXd v_t = Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv);
+    const Eigen::VectorXd vdot_t = Eigen::Map<const Eigen::VectorXd>(yp_data + iv, nv);
+    const Eigen::VectorXd lambda_t = Eigen::Map<const Eigen::VectorXd>(y_data + ilambda, nc);
+    system->step_accepted(t, q_t, v_t, vdot_t, lambda_t);
+    if (options.on_step) options.on_step(t, q_t, v_t, vdot_t, lambda_t);
   }
 
   // Event functions of the system at IDA's (t, y), for its root finding.
@@ -414,6 +416,7 @@ Status IdaIntegrator::init(MechanicalSystem& system, const InitialState& x0,
     return status;
   }
   s.step_overs.start(system, x0.t, q);
+  system.step_accepted(x0.t, q, v, vdot, lambda);
 
   // y0 = [q, v, λ, 0, 0], y0' = [N v, v̇, 0, 0, f]; id marks q, v, z differential.
   LIMBER_DEMAND(SUNContext_Create(nullptr, &s.context) == 0);
@@ -541,7 +544,7 @@ Status IdaIntegrator::advance_to(double t_out, Sample& out) {
       s.step_overs.accepted_step();
       const long rejected = stats_.rejected_steps - s.rejected_before;
       s.rejected_before = stats_.rejected_steps;
-      if (s.options.on_step) s.report_step(t_current);
+      s.report_step(t_current);
       if (s.budget.spent() || stats_.steps > s.options.max_steps) {
         s.failed = true;
         s.failure = s.budget.spent()

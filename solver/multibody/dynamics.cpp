@@ -1,7 +1,5 @@
 #include "multibody/dynamics.h"
 
-#include <algorithm>
-
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/nonlinear_body.h"
@@ -189,12 +187,6 @@ void add_body_powers(const Body& body, const State& state, PowerTerms& powers) {
   }
 }
 
-bool has_load_stiffening(const Model& model) {
-  return std::any_of(model.bodies.begin(), model.bodies.end(), [](const Body& body) {
-    return body.kind == BodyKind::kFlexible && body.flexible->stiffening == GeometricStiffening::kFull;
-  });
-}
-
 }  // namespace
 
 void generalized_forces(const Model& model, const State& state, Workspace& ws, PowerTerms* powers) {
@@ -211,8 +203,8 @@ void generalized_forces(const Model& model, const State& state, Workspace& ws, P
 
 PowerTerms power_terms(const Model& model, const State& state, const ReleasedJoints& released, Workspace& ws) {
   PowerTerms powers;
-  // The load-dependent stiffening estimates the accelerations from the bodies' forces too.
-  if (has_load_stiffening(model)) {
+  // The load-dependent stiffening, without lagged loads, solves for them from the bodies' forces too.
+  if (has_load_stiffening(model) && state.stiffening.empty()) {
     generalized_forces(model, state, ws, &powers);
     return powers;
   }

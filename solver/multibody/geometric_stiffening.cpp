@@ -28,50 +28,76 @@ Eigen::Matrix<double, 6, 1> frame_wrench(const Body& body, const FrameKinematics
   return J.colPivHouseholderQr().solve(Q.segment(body.v_offset, body.nv));
 }
 
-// Adds Σ_k F_k K_F,k + T_k K_T,k of a load (force F_B, torque T_B, body axes) at `node`;
-// nodes that are not load nodes carry no load case (the case reader lists every marker's node).
-void add_node_load(const modal::ModalGeometricStiffness& g, int node, const Eigen::Vector3d& F_B,
-                   const Eigen::Vector3d& T_B, Eigen::MatrixXd& K) {
+// The index of `node` among the load nodes, or −1 when it is none (such nodes carry no load
+// case; the case reader lists every marker's node).
+int load_node_index(const modal::ModalGeometricStiffness& g, int node) {
   const auto found = std::find(g.load_nodes.begin(), g.load_nodes.end(), node);
-  if (found == g.load_nodes.end()) return;
-  const size_t j = static_cast<size_t>(found - g.load_nodes.begin());
-  for (int k = 0; k < 3; ++k) K += F_B(k) * g.node_forces[j][k] + T_B(k) * g.node_moments[j][k];
+  return found == g.load_nodes.end() ? -1 : static_cast<int>(found - g.load_nodes.begin());
 }
 
-// K_geo of one body less its centrifugal part, from the estimate and the force elements' loads.
-Eigen::MatrixXd load_stiffness(const Model& model, size_t b, const State& state, const Workspace& ws,
-                               const AccelerationEstimate& estimate, const std::vector<MarkerLoad>& element_loads) {
+// Adds a force F_B and torque T_B (body axes) at the load node of `marker` to `loads`.
+void add_node_load(const modal::ModalGeometricStiffness& g, const Marker& marker, const Eigen::Vector3d& F_B,
+                   const Eigen::Vector3d& T_B, StiffeningLoads& loads) {
+  const int j = load_node_index(g, marker.node);
+  if (j < 0) return;
+  loads.F_B[static_cast<size_t>(j)] += F_B;
+  loads.T_B[static_cast<size_t>(j)] += T_B;
+}
+
+// The loads of one body, from v̇, λ (all rows) and the force elements' loads.
+StiffeningLoads body_loads(const Model& model, size_t b, const State& state, const Workspace& ws,
+                           const Eigen::VectorXd& v_dot, const Eigen::VectorXd& lambda,
+                           const std::vector<MarkerLoad>& element_loads) {
   const Body& body = model.bodies[b];
   const modal::ModalGeometricStiffness& g = body.flexible->geometric;
   const int o = body.v_offset;
   const Eigen::Matrix3d A = rotation_matrix(state.q.segment<4>(body.q_offset + 3));
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(body.flexible->mode_count(), body.flexible->mode_count());
+  StiffeningLoads loads;
+  loads.F_B.assign(g.load_nodes.size(), Eigen::Vector3d::Zero());
+  loads.T_B.assign(g.load_nodes.size(), Eigen::Vector3d::Zero());
   // The frame's angular and translational acceleration, gravity as an acceleration −g.
-  const Eigen::Vector3d alpha_B = estimate.v_dot.segment<3>(o + 3);
-  const Eigen::Vector3d a_B = A.transpose() * (estimate.v_dot.segment<3>(o) - model.gravity_W);
-  for (int k = 0; k < 3; ++k) K += alpha_B(k) * g.angular_acceleration[k] + a_B(k) * g.translational_acceleration[k];
+  loads.alpha_B = v_dot.segment<3>(o + 3);
+  loads.a_B = A.transpose() * (v_dot.segment<3>(o) - model.gravity_W);
   // Joint reactions and driver efforts at the load nodes, body axes.
   for (size_t jn = 0; jn < model.joints.size(); ++jn) {
     const Joint& joint = model.joints[jn];
     for (const int m : {joint.marker_i, joint.marker_j}) {
       const Marker& marker = model.markers[m];
       if (marker.body != static_cast<int>(b) || marker.node < 0) continue;
-      Eigen::VectorXd Q_joint = -ws.G.middleRows(joint.first_row, joint.rows).transpose() *
-                                estimate.lambda.segment(joint.first_row, joint.rows);
+      Eigen::VectorXd Q_joint =
+          -ws.G.middleRows(joint.first_row, joint.rows).transpose() * lambda.segment(joint.first_row, joint.rows);
       for (const Driver& d : model.drivers) {
-        if (d.joint == static_cast<int>(jn)) Q_joint -= ws.G.row(d.row).transpose() * estimate.lambda(d.row);
+        if (d.joint == static_cast<int>(jn)) Q_joint -= ws.G.row(d.row).transpose() * lambda(d.row);
       }
       const Eigen::Matrix<double, 6, 1> w_W = frame_wrench(body, ws.markers[m], Q_joint);
-      add_node_load(g, marker.node, A.transpose() * w_W.head<3>(), A.transpose() * w_W.tail<3>(), K);
+      add_node_load(g, marker, A.transpose() * w_W.head<3>(), A.transpose() * w_W.tail<3>(), loads);
     }
   }
   // Springs, dampers, actuators, point loads and locked hinges at the load nodes.
   for (const MarkerLoad& load : element_loads) {
     const Marker& marker = model.markers[load.marker];
     if (marker.body != static_cast<int>(b) || marker.node < 0) continue;
-    add_node_load(g, marker.node, A.transpose() * load.force_W, A.transpose() * load.torque_W, K);
+    add_node_load(g, marker, A.transpose() * load.force_W, A.transpose() * load.torque_W, loads);
   }
-  return K;
+  return loads;
+}
+
+// (K_geo − centrifugal part) η of one body: Σ_k α_k K_α,k η + a_k K_a,k η + Σ_nodes F_k K_F,k η
+// + T_k K_T,k η, matrix-vector products only.
+Eigen::VectorXd load_stiffness_force(const modal::ModalGeometricStiffness& g, const StiffeningLoads& loads,
+                                     const Eigen::VectorXd& eta) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(eta.size());
+  for (int k = 0; k < 3; ++k) {
+    f.noalias() += loads.alpha_B(k) * (g.angular_acceleration[k] * eta);
+    f.noalias() += loads.a_B(k) * (g.translational_acceleration[k] * eta);
+  }
+  for (size_t j = 0; j < g.load_nodes.size(); ++j) {
+    for (int k = 0; k < 3; ++k) {
+      f.noalias() += loads.F_B[j](k) * (g.node_forces[j][k] * eta);
+      f.noalias() += loads.T_B[j](k) * (g.node_moments[j][k] * eta);
+    }
+  }
+  return f;
 }
 
 }  // namespace
@@ -113,20 +139,50 @@ AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eige
   return out;
 }
 
-void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power) {
-  if (std::none_of(model.bodies.begin(), model.bodies.end(), has_full_stiffening)) return;
+bool has_load_stiffening(const Model& model) {
+  return std::any_of(model.bodies.begin(), model.bodies.end(), has_full_stiffening);
+}
+
+std::vector<StiffeningLoads> stiffening_loads(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
+                                              const Eigen::VectorXd& lambda, Workspace& ws) {
+  std::vector<MarkerLoad> element_loads;
+  force_element_loads(model, state, ws, element_loads);
+  std::vector<StiffeningLoads> loads(model.bodies.size());
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    if (has_full_stiffening(model.bodies[b])) loads[b] = body_loads(model, b, state, ws, v_dot, lambda, element_loads);
+  }
+  return loads;
+}
+
+std::vector<StiffeningLoads> solved_stiffening_loads(const Model& model, const State& state, Workspace& ws) {
   // Accelerations and multipliers at this state, from the forces so far.
   mass_matrix(model, state, ws);
   evaluate_constraints(model, state, Stage::kVelocity, ws);
   const AccelerationEstimate estimate = estimate_accelerations(ws.M, ws.G, ws.Q, ws.gamma);
-  std::vector<MarkerLoad> element_loads;
-  force_element_loads(model, state, ws, element_loads);
+  return stiffening_loads(model, state, estimate.v_dot, estimate.lambda, ws);
+}
+
+std::vector<StiffeningLoads> accepted_step_stiffening_loads(const Model& model, const State& state,
+                                                            const Eigen::VectorXd& v_dot, const std::vector<int>& rows,
+                                                            const Eigen::VectorXd& lambda_rows, Workspace& ws) {
+  // The rows held carry the loads; the rows left out (redundant or released) none.
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(ws.G.rows());
+  for (size_t k = 0; k < rows.size(); ++k) lambda(rows[k]) = lambda_rows(static_cast<Eigen::Index>(k));
+  return stiffening_loads(model, state, v_dot, lambda, ws);
+}
+
+void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power) {
+  if (!has_load_stiffening(model)) return;
+  // The lagged loads, or (a state without them) the loads solved for at the state.
+  const std::vector<StiffeningLoads> solved =
+      state.stiffening.empty() ? solved_stiffening_loads(model, state, ws) : std::vector<StiffeningLoads>{};
+  const std::vector<StiffeningLoads>& loads = state.stiffening.empty() ? solved : state.stiffening;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
     if (!has_full_stiffening(body)) continue;
     const int nm = body.flexible->mode_count();
     const Eigen::VectorXd eta = state.q.segment(body.q_offset + 7, nm);
-    const Eigen::VectorXd force = load_stiffness(model, b, state, ws, estimate, element_loads) * eta;
+    const Eigen::VectorXd force = load_stiffness_force(body.flexible->geometric, loads[b], eta);
     ws.Q.segment(body.v_offset + 6, nm) -= force;
     if (power) *power -= state.v.segment(body.v_offset + 6, nm).dot(force);
   }

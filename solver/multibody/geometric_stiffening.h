@@ -37,14 +37,43 @@ struct AccelerationEstimate {
 AccelerationEstimate estimate_accelerations(const Eigen::MatrixXd& M, const Eigen::MatrixXd& G,
                                             const Eigen::VectorXd& Q, const Eigen::VectorXd& gamma);
 
+// True when some body has GeometricStiffening::kFull (its loads need v̇ and λ).
+bool has_load_stiffening(const Model& model);
+
+// The loads of every body with GeometricStiffening::kFull at `state` (the other bodies'
+// entries stay empty), from the accelerations v_dot (nv) and the multipliers lambda of all
+// rows of ws.G (model.num_equations()): the frame's accelerations, and at the load nodes
+// (markers on nodes listed in geometric.load_nodes) the joints' reactions with the efforts of
+// their drivers (the wrench of −G_kᵀλ_k, as reactions.h) and the force elements' loads
+// (dynamics.h, force_element_loads), as forces and moments.
+// Precondition: ws.G and ws.markers evaluated at `state`. Updates ws.markers (velocity stage).
+std::vector<StiffeningLoads> stiffening_loads(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
+                                              const Eigen::VectorXd& lambda, Workspace& ws);
+
+// The loads solved for at `state` itself: estimate_accelerations from ws.Q as it stands (the
+// forces so far; first order: the load-dependent terms are not in the estimate), then
+// stiffening_loads. Updates ws.M, ws.G, ws.g, ws.g_t, ws.gamma and ws.markers (velocity stage).
+std::vector<StiffeningLoads> solved_stiffening_loads(const Model& model, const State& state, Workspace& ws);
+
+// The loads of an integrator's accepted step: its accelerations v_dot and the multipliers
+// lambda_rows of the rows `rows` of ws.G (the partition's independent rows, redundancy.h),
+// the other rows carrying none: the indeterminate part of redundant joints' loads goes where
+// the partition puts it, not spread by least norm as in estimate_accelerations (a least-norm
+// spread of the integrator's Gᵀλ over the raw rows blew up on the seed's set-up, whose
+// deformation makes its redundant row R2.rot_x slightly independent). No solve of the
+// equations of motion: v̇ and λ satisfy them already.
+// Precondition: ws.G and ws.markers evaluated at `state` (velocity stage).
+std::vector<StiffeningLoads> accepted_step_stiffening_loads(const Model& model, const State& state,
+                                                            const Eigen::VectorXd& v_dot, const std::vector<int>& rows,
+                                                            const Eigen::VectorXd& lambda_rows, Workspace& ws);
+
 // For every flexible body with GeometricStiffening::kFull, adds −(K_geo − centrifugal part) η
-// to ws.Q (the centrifugal part is added with the body's other forces, flexible_dynamics.h):
-// the loads come from estimate_accelerations at `state` with ws.Q as it stands (first order:
-// the load-dependent terms themselves are not in the estimate). Joint forces count at the
-// load nodes only (markers on nodes listed in geometric.load_nodes), with the driver efforts
-// of their joints, and so do the force elements' loads (dynamics.h, force_element_loads), all
-// as forces and moments. Updates ws.M, ws.G, ws.g, ws.g_t, ws.gamma and ws.markers (velocity
-// stage). A no-op (no solve) when no body asks for kFull.
+// to ws.Q (the centrifugal part is added with the body's other forces, flexible_dynamics.h),
+// K_geo scaled by state.stiffening: the loads of the last accepted step, lagging the state by
+// up to one step (an error O(h) in the loads, docs/geometric-stiffening.md). When the state
+// carries none (one-off evaluations: statics, linearisation, reactions, an integrator's
+// consistent start), the loads are solved_stiffening_loads at the state, whose updates of ws
+// then apply. A no-op when no body asks for kFull.
 // When `power` is non-null, also adds the power of these forces, −Σ η̇ᵀ (K_geo − centrifugal) η [W].
 void add_load_geometric_stiffness(const Model& model, const State& state, Workspace& ws, double* power = nullptr);
 

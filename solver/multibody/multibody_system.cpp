@@ -7,6 +7,7 @@
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
+#include "multibody/geometric_stiffening.h"
 #include "multibody/nonlinear_body.h"
 #include "multibody/reactions.h"
 
@@ -333,6 +334,17 @@ void MultibodySystem::apply_event(int k, double t, const Eigen::VectorXd& q, con
   // A latch's seating changes only its damping's share: not a switch a user sees.
   if (mode == kLatchSeated) return;
   events_.push_back(HingeEvent{force, t, angle.theta, angle.rate, mode != kLimitFree});
+}
+
+void MultibodySystem::step_accepted(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                    const Eigen::VectorXd& v_dot, const Eigen::VectorXd& lambda) {
+  if (!has_load_stiffening(model_)) return;
+  state_.t = t;
+  state_.q = q;
+  state_.v = v;
+  // G and the marker kinematics at the step, then the loads from its v̇ and λ (no solve).
+  evaluate_constraints(model_, state_, Stage::kVelocity, released_, workspace_);
+  state_.stiffening = accepted_step_stiffening_loads(model_, state_, v_dot, partition_.independent, lambda, workspace_);
 }
 
 }  // namespace limber::multibody

@@ -104,6 +104,13 @@ class MultibodySystem final : public MechanicalSystem {
   // The releases at events: scheduled, due and done (event_releases.h).
   const EventReleases& event_releases() const { return event_releases_; }
 
+  // The loads of the full geometric stiffening (geometric_stiffening.h) from the step's v̇ and
+  // λ, which the evaluations use until the next accepted step. Nothing without kFull bodies.
+  void step_accepted(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& v_dot,
+                     const Eigen::VectorXd& lambda) override;
+  // Those loads (State::stiffening), per model body; empty before the first accepted step.
+  const std::vector<StiffeningLoads>& stiffening_loads() const { return state_.stiffening; }
+
  private:
   // Evaluates the full constraint set at (t, q[, v]) into workspace_.
   void evaluate(double t, const Eigen::VectorXd& q, const Eigen::VectorXd* v);

@@ -12,6 +12,14 @@
 
 namespace limber::multibody {
 
+// The loads of one flexible body's geometric-stiffness load cases (geometric_stiffening.h),
+// body axes: what scales its unit-load matrices K_α, K_a, K_F and K_T.
+struct StiffeningLoads {
+  Eigen::Vector3d alpha_B = Eigen::Vector3d::Zero();  // frame's angular acceleration [rad/s²]
+  Eigen::Vector3d a_B = Eigen::Vector3d::Zero();      // frame origin's acceleration less gravity [m/s²]
+  std::vector<Eigen::Vector3d> F_B, T_B;              // per load node (geometric.load_nodes) [N, N·m]
+};
+
 struct State {
   double t = 0.0;
   Eigen::VectorXd q;
@@ -19,6 +27,11 @@ struct State {
   // Hybrid modes, one per model force element: a latch locked or a stop in contact
   // (hinge_limit.h). Empty means none engaged. Switched only at located events.
   std::vector<unsigned char> engaged{};
+  // Loads of the full geometric stiffening, one entry per model body (used for bodies with
+  // GeometricStiffening::kFull), as of the last accepted step: lagged state, set by
+  // MultibodySystem::step_accepted. Empty means none: evaluations then solve for them at
+  // the state itself (geometric_stiffening.h).
+  std::vector<StiffeningLoads> stiffening{};
 };
 
 // The builder's initial poses and velocities (not yet consistent with the constraints:

@@ -145,7 +145,7 @@ RunSummary run_mechanism(const multibody::Model& model,
   });
   if (options.max_order == 0 && flexible) options.max_order = 2;
   options.quadrature = energy_quadrature(model, system.partition(), system.engaged(), start.state,
-                                         settings.integrator.rtol, &system.fading_loads());
+                                         settings.integrator.rtol, &system.fading_loads(), &system.stiffening_loads());
   // The system's partition, which it may re-select along the motion (multibody_system.h), and
   // its hinge modes, which the integrator switches at events.
   SampleRecorder recorder(model, system.partition(), system.engaged());

@@ -236,17 +236,17 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
                                         const std::vector<unsigned char>& engaged,
                                         const multibody::State& start, double rtol,
-                                        const std::vector<multibody::FadingLoad>* fading) {
+                                        const std::vector<multibody::FadingLoad>* fading,
+                                        const std::vector<multibody::StiffeningLoads>* stiffening) {
   // The integrand runs inside the integrator: it gets its own workspace.
   auto ws = std::make_shared<multibody::Workspace>(model);
   integrate::Quadrature quadrature;
   quadrature.size = kEnergyIntegrals;
-  quadrature.integrand = [&model, &partition, &engaged, fading, ws](double t, const Eigen::VectorXd& q,
-                                                  const Eigen::VectorXd& v,
-                                                  const Eigen::VectorXd& v_dot,
-                                                  const Eigen::VectorXd& lambda,
-                                                  Eigen::VectorXd& f) {
-    const multibody::State state{t, q, v, engaged};
+  quadrature.integrand = [&model, &partition, &engaged, fading, stiffening, ws](
+                              double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                              const Eigen::VectorXd& v_dot, const Eigen::VectorXd& lambda, Eigen::VectorXd& f) {
+    const multibody::State state{t, q, v, engaged,
+                                 stiffening != nullptr ? *stiffening : std::vector<multibody::StiffeningLoads>{}};
     const multibody::EnergyRates rates = multibody::energy_rates(model, partition, state, v_dot, lambda, *ws);
     // force_work counts the geometric stiffening's modal forces and fading loads too
     // (docs/results-format.md).

@@ -43,12 +43,15 @@ void declare_model(const multibody::Model& model, results::ResultsWriter& writer
 // At a velocity jump of a driver's motion the kinetic energy's change is added to the drivers'
 // work (the impulse's work).
 // The work of the loads that fade after a release over a duration (`fading`, optional:
-// MultibodySystem::fading_loads) counts in force_work. References must outlive the run.
+// MultibodySystem::fading_loads) counts in force_work. The geometric stiffening's work is that
+// of the loads the dynamics use (`stiffening`, optional: MultibodySystem::stiffening_loads, the
+// last accepted step's; without, solved at each instant). References must outlive the run.
 integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const multibody::ConstraintPartition& partition,
                                         const std::vector<unsigned char>& engaged,
                                         const multibody::State& start, double rtol,
-                                        const std::vector<multibody::FadingLoad>* fading = nullptr);
+                                        const std::vector<multibody::FadingLoad>* fading = nullptr,
+                                        const std::vector<multibody::StiffeningLoads>* stiffening = nullptr);
 
 // Turns integrator samples into results samples; one per run (holds a Workspace).
 class SampleRecorder {
