@@ -121,8 +121,9 @@ class MechanicalSystem {
 
   // True when M and the coupled stiffness are sparse and large enough that dense algebra on
   // them dominates a run: evaluate() then fills SystemEvaluation::M_sparse instead of M, and
-  // integrators that can factorise sparse matrices do (generalized-α; IDA refuses such a
-  // system). mass_matrix() stays dense for one-off uses (the consistent start).
+  // generalized-α factorises them sparse; IDA adds them into its dense structured Newton
+  // matrix (its difference-quotient matrix refuses such a system). mass_matrix() stays dense
+  // for one-off uses (the consistent start).
   virtual bool sparse() const { return false; }
 
   // Which rows of a redundant constraint set are independent depends on the configuration:
