@@ -102,10 +102,13 @@ ShockSpectra shock_spectra(const Eigen::VectorXd& time, double band_step, const 
   out.frequency_hz = shock_frequency_grid(settings, band_step);
   out.settings.max_frequency_hz = out.frequency_hz.back();
   const Eigen::Index n = time.size();
-  for (const ProbeHistory& probe : probes) LIMBER_DEMAND(probe.acceleration.rows() == n);
-  for (const ProbeHistory& probe : probes) out.probes.push_back({probe.name, {}});
+  for (const ProbeHistory& probe : probes) {
+    LIMBER_DEMAND(probe.acceleration.rows() == n);
+    out.probes.push_back({probe.name, {}});
+  }
   const double zeta = 1.0 / (2.0 * settings.q);
-  for (const ShockWindow& window : shock_windows(time(0), time(n - 1), latches, settings.window_seconds, out.longest_step)) {
+  const double t_first = time(0), t_last = time(n - 1);
+  for (const ShockWindow& window : shock_windows(t_first, t_last, latches, settings.window_seconds, out.longest_step)) {
     if (!(window.end > window.start)) continue;
     out.windows.push_back(window);
     // All probes and axes at once: the steps' coefficients are shared.

@@ -148,7 +148,9 @@ std::vector<ShockSpectrum> shock_response_spectra(const Eigen::Ref<const Eigen::
   check_record(time, acceleration.rows(), damping_ratio);
   double f_lowest = std::numeric_limits<double>::infinity();
   for (const double f : frequencies_hz) {
-    if (!(f > 0.0) || !std::isfinite(f)) throw InputError(fmt::format("expected SRS natural frequencies > 0, got {:g} Hz", f));
+    if (!(f > 0.0) || !std::isfinite(f)) {
+      throw InputError(fmt::format("expected SRS natural frequencies > 0, got {:g} Hz", f));
+    }
     f_lowest = std::min(f_lowest, f);
   }
   const Eigen::Index n = time.size(), columns = acceleration.cols();

@@ -16,7 +16,8 @@
 //   ds/dθ = M s − (0, x),   M = [[0, 1], [−1, −2ζ]],   y = −(u + 2ζ w),
 // and over a step of length h (Θ = ω h) with x linear from x_a to x_b,
 //   s_b = Φ s_a + Γ_a x_a + Γ_b x_b,   Φ = e^{MΘ},
-//   Γ_b = −(Ψ1 − Ψ2) e₂, Γ_a = −Ψ2 e₂,  Ψ1 = ∫₀^Θ e^{Mσ} dσ,  Ψ2 = (1/Θ) ∫₀^Θ σ e^{Mσ} dσ.
+//   Γ_b = −(Ψ1 − Ψ2) e₂,  Γ_a = −Ψ2 e₂,
+//   Ψ1 = ∫₀^Θ e^{Mσ} dσ,  Ψ2 = (1/Θ) ∫₀^Θ σ e^{Mσ} dσ.
 // On a uniform record this is Smallwood's recursion (the same exact response). A zero-length
 // step (two points at one time: a jump of x, as at a release) leaves the state as it is.
 //

@@ -120,7 +120,8 @@ TEST(ShockSpectrum, MatchesTheClosedFormOfAnUndampedHalfSineOnVariableSteps) {
   ASSERT_NEAR(longest_step(time), 1e-5, 1e-18);
   const double worst = half_sine_worst_error(time);
   RecordProperty("worst_relative_error", std::to_string(worst));
-  std::printf("half-sine SRS, %ld variable steps: worst relative error %.3g\n", static_cast<long>(time.size() - 1), worst);
+  std::printf("half-sine SRS, %ld variable steps: worst relative error %.3g\n", static_cast<long>(time.size() - 1),
+              worst);
 }
 
 // (b) The second method: z̈ + 2ζω ż + ω² z = −x(t), y = −(2ζω ż + ω² z), integrated by
@@ -168,8 +169,11 @@ double rk4_peak(const Eigen::VectorXd& time, const Eigen::VectorXd& x, double f,
 double decaying_sine_worst_error(const Eigen::VectorXd& time) {
   const double zeta = 1.0 / (2.0 * kDefaultSrsQ);
   Eigen::VectorXd x(time.size());
-  for (Eigen::Index k = 0; k < time.size(); ++k) x(k) = 300.0 * std::exp(-time(k) / 0.020) * std::sin(2.0 * kPi * 200.0 * time(k));
-  const std::vector<double> grid = srs_frequency_grid(kDefaultSrsMinFrequencyHz, srs_frequency_limit(longest_step(time)));
+  for (Eigen::Index k = 0; k < time.size(); ++k) {
+    x(k) = 300.0 * std::exp(-time(k) / 0.020) * std::sin(2.0 * kPi * 200.0 * time(k));
+  }
+  const double f_max = srs_frequency_limit(longest_step(time));
+  const std::vector<double> grid = srs_frequency_grid(kDefaultSrsMinFrequencyHz, f_max);
   const ShockSpectrum srs = shock_response_spectrum(time, x, grid, zeta);
   double worst = 0.0;
   for (std::size_t j = 0; j < grid.size(); ++j) {
