@@ -52,8 +52,13 @@ std::vector<AccelerationProbeEntry> read_acceleration_probes(const YamlValue& se
   return probes;
 }
 
+double probe_record_step(const integrate::IntegratorOptions& integrator, double sample_interval) {
+  if (integrator.method == integrate::Method::kGeneralizedAlpha) return integrator.step;
+  return integrator.max_step > 0.0 ? integrator.max_step : sample_interval;
+}
+
 results::ShockSpectrumSettings read_shock_spectrum(const YamlValue* section, const YamlValue& probes,
-                                                   double sample_interval) {
+                                                   double record_step) {
   results::ShockSpectrumSettings settings;
   std::optional<YamlValue> min, max;
   if (section) {
@@ -68,13 +73,13 @@ results::ShockSpectrumSettings read_shock_spectrum(const YamlValue* section, con
       max->fail("expected max_frequency >= min_frequency for 'max_frequency', got '" + max->node().Scalar() + "'");
     }
   }
-  // The band the run's sampling supports.
+  // The band the run's steps support.
   try {
-    results::shock_frequency_grid(settings, sample_interval);
+    results::shock_frequency_grid(settings, record_step);
   } catch (const InputError& e) {
-    const double limit = results::srs_frequency_limit(sample_interval);
+    const double limit = results::srs_frequency_limit(record_step);
     const YamlValue& where = max && settings.max_frequency_hz > limit ? *max : min ? *min : probes;
-    where.fail(e.message());
+    where.fail(e.message() + " (run: `step` for galpha, `max_step` for ida)");
   }
   return settings;
 }

@@ -6,7 +6,7 @@
 //     hinge: {marker: H1.j}                       # a marker's origin (its node on a flexible body)
 //   shock_spectrum:          # optional; the defaults below
 //     min_frequency: 5       # [Hz], lowest natural frequency of the 1/6-octave grid
-//     max_frequency: 1000    # [Hz], default: the band the sampling supports, fs/10
+//     max_frequency: 1000    # [Hz], default: the band the steps support, 1/(10 h_max)
 //     q: 10                  # amplification, ζ = 1/(2Q)
 //     window: 0.3            # [s], length of each event window
 // Every error is an InputError at file:line:col (expected/got); whether the body or marker
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "integrate/integrator_options.h"
 #include "io/yaml_reader.h"
 #include "multibody/model_builder.h"
 #include "results/shock_spectra.h"
@@ -36,10 +37,17 @@ struct AccelerationProbeEntry {
 std::vector<AccelerationProbeEntry> read_acceleration_probes(const YamlValue& section,
                                                              const std::map<std::string, PlacedFlexibleBody>& flexible);
 
-// The shock_spectrum section (nullptr: the defaults), checked against the band that samples
-// `sample_interval` [s] apart support (results/shock_spectra.h): the error sits at the
-// offending frequency, or at `probes` (the acceleration_probes section) for the defaults.
+// The longest step of the probes' record, which the run promises before it starts: the probes
+// are recorded at every integrator step (run_driver.h), so generalized-α's `step` (events and
+// event windows only shorten it), IDA's `max_step`, or, for IDA without one, the sample
+// interval, to which a run with probes caps IDA's step [s].
+double probe_record_step(const integrate::IntegratorOptions& integrator, double sample_interval);
+
+// The shock_spectrum section (nullptr: the defaults), checked against the band that a record
+// with steps of at most `record_step` [s] supports (probe_record_step, results/shock_spectra.h):
+// the error sits at the offending frequency, or at `probes` (the acceleration_probes section)
+// for the defaults.
 results::ShockSpectrumSettings read_shock_spectrum(const YamlValue* section, const YamlValue& probes,
-                                                   double sample_interval);
+                                                   double record_step);
 
 }  // namespace limber::io

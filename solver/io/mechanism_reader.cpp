@@ -402,7 +402,7 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
   }
   if (const auto run = root.find("run")) result.run = read_run_settings(*run);
 
-  // Outputs: acceleration probes and their spectra over the band the sampling supports.
+  // Outputs: acceleration probes and their spectra over the band the run's steps support.
   const auto probes = root.find("acceleration_probes");
   const auto spectrum = root.find("shock_spectrum");
   if (spectrum && !probes) {
@@ -412,7 +412,8 @@ MechanismCase read_mechanism(const YamlValue& root, const std::vector<FlexibleBo
     for (const auto& [name, entry] : probes->entries()) check_name_text("acceleration probe", name, entry.key_where());
     result.acceleration_probes = read_acceleration_probes(*probes, flexible);
     result.run.shock_spectrum =
-        read_shock_spectrum(spectrum ? &*spectrum : nullptr, *probes, result.run.sample_interval);
+        read_shock_spectrum(spectrum ? &*spectrum : nullptr, *probes,
+                            probe_record_step(result.run.integrator, result.run.sample_interval));
   }
   return result;
 }

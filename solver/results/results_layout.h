@@ -242,14 +242,15 @@ inline constexpr const char* kAcceleration = "acceleration";  // float64 [ns, 3]
 }  // namespace acceleration_probe
 
 // /shock_spectra (optional; docs/shock-response-spectrum.md): the probes' maximax SRS per window,
-// written at the end of the run. Attributes q, window_length [s], and min_frequency,
-// max_frequency [Hz] (the grid's ends).
+// written at the end of the run. Attributes q, window_length [s], min_frequency,
+// max_frequency [Hz] (the grid's ends) and longest_step [s] (the record's, which sets the band).
 inline constexpr const char* kShockSpectra = "/shock_spectra";
 namespace shock_spectra {
 inline constexpr const char* kQAttribute = "q";
 inline constexpr const char* kWindowLengthAttribute = "window_length";
 inline constexpr const char* kMinFrequencyAttribute = "min_frequency";
 inline constexpr const char* kMaxFrequencyAttribute = "max_frequency";
+inline constexpr const char* kLongestStepAttribute = "longest_step";
 inline constexpr const char* kFrequency = "frequency";      // float64 [nf], 1/6-octave grid [Hz]
 inline constexpr const char* kWindowName = "window_name";   // string [nw] "whole run" | "start" | "latch <name>[, <name>...]"
 inline constexpr const char* kWindowStart = "window_start";  // float64 [nw] [s]

@@ -57,7 +57,8 @@ bool try_write_shock_spectra(hid_t file, const ShockSpectra& spectra) {
   bool ok = write_double_attribute(g, layout_srs::kQAttribute, s.q) &&
             write_double_attribute(g, layout_srs::kWindowLengthAttribute, s.window_seconds) &&
             write_double_attribute(g, layout_srs::kMinFrequencyAttribute, s.min_frequency_hz) &&
-            write_double_attribute(g, layout_srs::kMaxFrequencyAttribute, s.max_frequency_hz);
+            write_double_attribute(g, layout_srs::kMaxFrequencyAttribute, s.max_frequency_hz) &&
+            write_double_attribute(g, layout_srs::kLongestStepAttribute, spectra.longest_step);
   const hsize_t nf = spectra.frequency_hz.size(), nw = spectra.windows.size();
   std::vector<std::string> names;
   std::vector<double> starts, ends;

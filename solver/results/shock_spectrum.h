@@ -1,5 +1,6 @@
 // The maximax absolute-acceleration shock response spectrum (SRS) of a base acceleration
-// history sampled at a constant interval dt (docs/shock-response-spectrum.md).
+// history recorded at increasing times, uniform or not (an integrator's steps;
+// docs/shock-response-spectrum.md).
 //
 // For each natural frequency f_n the record drives a single-degree-of-freedom oscillator of
 // damping ratio ζ = 1/(2Q) through its base: with x(t) the base acceleration and z the relative
@@ -7,29 +8,35 @@
 // y = −(2ζω ż + ω² z), H(s) = Y/X = (2ζω s + ω²)/(s² + 2ζω s + ω²). The spectrum is
 // max_t |y(t)| (maximax: over the record and after it).
 //
-// The filter is Smallwood's ramp-invariant recursion (D. O. Smallwood, "An improved recursive
+// The filter is the exact response to the record taken linear between its points (the
+// ramp-invariant or first-order-hold discretisation: D. O. Smallwood, "An improved recursive
 // formula for calculating shock response spectra", Shock and Vibration Bulletin 51, 1981; the
-// method of ISO 18431-4:2007): exact when x is linear between samples. Derivation:
-// H(s)/s² = 1/s² − 1/(s² + 2ζω s + ω²), whose sampled impulse response is kT − E^k sin(kb)/ω_d
-// (a = ζωT, b = ω_d T, ω_d = ω √(1 − ζ²), E = e^{−a}, T = dt); the ramp-invariant transform
-// H(z) = (z−1)²/(T z) · Z{that} gives, with S = E sin(b)/b,
-//   y_k = b0 x_k + b1 x_{k−1} + b2 x_{k−2} + a1 y_{k−1} + a2 y_{k−2},
-//   b0 = 1 − S,  b1 = 2 (S − E cos b),  b2 = E² − S,  a1 = 2 E cos b,  a2 = −E²
-// (Smallwood's coefficients; the static gain Σb / (1 − a1 − a2) is exactly 1).
+// method of ISO 18431-4:2007), written as a state update with coefficients per step so that
+// the steps may differ: in θ = ω t and the state s = (u, w) = (ω² z, ω ż),
+//   ds/dθ = M s − (0, x),   M = [[0, 1], [−1, −2ζ]],   y = −(u + 2ζ w),
+// and over a step of length h (Θ = ω h) with x linear from x_a to x_b,
+//   s_b = Φ s_a + Γ_a x_a + Γ_b x_b,   Φ = e^{MΘ},
+//   Γ_b = −(Ψ1 − Ψ2) e₂,  Γ_a = −Ψ2 e₂,
+//   Ψ1 = ∫₀^Θ e^{Mσ} dσ,  Ψ2 = (1/Θ) ∫₀^Θ σ e^{Mσ} dσ.
+// On a uniform record this is Smallwood's recursion (the same exact response). A zero-length
+// step (two points at one time: a jump of x, as at a release) leaves the state as it is.
 //
 // Outside the record the base is taken to continue at the record's end values: before it the
-// oscillator rests in equilibrium with the first sample (y = x_0, so a record that starts at 0
-// starts the oscillator at rest), and after it the input holds the last sample while the filter
-// runs on for the residual response, one period of the lowest natural frequency of the grid
+// oscillator rests in equilibrium with the first point (y = x_0, so a record that starts at 0
+// starts the oscillator at rest), and after it the input holds the last point while the filter
+// runs on for the residual response, one period of the lowest natural frequency asked for
 // (the free vibration's largest peak comes within its first half period).
-// The peak between samples is found by a parabola through the largest |y_k| and its two
-// neighbours: at 10 samples per period that finds a sinusoid's peak within 0.35 % (the largest
-// sample alone can miss it by 4.9 %).
+// Peaks between points: a step longer than a twentieth of the oscillator's period is cut into
+// equal sub-steps (x linear within it, so the response there is still exact), and each local
+// maximum of |y| is refined by the parabola through it and its two neighbours: at 20 points per
+// period that finds a sinusoid's peak within 0.02 % (0.35 % at 10, where the largest point
+// alone can miss it by 4.9 %).
 //
-// Band rule: natural frequencies up to fs/10 (kSamplesPerPeriod samples per period of f_n),
-// where the ramp-invariant filter and the peak parabola hold the SRS within 0.35 % of the
-// exact response to the piecewise-linear record. The record itself must resolve the
-// acceleration it samples (content above fs/2 is aliased: no filter can undo that).
+// Band rule: natural frequencies up to 1/(10 h_max), h_max the record's longest step
+// (kSrsSamplesPerPeriod points per period of f_n). The filter itself is exact at any frequency;
+// the rule is about the record: between its points it is a chord, and an integrator's step
+// resolves a vibration only with several steps per period (generalized-α's period error is
+// (ωh)²/12, 3.3 % at 10 steps per period). Content the record does not resolve is not in it.
 #pragma once
 
 #include <Eigen/Core>
@@ -41,10 +48,14 @@ namespace limber::results {
 inline constexpr double kDefaultSrsMinFrequencyHz = 5.0;  // the usual lower end of spacecraft shock specifications
 inline constexpr double kDefaultSrsQ = 10.0;              // amplification Q = 1/(2ζ), the usual shock value
 inline constexpr int kSrsBandsPerOctave = 6;              // 1/6-octave grid
-inline constexpr double kSrsSamplesPerPeriod = 10.0;      // band rule: f_n ≤ fs / 10
+inline constexpr double kSrsSamplesPerPeriod = 10.0;      // band rule: f_n ≤ 1/(10 h_max)
 
-// The highest natural frequency the band rule allows for samples dt [s] apart: 1/(10 dt) [Hz].
-double srs_frequency_limit(double dt);
+// The highest natural frequency the band rule allows for a record whose longest step is
+// `longest_step` [s]: 1/(10 longest_step) [Hz].
+double srs_frequency_limit(double longest_step);
+
+// The longest positive step of `time` (non-decreasing) [s]; 0 for fewer than 2 distinct times.
+double longest_step(const Eigen::Ref<const Eigen::VectorXd>& time);
 
 // The 1/6-octave grid f_k = f_min 2^{k/6}, k = 0, 1, ... while f_k ≤ f_max (1e-9 relative
 // slack, so a typed f_max on the grid is kept) [Hz]. Throws InputError unless
@@ -56,13 +67,22 @@ struct ShockSpectrum {
   Eigen::VectorXd frequency_hz;  // nf natural frequencies [Hz]
   Eigen::VectorXd maximax;       // nf, max |y| over the record and the residual
   Eigen::VectorXd primary;       // nf, max |y| during the record
-  Eigen::VectorXd residual;      // nf, max |y| after the record (input held at its last sample)
+  Eigen::VectorXd residual;      // nf, max |y| after the record (input held at its last point)
 };
 
-// The SRS of `acceleration` (n ≥ 2 samples, dt [s] apart) at `frequencies_hz` with damping
-// ratio `damping_ratio` (0 ≤ ζ < 1; Q = 10 is ζ = 0.05). Throws InputError when dt ≤ 0, n < 2,
-// ζ is outside [0, 1), or a frequency is not positive or above srs_frequency_limit(dt).
-ShockSpectrum shock_response_spectrum(const Eigen::Ref<const Eigen::VectorXd>& acceleration, double dt,
+// The SRS of each column of `acceleration` (n rows, one per entry of `time` [s], which does
+// not decrease and spans a positive time) at `frequencies_hz` with damping ratio
+// `damping_ratio` (0 ≤ ζ < 1; Q = 10 is ζ = 0.05); the coefficients of each step are shared by
+// the columns. The band rule is the caller's (shock_spectra.h): the filter is exact at any
+// frequency. Throws InputError when the times decrease or span no time, the sizes differ, ζ
+// is outside [0, 1), or a frequency is not positive.
+std::vector<ShockSpectrum> shock_response_spectra(const Eigen::Ref<const Eigen::VectorXd>& time,
+                                                  const Eigen::Ref<const Eigen::MatrixXd>& acceleration,
+                                                  const std::vector<double>& frequencies_hz, double damping_ratio);
+
+// One column: shock_response_spectra(time, acceleration, ...)[0].
+ShockSpectrum shock_response_spectrum(const Eigen::Ref<const Eigen::VectorXd>& time,
+                                      const Eigen::Ref<const Eigen::VectorXd>& acceleration,
                                       const std::vector<double>& frequencies_hz, double damping_ratio);
 
 }  // namespace limber::results

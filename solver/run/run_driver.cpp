@@ -9,10 +9,12 @@
 
 #include "core/error.h"
 #include "integrate/simulate.h"
+#include "io/acceleration_probe_reader.h"
 #include "multibody/clearance.h"
 #include "multibody/linear_range.h"
 #include "multibody/multibody_system.h"
 #include "run/event_peaks.h"
+#include "run/probe_step_record.h"
 #include "run/redundant_row_watch.h"
 #include "run/run_outcome.h"
 #include "run/sample_record.h"
@@ -70,7 +72,8 @@ results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const i
     const auto& limit = std::get<multibody::HingeLimit>(model.forces[static_cast<std::size_t>(event.force)]);
     if (limit.kind == multibody::HingeLimitKind::kLatch && event.engaged) latches.push_back({limit.name, event.t});
   }
-  return results::shock_spectra(time, settings.sample_interval, histories, latches, settings.shock_spectrum);
+  return results::shock_spectra(time, io::probe_record_step(settings.integrator, settings.sample_interval), histories,
+                                latches, settings.shock_spectrum);
 }
 
 RunSummary run_mechanism(const multibody::Model& model,
@@ -79,9 +82,17 @@ RunSummary run_mechanism(const multibody::Model& model,
   const auto wall_start = std::chrono::steady_clock::now();
   check_settings(settings);
   check_nonlinear_bodies(model, settings);
-  // The spectra's band, before anything is written.
+  // The spectra's band against the steps the run promises, before anything is written.
   const bool probes = !model.acceleration_probes.empty();
-  if (probes) results::shock_frequency_grid(settings.shock_spectrum, settings.sample_interval);
+  const double record_step = io::probe_record_step(settings.integrator, settings.sample_interval);
+  if (probes) {
+    const std::vector<double> grid = results::shock_frequency_grid(settings.shock_spectrum, record_step);
+    if (hooks.on_warning) {
+      if (const std::string warning = band_above_modes_warning(model, grid.back()); !warning.empty()) {
+        hooks.on_warning(warning);
+      }
+    }
+  }
   RunSummary summary;
   summary.integrator = integrate::to_string(settings.integrator.method);
   summary.t_end = settings.t_end;
@@ -144,6 +155,8 @@ RunSummary run_mechanism(const multibody::Model& model,
     return body.kind == multibody::BodyKind::kFlexible;
   });
   if (options.max_order == 0 && flexible) options.max_order = 2;
+  // IDA's steps no longer than the probes' record promises (io::probe_record_step).
+  if (probes && options.method == integrate::Method::kIda) options.max_step = record_step;
   options.quadrature = energy_quadrature(model, system.partition(), system.engaged(), start.state,
                                          settings.integrator.rtol, &system.fading_loads(), &system.stiffening_loads());
   // The system's partition, which it may re-select along the motion (multibody_system.h), and
@@ -183,8 +196,15 @@ RunSummary run_mechanism(const multibody::Model& model,
     peaks.emplace(model, system.partition(), system.engaged(), settings.peak_window);
     if (!restart) peaks->open({0.0, "start"});
     if (hooks.on_window && restart_points_supported(model)) restart_points.emplace(system.engaged());
-    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd&,
+  }
+  // The probes' accelerations at every step, for their spectra (probe_step_record.h).
+  std::optional<ProbeStepRecord> probe_record;
+  if (probes) probe_record.emplace(model);
+  if (peaks || probe_record) {
+    options.on_step = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& v_dot,
                           const Eigen::VectorXd& lambda) {
+      if (probe_record) probe_record->observe(t, q, v, v_dot);
+      if (!peaks) return;
       if (restart_points) restart_points->observe(t, q, v, system.events().size());
       for (; events_seen < system.events().size(); ++events_seen) {
         const std::size_t windows = peaks->peaks().windows.size();
@@ -200,9 +220,6 @@ RunSummary run_mechanism(const multibody::Model& model,
   // Re-made at each release: the rank it watches is that of the joints that remain.
   std::optional<SingularPassageMonitor> singular;
   singular.emplace(model, system.nc(), system.partition().row_released);
-  // The probes' accelerations, kept for their spectra.
-  std::vector<double> probe_times;
-  std::vector<std::vector<Eigen::Vector3d>> probe_rows;
   const auto report_singular = [&] {
     summary.singular_passages.push_back(singular->last());
     if (hooks.on_warning) hooks.on_warning(singular->last().message());
@@ -219,10 +236,6 @@ RunSummary run_mechanism(const multibody::Model& model,
     if (singular->add({sample.t, sample.q, sample.v})) report_singular();
     if (hooks.writer) hooks.writer->append_sample(record);
     accuracy.add(record);
-    if (probes) {
-      probe_times.push_back(sample.t);
-      probe_rows.push_back(record.probe_accelerations);
-    }
     summary.t_reached = sample.t;
     summary.max_position_violation =
         std::max(summary.max_position_violation, record.position_violation);
@@ -284,9 +297,9 @@ RunSummary run_mechanism(const multibody::Model& model,
   summary.accuracy = accuracy.estimate(result.statistics, options);
   if (peaks) summary.peaks = peaks->peaks();
   add_model_warnings(summary);
-  // The probes' shock response spectra over the samples written.
-  if (probes && probe_times.size() >= 2) {
-    record_shock_spectra(model, settings, probe_times, probe_rows, summary, hooks.writer);
+  // The probes' shock response spectra over the steps taken.
+  if (probe_record && probe_record->spans_time()) {
+    record_shock_spectra(model, settings, *probe_record, summary, hooks.writer);
   }
   if (hooks.writer) write_run_tables(summary, peaks.has_value(), *hooks.writer);
   if (!result.status.ok()) {

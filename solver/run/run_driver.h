@@ -79,8 +79,8 @@ struct RunSummary {
   // every integrator step (event_peaks.h); empty when not asked for (RunSettings::peak_window
   // 0) or the run did not integrate.
   results::EventPeaks peaks;
-  // The acceleration probes' shock response spectra over the samples written (none without
-  // probes or with fewer than 2 samples); also in results.h5 and DIR/srs_<probe>.csv.
+  // The acceleration probes' shock response spectra over their record at every integrator step
+  // (none without probes or without a step); also in results.h5 and DIR/srs_<probe>.csv.
   std::optional<results::ShockSpectra> shock_spectra;
 
   // Reached t_end and its accuracy estimate holds.
@@ -116,7 +116,7 @@ void check_settings(const io::RunSettings& settings);
 // does not offer yet: IDA, or a start from static equilibrium.
 void check_nonlinear_bodies(const multibody::Model& model, const io::RunSettings& settings);
 
-// The spectra of the probes' accelerations `histories` (one row per sample at `time`) over the
+// The spectra of the probes' accelerations `histories` (one row per point at `time`) over the
 // whole run and the windows from t = 0 and from each latch that locked (results/shock_spectra.h).
 results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
                                           const Eigen::VectorXd& time,
@@ -124,7 +124,7 @@ results::ShockSpectra probe_shock_spectra(const multibody::Model& model, const i
                                           const std::vector<multibody::HingeEvent>& events);
 
 // Runs `model` from t = 0 to settings.t_end. Throws InputError on bad settings (a shock-spectrum
-// band the sample interval does not support included) or held coordinates (before writing any
+// band the run's steps do not support included, io::probe_record_step) or held coordinates (before writing any
 // sample).
 // With `restart` (a state of an earlier run of the same model, window_restart.h) the run starts
 // there instead, in its discrete state, with samples every settings.sample_interval from its

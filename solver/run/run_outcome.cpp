@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "results/shock_spectra_file.h"
 
 namespace limber::run {
@@ -55,25 +59,33 @@ void add_model_warnings(RunSummary& summary) {
 }
 
 void record_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
-                          const std::vector<double>& probe_times,
-                          const std::vector<std::vector<Eigen::Vector3d>>& probe_rows, RunSummary& summary,
-                          results::ResultsWriter* writer) {
-  const auto ns = static_cast<Eigen::Index>(probe_times.size());
-  std::vector<results::ProbeHistory> histories;
-  for (std::size_t p = 0; p < model.acceleration_probes.size(); ++p) {
-    results::ProbeHistory history{model.acceleration_probes[p].name, {}};
-    history.acceleration.resize(ns, 3);
-    for (Eigen::Index k = 0; k < ns; ++k) history.acceleration.row(k) = probe_rows[static_cast<std::size_t>(k)][p].transpose();
-    histories.push_back(std::move(history));
-  }
-  summary.shock_spectra = probe_shock_spectra(
-      model, settings, Eigen::Map<const Eigen::VectorXd>(probe_times.data(), ns), histories, summary.events);
+                          const ProbeStepRecord& record, RunSummary& summary, results::ResultsWriter* writer) {
+  summary.shock_spectra = probe_shock_spectra(model, settings, record.time(), record.histories(), summary.events);
   if (!writer) return;
   writer->set_shock_spectra(*summary.shock_spectra);
   // Beside results.h5; an in-memory file has no folder, and the spectra stay in the file.
   if (!writer->path().empty()) {
     results::write_shock_spectra_csv(writer->path().parent_path(), *summary.shock_spectra);
   }
+}
+
+std::string band_above_modes_warning(const multibody::Model& model, double max_frequency_hz) {
+  double highest = 0.0;  // [Hz]
+  std::string body;
+  for (const multibody::Body& b : model.bodies) {
+    if (b.kind != multibody::BodyKind::kFlexible || b.flexible->stiffness.size() == 0) continue;
+    const double f = std::sqrt(std::max(0.0, b.flexible->stiffness.maxCoeff())) / (2.0 * std::numbers::pi);
+    if (f > highest) {
+      highest = f;
+      body = b.name;
+    }
+  }
+  if (highest == 0.0 || max_frequency_hz <= highest) return {};
+  return fmt::format(
+      "the shock spectra's band reaches {:.4g} Hz, above the highest mode the model retains ({:.4g} Hz, body {}): "
+      "there the spectra follow the record's peak acceleration, and a structure's own response above its "
+      "highest mode is not in the model (retain modes up to the band, or lower shock_spectrum.max_frequency)",
+      max_frequency_hz, highest, body);
 }
 
 void write_run_tables(const RunSummary& summary, bool with_peaks, results::ResultsWriter& writer) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "run/probe_step_record.h"
 #include "run/run_driver.h"
 
 namespace limber::run {
@@ -29,13 +30,15 @@ void warn_velocity_jumps(const multibody::Model& model, double t_end,
 // range, a change of branch at a singular passage (summary.accuracy.warnings).
 void add_model_warnings(RunSummary& summary);
 
-// The probes' shock response spectra from their sampled accelerations (probe_rows[k][p]: probe
-// p at probe_times[k], at least two samples), into the summary, results.h5 and the CSV files
-// beside it (none for an in-memory file).
+// The probes' shock response spectra from their record at the integrator's steps (spanning a
+// positive time), into the summary, results.h5 and the CSV files beside it (none for an
+// in-memory file).
 void record_shock_spectra(const multibody::Model& model, const io::RunSettings& settings,
-                          const std::vector<double>& probe_times,
-                          const std::vector<std::vector<Eigen::Vector3d>>& probe_rows, RunSummary& summary,
-                          results::ResultsWriter* writer);
+                          const ProbeStepRecord& record, RunSummary& summary, results::ResultsWriter* writer);
+
+// A warning when the spectra's band (its top `max_frequency_hz`) reaches above the highest
+// mode the model's flexible bodies retain, naming it; empty otherwise (or without modes).
+std::string band_above_modes_warning(const multibody::Model& model, double max_frequency_hz);
 
 // The run's accuracy, singular passages and (when tracked) event peaks into results.h5.
 void write_run_tables(const RunSummary& summary, bool with_peaks, results::ResultsWriter& writer);

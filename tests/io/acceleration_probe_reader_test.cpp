@@ -65,7 +65,7 @@ TEST(AccelerationProbeReader, ProbesAndSettingsLandInTheModel) {
   EXPECT_TRUE(model.acceleration_probes[3].p_B.isApprox(Eigen::Vector3d(0.1, 0.2, 0.3)));
   const results::ShockSpectrumSettings& srs = built.run.shock_spectrum;
   EXPECT_EQ(srs.min_frequency_hz, 10.0);
-  EXPECT_EQ(srs.max_frequency_hz, 0.0);  // the band limit, fs/10
+  EXPECT_EQ(srs.max_frequency_hz, 0.0);  // the band limit, 1/(10 h)
   EXPECT_EQ(srs.q, 20.0);
   EXPECT_EQ(srs.window_seconds, 0.5);
 }
@@ -87,14 +87,19 @@ TEST(AccelerationProbeReader, BadInputNamesFileLineAndWhatWasExpected) {
   EXPECT_TRUE(fails_at(text, location_of(text, "[0, 0, 0]}"), "expected 'node' for acceleration probe 'middle'"));
   text = edited("{marker: end}", "{marker: end, body: arm}");
   EXPECT_TRUE(fails_at(text, location_of(text, "{marker: end, body"), "expected either 'marker' or 'body'"));
-  // Spectra without probes; a band the sampling does not support (fs/10 = 1 kHz here).
+  // Spectra without probes; a band the steps do not support (IDA without max_step: the sample
+  // interval, 1/(10 h) = 1 kHz here).
   text = edited("acceleration_probes:", "unused_probes:");
   text = text.substr(0, text.find("unused_probes:")) + text.substr(text.find("shock_spectrum:"));
   EXPECT_TRUE(fails_at(text, location_of(text, "{min_frequency"), "expected 'acceleration_probes'"));
   text = edited("q: 20,", "q: 20, max_frequency: 5000,");
   EXPECT_TRUE(fails_at(text, location_of(text, "5000"), "at most 1000 Hz"));
-  text = edited("sample_interval: 1e-4", "sample_interval: 0.05");  // fs/10 = 2 Hz < 10 Hz
+  text = edited("sample_interval: 1e-4", "sample_interval: 0.05");  // 1/(10 h) = 2 Hz < 10 Hz
   EXPECT_TRUE(fails_at(text, location_of(text, "10, q"), "SRS minimum frequency of at most 2 Hz"));
+  // Generalized-α records at its step: 1 ms supports 100 Hz, whatever the samples.
+  text = edited("q: 20,", "q: 20, max_frequency: 500,");
+  text = text.replace(text.find("run: {"), 6, "run: {integrator: galpha, step: 1e-3, ");
+  EXPECT_TRUE(fails_at(text, location_of(text, "500"), "at most 100 Hz"));
   text = edited("{min_frequency: 10,", "{min_frequency: 10, max_frequency: 8,");
   EXPECT_TRUE(fails_at(text, location_of(text, "8,"), "expected max_frequency >= min_frequency"));
 }

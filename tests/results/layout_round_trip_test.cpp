@@ -255,7 +255,8 @@ TEST(ResultsLayout, EveryPathOfTheLayoutReadsBackThroughTheSharedReader) {
       {probe, {kNameAttribute, L::acceleration_probe::kBodyAttribute, L::acceleration_probe::kNodeAttribute,
                L::acceleration_probe::kPointAttribute}},
       {L::kShockSpectra, {L::shock_spectra::kQAttribute, L::shock_spectra::kWindowLengthAttribute,
-                          L::shock_spectra::kMinFrequencyAttribute, L::shock_spectra::kMaxFrequencyAttribute}},
+                          L::shock_spectra::kMinFrequencyAttribute, L::shock_spectra::kMaxFrequencyAttribute,
+                          L::shock_spectra::kLongestStepAttribute}},
       {srs_probe, {kNameAttribute}},
   };
 

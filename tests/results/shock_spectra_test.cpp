@@ -63,7 +63,7 @@ ShockSpectra constant_and_pulse(const ShockSpectrumSettings& settings) {
 
 TEST(ShockSpectra, PerWindowAndAxis) {
   const ShockSpectra spectra = constant_and_pulse({});
-  // Default grid: 5 Hz to fs/10 = 1 kHz in 1/6 octaves: 5 · 2^(k/6) ≤ 1000, k ≤ 45.86.
+  // Default grid: 5 Hz to 1/(10 h) = 1 kHz in 1/6 octaves: 5 · 2^(k/6) ≤ 1000, k ≤ 45.86.
   ASSERT_EQ(spectra.frequency_hz.size(), 46u);
   EXPECT_NEAR(spectra.settings.max_frequency_hz, 5.0 * std::exp2(45.0 / 6.0), 1e-9);
   ASSERT_EQ(spectra.windows.size(), 3u);  // whole run, start, latch L1
@@ -84,7 +84,7 @@ TEST(ShockSpectra, PerWindowAndAxis) {
 
 TEST(ShockSpectra, RefusesFrequenciesAboveTheBandTheSamplingSupports) {
   ShockSpectrumSettings settings;
-  settings.max_frequency_hz = 2000.0;  // fs/10 = 1 kHz at 10 kHz
+  settings.max_frequency_hz = 2000.0;  // 1/(10 h) = 1 kHz at steps of 0.1 ms
   try {
     constant_and_pulse(settings);
     FAIL() << "expected an InputError";

@@ -122,7 +122,9 @@ TEST(AccelerationProbeRun, DeployingWingSpectraHaveLatchWindowsAndFiles) {
                            "shock_spectrum: {window: 0.2}\n";
   const io::Mechanism built = build(text, "deployment_one_wing.yaml");
   io::RunSettings settings = built.run;
-  settings.sample_interval = 5e-4;  // fs/10 = 200 Hz
+  // Recorded at every step of 0.5 ms: the band reaches 1/(10 h) = 200 Hz (the samples, every
+  // 2 ms, would have supported 50 Hz).
+  settings.integrator.step = 5e-4;
   const auto dir = test::fresh_directory("acceleration_probes");
   RunSummary summary;
   {
@@ -148,6 +150,9 @@ TEST(AccelerationProbeRun, DeployingWingSpectraHaveLatchWindowsAndFiles) {
     EXPECT_NEAR(spectra.windows[w].end, std::min(latch_times[w - 2] + 0.2, next), 1e-12);
   }
   EXPECT_NEAR(spectra.frequency_hz.back(), 5.0 * std::exp2(std::floor(6.0 * std::log2(200.0 / 5.0)) / 6.0), 1e-9);
+  // The record's longest step is the step (events only cut it).
+  EXPECT_LE(spectra.longest_step, 5e-4 * (1.0 + 1e-9));
+  EXPECT_GT(spectra.longest_step, 5e-4 * (1.0 - 1e-9));
   // The files.
   const hid_t file = H5Fopen((dir / results::kResultsFileName).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
