@@ -115,7 +115,11 @@ void FeModelBuilder::add_beam(const BeamElement& element, const SourceLocation& 
   const Eigen::Vector3d axis =
       model_.node_positions[element.nodes[1]] - model_.node_positions[element.nodes[0]];
   const double length = axis.norm();
-  if (!(length > 0.0 && std::isnormal(length * length * length))) {
+  if (!(length > 0.0 && std::isfinite(length))) {
+    throw InputError(
+        fmt::format("beam {}-{}: expected a positive finite length, got {}", id0, id1, length), where);
+  }
+  if (!std::isnormal(length * length * length)) {
     throw InputError(fmt::format("beam {}-{}: expected a length whose cube is a normal number, "
                                  "about 1e-102 to 1e102 m, got {}",
                                  id0, id1, length),
