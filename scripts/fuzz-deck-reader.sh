@@ -18,6 +18,10 @@ out=${LIMBER_FUZZ_OUT:-$root/out/fuzz-deck}
 jobs=${LIMBER_FUZZ_JOBS:-1}
 
 "$root/scripts/install-fuzz-deps.sh"
+# The build is RelWithDebInfo (-g): ccache then hashes the build folder unless told not to, and a
+# second checkout's clang build (148 sanitized objects, slow cold: docs/fuzzing.md) never hits
+# the first's entries. Without the folder in the hash, checkouts under ccache's base_dir share them.
+export CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-true}
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DLIMBER_FUZZ=ON -DLIMBER_BUILD_TESTS=OFF -DLIMBER_BUILD_BENCHMARKS=OFF

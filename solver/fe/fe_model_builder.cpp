@@ -107,7 +107,9 @@ void FeModelBuilder::add_beam(const BeamElement& element, const SourceLocation& 
                      where);
   }
 
-  // Non-zero, finite length (nodes 1e200 m apart overflow it).
+  // A length whose cube is a normal number: the element matrices hold L³ (12 EI / L³). Nodes
+  // 1e200 m apart overflow the length itself; 2e131 m apart, a deck's beam reached the
+  // eigen-solver with non-finite stiffness and LAPACK printed "illegal value" (issue 31).
   const int id0 = model_.node_ids[element.nodes[0]];
   const int id1 = model_.node_ids[element.nodes[1]];
   const Eigen::Vector3d axis =
@@ -116,6 +118,12 @@ void FeModelBuilder::add_beam(const BeamElement& element, const SourceLocation& 
   if (!(length > 0.0 && std::isfinite(length))) {
     throw InputError(
         fmt::format("beam {}-{}: expected a positive finite length, got {}", id0, id1, length), where);
+  }
+  if (!std::isnormal(length * length * length)) {
+    throw InputError(fmt::format("beam {}-{}: expected a length whose cube is a normal number, "
+                                 "about 1e-102 to 1e102 m, got {}",
+                                 id0, id1, length),
+                     where);
   }
 
   // Orientation not parallel to the axis (same test as beam_local_axes).

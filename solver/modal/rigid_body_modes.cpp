@@ -16,6 +16,8 @@ namespace {
 // moves the farthest node by at most about 1), so that rank decisions hold at any model size.
 Eigen::MatrixXd dimensionless_rows(const Eigen::MatrixXd& psi, double length) {
   Eigen::MatrixXd scaled = psi;
+  // No column (every rigid motion held): a block of an empty matrix offsets a null pointer.
+  if (scaled.cols() == 0) return scaled;
   for (Eigen::Index row = 0; row < scaled.rows(); row += fe::kDofsPerNode) {
     scaled.middleRows(row, 3) /= length;
   }

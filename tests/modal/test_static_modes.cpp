@@ -305,5 +305,29 @@ TEST(DeterminateSupport, ExistsForEveryHeldSetAtEverySize) {
   expect_the_same_at_every_size({{0, 0, 0}, {1, 0.1, 0}, {1.2, 0.9, 0.05}, {-0.1, 1, 0}}, patch_sets);
 }
 
+// A node held in all six DOFs leaves no rigid motion: the result has Psi's rows and no column.
+// (The deck fuzzer's seed cantilever_free.bdf, clamped so by SPC1 123456, once took this path
+// to a block of the empty matrix, a null pointer plus an offset that UndefinedBehaviorSanitizer
+// reports: issue 31's deck campaign, docs/fuzzing.md. Only the sanitizer build sees that
+// fault; here the shape and the partial holds' closed forms are checked.) Held translations only
+// leave the three rotations about the held node: each column vanishes at the held DOFs and is
+// a rigid motion, orthogonal to the translations at that node.
+TEST(RigidMotion, NodeHeldInAllSixDofsLeavesNone) {
+  const Eigen::MatrixXd psi = rigid_body_modes({{0, 0, 0}, {1.5, 0.2, -0.1}, {3, 0.4, -0.2}});
+  const std::vector<int> clamped = {0, 1, 2, 3, 4, 5};
+  const Eigen::MatrixXd none = unrestrained_rigid_motion(psi, clamped);
+  EXPECT_EQ(none.rows(), psi.rows());
+  EXPECT_EQ(none.cols(), 0);
+
+  const Eigen::MatrixXd rotations = unrestrained_rigid_motion(psi, {0, 1, 2});
+  ASSERT_EQ(rotations.cols(), 3);
+  // Zero at the held DOFs and in Psi's span, to round-off of unit-scale orthonormal bases.
+  EXPECT_LT(rotations.topRows(3).cwiseAbs().maxCoeff(), 1e-12);
+  const Eigen::MatrixXd in_span = psi * psi.colPivHouseholderQr().solve(rotations);
+  EXPECT_LT((in_span - rotations).cwiseAbs().maxCoeff(), 1e-12);
+  // Rank 3: they rotate the node's rotational DOFs independently.
+  EXPECT_EQ(Eigen::FullPivLU<Eigen::MatrixXd>(rotations.middleRows(3, 3)).rank(), 3);
+}
+
 }  // namespace
 }  // namespace limber::modal
