@@ -15,6 +15,7 @@
 
 #include <Eigen/Geometry>
 
+#include "arm_and_bar_case.h"
 #include "falling_bar.h"
 #include "core/error.h"
 #include "io/case_reader.h"
@@ -34,28 +35,6 @@ constexpr double kStiffness = 4.0, kFreeAngle = 0.5, kLatchAngle = 0.3;
 double latch_time() {
   const double omega = std::sqrt(kStiffness / (kMass * kLength * kLength / 3.0));
   return std::acos(1.0 - kLatchAngle / kFreeAngle) / omega;
-}
-
-// Arm (hinge RA about ground z at y = 2) with spring and latch `lock`; bar (hinge R about ground
-// y at the origin) held at its tip by HD with `release`; gravity along −z; run settings `run`.
-std::string case_text(const std::string& release, const std::string& run) {
-  return "title: a hold-down released at a latch-up\n"
-         "gravity: [0, 0, -9.81]\n"
-         "bodies:\n"
-         "  arm: {mass: 2.0, inertia: [1.0e-6, 0.16666666666666666, 0.16666666666666666],\n"
-         "        center_of_mass: [0.5, 0, 0], position: [0, 2, 0]}\n"
-         "  bar: {mass: 2.0, inertia: [1.0e-6, 0.16666666666666666, 0.16666666666666666],\n"
-         "        center_of_mass: [0.5, 0, 0], position: [0, 0, 0]}\n"
-         "joints:\n"
-         "  RA: {type: revolute, body_i: ground, body_j: arm, position: [0, 2, 0],\n"
-         "       orientation: {z_axis: [0, 0, 1], x_axis: [1, 0, 0]}}\n"
-         "  R: {type: revolute, body_i: ground, body_j: bar, position: [0, 0, 0],\n"
-         "      orientation: {z_axis: [0, 1, 0], x_axis: [1, 0, 0]}}\n"
-         "  HD: {type: spherical, body_i: ground, body_j: bar, position: [1, 0, 0], release: " + release + "}\n"
-         "forces:\n"
-         "  spring: {type: rsda, marker_i: RA.i, marker_j: RA.j, stiffness: 4.0, free_angle: 0.5}\n"
-         "  lock: {type: latch, joint: RA, angle: 0.3, stiffness: 5.0e3, damping: 5.0}\n"
-         "run: {" + run + "}\n";
 }
 
 struct Recorded {
@@ -106,7 +85,7 @@ TEST(EventRelease, HoldDownLetsGoAtTheLatchUpPlusItsDelay) {
     for (const double delay : {0.0, 0.1}) {
       SCOPED_TRACE(variant.run + ", delay " + std::to_string(delay));
       const Recorded r = run_text("event_release",
-                                  case_text("{after: lock, delay: " + std::to_string(delay) + "}", variant.run));
+                                  test::arm_and_bar_case("{after: lock, delay: " + std::to_string(delay) + "}", variant.run));
       ASSERT_TRUE(r.summary.ok) << r.summary.message;
       EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
       ASSERT_EQ(r.summary.events.size(), 1u);
@@ -150,7 +129,7 @@ TEST(EventRelease, ResultsFileHoldsTheReleaseTime) {
   {
     results::ResultsWriter writer(dir, "event release", "case.yaml");
     r = run_text("event_release_file",
-                 case_text("{after: lock, delay: 0.1}",
+                 test::arm_and_bar_case("{after: lock, delay: 0.1}",
                            "integrator: galpha, step: 1.0e-4, t_end: 0.7, sample_interval: 0.01"),
                  &writer);
   }
@@ -173,7 +152,7 @@ TEST(EventRelease, ResultsFileHoldsTheReleaseTime) {
 TEST(EventRelease, AnEventThatNeverComesIsReported) {
   const Recorded never = run_text(
       "event_release_never",
-      case_text("{after: lock}", "integrator: galpha, step: 1.0e-4, t_end: 0.3, sample_interval: 0.01"));
+      test::arm_and_bar_case("{after: lock}", "integrator: galpha, step: 1.0e-4, t_end: 0.3, sample_interval: 0.01"));
   ASSERT_TRUE(never.summary.ok) << never.summary.message;
   EXPECT_TRUE(never.summary.releases.empty());
   ASSERT_EQ(never.warnings.size(), 1u);
@@ -183,7 +162,7 @@ TEST(EventRelease, AnEventThatNeverComesIsReported) {
   for (const double z : never.hold_down_z) EXPECT_NEAR(z, 0.5 * kMass * kGravity, 1e-6);
   const Recorded late = run_text(
       "event_release_late",
-      case_text("{after: lock, delay: 1.0}", "integrator: galpha, step: 1.0e-4, t_end: 0.6, sample_interval: 0.01"));
+      test::arm_and_bar_case("{after: lock, delay: 1.0}", "integrator: galpha, step: 1.0e-4, t_end: 0.6, sample_interval: 0.01"));
   ASSERT_TRUE(late.summary.ok) << late.summary.message;
   ASSERT_EQ(late.warnings.size(), 1u);
   EXPECT_NE(late.warnings[0].find("after the run's end"), std::string::npos) << late.warnings[0];
@@ -193,7 +172,7 @@ TEST(EventRelease, AnEventThatNeverComesIsReported) {
 // delay, an unknown key: located input errors (HD is on line 13).
 TEST(EventRelease, BadReleasesAtEventsAreLocatedErrors) {
   const auto message_of = [](const std::string& name, const std::string& release) {
-    const std::string path = test::write_case(name, case_text(release, "t_end: 0.1"));
+    const std::string path = test::write_case(name, test::arm_and_bar_case(release, "t_end: 0.1"));
     try {
       const io::Case input = io::read_case_file(path);
       io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));

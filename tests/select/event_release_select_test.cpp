@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "arm_and_bar_case.h"
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
@@ -28,24 +29,8 @@ const io::Mechanism& arm_and_bar() {
   static const io::Mechanism built = [] {
     const std::string path = test::write_case(
         "select_event_release",
-        "title: a hold-down released after a latch-up\n"
-        "gravity: [0, 0, -9.81]\n"
-        "bodies:\n"
-        "  arm: {mass: 2.0, inertia: [1.0e-6, 0.16666666666666666, 0.16666666666666666],\n"
-        "        center_of_mass: [0.5, 0, 0], position: [0, 2, 0]}\n"
-        "  bar: {mass: 2.0, inertia: [1.0e-6, 0.16666666666666666, 0.16666666666666666],\n"
-        "        center_of_mass: [0.5, 0, 0], position: [0, 0, 0]}\n"
-        "joints:\n"
-        "  RA: {type: revolute, body_i: ground, body_j: arm, position: [0, 2, 0],\n"
-        "       orientation: {z_axis: [0, 0, 1], x_axis: [1, 0, 0]}}\n"
-        "  R: {type: revolute, body_i: ground, body_j: bar, position: [0, 0, 0],\n"
-        "      orientation: {z_axis: [0, 1, 0], x_axis: [1, 0, 0]}}\n"
-        "  HD: {type: spherical, body_i: ground, body_j: bar, position: [1, 0, 0],\n"
-        "       release: {after: lock, delay: 0.1}}\n"
-        "forces:\n"
-        "  spring: {type: rsda, marker_i: RA.i, marker_j: RA.j, stiffness: 4.0, free_angle: 0.5}\n"
-        "  lock: {type: latch, joint: RA, angle: 0.3, stiffness: 5.0e3, damping: 5.0}\n"
-        "run: {integrator: galpha, step: 1.0e-3, t_end: 0.9, sample_interval: 0.01}\n");
+        test::arm_and_bar_case("{after: lock, delay: 0.1}",
+                               "integrator: galpha, step: 1.0e-3, t_end: 0.9, sample_interval: 0.01"));
     const io::Case input = io::read_case_file(path);
     return io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   }();
