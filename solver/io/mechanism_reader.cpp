@@ -138,7 +138,10 @@ JointType read_joint_type(const YamlValue& value) {
 JointEntry read_joint(const std::string& name, const YamlValue& entry, const FlexibleBodies& flexible) {
   entry.allow_only({"type", "marker_i", "marker_j", "body_i", "body_j", "position", "orientation",
                     "orientation_j", "release", "release_duration"});
-  JointEntry joint{name, read_joint_type(entry.at("type")), "", "", {}, entry.where(), {}, {}};
+  JointEntry joint;
+  joint.name = name;
+  joint.type = read_joint_type(entry.at("type"));
+  joint.where = entry.where();
   if (const auto release = entry.find("release")) {
     joint.release_where = release->where();
     if (release->is_map()) {
