@@ -25,36 +25,15 @@
 #include "multibody/rotation.h"
 #include "multibody/state.h"
 #include "nonlinear_beam/beam_inertia.h"
+#include "nonlinear_beam_case.h"
 #include "run/run_driver.h"
 
 namespace limber::run {
 namespace {
 
-// A 1 m steel beam (10 x 20 mm, 20 elements, first bending 8.3 Hz about its weak axis, ground
-// y) as a nonlinear body; DAMPING and the rest of the body's entry are filled in per test.
-const std::string kBeam = R"(title: damped nonlinear beam
-materials:
-  steel: {E: 206.8e9, nu: 0.3, rho: 7820}
-sections:
-  bar: {shape: rectangle, width: 0.01, height: 0.02}
-flexible_bodies:
-  beam:
-    beams:
-      - {from: [0, 0, 0], to: [1, 0, 0], elements: 20, section: bar, material: steel,
-         orientation: [0, 1, 0], first_node_id: 1}
-    node_sets: {root: [1], tip: [21]}
-    modes: {normal: 3}
-bodies:
-  beam:
-    flexible: beam
-    formulation: nonlinear
-    damping: DAMPING
-)";
-
+// The beam of nonlinear_beam_case.h with `damping`, then `rest`.
 std::string beam_case(const std::string& damping, const std::string& rest) {
-  std::string text = kBeam;
-  text.replace(text.find("DAMPING"), 7, damping);
-  return text + rest;
+  return test::nonlinear_beam_case(damping, "", rest);
 }
 
 // The cantilever: clamped to ground at node 1, released under gravity along −y (its weak axis;
@@ -138,7 +117,7 @@ FirstMode cantilever_first_mode(const fe::FeModel& model) {
   return {std::sqrt(solver.eigenvalues()(0)), 1.0 - projected / phi.dot(Mphi)};
 }
 
-// The free beam of kBeam with `damping` (no joints, no gravity), built.
+// The free beam of beam_case with `damping` (no joints, no gravity), built.
 multibody::Model free_beam(const std::string& damping) {
   const io::Case input = io::read_case_text(beam_case(damping, ""), "damped_beam.yaml");
   return io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies)).model;

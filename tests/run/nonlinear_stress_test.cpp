@@ -30,6 +30,7 @@
 #include "results/results_writer.h"
 #include "results/stress_reader.h"
 #include "run/run_driver.h"
+#include "nonlinear_beam_case.h"
 #include "run_test_support.h"
 
 namespace limber::run {
@@ -42,30 +43,16 @@ constexpr double kArea = kWidth * kHeight;
 constexpr double kInertia = kHeight * kWidth * kWidth * kWidth / 12.0;  // about ground z [m^4]
 constexpr double kFibre = kWidth / 2.0;                                  // [m]
 
-// h = 1 ms is 1/120 of the first period (ω₁ = 52.1 rad/s); DAMPING is filled in per test.
-const std::string kCantilever = R"(title: cantilever stresses
-materials:
-  steel: {E: 206.8e9, nu: 0.3, rho: 7820}
-sections:
-  bar: {shape: rectangle, width: 0.01, height: 0.02}
-flexible_bodies:
-  beam:
-    beams:
-      - {from: [0, 0, 0], to: [1, 0, 0], elements: 20, section: bar, material: steel,
-         orientation: [0, 1, 0], first_node_id: 1}
-    node_sets: {root: [1], tip: [21]}
-    modes: {normal: 3}
-bodies:
-  beam:
-    flexible: beam
-    formulation: nonlinear
-    damping: DAMPING
-    stress: {elements: [1, 20], every: 2}
-gravity: [0, -9.81, 0]
-joints:
-  clamp: {type: bracket, body_i: ground, body_j: beam, position: [0, 0, 0]}
-run: {integrator: galpha, step: 1.0e-3, rho_inf: 0.8, t_end: 0.6, sample_interval: 0.01}
-)";
+// The cantilever: the beam of nonlinear_beam_case.h clamped at node 1 under gravity along −y;
+// h = 1 ms is 1/120 of the first period (ω₁ = 52.1 rad/s).
+std::string cantilever_case(const std::string& damping) {
+  return test::nonlinear_beam_case(
+      damping, "    stress: {elements: [1, 20], every: 2}\n",
+      "gravity: [0, -9.81, 0]\n"
+      "joints:\n"
+      "  clamp: {type: bracket, body_i: ground, body_j: beam, position: [0, 0, 0]}\n"
+      "run: {integrator: galpha, step: 1.0e-3, rho_inf: 0.8, t_end: 0.6, sample_interval: 0.01}\n");
+}
 
 constexpr double kSigmaStatic = kRho * kArea * kG * kLength * kLength / 2.0 * kFibre / kInertia;  // 23.0 MPa
 
@@ -81,9 +68,7 @@ struct StressRun {
 // generalized-α, or with IDA and its structured Newton matrix (integrate/ggl_equations.h: the
 // beams' coupled stiffness and damping in it).
 StressRun run_cantilever(const std::string& damping, const std::filesystem::path& dir, bool ida = false) {
-  std::string text = kCantilever;
-  text.replace(text.find("DAMPING"), 7, damping);
-  const io::Case input = io::read_case_text(text, "cantilever.yaml");
+  const io::Case input = io::read_case_text(cantilever_case(damping), "cantilever.yaml");
   const io::Mechanism built = io::build_mechanism(input, io::reduce_case(input, io::ReductionScope::kMechanismBodies));
   StressRun out;
   RunHooks hooks;
