@@ -182,11 +182,16 @@ void build_stiffness_pattern(const Model& model, Eigen::SparseMatrix<double>& K)
 nonlinear_beam::BeamState nonlinear_body_state(const Model& model, const NonlinearBody& body,
                                                const Eigen::VectorXd& q) {
   nonlinear_beam::BeamState state;
+  state.positions.reserve(body.node_bodies.size());
+  state.rotations.reserve(body.node_bodies.size());
   const Eigen::Matrix3d R_CW = body.R_WC.transpose();
+  // Node rotations R_CW R_WB composed as quaternions: no matrix round trip per node.
+  const Eigen::Quaterniond q_CW(R_CW);
   for (const int b : body.node_bodies) {
     const Body& node = model.bodies[static_cast<std::size_t>(b)];
     state.positions.push_back(R_CW * (q.segment<3>(node.q_offset) - body.p_WC));
-    state.rotations.push_back(Eigen::Quaterniond(R_CW * body_rotation(model, b, q)).normalized());
+    const Eigen::Vector4d p = q.segment<4>(node.q_offset + 3);  // Euler parameters (w, x, y, z)
+    state.rotations.push_back((q_CW * Eigen::Quaterniond(p(0), p(1), p(2), p(3)).normalized()).normalized());
   }
   return state;
 }
