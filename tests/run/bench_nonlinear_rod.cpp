@@ -99,10 +99,10 @@ int main(int argc, char** argv) {
   const Histories seed = run_text(read_text(cases + "/slider_crank_seed_setup_nonlinear.yaml"), seed_end, seed_step);
   const auto& s = seed.summary;
   fmt::print("seed set-up, nonlinear rod, {} s: {:.1f} s wall, {:.1f} s CPU, {} steps (h = {:g} s), {} Newton "
-             "iterations, {} iteration matrices, {} rejected steps, status {}, energy error {:.2e}\n",
+             "iterations, {} iteration matrices, {} rejected steps, status {}, energy error {:.2e}, local error {:.2e}\n",
              seed_end, s.wall_seconds, cpu_seconds(), s.statistics.steps, seed_step > 0.0 ? seed_step : 1e-4, s.statistics.newton_iterations,
              s.statistics.jacobian_evaluations, s.statistics.rejected_steps, s.accurate() ? "ok" : "inaccurate",
-             s.accuracy.energy_relative);
+             s.accuracy.energy_relative, s.accuracy.local_error);
   for (const std::string& warning : s.accuracy.warnings) fmt::print("  accuracy warning: {}\n", warning);
   fmt::print("  peak mid-span deflection over [0, 0.3] s: {:.3f} mm (unreduced co-rotational reference 38.5 mm)\n",
              1e3 * peak(seed.deflection, seed.time, 0.3));
