@@ -5,9 +5,8 @@
 
 namespace limber::multibody {
 
-Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state, Workspace& ws) {
-  mass_matrix(model, state, ws);
-  const Eigen::VectorXd p = ws.M * state.v;
+Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state) {
+  const Eigen::VectorXd p = mass_times(model, state.q, state.v);
   Eigen::Vector3d P = Eigen::Vector3d::Zero(), L = Eigen::Vector3d::Zero();
   // Each moving body's share: its translational momentum and, about the ground origin, its
   // moment plus its angular momentum turned into ground axes.

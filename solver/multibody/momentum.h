@@ -15,7 +15,7 @@ namespace limber::multibody {
 // momentum into ground axes). These are the momenta conjugate to a rigid translation and
 // rotation of everything, conserved when the Lagrangian is invariant under them (Noether);
 // exact for flexible bodies (their modal rows are unaffected by a rigid motion of the whole).
-// Uses ws.M (mass_matrix).
-Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state, Workspace& ws);
+// M v body block by body block (mass_times): no nv x nv matrix per call.
+Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state);
 
 }  // namespace limber::multibody

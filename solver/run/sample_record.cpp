@@ -419,7 +419,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   const multibody::EnergyTerms energy = multibody::energies(model_, state, workspace_);
   out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
-  out.momentum = multibody::system_momentum(model_, state, workspace_);
+  out.momentum = multibody::system_momentum(model_, state);
 
   // Hinge latches and stops: joint angle, torque on body j about the joint axis, and mode;
   // one marker update serves them all.

@@ -26,8 +26,7 @@ TEST(SystemMomentum, TwoFreeRigidBodiesMatchTheSumsWorkedByHand) {
   builder.add_rigid_body(a);
   builder.add_rigid_body(b);
   const Model model = builder.build();
-  Workspace ws(model);
-  const Eigen::Matrix<double, 6, 1> h = system_momentum(model, initial_state(model), ws);
+  const Eigen::Matrix<double, 6, 1> h = system_momentum(model, initial_state(model));
   // a: ω_B × c = (0, 0.2, 0), turned: (−0.2, 0, 0); v_c = (0.3, 0, 0), P_a = (0.6, 0, 0);
   //    r_c = r + R c = (1, 2.1, 3); r_c × P_a = (0, 1.8, −1.26); R I_c ω_B = (0, 0, 6).
   // b: P_b = (0, 0, −1); r_c × P_b = 0; I ω_B = (1, 0, 0).
