@@ -203,7 +203,7 @@ ResultsArrays read_arrays(const H5Reader& r) {
 }  // namespace
 
 ResultsArrays read_results_arrays(const std::filesystem::path& file) {
-  return read_arrays(H5Reader(file, "results file", "(expected DIR/results.h5 of `limber run` or limber.run)"));
+  return read_arrays(H5Reader(file, "results file", " (expected DIR/results.h5 of `limber run` or limber.run)"));
 }
 
 ResultsArrays read_results_arrays(const std::vector<unsigned char>& image) {
