@@ -5,25 +5,21 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "results/event_peaks.h"
 #include "results/file_names.h"
-#include "results/h5_handle.h"
-#include "results/h5_reader.h"
-#include "results/link_name.h"
-#include "results/results_layout.h"
+#include "results/hdf5_lock.h"
+#include "results/results_arrays.h"
 
 namespace py = pybind11;
 
 namespace limber::python {
 
 namespace {
-
-namespace layout = results::layout;
 
 struct BodyResults {
   std::string name, kind;
@@ -49,179 +45,123 @@ struct Results {
   py::object event_peaks = py::none();
 };
 
-// A dataset as a numpy array of its own shape, its values converted to T by HDF5.
-template <typename T>
-py::array_t<T> dataset(const results::H5Reader& file, const std::string& path, hid_t memory_type) {
-  const std::vector<hsize_t> dims = file.dims(path);
-  const std::vector<T> values = file.read<T>(path, memory_type, dims.empty() ? 1 : dims[0]);
-  std::vector<py::ssize_t> shape(dims.begin(), dims.end());
-  py::array_t<T> array(shape);
-  std::copy(values.begin(), values.end(), array.mutable_data());
+// A vector (1-D) or a row-major matrix (2-D) as a numpy array of its shape, copied.
+template <typename Derived>
+py::array_t<typename Derived::Scalar> array_of(const Eigen::PlainObjectBase<Derived>& values) {
+  static_assert(Derived::ColsAtCompileTime == 1 || Derived::IsRowMajor, "row-major rows of the file");
+  std::vector<py::ssize_t> shape{values.rows()};
+  if (Derived::ColsAtCompileTime != 1) shape.push_back(values.cols());
+  py::array_t<typename Derived::Scalar> array(shape);
+  std::copy(values.data(), values.data() + values.size(), array.mutable_data());
   return array;
 }
 
-py::array_t<double> reals(const results::H5Reader& file, const std::string& path) {
-  return dataset<double>(file, path, H5T_NATIVE_DOUBLE);
+template <typename T>
+py::object array_or_none(const std::optional<T>& values) {
+  return values ? py::object(array_of(*values)) : py::object(py::none());
 }
 
-py::array_t<std::int64_t> integers(const results::H5Reader& file, const std::string& path) {
-  return dataset<std::int64_t>(file, path, H5T_NATIVE_INT64);
-}
-
-// An int8 flag dataset (indeterminate, engaged) as booleans.
-py::array flags(const results::H5Reader& file, const std::string& path) {
-  return py::array(integers(file, path).attr("astype")("bool"));
-}
-
-py::object reals_if_present(const results::H5Reader& file, const std::string& path) {
-  return file.exists(path) ? py::object(reals(file, path)) : py::object(py::none());
-}
-
-// The name a group stands for (its attribute `name`; the link name in older files).
-std::string name_of(const results::H5Reader& file, const std::string& group, const std::string& link) {
-  return file.string_attribute(group, results::kNameAttribute, false, link);
-}
-
-bool has_attribute(const results::H5Reader& file, const std::string& object, const std::string& name) {
-  const auto texts = file.attribute_texts(object);
-  return std::any_of(texts.begin(), texts.end(), [&](const auto& text) { return text.first == name; });
-}
-
-py::object stress_of(const results::H5Reader& file, const std::string& body) {
-  const std::string group = layout::at(body, layout::body::kStress);
-  if (!file.exists(group)) return py::none();
-  namespace stress = layout::stress;
+// The stress datasets present, by their names in the file (docs/stress-recovery.md).
+py::object stress_of(const std::optional<results::StressArrays>& stress) {
+  if (!stress) return py::none();
   py::dict values;
-  for (const char* name : {stress::kPeak, stress::kTime, stress::kEquivalent, stress::kBeamResultants,
-                           stress::kShellResultants}) {
-    if (file.exists(layout::at(group, name))) values[name] = reals(file, layout::at(group, name));
-  }
-  for (const char* name : {stress::kElements, stress::kPeakElement}) {
-    if (file.exists(layout::at(group, name))) values[name] = integers(file, layout::at(group, name));
-  }
+  const auto put = [&](const char* key, const auto& array) {
+    if (array) values[key] = array_of(*array);
+  };
+  put("peak", stress->peak);
+  put("time", stress->time);
+  put("equivalent", stress->equivalent);
+  put("beam_resultants", stress->beam_resultants);
+  put("shell_resultants", stress->shell_resultants);
+  put("elements", stress->elements);
+  put("peak_element", stress->peak_element);
   return values;
 }
 
-BodyResults body_of(const results::H5Reader& file, const std::string& group, const std::string& link) {
+BodyResults body_of(const results::BodyArrays& arrays) {
   BodyResults body;
-  body.name = name_of(file, group, link);
-  body.kind = file.string_attribute(group, layout::body::kKindAttribute);
-  body.position = reals(file, layout::at(group, layout::body::kPosition));
-  body.orientation = reals(file, layout::at(group, layout::body::kOrientation));
-  body.modal_coordinates = reals_if_present(file, layout::at(group, layout::body::kModalCoordinates));
-  body.modal_velocities = reals_if_present(file, layout::at(group, layout::body::kModalVelocities));
-  body.frequencies_hz = reals_if_present(
-      file, layout::at(layout::at(group, layout::body::kModes), layout::modes::kFrequenciesHz));
-  body.deflection = reals_if_present(file, layout::at(group, layout::body::kDeflection));
-  body.stress = stress_of(file, group);
+  body.name = arrays.name;
+  body.kind = arrays.kind;
+  body.position = array_of(arrays.position);
+  body.orientation = array_of(arrays.orientation);
+  body.modal_coordinates = array_or_none(arrays.modal_coordinates);
+  body.modal_velocities = array_or_none(arrays.modal_velocities);
+  body.frequencies_hz = array_or_none(arrays.frequencies_hz);
+  body.deflection = array_or_none(arrays.deflection);
+  body.stress = stress_of(arrays.stress);
   return body;
 }
 
-JointResults joint_of(const results::H5Reader& file, const std::string& group, const std::string& link) {
-  namespace joint = layout::joint;
-  JointResults result;
-  result.name = name_of(file, group, link);
-  result.type = file.string_attribute(group, joint::kTypeAttribute);
-  result.body_i = file.string_attribute(group, joint::kBodyIAttribute);
-  result.body_j = file.string_attribute(group, joint::kBodyJAttribute);
-  result.position = reals(file, layout::at(group, joint::kPosition));
-  result.force_ground = reals(file, layout::at(group, joint::kForceGround));
-  result.torque_ground = reals(file, layout::at(group, joint::kTorqueGround));
-  result.force_joint = reals(file, layout::at(group, joint::kForceJoint));
-  result.torque_joint = reals(file, layout::at(group, joint::kTorqueJoint));
-  result.indeterminate = flags(file, layout::at(group, joint::kIndeterminate));
-  return result;
+JointResults joint_of(const results::JointArrays& arrays) {
+  JointResults joint;
+  joint.name = arrays.name;
+  joint.type = arrays.type;
+  joint.body_i = arrays.body_i;
+  joint.body_j = arrays.body_j;
+  joint.position = array_of(arrays.position);
+  joint.force_ground = array_of(arrays.force_ground);
+  joint.torque_ground = array_of(arrays.torque_ground);
+  joint.force_joint = array_of(arrays.force_joint);
+  joint.torque_joint = array_of(arrays.torque_joint);
+  joint.indeterminate = array_of(arrays.indeterminate);
+  return joint;
 }
 
-// name -> the dataset `member` of each group under `parent` (or the group's own dataset when
-// `member` is empty).
-py::dict series_by_name(const results::H5Reader& file, const char* parent, const char* member) {
-  py::dict series;
-  for (const std::string& link : file.members(parent)) {
-    const std::string path = layout::at(parent, link);
-    series[py::str(name_of(file, path, link))] = reals(file, *member ? layout::at(path, member) : path);
-  }
-  return series;
+py::dict series_by_name(const std::vector<results::NamedSeries>& series) {
+  py::dict values;
+  for (const results::NamedSeries& s : series) values[py::str(s.name)] = array_of(s.values);
+  return values;
 }
 
-py::dict accuracy_of(const results::H5Reader& file) {
+py::dict accuracy_of(const results::AccuracyAttributes& attributes) {
   py::dict accuracy;
-  const std::pair<const char*, const char*> measures[] = {
-      {"energy_relative", layout::kAccuracyEnergyAttribute},
-      {"local_error", layout::kAccuracyLocalErrorAttribute},
-      {"drift_relative", layout::kAccuracyDriftAttribute}};
-  for (const auto& [key, attribute] : measures) {
-    accuracy[key] = has_attribute(file, "/", attribute) ? py::object(py::float_(file.doubles_attribute("/", attribute, 1)[0]))
-                                                        : py::object(py::none());
-  }
-  const std::string warnings = file.string_attribute("/", layout::kAccuracyWarningsAttribute, false);
-  std::vector<std::string> lines;
-  for (std::size_t start = 0; start < warnings.size();) {
-    const std::size_t end = std::min(warnings.find('\n', start), warnings.size());
-    if (end > start) lines.push_back(warnings.substr(start, end - start));
-    start = end + 1;
-  }
-  accuracy["warnings"] = lines;
+  accuracy["energy_relative"] = attributes.energy_relative;
+  accuracy["local_error"] = attributes.local_error;
+  accuracy["drift_relative"] = attributes.drift_relative;
+  accuracy["warnings"] = attributes.warnings;
   return accuracy;
 }
 
-py::dict constraints_of(const results::H5Reader& file) {
-  namespace constraints = layout::constraints;
+py::dict constraints_of(const results::ResultsArrays& arrays) {
   py::dict values;
-  for (const char* name : {constraints::kPositionViolation, constraints::kVelocityViolation}) {
-    values[name] = reals(file, layout::at(layout::kConstraints, name));
-  }
-  for (const char* name : {constraints::kRedundant, constraints::kRedundantWith}) {
-    const std::string path = layout::at(layout::kConstraints, name);
-    values[name] = file.exists(path) ? file.strings(path) : std::vector<std::string>{};
+  values["position_violation"] = array_of(arrays.position_violation);
+  values["velocity_violation"] = array_of(arrays.velocity_violation);
+  values["redundant"] = arrays.redundant;
+  values["redundant_with"] = arrays.redundant_with;
+  return values;
+}
+
+// name -> {kind, joint, limit_angle, angle, torque, engaged}.
+py::dict hinge_limits_of(const std::vector<results::HingeLimitArrays>& limits) {
+  py::dict values;
+  for (const results::HingeLimitArrays& limit : limits) {
+    py::dict entry;
+    entry["kind"] = limit.kind;
+    entry["joint"] = limit.joint;
+    entry["limit_angle"] = limit.limit_angle;
+    entry["angle"] = array_of(limit.angle);
+    entry["torque"] = array_of(limit.torque);
+    entry["engaged"] = array_of(limit.engaged);
+    values[py::str(limit.name)] = entry;
   }
   return values;
 }
 
-// name -> {kind, joint, limit_angle, angle, torque, engaged}; `names` gets them by index.
-py::dict hinge_limits_of(const results::H5Reader& file, std::vector<std::string>& names) {
-  namespace hinge = layout::hinge_limit;
-  py::dict limits;
-  for (const std::string& link : file.members(layout::kHingeLimits)) {
-    const std::string group = layout::at(layout::kHingeLimits, link);
-    const std::string name = name_of(file, group, link);
-    const int index = static_cast<int>(file.doubles_attribute(group, hinge::kIndexAttribute, 1)[0]);
-    if (index >= static_cast<int>(names.size())) names.resize(static_cast<std::size_t>(index) + 1);
-    names[static_cast<std::size_t>(index)] = name;
-    py::dict limit;
-    limit["kind"] = file.string_attribute(group, hinge::kKindAttribute);
-    limit["joint"] = file.string_attribute(group, hinge::kJointAttribute);
-    limit["limit_angle"] = file.doubles_attribute(group, hinge::kAngleAttribute, 1)[0];
-    limit["angle"] = reals(file, layout::at(group, hinge::kAngle));
-    limit["torque"] = reals(file, layout::at(group, hinge::kTorque));
-    limit["engaged"] = flags(file, layout::at(group, hinge::kEngaged));
-    limits[py::str(name)] = limit;
-  }
-  return limits;
-}
-
-// {time, limit (names), engaged, angle, rate}, one entry per located switch.
-py::dict events_of(const results::H5Reader& file, const std::vector<std::string>& limit_names) {
-  namespace events = layout::events;
+// {time, limit (names), engaged, angle, rate}, one entry per located switch; empty without.
+py::dict events_of(const std::optional<results::EventArrays>& events) {
   py::dict values;
-  if (!file.exists(layout::kEvents)) return values;
-  values["time"] = reals(file, layout::at(layout::kEvents, events::kTime));
-  std::vector<std::string> limits;
-  for (const std::int64_t index : integers(file, layout::at(layout::kEvents, events::kLimit)).cast<std::vector<std::int64_t>>()) {
-    limits.push_back(index >= 0 && index < static_cast<std::int64_t>(limit_names.size())
-                         ? limit_names[static_cast<std::size_t>(index)] : std::to_string(index));
-  }
-  values["limit"] = limits;
-  values["engaged"] = flags(file, layout::at(layout::kEvents, events::kEngaged));
-  values["angle"] = reals(file, layout::at(layout::kEvents, events::kAngle));
-  values["rate"] = reals(file, layout::at(layout::kEvents, events::kRate));
+  if (!events) return values;
+  values["time"] = array_of(events->time);
+  values["limit"] = events->limit;
+  values["engaged"] = array_of(events->engaged);
+  values["angle"] = array_of(events->angle);
+  values["rate"] = array_of(events->rate);
   return values;
 }
 
 // The event peaks (results/event_peaks.h) as {window, joints, windows: [{label, start, end,
 // states, force, torque, ...: arrays over the joints}]}, or None.
-py::object event_peaks_of(const results::H5Reader& file) {
-  const results::EventPeaks peaks = results::read_event_peaks(file);
+py::object event_peaks_of(const results::EventPeaks& peaks) {
   if (peaks.windows.empty()) return py::none();
   py::list windows;
   for (const results::PeakWindow& window : peaks.windows) {
@@ -248,57 +188,51 @@ py::object event_peaks_of(const results::H5Reader& file) {
   return result;
 }
 
-// The Results of an open results file; `path` becomes Results.path.
-py::object results_of(const results::H5Reader& file, py::object path) {
+// The Results of a file's arrays; `path` becomes Results.path.
+py::object results_of(const results::ResultsArrays& arrays, py::object path) {
   Results r;
   r.path = std::move(path);
-  r.status = file.string_attribute("/", layout::kStatusAttribute);
-  r.message = file.string_attribute("/", layout::kMessageAttribute, false);
-  r.title = file.string_attribute("/", layout::kTitleAttribute, false);
-  r.case_file = file.string_attribute("/", layout::kCaseFileAttribute, false);
-  r.integrator = file.string_attribute("/", layout::kIntegratorAttribute, false);
-  r.accuracy = accuracy_of(file);
-  r.time = reals(file, layout::kTime);
-  r.steps = integers(file, layout::at(layout::kSolver, layout::solver::kSteps));
-  for (const std::string& link : file.members(layout::kBodies)) {
-    BodyResults body = body_of(file, layout::at(layout::kBodies, link), link);
-    r.bodies[py::str(body.name)] = std::move(body);
+  r.status = arrays.status;
+  r.message = arrays.message;
+  r.title = arrays.title;
+  r.case_file = arrays.case_file;
+  r.integrator = arrays.integrator;
+  r.accuracy = accuracy_of(arrays.accuracy);
+  r.time = array_of(arrays.time);
+  r.steps = array_of(arrays.steps);
+  for (const results::BodyArrays& body : arrays.bodies) r.bodies[py::str(body.name)] = body_of(body);
+  for (const results::JointArrays& joint : arrays.joints) r.joints[py::str(joint.name)] = joint_of(joint);
+  r.drivers = series_by_name(arrays.drivers);
+  r.energy = series_by_name(arrays.energy);
+  r.constraints = constraints_of(arrays);
+  r.hinge_limits = hinge_limits_of(arrays.hinge_limits);
+  r.events = events_of(arrays.events);
+  for (const results::AccelerationProbeTrack& probe : arrays.acceleration_probes) {
+    r.acceleration_probes[py::str(probe.name)] = array_of(probe.acceleration);
   }
-  for (const std::string& link : file.members(layout::kJoints)) {
-    JointResults joint = joint_of(file, layout::at(layout::kJoints, link), link);
-    r.joints[py::str(joint.name)] = std::move(joint);
-  }
-  r.drivers = series_by_name(file, layout::kDrivers, layout::driver::kEffort);
-  r.energy = series_by_name(file, layout::kEnergy, "");
-  r.constraints = constraints_of(file);
-  std::vector<std::string> limit_names;
-  r.hinge_limits = hinge_limits_of(file, limit_names);
-  r.events = events_of(file, limit_names);
-  r.acceleration_probes =
-      series_by_name(file, layout::kAccelerationProbes, layout::acceleration_probe::kAcceleration);
-  r.event_peaks = event_peaks_of(file);
+  r.event_peaks = event_peaks_of(arrays.event_peaks);
   return py::cast(std::move(r));
 }
 
-// HDF5 is not thread-safe (h5_handle.h): runs on other threads write while this thread reads.
-// The lock is taken with the GIL released: a thread holding it may wait for the GIL (numpy
-// releases it while it copies), so waiting for the lock with the GIL held would deadlock.
-std::unique_lock<std::recursive_mutex> lock_hdf5() {
+// HDF5 is not thread-safe (results/hdf5_lock.h): runs on other threads write while this thread
+// reads. The lock is taken with the GIL released: a thread holding it may wait for the GIL, so
+// waiting for the lock with the GIL held would deadlock. The arrays are read under the lock and
+// turned into Python objects after it, with the GIL held.
+template <typename Source>
+results::ResultsArrays read_locked(const Source& source) {
   const py::gil_scoped_release released;
-  return std::unique_lock(results::hdf5_lock());
+  const std::lock_guard lock(results::hdf5_lock());
+  return results::read_results_arrays(source);
 }
 
 }  // namespace
 
 py::object read_results(const std::filesystem::path& path) {
-  const auto lock = lock_hdf5();
-  const results::H5Reader file(path, "results file", "(expected DIR/results.h5 of `limber run` or limber.run)");
-  return results_of(file, py::cast(path.string()));
+  return results_of(read_locked(path), py::cast(path.string()));
 }
 
 py::object read_results(const std::vector<unsigned char>& image) {
-  const auto lock = lock_hdf5();
-  return results_of(results::H5Reader(image, "results.h5", "results file"), py::none());
+  return results_of(read_locked(image), py::none());
 }
 
 void bind_results(py::module_& module) {

@@ -5,6 +5,8 @@
 
 #include <hdf5.h>
 
+#include "results/hdf5_lock.h"
+
 #include <mutex>
 #include <utility>
 
@@ -35,12 +37,6 @@ class H5Handle {
  private:
   hid_t id_ = -1;
 };
-
-// The lock around limber's writing HDF5 calls: HDF5 as Debian builds it is not thread-safe
-// (libhdf5.settings: "Threadsafety: no"), and `limber select` runs two sets at once, each
-// writing its own results.h5. Every ResultsWriter call and every H5Handle close holds it
-// (recursive: a close inside a writer call takes it again).
-std::recursive_mutex& hdf5_lock();
 
 // Silences HDF5's automatic error-stack printing while alive; callers report failures
 // themselves (exceptions or messages that name the file).

@@ -1,7 +1,7 @@
 // Read-only access to limber's HDF5 files (results.h5, modes.h5) through the HDF5 C API: the
 // reading layer under limber_results' typed readers (results_reader.h, run_records.h,
 // modes_reader.h, ...; paths in results/results_layout.h and results/modes_layout.h), used
-// directly only inside limber_results, by the Python module and by tests. Every failure is an InputError naming the file:
+// directly only inside limber_results and by tests. Every failure is an InputError naming the file:
 // "<kind> '<path>': expected ..., got ...". Exposes HDF5 types.
 #pragma once
 

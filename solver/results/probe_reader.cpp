@@ -42,6 +42,9 @@ std::optional<ShockSpectraData> read_shock_spectra(const H5Reader& file) {
   ShockSpectraData data;
   data.q = double_attribute(file, g, srs::kQAttribute);
   data.window_length = double_attribute(file, g, srs::kWindowLengthAttribute);
+  if (file.has_attribute(g, srs::kLongestStepAttribute)) {
+    data.longest_step = double_attribute(file, g, srs::kLongestStepAttribute);
+  }
   // Grid and windows.
   const std::string frequency = layout::at(g, srs::kFrequency);
   const hsize_t nf = file.rows(frequency, 0);

@@ -31,6 +31,9 @@ struct ProbeSpectrumData {
 struct ShockSpectraData {
   double q = 0.0;
   double window_length = 0.0;  // [s]
+  // The longest integrator step of the record [s], which sets the band the spectra hold
+  // (docs/shock-response-spectrum.md); none in files written before it was stored.
+  std::optional<double> longest_step;
   Eigen::VectorXd frequency_hz;
   std::vector<std::string> window_names;  // "whole run", "start", "latch <name>[, <name>...]"
   std::vector<double> window_start, window_end;  // [s]
