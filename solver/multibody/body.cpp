@@ -110,8 +110,10 @@ void add_body_inertial_and_gravity_forces(const Model& model, int body, const Ei
 
 void add_frame_load(const FrameKinematics& frame, const Eigen::Vector3d& f_W,
                     const Eigen::Vector3d& tau_W, Eigen::VectorXd& Q) {
-  Q.noalias() += frame.J_p.transpose() * f_W;
-  Q.noalias() += frame.J_w.transpose() * tau_W;
+  // Only the frame's body columns: J is zero elsewhere (a satellite's nv is ten times a panel's).
+  const int o = frame.body_v_offset, n = frame.body_nv;
+  Q.segment(o, n).noalias() += frame.J_p.middleCols(o, n).transpose() * f_W;
+  Q.segment(o, n).noalias() += frame.J_w.middleCols(o, n).transpose() * tau_W;
 }
 
 double body_kinetic_energy(const Model& model, int body, const Eigen::VectorXd& q,

@@ -32,7 +32,9 @@ Eigen::MatrixXd flexible_mass_block(const Body& body, const Eigen::VectorXd& q);
 void add_flexible_forces(const Body& body, const Eigen::Vector3d& gravity_W, const Eigen::VectorXd& q,
                          const Eigen::VectorXd& v, Eigen::VectorXd& Q);
 
-// Both of the above, the deformed inertia computed once (the evaluation pass of a residual).
+// Both of the above, the deformed inertia computed once (the evaluation pass of a residual):
+// writes M_b into the body's diagonal block of M (nv x nv; the rest untouched) and adds the
+// forces into Q.
 void add_flexible_mass_matrix_and_forces(const Body& body, const Eigen::Vector3d& gravity_W,
                                          const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                          Eigen::MatrixXd& M, Eigen::VectorXd& Q);
