@@ -180,9 +180,9 @@ int IdaIntegrator::Impl::set_tolerances(const Eigen::VectorXd& lambda0) {
   atol.setConstant(options.atol);
   atol.segment(imu, nc + nh).setConstant(1.0);
   // λ is out of the error test but in Newton's convergence test: its weight no tighter than
-  // 1 % of rtol relative to the largest starting multiplier (an absolute atol of 1e-10 N asks a
-  // kN joint force for 16 digits, which Newton cannot deliver at the start's tiny steps: the
-  // seed set-up failed at t = 7e-9 s with rtol 1e-8).
+  // rtol relative to the largest starting multiplier (kLambdaWeight; an absolute atol of 1e-10 N
+  // asks a kN joint force for 16 digits, which Newton cannot deliver at the start's tiny steps:
+  // the seed set-up failed at t = 7e-9 s with rtol 1e-8).
   atol.segment(ilambda, nc)
       .setConstant(std::max(options.atol, kLambdaWeight * options.rtol * lambda0.lpNorm<Eigen::Infinity>()));
   if (options.quadrature.atol > 0.0) atol.segment(iz, nz).setConstant(options.quadrature.atol);

@@ -29,7 +29,11 @@ struct IdaIntegrator::Impl : GglLayout {
   static double time_tolerance(double t) { return 1e-12 * std::max(1.0, std::abs(t)); }
 
   // Fraction of rtol × the largest starting multiplier below which λ's Newton weight does not go.
-  static constexpr double kLambdaWeight = 0.01;
+  // λ follows v̇ (M v̇ + Gᵀλ = Q), which Newton resolves only to v's weight divided by the step:
+  // at 0.01 (1 % of rtol) the satellite deployment's multipliers, a few newtons, were asked for
+  // 1e-5 N at h ~ 1e-4 s and Newton failed 1 671 times in 0–2.95 s with an exact matrix; at 1,
+  // 126 times (docs/benchmarks.md, "IDA within 2× of generalized-α").
+  static constexpr double kLambdaWeight = 1.0;
 
   // After IDA's corrector fails away from any singular configuration, λ's Newton weight is
   // loosened by kLambdaRelaxation and IDA restarts from the last state reached, at most
