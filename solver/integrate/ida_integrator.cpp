@@ -238,6 +238,7 @@ bool IdaIntegrator::Impl::take_step(double t_out, Statistics& stats) {
     for (int k = 0; k < ne; ++k) {
       if (found[k] > 0) pending_events.push_back(k);
     }
+    add_twin_events();
   }
   read_statistics(stats, restart_statistics);
   if (flag < 0) return recover_from_failure(flag);
@@ -262,6 +263,24 @@ bool IdaIntegrator::Impl::take_step(double t_out, Statistics& stats) {
   // as it was, to go on or fail on its own).
   if (rejected >= kStruggle && pending_events.empty()) step_over_singular_configuration(kStruggleRatio);
   return true;
+}
+
+void IdaIntegrator::Impl::add_twin_events() {
+  // e at the root (y, y' as IDASolve returned them there) and event_tolerance past it.
+  const double* y_data = N_VGetArrayPointer(y);
+  const double* yp_data = N_VGetArrayPointer(yp);
+  q = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
+  v = Eigen::Map<const Eigen::VectorXd>(y_data + iv, nv);
+  system->event_functions(t_reached, q, v, e_values);
+  const Eigen::VectorXd e_now = e_values;
+  const double tau = options.event_tolerance;
+  q += tau * Eigen::Map<const Eigen::VectorXd>(yp_data, nq);
+  v += tau * Eigen::Map<const Eigen::VectorXd>(yp_data + iv, nv);
+  system->event_functions(t_reached + tau, q, v, e_values);
+  for (int k = 0; k < ne; ++k) {
+    const bool pending = std::find(pending_events.begin(), pending_events.end(), k) != pending_events.end();
+    if (!pending && e_values(k) >= 0.0 && e_values(k) > e_now(k)) pending_events.push_back(k);
+  }
 }
 
 Status IdaIntegrator::Impl::serve_sample(double t_out, bool restart_due, const Statistics& stats, Sample& out) {

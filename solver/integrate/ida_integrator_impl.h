@@ -118,6 +118,11 @@ struct IdaIntegrator::Impl : GglLayout {
   // One IDA step towards t_out and what follows it (events found, statistics, the step
   // reported, budget, singular configurations). False when the run stops with `failure`.
   bool take_step(double t_out, Statistics& stats);
+  // At a root IDA returned: the events it did not return that rise through 0 within
+  // options.event_tolerance after it switch with it (as generalized-α's twin events). The
+  // satellite's mirror-image latches R3 and R4 engage at one instant; at rtol 3e-5 IDA
+  // returned R3's root alone and never saw R4 rise from there (docs/benchmarks.md).
+  void add_twin_events();
   // The sample at t_out from y, y' (after IDAGetDky); `restart_due`: the equations change there.
   Status serve_sample(double t_out, bool restart_due, const Statistics& stats, Sample& out);
   void release();
