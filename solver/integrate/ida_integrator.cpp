@@ -279,7 +279,7 @@ void IdaIntegrator::Impl::add_twin_events() {
   system->event_functions(t_reached + tau, q, v, e_values);
   for (int k = 0; k < ne; ++k) {
     const bool pending = std::find(pending_events.begin(), pending_events.end(), k) != pending_events.end();
-    if (!pending && e_values(k) >= 0.0 && e_values(k) > e_now(k)) pending_events.push_back(k);
+    if (!pending && e_now(k) < 0.0 && e_values(k) >= 0.0) pending_events.push_back(k);
   }
 }
 
