@@ -90,7 +90,8 @@ bool GglEquations::residual(double t, const double* y, const double* yp, double*
   return r.allFinite();
 }
 
-bool GglEquations::newton_matrix(double t, double c_j, const double* y, const double* yp, double* J_data) {
+bool GglEquations::newton_matrix(double t, double c_j, const double* y, const double* yp, double* J_data,
+                                 bool refresh_difference) {
   const GglLayout& l = layout_;
   unpack(y, yp);
   Eigen::Map<Eigen::MatrixXd> J(J_data, l.n, l.n);
@@ -133,6 +134,13 @@ bool GglEquations::newton_matrix(double t, double c_j, const double* y, const do
   // The internal forces that couple velocities (a nonlinear body's beams), at (t, q).
   if (system_.coupled_stiffness(t, q_, coupled_)) J.block(l.iv, 0, l.nv, l.nq).noalias() += coupled_ * N_pinv_;
   if (system_.coupled_damping(t, q_, coupled_)) add_sparse(1.0, coupled_, J.block(l.iv, l.iv, l.nv, l.nv));
+  // What the structured blocks miss (force elements, constraint forces), kept from the last
+  // difference; c_j M is exact and stays out of it.
+  if (!sparse_ && refresh_difference) take_difference(t, c_j, J);
+  if (!sparse_ && has_difference_) {
+    J.block(l.iv, 0, l.nv, l.nq) += difference_q_;
+    J.block(l.iv, l.iv, l.nv, l.nv) += difference_v_;
+  }
   J.block(l.iv, l.ilambda, l.nv, l.nc) = eval_.G.transpose();
   // Velocity constraints.
   J.block(l.ilambda, 0, l.nc, l.nq) = (g_q_along_ - eval_.g_q) / epsilon;
@@ -143,6 +151,45 @@ bool GglEquations::newton_matrix(double t, double c_j, const double* y, const do
   J.block(l.imu + l.nc, 0, l.nh, l.nq) = h_q_;
   J.block(l.iz, l.iz, l.nz, l.nz).diagonal().setConstant(c_j);
   return J.allFinite();
+}
+
+void GglEquations::dynamics_rows(const SystemEvaluation& e, const Eigen::VectorXd& Q, Eigen::VectorXd& out) const {
+  out.noalias() = e.M * vdot_;
+  out -= Q;
+  out.noalias() += e.G.transpose() * lambda_;
+}
+
+void GglEquations::take_difference(double t, double c_j, const Eigen::Map<Eigen::MatrixXd>& J) {
+  const GglLayout& l = layout_;
+  const double root_epsilon = std::sqrt(std::numeric_limits<double>::epsilon());
+  dynamics_rows(eval_, eval_.Q, dynamics_);
+  // Columns for q: a full evaluation each (M, Q and G move with q).
+  difference_q_.resize(l.nv, l.nq);
+  q_perturbed_ = q_;
+  for (int j = 0; j < l.nq; ++j) {
+    const double increment = root_epsilon * std::max(1.0, std::abs(q_(j)));
+    q_perturbed_(j) = q_(j) + increment;
+    system_.evaluate(t, q_perturbed_, v_, false, probe_);
+    dynamics_rows(probe_, probe_.Q, dynamics_perturbed_);
+    difference_q_.col(j) = (dynamics_perturbed_ - dynamics_) / increment;
+    q_perturbed_(j) = q_(j);
+  }
+  // Columns for v: only Q moves.
+  difference_v_.resize(l.nv, l.nv);
+  v_perturbed_ = v_;
+  for (int j = 0; j < l.nv; ++j) {
+    const double increment = root_epsilon * std::max(1.0, std::abs(v_(j)));
+    v_perturbed_(j) = v_(j) + increment;
+    system_.generalized_forces(t, q_, v_perturbed_, Q_perturbed_);
+    difference_v_.col(j) = (eval_.Q - Q_perturbed_) / increment;
+    v_perturbed_(j) = v_(j);
+  }
+  difference_evaluations_ += l.nq + l.nv;
+  // Keep what the structured blocks (already in J) do not hold.
+  difference_q_ -= J.block(l.iv, 0, l.nv, l.nq);
+  difference_v_ -= J.block(l.iv, l.iv, l.nv, l.nv);
+  difference_v_.noalias() += c_j * eval_.M;
+  has_difference_ = difference_q_.allFinite() && difference_v_.allFinite();
 }
 
 }  // namespace limber::integrate

@@ -32,7 +32,7 @@ class GglEquations {
   // The Newton matrix J = ∂F/∂y + c_j ∂F/∂y' (n x n, column-major) from the form of F, one
   // evaluation of the system at (t, q, v) and one of ∂g/∂q along the motion; no residual:
   //   [c_j I − D   −N            0    g_qᵀ  h_qᵀ  0    ]   q
-  //   [k N⁺        c_j M + c     Gᵀ   0     0     0    ]   v
+  //   [k N⁺ + Δ_q  c_j M + c + Δ_v  Gᵀ   0     0     0    ]   v
   //   [L           G             0    0     0     0    ]   λ (velocity constraints)
   //   [g_q; h_q    0             0    0     0     0    ]   μ (position constraints, invariants)
   //   [0           0             0    0     0     c_j I]   z
@@ -44,16 +44,23 @@ class GglEquations {
   // by the symmetry of g's second derivatives, [g_q(t + ε, q + ε q̇) − g_q(t, q)]/ε + g_q D with
   // q̇ = N v, one constraint pass. L is not small: the μ rows move q by O(g) whatever the step,
   // and without L the velocity rows' Newton error stays O(1) as h → 0 (the seed set-up then
-  // failed its corrector down to h = 2e-10). Left out, each O(h) against the blocks kept
-  // once c_j ~ 1/h scales them: ∂(M v' + Gᵀλ − Q)/∂q beyond k, ∂Q/∂v beyond c (quadratic-
-  // velocity forces, force elements), ∂(g_qᵀμ)/∂q (μ = 0 on the solution) and the integrals'
-  // −∂f (nothing depends on z: its Newton iterates lag the others' by one iteration). They only
-  // slow Newton, which IDA watches (a slow or failed iteration gets a fresh matrix, then a
-  // smaller step). Where they matter Newton fails step after step (the satellite deployment:
-  // 36 006 steps, 17 464 rejected, against 6 408 with differences), so this matrix is chosen per
-  // case (IntegratorOptions::ida_newton_matrix); handing over to differences mid-run made IDA
-  // fail at a driver's kink and on the spinning beam. False when a value is not finite.
-  bool newton_matrix(double t, double c_j, const double* y, const double* yp, double* J);
+  // failed its corrector down to h = 2e-10).
+  // Δ_q, Δ_v: the kept difference of the dynamics rows (generalized-α keeps the same, its
+  // generalized_alpha_matrix.cpp): what forward differences of M v' + Gᵀλ − Q in q and v held
+  // beyond the blocks above when `refresh_difference` last asked for them (nq + nv evaluations
+  // of the system) — the force elements' stiffness and damping (hinge springs, latches), the
+  // constraint forces' ∂(Gᵀλ)/∂q, inertia's ∂(M v')/∂q, quadratic-velocity forces. These are
+  // O(h) against the blocks c_j ~ 1/h scales, but a stiff latch (5e3 N·m/rad on 0.3 kg hinge
+  // halves) makes them dominate: without them the satellite deployment's IDA run failed Newton
+  // 18 500 times in 6 s. They change slowly with the state, so a difference is kept until
+  // Newton fails or the equations restart (the caller decides, ida_integrator.cpp). A sparse
+  // system (a nonlinear body) keeps none (its coupled K and C carry its internal forces).
+  // Left out: ∂(g_qᵀμ)/∂q (μ = 0 on the solution) and the integrals' −∂f (nothing depends on z:
+  // their Newton iterates lag the others' by one iteration). False when a value is not finite.
+  bool newton_matrix(double t, double c_j, const double* y, const double* yp, double* J,
+                     bool refresh_difference);
+  // Evaluations of the system spent on kept differences so far (nq + nv each).
+  long difference_evaluations() const { return difference_evaluations_; }
 
  private:
   MechanicalSystem& system_;
@@ -70,8 +77,18 @@ class GglEquations {
   // and damping.
   bool sparse_ = false;
   Eigen::SparseMatrix<double> coupled_;
+  // The kept difference Δ_q (nv x nq), Δ_v (nv x nv) and the scratch space that finds it.
+  bool has_difference_ = false;
+  long difference_evaluations_ = 0;
+  Eigen::MatrixXd difference_q_, difference_v_;
+  Eigen::VectorXd dynamics_, dynamics_perturbed_, v_perturbed_, Q_perturbed_;
+  SystemEvaluation probe_;
 
   void unpack(const double* y, const double* yp);
+  // M v' + Gᵀλ − Q of an evaluation at the unpacked v', λ (dense systems).
+  void dynamics_rows(const SystemEvaluation& e, const Eigen::VectorXd& Q, Eigen::VectorXd& out) const;
+  // Δ_q, Δ_v from forward differences at (t, q, v) minus the structured blocks in J.
+  void take_difference(double t, double c_j, const Eigen::Map<Eigen::MatrixXd>& J);
 };
 
 }  // namespace limber::integrate

@@ -8,8 +8,8 @@
 //   z' = f(t, q, v, v', λ)                  (requested quadratures, IntegratorOptions::quadrature)
 // λ and μ are algebraic and excluded from the local error test (IDASetId + IDASetSuppressAlg);
 // q, v and z are tested with the scalar rtol/atol. The Newton matrix ∂F/∂y + c ∂F/∂y' is IDA's
-// dense difference quotient or, with IdaNewtonMatrix::kStructured, built from F's structure and
-// one evaluation of the system (ggl_equations.h, GglEquations::newton_matrix), then factorised by Eigen's
+// dense difference quotient or, with IdaNewtonMatrix::kStructured, built from F's structure, one
+// evaluation and a kept difference of the dynamics rows (ggl_equations.h), then factorised by Eigen's
 // dense LU (dense_lu_solver.h; the difference quotient keeps SUNLinSol_Dense). Initial y, y' come from our own projection
 // (consistent_state.h; IDACalcIC is not called): y' = [N v, v̇, 0, 0, f].
 // Output times are served with IDA_NORMAL, i.e. IDA steps past t_out and interpolates its

@@ -20,9 +20,9 @@ const char* to_string(Method method);
 // IDA's Newton matrix ∂F/∂y + c ∂F/∂y′ (docs/integrators.md, "SUNDIALS IDA"):
 enum class IdaNewtonMatrix {
   kDifferences,  // IDA's difference quotient: ~n residuals per matrix, exact to O(√ε)
-  kStructured,   // from F's form and one system evaluation; leaves out force-element,
-                 // constraint-force and geometric-stiffness derivatives (slower Newton where
-                 // they matter: fine on the seed set-up, 6× the steps on the satellite deployment)
+  kStructured,   // from F's form and one system evaluation, plus a kept difference of the
+                 // dynamics rows (force elements, constraint forces) refreshed after Newton
+                 // failures and restarts (ggl_equations.h)
 };
 
 // Integrals ∫ f(t, q, v, v̇, λ) dt accumulated along the run, e.g. the work of a force

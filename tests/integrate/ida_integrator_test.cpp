@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -99,6 +102,39 @@ TEST(IdaIntegrator, UndampedPendulumKeepsEnergyAndConstraint) {
               constraint_error, result.statistics.steps);
   EXPECT_LT(energy_error / energy_scale, 100.0 * tol);
   EXPECT_LT(constraint_error, 10.0 * tol);
+}
+
+// The oscillator with twin events: e_0 rises through 0 at t = 0.3 s, e_1 1e-10 s later, within
+// the event tolerance (1e-9 s) but far beyond IDA's root location (~100 ε (|t| + |h|) ~ 1e-14 s),
+// as a symmetric mechanism's twin latches do. An applied event switches its mode, whose event
+// function stays at −1 (as an engaged latch's). It records where each is applied.
+class OscillatorWithTwinEvents final : public testing::ForwardingSystem {
+ public:
+  using ForwardingSystem::ForwardingSystem;
+  std::vector<std::pair<int, double>> applied;
+  int num_events() const override { return 2; }
+  void event_functions(double t, const Eigen::VectorXd&, const Eigen::VectorXd&, Eigen::VectorXd& e) override {
+    e.resize(2);
+    e << t - 0.3, t - 0.3 - 1e-10;
+    for (const auto& event : applied) e(event.first) = -1.0;
+  }
+  void apply_event(int k, double t, const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+    applied.emplace_back(k, t);
+  }
+};
+
+TEST(IdaIntegrator, SwitchesTwinEventsTogether) {
+  const double omega = 2.0 * std::numbers::pi;
+  testing::Oscillator oscillator(1.0, omega * omega);
+  OscillatorWithTwinEvents system(oscillator);
+  const InitialState start{0.0, Eigen::VectorXd::Ones(1), Eigen::VectorXd::Zero(1)};
+  const auto result = simulate(system, IntegratorOptions::ida(1e-8, 1e-10), start, {0.0, 0.5},
+                               [](const Sample&) {});
+  ASSERT_TRUE(result.status.ok()) << result.status.message;
+  // Each once, at one instant: the root of e_0 to IDA's location (1e-12 s is 100 times that).
+  ASSERT_EQ(system.applied.size(), 2u);
+  EXPECT_EQ(system.applied[0].second, system.applied[1].second);
+  EXPECT_NEAR(system.applied[0].second, 0.3, 1e-12);
 }
 
 }  // namespace
