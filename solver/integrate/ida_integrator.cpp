@@ -57,6 +57,9 @@ constexpr int kMaxNonFiniteRetries = 10;
 constexpr int kStruggle = 3;
 constexpr double kStruggleRatio = 1e-2;
 
+// IDA's error weights per group (IdaErrorWeights::kPerGroup), defined below.
+int ida_error_weights(N_Vector y, N_Vector w, void* user_data);
+
 }  // namespace
 
 // The layout of y = [q, v, λ, μ, z] is the equations' (ggl_equations.h).
@@ -220,6 +223,14 @@ struct IdaIntegrator::Impl : GglLayout {
     reinit(t, h0);
   }
 
+  // IDA's error weights from rtol and atol_vec, per component or per group (IdaErrorWeights).
+  int set_tolerances() {
+    if (options.ida_error_weights == IdaErrorWeights::kPerComponent) {
+      return IDASVtolerances(ida, options.rtol, atol_vec);
+    }
+    return IDAWFtolerances(ida, ida_error_weights);
+  }
+
   // After a corrector failure: λ's Newton weight loosened (kLambdaRelaxation) and IDA
   // restarted from the state it reached with its last step (the first step at t0, where IDA
   // has taken none). False when the relaxations are spent or there is no λ.
@@ -229,7 +240,7 @@ struct IdaIntegrator::Impl : GglLayout {
     LIMBER_DEMAND(IDAGetDky(ida, t_reached, 0, y) == IDA_SUCCESS);
     Eigen::Map<Eigen::VectorXd> atol(N_VGetArrayPointer(atol_vec), n);
     atol.segment(ilambda, nc) *= kLambdaRelaxation;
-    LIMBER_DEMAND(IDASVtolerances(ida, options.rtol, atol_vec) == IDA_SUCCESS);
+    LIMBER_DEMAND(set_tolerances() == IDA_SUCCESS);
     double h_last = 0.0;
     IDAGetLastStep(ida, &h_last);
     restart_from_y(t_reached, h_last > 0.0 ? h_last : first_step);
@@ -325,6 +336,20 @@ struct IdaIntegrator::Impl : GglLayout {
     if (options.on_step) options.on_step(t, q_t, v_t, vdot_t, lambda_t);
   }
 
+  // IntegratorOptions::kPerGroup: w_i = 1 / (rtol max(|y_i|, max over y_i's group) + atol_i),
+  // the groups q and v; λ, μ and z as IDASVtolerances weighs them.
+  void group_error_weights(const double* y_data, double* w_data) const {
+    const Eigen::Map<const Eigen::VectorXd> y_now(y_data, n);
+    const Eigen::Map<const Eigen::VectorXd> atol(N_VGetArrayPointer(atol_vec), n);
+    Eigen::Map<Eigen::VectorXd> w(w_data, n);
+    const Eigen::VectorXd scale = y_now.cwiseAbs();
+    w = (options.rtol * scale + atol).cwiseInverse();
+    const double q_scale = nq > 0 ? scale.head(nq).maxCoeff() : 0.0;
+    const double v_scale = nv > 0 ? scale.segment(iv, nv).maxCoeff() : 0.0;
+    w.head(nq) = (options.rtol * scale.head(nq).cwiseMax(q_scale) + atol.head(nq)).cwiseInverse();
+    w.segment(iv, nv) = (options.rtol * scale.segment(iv, nv).cwiseMax(v_scale) + atol.segment(iv, nv)).cwiseInverse();
+  }
+
   // Event functions of the system at IDA's (t, y), for its root finding.
   int events(double t, const double* y_data, double* e_data) {
     q = Eigen::Map<const Eigen::VectorXd>(y_data, nq);
@@ -350,6 +375,11 @@ int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data)
   return static_cast<IdaIntegrator::Impl*>(user_data)->residual(t, N_VGetArrayPointer(y),
                                                                  N_VGetArrayPointer(yp),
                                                                  N_VGetArrayPointer(r));
+}
+
+int ida_error_weights(N_Vector y, N_Vector w, void* user_data) {
+  static_cast<IdaIntegrator::Impl*>(user_data)->group_error_weights(N_VGetArrayPointer(y), N_VGetArrayPointer(w));
+  return 0;
 }
 
 int ida_events(double t, N_Vector y, N_Vector, double* e, void* user_data) {
@@ -469,7 +499,7 @@ Status IdaIntegrator::init(MechanicalSystem& system, const InitialState& x0,
   atol.segment(s.ilambda, s.nc)
       .setConstant(std::max(options.atol, kLambdaWeight * options.rtol * lambda.lpNorm<Eigen::Infinity>()));
   if (options.quadrature.atol > 0.0) atol.segment(s.iz, s.nz).setConstant(options.quadrature.atol);
-  flag = flag < 0 ? flag : IDASVtolerances(s.ida, options.rtol, s.atol_vec);
+  flag = flag < 0 ? flag : s.set_tolerances();
   flag = flag < 0 ? flag : IDASetLinearSolver(s.ida, s.solver, s.A);
   if (structured) flag = flag < 0 ? flag : IDASetJacFn(s.ida, ida_jacobian);
   flag = flag < 0 ? flag : IDASetId(s.ida, s.id);
