@@ -46,7 +46,7 @@ struct Quadrature {
       jump;
 };
 
-// IDA's error weights of q and v, w_i = 1 / (rtol s_i + atol) (docs/integrators.md, "IDA with a
+// IDA's error weights of q and v, w_i = 1 / (rtol s_i + atol) (docs/nonlinear-beams.md, "IDA with a
 // nonlinear body"):
 enum class IdaErrorWeights {
   kPerComponent,  // s_i = |y_i|: IDA's own; a coordinate passing through 0 is held to atol
