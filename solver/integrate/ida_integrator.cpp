@@ -30,6 +30,13 @@ int ida_residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data)
                                                                  N_VGetArrayPointer(r));
 }
 
+// IdaErrorWeights::kPerGroup: IDA asks for the weights at each step.
+int ida_error_weights(N_Vector y, N_Vector w, void* user_data) {
+  static_cast<IdaIntegrator::Impl*>(user_data)->group_error_weights(N_VGetArrayPointer(y),
+                                                                     N_VGetArrayPointer(w));
+  return 0;
+}
+
 int ida_events(double t, N_Vector y, N_Vector, double* e, void* user_data) {
   return static_cast<IdaIntegrator::Impl*>(user_data)->events(t, N_VGetArrayPointer(y), e);
 }
@@ -186,7 +193,27 @@ int IdaIntegrator::Impl::set_tolerances(const Eigen::VectorXd& lambda0) {
   atol.segment(ilambda, nc)
       .setConstant(std::max(options.atol, kLambdaWeight * options.rtol * lambda0.lpNorm<Eigen::Infinity>()));
   if (options.quadrature.atol > 0.0) atol.segment(iz, nz).setConstant(options.quadrature.atol);
-  return IDASVtolerances(ida, options.rtol, atol_vec);
+  return apply_error_weights();
+}
+
+int IdaIntegrator::Impl::apply_error_weights() {
+  if (options.ida_error_weights == IdaErrorWeights::kPerComponent) {
+    return IDASVtolerances(ida, options.rtol, atol_vec);
+  }
+  return IDAWFtolerances(ida, ida_error_weights);
+}
+
+void IdaIntegrator::Impl::group_error_weights(const double* y_data, double* w_data) const {
+  const Eigen::Map<const Eigen::VectorXd> y_now(y_data, n);
+  const Eigen::Map<const Eigen::VectorXd> atol(N_VGetArrayPointer(atol_vec), n);
+  Eigen::Map<Eigen::VectorXd> w(w_data, n);
+  const Eigen::VectorXd scale = y_now.cwiseAbs();
+  w = (options.rtol * scale + atol).cwiseInverse();
+  const double q_scale = nq > 0 ? scale.head(nq).maxCoeff() : 0.0;
+  const double v_scale = nv > 0 ? scale.segment(iv, nv).maxCoeff() : 0.0;
+  w.head(nq) = (options.rtol * scale.head(nq).cwiseMax(q_scale) + atol.head(nq)).cwiseInverse();
+  w.segment(iv, nv) =
+      (options.rtol * scale.segment(iv, nv).cwiseMax(v_scale) + atol.segment(iv, nv)).cwiseInverse();
 }
 
 int IdaIntegrator::Impl::configure_ida(double t, const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,

@@ -115,6 +115,11 @@ struct IdaIntegrator::Impl : GglLayout {
                     const Eigen::VectorXd& vdot0, const Eigen::VectorXd& lambda0);
   // The weights of IDA's error and convergence tests (atol per component).
   int set_tolerances(const Eigen::VectorXd& lambda0);
+  // rtol and atol_vec handed to IDA, per component or per group (IdaErrorWeights).
+  int apply_error_weights();
+  // IdaErrorWeights::kPerGroup: w_i = 1 / (rtol max(|y_i|, max over y_i's group) + atol_i), the
+  // groups q and v; λ, μ and z as IDASVtolerances weighs them.
+  void group_error_weights(const double* y_data, double* w_data) const;
   // One IDA step towards t_out and what follows it (events found, statistics, the step
   // reported, budget, singular configurations). False when the run stops with `failure`.
   bool take_step(double t_out, Statistics& stats);

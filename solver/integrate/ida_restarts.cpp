@@ -129,7 +129,7 @@ bool IdaIntegrator::Impl::relax_multiplier_weight() {
   LIMBER_DEMAND(IDAGetDky(ida, t_reached, 0, y) == IDA_SUCCESS);
   Eigen::Map<Eigen::VectorXd> atol(N_VGetArrayPointer(atol_vec), n);
   atol.segment(ilambda, nc) *= kLambdaRelaxation;
-  LIMBER_DEMAND(IDASVtolerances(ida, options.rtol, atol_vec) == IDA_SUCCESS);
+  LIMBER_DEMAND(apply_error_weights() == IDA_SUCCESS);
   double h_last = 0.0;
   IDAGetLastStep(ida, &h_last);
   restart_from_y(t_reached, h_last > 0.0 ? h_last : first_step);

@@ -46,6 +46,14 @@ struct Quadrature {
       jump;
 };
 
+// IDA's error weights of q and v, w_i = 1 / (rtol s_i + atol) (docs/nonlinear-beams.md, "IDA with a
+// nonlinear body"):
+enum class IdaErrorWeights {
+  kPerComponent,  // s_i = |y_i|: IDA's own; a coordinate passing through 0 is held to atol
+  kPerGroup,      // s_i = max(|y_i|, max_j |y_j|) over q, resp. v: errors relative to the
+                  // mechanism's size and speed, as λ's weight is relative to its largest
+};
+
 struct IntegratorOptions {
   Method method = Method::kIda;
 
@@ -61,6 +69,9 @@ struct IntegratorOptions {
   int max_order = 0;
   // IDA: how its Newton matrix is formed (above).
   IdaNewtonMatrix ida_newton_matrix = IdaNewtonMatrix::kDifferences;
+  // IDA: how q's and v's error weights scale (above). `limber run` picks kPerGroup with a
+  // nonlinear body.
+  IdaErrorWeights ida_error_weights = IdaErrorWeights::kPerComponent;
 
   // Generalized-α: fixed step h [s] and spectral radius at infinity ρ∞ ∈ [0, 1]
   // (Chung & Hulbert 1993: ρ∞ = 1 no numerical damping, ρ∞ = 0 asymptotic annihilation).

@@ -155,6 +155,9 @@ RunSummary run_mechanism(const multibody::Model& model,
     return body.kind == multibody::BodyKind::kFlexible;
   });
   if (options.max_order == 0 && flexible) options.max_order = 2;
+  // A nonlinear body's node velocities pass through 0 along the rod together: IDA's error
+  // weights relative to the mechanism's size and speed (integrator_options.h, IdaErrorWeights).
+  if (!model.nonlinear_bodies.empty()) options.ida_error_weights = integrate::IdaErrorWeights::kPerGroup;
   // IDA's steps no longer than the probes' record promises (io::probe_record_step).
   if (probes && options.method == integrate::Method::kIda) options.max_step = record_step;
   options.quadrature = energy_quadrature(model, system.partition(), system.engaged(), start.state,

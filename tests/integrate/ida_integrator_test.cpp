@@ -137,5 +137,36 @@ TEST(IdaIntegrator, SwitchesTwinEventsTogether) {
   EXPECT_NEAR(system.applied[0].second, 0.3, 1e-12);
 }
 
+TEST(IdaIntegrator, GroupErrorWeightsHoldTheErrorRelativeToTheLargestCoordinate) {
+  // IdaErrorWeights::kPerGroup weighs each coordinate relative to the largest |q| (here L) and
+  // each velocity relative to the largest |v|, so x and ẋ, which pass through 0 every swing, are
+  // no longer held to atol (1e-14 here, so that only rtol acts). The θ0 = 1 rad pendulum over
+  // 2 s against its closed form: the error stays within 50 rtol L, the bound ErrorFallsWith-
+  // TheTolerance measures for per-component weights (3.8–26 tol), and the looser weights take
+  // fewer steps than IDA's per-component ones.
+  const double rtol = 1e-6;
+  CartesianPendulum pendulum(kMass, kLength, kGravity);
+  const std::vector<double> times = uniform_sample_times(0.0, 2.0, 0.05);
+  const auto reference = pendulum.reference(kTheta0, 0.0, times);
+  const InitialState start{0.0, pendulum.position(kTheta0), Eigen::VectorXd::Zero(2)};
+  long steps[2] = {0, 0};
+  for (const IdaErrorWeights weights : {IdaErrorWeights::kPerComponent, IdaErrorWeights::kPerGroup}) {
+    IntegratorOptions options = IntegratorOptions::ida(rtol, 1e-14);
+    options.ida_error_weights = weights;
+    double error = 0.0;
+    int i = 0;
+    const auto result = simulate(pendulum, options, start, times, [&](const Sample& s) {
+      error = std::max(error, (s.q - pendulum.position(reference[i++](0))).lpNorm<Eigen::Infinity>());
+    });
+    ASSERT_TRUE(result.status.ok()) << result.status.message;
+    const bool grouped = weights == IdaErrorWeights::kPerGroup;
+    steps[grouped ? 1 : 0] = result.statistics.steps;
+    std::printf("%s weights: error %.3e (%.1f rtol L), steps %ld\n", grouped ? "group" : "component", error,
+                error / (rtol * kLength), result.statistics.steps);
+    EXPECT_LT(error, 50.0 * rtol * kLength);
+  }
+  EXPECT_LT(steps[1], steps[0]);
+}
+
 }  // namespace
 }  // namespace limber::integrate
