@@ -1,4 +1,5 @@
 #include "multibody/momentum.h"
+#include "multibody/evaluated.h"
 
 #include "multibody/dynamics.h"
 #include "multibody/rotation.h"
@@ -7,7 +8,11 @@ namespace limber::multibody {
 
 Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state, Workspace& ws) {
   mass_matrix(model, state, ws);
-  const Eigen::VectorXd p = ws.M * state.v;
+  return momentum_of(model, state, ws.M);
+}
+
+Eigen::Matrix<double, 6, 1> momentum_of(const Model& model, const State& state, const Eigen::MatrixXd& M) {
+  const Eigen::VectorXd p = M * state.v;
   Eigen::Vector3d P = Eigen::Vector3d::Zero(), L = Eigen::Vector3d::Zero();
   // Each moving body's share: its translational momentum and, about the ground origin, its
   // moment plus its angular momentum turned into ground axes.
