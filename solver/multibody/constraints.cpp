@@ -1,4 +1,5 @@
 #include "multibody/constraints.h"
+#include "multibody/evaluated.h"
 
 #include <algorithm>
 #include <cmath>
@@ -184,6 +185,12 @@ ConstraintViolation constraint_violation(const Model& model, const State& state,
                                          const std::vector<bool>& released) {
   if (model.num_equations() == 0) return {};
   evaluate_constraints(model, state, Stage::kPosition, ws);
+  return violation_of_rows(model, state, ws, released);
+}
+
+ConstraintViolation violation_of_rows(const Model& model, const State& state, const Workspace& ws,
+                                      const std::vector<bool>& released) {
+  if (model.num_equations() == 0) return {};
   const Eigen::VectorXd rate = ws.G * state.v + ws.g_t;
   ConstraintViolation out;
   for (int row = 0; row < model.num_equations(); ++row) {

@@ -1,4 +1,5 @@
 #include "multibody/dynamics.h"
+#include "multibody/evaluated.h"
 
 #include "multibody/body.h"
 #include "multibody/constraints.h"
@@ -236,6 +237,11 @@ void mass_matrix_and_forces(const Model& model, const State& state, const Releas
 }
 
 EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
+  update_marker_kinematics(model, state, Stage::kPosition, ws);
+  return energies_at_markers(model, state, ws);
+}
+
+EnergyTerms energies_at_markers(const Model& model, const State& state, const Workspace& ws) {
   EnergyTerms e;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     e.kinetic += body_kinetic_energy(model, b, state.q, state.v);
@@ -243,7 +249,6 @@ EnergyTerms energies(const Model& model, const State& state, Workspace& ws) {
     if (model.bodies[b].kind == BodyKind::kFlexible) e.strain += flexible_strain_energy(model.bodies[b], state.q);
   }
   e.strain += nonlinear_body_strain_energy(model, state.q);
-  update_marker_kinematics(model, state, Stage::kPosition, ws);
   for (size_t k = 0; k < model.forces.size(); ++k) {
     const ForceElement& force = model.forces[k];
     if (const Rsda* r = std::get_if<Rsda>(&force)) {

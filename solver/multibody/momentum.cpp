@@ -1,12 +1,14 @@
 #include "multibody/momentum.h"
+#include "multibody/evaluated.h"
 
 #include "multibody/dynamics.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
+namespace {
 
-Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state) {
-  const Eigen::VectorXd p = mass_times(model, state.q, state.v);
+// P and L from the generalized momenta p = M v.
+Eigen::Matrix<double, 6, 1> momentum_from(const Model& model, const State& state, const Eigen::VectorXd& p) {
   Eigen::Vector3d P = Eigen::Vector3d::Zero(), L = Eigen::Vector3d::Zero();
   // Each moving body's share: its translational momentum and, about the ground origin, its
   // moment plus its angular momentum turned into ground axes.
@@ -21,6 +23,15 @@ Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& sta
   Eigen::Matrix<double, 6, 1> out;
   out << P, L;
   return out;
+}
+}  // namespace
+
+Eigen::Matrix<double, 6, 1> system_momentum(const Model& model, const State& state) {
+  return momentum_from(model, state, mass_times(model, state.q, state.v));
+}
+
+Eigen::Matrix<double, 6, 1> momentum_of(const Model& model, const State& state, const Eigen::MatrixXd& M) {
+  return momentum_from(model, state, M * state.v);
 }
 
 }  // namespace limber::multibody

@@ -1,11 +1,13 @@
 #include "multibody/reactions.h"
+#include "multibody/evaluated.h"
 
 #include <limits>
 #include <vector>
 
 #include <Eigen/Cholesky>
-#include <Eigen/QR>
+#include <Eigen/LU>
 
+#include "core/error.h"
 #include "core/minimum_norm.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
@@ -18,11 +20,18 @@ namespace {
 
 // Force and torque at a frame equivalent to generalized forces on one body's velocities:
 // the solution X of [J_p; J_w]ᵀ X = Q_b per column of Q (rows of the body's velocities).
-Eigen::MatrixXd frame_wrenches(const Body& body, const FrameKinematics& frame, const Eigen::MatrixXd& Q) {
-  Eigen::MatrixXd J(body.nv, 6);
-  J.leftCols<3>() = frame.J_p.middleCols(body.v_offset, body.nv).transpose();
-  J.rightCols<3>() = frame.J_w.middleCols(body.v_offset, body.nv).transpose();
-  return J.colPivHouseholderQr().solve(Q.middleRows(body.v_offset, body.nv));
+// A joint's rows reach the body through this frame only (Q_b = [J_p; J_w]ᵀ times the rows'
+// coefficients), so the equations are consistent and the six rows of the body frame's
+// velocities (ṙ, ω first: J = [I −A s̃; 0 A] there, invertible) determine X; a flexible body's
+// elastic rows agree with them. A fixed-size LU of those six instead of a least-squares QR of
+// all nv rows: the same X to round-off, without allocating.
+Eigen::Matrix<double, 6, Eigen::Dynamic> frame_wrenches(const Body& body, const FrameKinematics& frame,
+                                                        const Eigen::MatrixXd& Q) {
+  LIMBER_DEMAND(body.nv >= 6);
+  Eigen::Matrix<double, 6, 6> J;
+  J.leftCols<3>() = frame.J_p.middleCols<6>(body.v_offset).transpose();
+  J.rightCols<3>() = frame.J_w.middleCols<6>(body.v_offset).transpose();
+  return J.partialPivLu().solve(Q.middleRows<6>(body.v_offset));
 }
 
 }  // namespace
@@ -40,7 +49,7 @@ Eigen::Matrix<double, 6, Eigen::Dynamic> joint_wrench_map(const Model& model, co
   if (model.bodies[static_cast<std::size_t>(body_j)].kind != BodyKind::kGround) {
     return frame_wrenches(model.bodies[static_cast<std::size_t>(body_j)], mj, Q_k);
   }
-  const Eigen::MatrixXd on_i = frame_wrenches(model.bodies[static_cast<std::size_t>(body_i)], mi, Q_k);
+  const Eigen::Matrix<double, 6, Eigen::Dynamic> on_i = frame_wrenches(model.bodies[static_cast<std::size_t>(body_i)], mi, Q_k);
   Eigen::Matrix<double, 6, Eigen::Dynamic> on_j(6, joint.rows);
   on_j.topRows<3>() = -on_i.topRows(3);
   on_j.bottomRows<3>() = -on_i.bottomRows(3) + skew(mj.p_W - mi.p_W) * on_i.topRows(3);
@@ -137,6 +146,13 @@ Reactions compute_reactions(const Model& model, const State& state, const Eigen:
   generalized_forces(model, state, ws);
   return reactions_of(model, state, all_multipliers(model, ws.Q - mass_times(model, state.q, v_dot), partition, ws),
                       partition, ws);
+}
+
+Reactions reactions_of_evaluation(const Model& model, const State& state, const Eigen::VectorXd& v_dot,
+                                  const ConstraintPartition& partition, const Workspace& ws) {
+  Eigen::VectorXd b = ws.Q;
+  b.noalias() -= ws.M * v_dot;
+  return reactions_of(model, state, all_multipliers(model, b, partition, ws), partition, ws);
 }
 
 Reactions reactions_from_multipliers(const Model& model, const State& state,

@@ -236,7 +236,7 @@ RunSummary run_mechanism(const multibody::Model& model,
       summary.warnings.push_back(check.warning);
       if (hooks.on_warning) hooks.on_warning(check.warning);
     }
-    if (singular->add({sample.t, sample.q, sample.v})) report_singular();
+    if (singular->add({sample.t, sample.q, sample.v}, recorder.constraint_jacobian())) report_singular();
     if (hooks.writer) hooks.writer->append_sample(record);
     accuracy.add(record);
     summary.t_reached = sample.t;

@@ -12,6 +12,7 @@
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
 #include "multibody/energy_rates.h"
+#include "multibody/evaluated.h"
 #include "multibody/hinge_limit.h"
 #include "multibody/momentum.h"
 #include "multibody/nonlinear_body.h"
@@ -396,9 +397,14 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     out.bodies.push_back(pose);
   }
 
+  // The sample's one pass: M, Q and the markers (mass_matrix_and_forces), then every
+  // constraint row from those markers.
+  multibody::mass_matrix_and_forces(model_, state, workspace_);
+  multibody::evaluate_constraint_rows(model_, state, multibody::Stage::kPosition, workspace_);
+
   // Reactions on body j (joint frame = marker j's axes) and driver efforts.
   const multibody::Reactions reactions =
-      multibody::compute_reactions(model_, state, sample.vdot, partition_, workspace_);
+      multibody::reactions_of_evaluation(model_, state, sample.vdot, partition_, workspace_);
   for (std::size_t k = 0; k < reactions.joints.size(); ++k) {
     const multibody::JointReaction& r = reactions.joints[k];
     results::JointSample joint;
@@ -408,7 +414,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
     joint.force_ground = r.force_j_W;
     joint.torque_ground = r.torque_j_W;
     joint.indeterminate = r.indeterminate;
-    // Marker poses as compute_reactions left them in the workspace (this sample's q).
+    // Marker poses of the pass (this sample's q).
     joint.marker_i = marker_pose(workspace_.markers[model_.joints[k].marker_i]);
     joint.marker_j = marker_pose(workspace_.markers[model_.joints[k].marker_j]);
     out.joints.push_back(joint);
@@ -416,19 +422,13 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
   out.driver_efforts = reactions.driver_efforts;
 
   // Energies: stored ones from the state, flows from the integrals.
-  const multibody::EnergyTerms energy = multibody::energies(model_, state, workspace_);
+  const multibody::EnergyTerms energy = multibody::energies_at_markers(model_, state, workspace_);
   out.energies = {energy.kinetic,      energy.gravity,      energy.spring,      energy.strain,
                   sample.integrals(0), sample.integrals(1), sample.integrals(2)};
-  out.momentum = multibody::system_momentum(model_, state);
+  out.momentum = multibody::momentum_of(model_, state, workspace_.M);
 
-  // Hinge latches and stops: joint angle, torque on body j about the joint axis, and mode;
-  // one marker update serves them all.
-  const bool has_limits = std::any_of(model_.forces.begin(), model_.forces.end(), [](const auto& f) {
-    return std::holds_alternative<multibody::HingeLimit>(f);
-  });
-  if (has_limits) {
-    multibody::update_marker_kinematics(model_, state, multibody::Stage::kVelocity, workspace_);
-  }
+  // Hinge latches and stops (force elements: the pass's markers are at the velocity stage):
+  // joint angle, torque on body j about the joint axis, and mode.
   for (std::size_t k = 0; k < model_.forces.size(); ++k) {
     const auto* limit = std::get_if<multibody::HingeLimit>(&model_.forces[k]);
     if (!limit) continue;
@@ -448,7 +448,7 @@ results::Sample SampleRecorder::record(const integrate::Sample& sample) {
 
   // Constraint violations over all rows (redundant ones included).
   const multibody::ConstraintViolation violation =
-      multibody::constraint_violation(model_, state, workspace_, partition_.row_released);
+      multibody::violation_of_rows(model_, state, workspace_, partition_.row_released);
   out.position_violation = violation.position;
   out.velocity_violation = violation.velocity;
 

@@ -54,6 +54,11 @@ integrate::Quadrature energy_quadrature(const multibody::Model& model,
                                         const std::vector<multibody::StiffeningLoads>* stiffening = nullptr);
 
 // Turns integrator samples into results samples; one per run (holds a Workspace).
+// One pass per sample (house style §4): M, Q, every marker (velocity stage when the model has
+// force elements) and every constraint row (g, G, g_t) are evaluated once at (t, q, v) into
+// the recorder's workspace, and the reactions, energies, momentum, hinge limits and
+// violations read them there; so do the run's singular-passage and redundant-row watches
+// (constraint_jacobian, constraint_residuals).
 class SampleRecorder {
  public:
   // References must outlive the recorder.
@@ -62,8 +67,10 @@ class SampleRecorder {
 
   // Precondition: sample.integrals holds kEnergyIntegrals values (energy_quadrature).
   results::Sample record(const integrate::Sample& sample);
-  // The residuals g of all constraint rows (model.equations) at the last recorded sample.
+  // The residuals g and velocity Jacobian G of all constraint rows (model.equations) at the
+  // last recorded sample.
   const Eigen::VectorXd& constraint_residuals() const { return workspace_.g; }
+  const Eigen::MatrixXd& constraint_jacobian() const { return workspace_.G; }
 
  private:
   // A nonlinear body's sample: its chord frame, its node displacements in it, its probe, and

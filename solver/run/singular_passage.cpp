@@ -8,7 +8,6 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-#include "multibody/constraints.h"
 #include "multibody/redundancy.h"
 
 namespace limber::run {
@@ -60,20 +59,20 @@ bool clearly_regular(const Eigen::MatrixXd& gram, int rank, double start) {
 
 SingularPassageMonitor::SingularPassageMonitor(const multibody::Model& model, int rank,
                                                std::vector<bool> released)
-    : model_(model), rank_(rank), workspace_(model) {
+    : model_(model), rank_(rank) {
   for (int row = 0; row < model.num_equations(); ++row) {
     const bool out = static_cast<std::size_t>(row) < released.size() && released[static_cast<std::size_t>(row)];
     if (!out) rows_.push_back(row);
   }
 }
 
-bool SingularPassageMonitor::add(const multibody::State& state) {
+bool SingularPassageMonitor::add(const multibody::State& state, const Eigen::MatrixXd& G) {
   if (rank_ <= 0 || model_.num_equations() == 0) return false;
-  multibody::evaluate_constraints(model_, state, multibody::Stage::kPosition, workspace_);
   // The rows still in force only: a released joint's rows would only add zero singular values,
   // and the eigen-solve below costs m³ (the satellite's 48 hold-down rows made it 5 times
   // dearer, 16 % of the run).
-  const Eigen::MatrixXd S = multibody::unit_rows(workspace_.G(rows_, Eigen::all));
+  unit_rows_ = multibody::unit_rows(G(rows_, Eigen::all));
+  const Eigen::MatrixXd& S = unit_rows_;
   // Singular values and left vectors of S from its Gram matrix S Sᵀ (m x m, cheap for the
   // few equations of a mechanism; JacobiSVD of S made the deployment run 60 % slower). Its
   // eigenvalues ascend: the rank-th largest is at m − rank. Rounding in σ² (1e-16) is far
@@ -81,9 +80,10 @@ bool SingularPassageMonitor::add(const multibody::State& state) {
   const int m = static_cast<int>(rows_.size());
   if (rank_ > m) return false;
   // S Sᵀ from its lower half (the Cholesky factor reads no other), mirrored for the eigen-solve.
-  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(m, m);
-  gram.selfadjointView<Eigen::Lower>().rankUpdate(S);
-  gram.triangularView<Eigen::StrictlyUpper>() = gram.transpose();
+  gram_.setZero(m, m);
+  gram_.selfadjointView<Eigen::Lower>().rankUpdate(S);
+  gram_.triangularView<Eigen::StrictlyUpper>() = gram_.transpose();
+  const Eigen::MatrixXd& gram = gram_;
   // Far from a passage a Cholesky factor proves it (the usual sample), at a fifth of the
   // eigen-solve's cost.
   if (start_ <= 0.0 || !clearly_regular(gram, rank_, start_)) {

@@ -52,8 +52,10 @@ class SingularPassageMonitor {
   // `rank`: the independent rows at the start; rows flagged in `released` (released joints,
   // multibody/redundancy.h) are left out.
   SingularPassageMonitor(const multibody::Model& model, int rank, std::vector<bool> released = {});
-  // Adds a sample (t, q, v); returns true when a passage has just ended (`last()` holds it).
-  bool add(const multibody::State& state);
+  // Adds a sample (t, q, v) with the velocity Jacobian G of all the model's rows at state.q
+  // (a sample's pass: SampleRecorder::constraint_jacobian); returns true when a passage has
+  // just ended (`last()` holds it).
+  bool add(const multibody::State& state, const Eigen::MatrixXd& G);
   // Ends an open passage (end of run, branch not checked); true when one was open.
   bool finish();
   const SingularPassage& last() const { return last_; }
@@ -62,7 +64,7 @@ class SingularPassageMonitor {
   const multibody::Model& model_;
   int rank_;
   std::vector<int> rows_;  // the equations still in force (released joints' rows left out)
-  multibody::Workspace workspace_;
+  Eigen::MatrixXd unit_rows_, gram_;  // scratch: their unit rows S and S Sᵀ
   double start_ = -1.0;
   bool open_ = false;
   SingularPassage current_, last_;

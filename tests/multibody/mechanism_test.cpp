@@ -1,6 +1,7 @@
 // Closed-loop mechanisms: assembly of a four-bar from perturbed positions, a failing
 // assembly, and the seed slider-crank (redundant 3D model vs closed form and vs a
 // non-redundant model).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -8,6 +9,9 @@
 
 #include "multibody/assembly.h"
 #include "multibody/constraints.h"
+#include "multibody/dynamics.h"
+#include "multibody/evaluated.h"
+#include "multibody/momentum.h"
 #include "multibody/reactions.h"
 #include "test_models.h"
 
@@ -191,6 +195,47 @@ TEST(SliderCrank, RedundantModelReportsItsRedundantEquations) {
   EXPECT_EQ(s.partition.describe(model).size(), 3u);
   // The driver effort stays determinate and every moving joint is in a dependency group.
   EXPECT_FALSE(s.partition.row_indeterminate[model.find_equation("D1")]);
+}
+
+// The readers of one evaluation (evaluated.h, a sample's pass) against the functions that
+// evaluate for themselves, on the redundant slider-crank in motion: violation and energies
+// read the same numbers from the same arithmetic (equal to the bit); the reactions
+// solve the same normal equations with Q − M v̇ summed over the whole M instead of body blocks
+// and the wrench maps by the same LU, so they differ by rounding only: a few ε of the
+// largest reaction, times the Gram matrix's condition (1e-10 of it leaves a margin of 1e3;
+// torques against it over the rod's 1 m).
+TEST(SliderCrank, ReadersOfOneEvaluationEqualTheEvaluatingFunctions) {
+  const Model model = testing::slider_crank({});
+  const Solution s = solve_at(model, 0.0123);
+  Workspace pass(model), own(model);
+  mass_matrix_and_forces(model, s.state, pass);
+  evaluate_constraint_rows(model, s.state, Stage::kPosition, pass);
+
+  const ConstraintViolation read = violation_of_rows(model, s.state, pass);
+  const ConstraintViolation evaluated = constraint_violation(model, s.state, own);
+  EXPECT_EQ(read.position, evaluated.position);
+  EXPECT_EQ(read.velocity, evaluated.velocity);
+  const EnergyTerms e_read = energies_at_markers(model, s.state, pass);
+  const EnergyTerms e_evaluated = energies(model, s.state, own);
+  EXPECT_EQ(e_read.kinetic, e_evaluated.kinetic);
+  EXPECT_EQ(e_read.gravity, e_evaluated.gravity);
+  EXPECT_EQ(e_read.spring, e_evaluated.spring);
+  EXPECT_EQ(e_read.strain, e_evaluated.strain);
+  // system_momentum multiplies M v body block by body block (mass_times): the same products
+  // summed in another order, so equal to a few ε of the momentum (1e-12 leaves a margin of 1e3).
+  const Eigen::Matrix<double, 6, 1> h_read = momentum_of(model, s.state, pass.M);
+  EXPECT_LE((h_read - system_momentum(model, s.state)).norm(), 1e-12 * h_read.norm());
+  EXPECT_GT(h_read.norm(), 0.0);
+
+  const Reactions r_read = reactions_of_evaluation(model, s.state, s.v_dot, s.partition, pass);
+  double largest = 0.0;
+  for (const JointReaction& r : s.reactions.joints) largest = std::max(largest, r.force_j_W.norm());
+  ASSERT_GT(largest, 1.0);  // the crank's drive loads the joints by newtons at least
+  for (std::size_t k = 0; k < model.joints.size(); ++k) {
+    EXPECT_LE((r_read.joints[k].force_j_W - s.reactions.joints[k].force_j_W).norm(), 1e-10 * largest) << k;
+    EXPECT_LE((r_read.joints[k].torque_j_W - s.reactions.joints[k].torque_j_W).norm(), 1e-10 * largest) << k;
+  }
+  EXPECT_LE(std::abs(r_read.driver_efforts[0] - s.reactions.driver_efforts[0]), 1e-10 * largest);
 }
 
 TEST(SliderCrank, SliderFollowsClosedForm) {

@@ -18,6 +18,7 @@
 #include "io/case_reader.h"
 #include "io/case_reduction.h"
 #include "io/mechanism_builder.h"
+#include "multibody/constraints.h"
 #include "results/results_writer.h"
 #include "run/prepared_start.h"
 #include "run/run_driver.h"
@@ -181,10 +182,12 @@ TEST(Parallelogram, BranchCheckReportsAVelocityJumpAcrossAPassage) {
   const int crank2 = model.bodies[model.find_body("crank2")].v_offset;
   const int rank = static_cast<int>(prepare_start(model, built.assembly).partition.independent.size());
   SingularPassageMonitor monitor(model, rank);
+  multibody::Workspace ws(model);
   std::vector<SingularPassage> passages;
   for (multibody::State state : trace.states) {
     if (state.t > 0.125 && state.t < 0.25) state.v.segment<3>(crank2 + 3) *= -1.0;
-    if (monitor.add(state)) passages.push_back(monitor.last());
+    multibody::evaluate_constraints(model, state, multibody::Stage::kPosition, ws);
+    if (monitor.add(state, ws.G)) passages.push_back(monitor.last());
   }
   ASSERT_GE(passages.size(), 1u);
   EXPECT_TRUE(passages[0].changed_branch());
