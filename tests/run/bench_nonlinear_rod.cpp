@@ -8,7 +8,7 @@
 // corotational_rod.h, compared in the peak deflection and the peak |R3| reaction. Not a test:
 // prints figures for docs/nonlinear-beams.md.
 //   limber_bench_nonlinear_rod [t_end of the seed run, default 1] [t_end of the comparison, default 0.5]
-//                              [step of the seed run, default the case's 1e-4 s]
+//                              [step of the seed run, default the case's]
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -98,9 +98,9 @@ int main(int argc, char** argv) {
   // (1) The seed set-up with the rod nonlinear.
   const Histories seed = run_text(read_text(cases + "/slider_crank_seed_setup_nonlinear.yaml"), seed_end, seed_step);
   const auto& s = seed.summary;
-  fmt::print("seed set-up, nonlinear rod, {} s: {:.1f} s wall, {:.1f} s CPU, {} steps (h = {:g} s), {} Newton "
+  fmt::print("seed set-up, nonlinear rod, {} s: {:.1f} s wall, {:.1f} s CPU, {} steps (h = {}), {} Newton "
              "iterations, {} iteration matrices, {} rejected steps, status {}, energy error {:.2e}, local error {:.2e}\n",
-             seed_end, s.wall_seconds, cpu_seconds(), s.statistics.steps, seed_step > 0.0 ? seed_step : 1e-4, s.statistics.newton_iterations,
+             seed_end, s.wall_seconds, cpu_seconds(), s.statistics.steps, seed_step > 0.0 ? fmt::format("{:g} s", seed_step) : std::string("the case's"), s.statistics.newton_iterations,
              s.statistics.jacobian_evaluations, s.statistics.rejected_steps, s.accurate() ? "ok" : "inaccurate",
              s.accuracy.energy_relative, s.accuracy.local_error);
   for (const std::string& warning : s.accuracy.warnings) fmt::print("  accuracy warning: {}\n", warning);

@@ -203,8 +203,8 @@ TEST(SweepCli, RunModesOption) {
 // `--reference nonlinear` on a short window of the seed set-up (0.2 m crank, 20 ms: the rod's
 // first bending swing, peak 38.4 mm at 14 ms). The reference is the case with the rod nonlinear
 // (`limber run --formulation nonlinear`): its deflection equals the run of the case that says
-// `formulation: nonlinear` (cases/slider_crank_seed_setup_nonlinear.yaml), the same model built
-// two ways, to 1e-12 of the peak (deterministic runs of one model; measured: equal). The modal
+// `formulation: nonlinear` (cases/slider_crank_seed_setup_nonlinear.yaml, at the sweep point's
+// step), the same model built two ways, to 1e-12 of the peak (deterministic runs of one model; measured: equal). The modal
 // point's error against it is the modal model's: against a run of the same modal case at 1/8 of
 // the step (the integration error alone) it is 2.1e-4 (peak), against the nonlinear rod 0.41 —
 // the linear rod overshoots to 41.9 mm; asserted: more than 100 times the integration error.
@@ -223,7 +223,7 @@ TEST(SweepCli, NonlinearReferenceMeasuresTheModalModel) {
 
   // The same model from the case key.
   const test::CommandRun keyed = run_limber("run " + std::string(LIMBER_CASES_DIR) +
-                                            "/slider_crank_seed_setup_nonlinear.yaml --t-end 0.02 -o " +
+                                            "/slider_crank_seed_setup_nonlinear.yaml --step 1e-4 --t-end 0.02 -o " +
                                             (dir / "keyed").string());
   ASSERT_EQ(keyed.exit_code, 0) << keyed.err;
   const auto deflection = [](const std::filesystem::path& file) {
