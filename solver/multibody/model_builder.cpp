@@ -305,7 +305,6 @@ int ModelBuilder::add_driver(const std::string& name, const std::string& joint,
 
 void ModelBuilder::add_rsda(const RsdaSpec& spec, const SourceLocation& where) {
   const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
-  for (const int m : {mi, mj}) refuse_nonlinear_marker("RSDA", spec.name, m, where);
   if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0)) {
     throw InputError(fmt::format("RSDA \"{}\": expected stiffness and damping ≥ 0, got k = {}, c = {}",
                                  spec.name, spec.stiffness, spec.damping), where);
@@ -330,7 +329,6 @@ void ModelBuilder::add_hinge_limit(const HingeLimitSpec& spec, const SourceLocat
                                  spec.name, spec.joint), where);
   }
   const Joint& joint = model_.joints[j];
-  for (const int m : {joint.marker_i, joint.marker_j}) refuse_nonlinear_marker(kind, spec.name, m, where);
   if (joint.type != JointType::kRevolute) {
     throw InputError(fmt::format("{} \"{}\": expected a revolute joint, got {} joint \"{}\"", kind,
                                  spec.name, to_string(joint.type), spec.joint), where);
@@ -372,17 +370,22 @@ void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, con
   if (!spec.marker.empty()) {
     // At a marker: its body, point and node.
     const Marker& marker = model_.markers[static_cast<std::size_t>(marker_index(spec.marker, where))];
-    refuse_nonlinear_marker("acceleration probe", spec.name, marker_index(spec.marker, where), where);
     probe.body = marker.body;
     probe.p_B = marker.p_BM;
     probe.node = marker.node;
   } else {
-    if (model_.find_nonlinear_body(spec.body) >= 0) {
-      throw InputError(fmt::format("acceleration probe \"{}\": expected a rigid or modal body, got nonlinear body "
-                                   "\"{}\" (acceleration probes on a nonlinear body are not available yet; "
-                                   "docs/nonlinear-beams.md, \"Limits\")", spec.name, spec.body), where);
-    }
     probe.body = model_.find_body(spec.body);
+    if (const int k = model_.find_nonlinear_body(spec.body); k >= 0) {
+      // At an FE node of a nonlinear body: the origin of that node's rigid body.
+      const std::vector<int>& node_bodies = model_.nonlinear_bodies[static_cast<std::size_t>(k)].node_bodies;
+      if (spec.node < 0 || spec.node >= static_cast<int>(node_bodies.size())) {
+        throw InputError(fmt::format("acceleration probe \"{}\": expected a node index in [0, {}) of nonlinear body "
+                                     "\"{}\", got {}", spec.name, node_bodies.size(), spec.body, spec.node), where);
+      }
+      probe.body = node_bodies[static_cast<std::size_t>(spec.node)];
+      probe.p_B = Eigen::Vector3d::Zero();
+      probe.node = -1;
+    }
     if (probe.body < 0) {
       throw InputError(fmt::format("acceleration probe \"{}\": expected an existing body, got \"{}\"", spec.name,
                                    spec.body), where);
@@ -409,7 +412,6 @@ void ModelBuilder::add_acceleration_probe(const AccelerationProbeSpec& spec, con
 
 void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
   const int mi = marker_index(spec.marker_i, where), mj = marker_index(spec.marker_j, where);
-  for (const int m : {mi, mj}) refuse_nonlinear_marker("TSDA", spec.name, m, where);
   if (!(spec.stiffness >= 0.0) || !(spec.damping >= 0.0) || !(spec.free_length >= 0.0)) {
     throw InputError(fmt::format("TSDA \"{}\": expected stiffness, damping and free length ≥ 0, "
                                  "got k = {}, c = {}, l0 = {}", spec.name, spec.stiffness, spec.damping,
@@ -422,7 +424,6 @@ void ModelBuilder::add_tsda(const TsdaSpec& spec, const SourceLocation& where) {
 
 void ModelBuilder::add_point_load(const PointLoadSpec& spec, const SourceLocation& where) {
   const int m = marker_index(spec.marker, where);
-  refuse_nonlinear_marker("point load", spec.name, m, where);
   claim_element_name("point load", spec.name, where);
   model_.forces.push_back(PointLoad{spec.name, m, spec.force, spec.torque, spec.scale, spec.frame});
 }

@@ -208,9 +208,6 @@ class ModelBuilder {
   int check_new_marker(const std::string& name, const std::string& body, const Eigen::Matrix3d& R_BM,
                        const SourceLocation& where) const;
   int append_body(Body body);
-  // Throws InputError naming `kind` and `name` when `marker` sits on a nonlinear body's node.
-  void refuse_nonlinear_marker(const char* kind, const std::string& name, int marker,
-                               const SourceLocation& where) const;
   // Checks the text of a joint/driver/force name (core/names.h; `kind` for messages, e.g.
   // "joint") and that no element has it yet.
   void claim_element_name(const char* kind, const std::string& name, const SourceLocation& where);

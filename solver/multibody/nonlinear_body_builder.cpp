@@ -77,16 +77,4 @@ int ModelBuilder::add_nonlinear_body(const NonlinearBodySpec& spec, const Source
   return static_cast<int>(model_.nonlinear_bodies.size()) - 1;
 }
 
-void ModelBuilder::refuse_nonlinear_marker(const char* kind, const std::string& name, int marker,
-                                           const SourceLocation& where) const {
-  const int owner = nonlinear_body_of(model_)[static_cast<std::size_t>(model_.markers[static_cast<std::size_t>(marker)].body)];
-  if (owner < 0) return;
-  throw InputError(fmt::format("{} \"{}\": expected its markers on rigid or modal bodies, got marker \"{}\" on "
-                               "nonlinear body \"{}\" ({}s on a nonlinear body are not available yet; "
-                               "docs/nonlinear-beams.md, \"Limits\")",
-                               kind, name, model_.markers[static_cast<std::size_t>(marker)].name,
-                               model_.nonlinear_bodies[static_cast<std::size_t>(owner)].name, kind),
-                   where);
-}
-
 }  // namespace limber::multibody

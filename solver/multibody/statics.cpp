@@ -7,10 +7,12 @@
 #include <Eigen/SVD>
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "core/minimum_norm.h"
 #include "multibody/body.h"
 #include "multibody/constraints.h"
 #include "multibody/dynamics.h"
+#include "multibody/nonlinear_body.h"
 #include "multibody/rotation.h"
 
 namespace limber::multibody {
@@ -27,23 +29,42 @@ constexpr double kFreeLoadShare = 0.5;
 // Below this fraction of σ_max a singular value is zero to rounding (the differences' noise,
 // ~1e-10 of an entry, equilibrated), however the loads push: a motion with no stiffness.
 constexpr double kZeroStiffness = 1e-13;
+// The force residual's floor with nonlinear bodies, as a share of BeamStructure::force_roundoff
+// (100 ε max|K_l| (size + max|X|)): an element's axial force is EA/l times a length difference,
+// whose rounding stalls Newton there (measured ≈ 1e-7 N on a 1 m, 20-element steel beam, whose
+// force_roundoff is 3.7e-5 N), whatever the loads; below it no iterate is better than another.
+constexpr double kBeamRoundoffShare = 0.1;
 
-// The residual of the equilibrium at (q, λ): force part Q − G_iᵀλ (nv), then g_i (nc).
+// The residual of the equilibrium at (q, λ) and load factor s: force part
+// s (Q − Q_b) + Q_b − G_iᵀλ (nv), then g_i (nc). Q_b, the beams of nonlinear bodies, is the
+// structure and is never scaled; s < 1 only while loads are stepped onto a nonlinear body.
 class EquilibriumResidual {
  public:
   EquilibriumResidual(const Model& model, const ConstraintPartition& partition, const State& start)
       : model_(model), rows_(partition.independent), ws_(model), state_(start) {
     state_.v = Eigen::VectorXd::Zero(model.nv);
+    Q_beams_ = Eigen::VectorXd::Zero(model.nv);
+    for (const NonlinearBody& body : model.nonlinear_bodies) {
+      force_floor_ = std::max(force_floor_, kBeamRoundoffShare * body.structure->force_roundoff);
+    }
   }
 
   int nv() const { return model_.nv; }
   int nc() const { return static_cast<int>(rows_.size()); }
   const State& state() const { return state_; }
   void set_q(const Eigen::VectorXd& q) { state_.q = q; }
+  double load_factor() const { return load_factor_; }
+  void set_load_factor(double s) { load_factor_ = s; }
 
-  // Evaluates at the current q: Q, G_i and g_i.
+  // Evaluates at the current q: Q (scaled as above), G_i and g_i.
   void evaluate() {
     generalized_forces(model_, state_, ws_);
+    Q_ = ws_.Q;
+    if (!model_.nonlinear_bodies.empty()) {
+      Q_beams_.setZero();
+      add_nonlinear_body_forces(model_, state_.q, state_.v, Q_beams_);
+      Q_ = load_factor_ * (ws_.Q - Q_beams_) + Q_beams_;
+    }
     evaluate_constraints(model_, state_, Stage::kPosition, ws_);
     G_.resize(nc(), nv());
     g_.resize(nc());
@@ -52,10 +73,11 @@ class EquilibriumResidual {
       g_(k) = ws_.g(rows_[static_cast<std::size_t>(k)]);
     }
   }
-  const Eigen::VectorXd& Q() const { return ws_.Q; }
+  const Eigen::VectorXd& Q() const { return Q_; }
+  double force_floor() const { return force_floor_; }
   const Eigen::MatrixXd& G() const { return G_; }
   const Eigen::VectorXd& g() const { return g_; }
-  Eigen::VectorXd force(const Eigen::VectorXd& lambda) const { return ws_.Q - G_.transpose() * lambda; }
+  Eigen::VectorXd force(const Eigen::VectorXd& lambda) const { return Q_ - G_.transpose() * lambda; }
 
   // q ⊕ ξ, body by body.
   Eigen::VectorXd moved(const Eigen::VectorXd& q, const Eigen::VectorXd& xi) const {
@@ -66,7 +88,8 @@ class EquilibriumResidual {
     return out;
   }
 
-  // ∂(Q − G_iᵀλ)/∂ξ at q by central differences; leaves the evaluation at q.
+  // ∂(Q − G_iᵀλ)/∂ξ at q by central differences, the beams' coupled stiffness with the rest;
+  // leaves the evaluation at q.
   Eigen::MatrixXd force_derivative(const Eigen::VectorXd& lambda) {
     const Eigen::VectorXd q = state_.q;
     Eigen::MatrixXd K(nv(), nv());
@@ -92,6 +115,9 @@ class EquilibriumResidual {
   std::vector<int> rows_;
   Workspace ws_;
   State state_;
+  double load_factor_ = 1.0;
+  double force_floor_ = 0.0;  // [N, N·m] (kBeamRoundoffShare)
+  Eigen::VectorXd Q_, Q_beams_;
   Eigen::MatrixXd G_;
   Eigen::VectorXd g_;
 };
@@ -182,6 +208,187 @@ int count_unstable_directions(const Eigen::MatrixXd& K_force, const Eigen::Matri
   return static_cast<int>((eig.array() < -1e-8 * scale).count());
 }
 
+// The Newton matrix [∂r/∂ξ  −G_iᵀ; G_i  0] at the residual's evaluation, equilibrated, and its SVD.
+struct NewtonMatrix {
+  Eigen::MatrixXd K_force;  // ∂(Q − G_iᵀλ)/∂ξ
+  Eigen::VectorXd D_r, D_c;
+  Eigen::BDCSVD<Eigen::MatrixXd> svd;
+};
+
+NewtonMatrix newton_matrix(EquilibriumResidual& residual, const Eigen::VectorXd& lambda) {
+  const int nv = residual.nv(), nc = residual.nc();
+  NewtonMatrix matrix;
+  matrix.K_force = residual.force_derivative(lambda);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nv + nc, nv + nc);
+  J.topLeftCorner(nv, nv) = matrix.K_force;
+  J.topRightCorner(nv, nc) = -residual.G().transpose();
+  J.bottomLeftCorner(nc, nv) = residual.G();
+  equilibrate(J, matrix.D_r, matrix.D_c);
+  matrix.svd.compute(matrix.D_r.asDiagonal() * J * matrix.D_c.asDiagonal(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  return matrix;
+}
+
+// Newton's method on (q, λ) at one load factor, recording its progress in `result`.
+class NewtonIteration {
+ public:
+  NewtonIteration(const Model& model, EquilibriumResidual& residual, const StaticsOptions& options,
+                  StaticsResult& result)
+      : model_(model), residual_(residual), options_(options), result_(result),
+        full_steps_(!model.nonlinear_bodies.empty()) {}
+
+  const Eigen::VectorXd& lambda() const { return lambda_; }
+
+  // Iterates to the equilibrium at load factor s from the residual's q; on failure
+  // result.message says why. Returns the status (also left in result.status).
+  StaticsStatus solve(double s) {
+    residual_.set_load_factor(s);
+    residual_.evaluate();
+    // Multipliers that balance the forces as well as the joints can: Newton starts near them.
+    lambda_ = residual_.nc() > 0 ? minimum_norm_solve(residual_.G().transpose(), residual_.Q(), kRedundancyThreshold)
+                                 : Eigen::VectorXd();
+    force_ = residual_.force(lambda_);
+    record();
+    for (int iteration = 0;; ++iteration) {
+      const NewtonMatrix matrix = newton_matrix(residual_, lambda_);
+      const Eigen::VectorXd b = -(matrix.D_r.asDiagonal() * stacked(force_));
+      std::vector<bool> solve_along;
+      if (!classify_free_motions(matrix, solve_along)) return result_.status;
+      if (result_.force_residual <= std::max(options_.force_tolerance * result_.force_scale, residual_.force_floor()) &&
+          result_.constraint_residual <= options_.constraint_tolerance) {
+        result_.unstable_directions = count_unstable_directions(matrix.K_force, residual_.G());
+        return result_.status = StaticsStatus::kOk;
+      }
+      if (iteration == options_.max_iterations) {
+        result_.message = fmt::format(
+            "static equilibrium not found in {} Newton iterations: force residual {:.3g} of the "
+            "largest force {:.3g}, constraint residual {:.3g}; the loads may exceed what the "
+            "mechanism can carry (a snap-through), or the start is far from any equilibrium",
+            options_.max_iterations, result_.force_residual, result_.force_scale, result_.constraint_residual);
+        return result_.status = StaticsStatus::kNotConverged;
+      }
+      // The minimum-norm Newton step: free motions stay where they are.
+      const Eigen::VectorXd& sigma = matrix.svd.singularValues();
+      Eigen::VectorXd y = Eigen::VectorXd::Zero(sigma.size());
+      for (Eigen::Index i = 0; i < sigma.size(); ++i) {
+        if (solve_along[static_cast<std::size_t>(i)]) {
+          y += matrix.svd.matrixV().col(i) * (matrix.svd.matrixU().col(i).dot(b) / sigma(i));
+        }
+      }
+      line_search(matrix, matrix.D_c.asDiagonal() * y, b.norm());
+      ++result_.iterations;
+    }
+  }
+
+ private:
+  Eigen::VectorXd stacked(const Eigen::VectorXd& force) const {
+    Eigen::VectorXd F(residual_.nv() + residual_.nc());
+    F << force, residual_.g();
+    return F;
+  }
+
+  void record() {
+    result_.force_scale = std::max({result_.force_scale, residual_.Q().cwiseAbs().maxCoeff(),
+                                    (residual_.G().transpose() * lambda_).cwiseAbs().maxCoeff()});
+    result_.force_residual = force_.cwiseAbs().maxCoeff();
+    result_.constraint_residual = residual_.nc() > 0 ? residual_.g().cwiseAbs().maxCoeff() : 0.0;
+  }
+
+  // Free motions: what load acts along each (the left vector's generalized force). A loaded one
+  // whose singular value is not zero to rounding is a soft direction: solved along. Returns
+  // false (result filled) when a load pushes along a motion with no stiffness.
+  bool classify_free_motions(const NewtonMatrix& matrix, std::vector<bool>& solve_along) {
+    const Eigen::VectorXd& sigma = matrix.svd.singularValues();
+    const double cut = kFreeMotionThreshold * (sigma.size() > 0 ? sigma(0) : 0.0);
+    const Eigen::VectorXd F = stacked(force_);
+    const double allowed = kFreeLoadFraction * result_.force_scale;
+    result_.free_motions.clear();
+    solve_along.assign(static_cast<std::size_t>(sigma.size()), false);
+    for (Eigen::Index i = 0; i < sigma.size(); ++i) {
+      solve_along[static_cast<std::size_t>(i)] = sigma(i) > cut;
+      if (sigma(i) > cut) continue;
+      const Eigen::VectorXd w = matrix.D_r.asDiagonal() * matrix.svd.matrixU().col(i);
+      const Eigen::VectorXd motion = (matrix.D_c.asDiagonal() * matrix.svd.matrixV().col(i)).head(residual_.nv());
+      const double w_scale = w.head(residual_.nv()).cwiseAbs().maxCoeff();
+      const double load = w_scale > 0.0 ? std::abs(w.dot(F)) / w_scale : 0.0;
+      if (motion.cwiseAbs().maxCoeff() == 0.0) continue;  // a dependent multiplier, not a motion
+      // A real load along the motion is what is left of the residual once Newton has balanced
+      // the rest; a computed null vector's error δ only shows δ ‖F‖ of it.
+      const bool loaded = load > allowed && load >= kFreeLoadShare * result_.force_residual;
+      if (loaded && sigma(i) > kZeroStiffness * sigma(0)) {
+        solve_along[static_cast<std::size_t>(i)] = true;
+        continue;
+      }
+      result_.free_motions.push_back({describe_motion(model_, residual_.state(), motion), load});
+      if (loaded) {
+        result_.status = StaticsStatus::kFreeMotionUnderLoad;
+        result_.message = fmt::format(
+            "static equilibrium: a load meets no stiffness: {} freely, and the applied loads "
+            "push along that motion (generalized force {:.3g}); hold it with a joint, a spring or "
+            "a driver, or remove the load",
+            result_.free_motions.back().description, load);
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Backtracking on the scaled residual norm along (Δξ, Δλ) = step from merit0 = ‖b‖.
+  void line_search(const NewtonMatrix& matrix, const Eigen::VectorXd& step, double merit0) {
+    const int nv = residual_.nv(), nc = residual_.nc();
+    const Eigen::VectorXd q0 = residual_.state().q;
+    const Eigen::VectorXd lambda0 = lambda_;
+    double alpha = 1.0;
+    for (int halving = 0;; ++halving) {
+      residual_.set_q(residual_.moved(q0, alpha * step.head(nv)));
+      lambda_ = lambda0 + alpha * step.tail(nc);
+      residual_.evaluate();
+      force_ = residual_.force(lambda_);
+      const double merit = (matrix.D_r.asDiagonal() * stacked(force_)).norm();
+      if (full_steps_ || merit <= (1.0 - 1e-4 * alpha) * merit0 || halving == kLineSearchHalvings) break;
+      alpha *= 0.5;
+    }
+    record();
+  }
+
+  const Model& model_;
+  EquilibriumResidual& residual_;
+  const StaticsOptions& options_;
+  StaticsResult& result_;
+  Eigen::VectorXd lambda_, force_;
+  // Full Newton steps with a nonlinear body (the load increments globalise instead, as in
+  // nonlinear_beam/static_solver.h): backtracking on the residual's norm stalled on a
+  // tip-loaded cantilever (the norm grew for 50 iterations of ever shorter steps; the beams'
+  // axial forces, EA/l ~ 1e9 N/m, dominate it).
+  bool full_steps_ = false;
+};
+
+// With a nonlinear body: the loads (every force but the beams') stepped on in increments of
+// 1/load_increments, a failed increment halved from the last equilibrium (load control, as
+// nonlinear_beam/static_solver.h; Crisfield 1991, §9.2).
+void step_loads(EquilibriumResidual& residual, NewtonIteration& newton, const StaticsOptions& options,
+                StaticsResult& result) {
+  double reached = 0.0, increment = 1.0 / options.load_increments;
+  for (int bisections = 0;;) {
+    const double target = std::min(1.0, reached + increment);
+    const Eigen::VectorXd q0 = residual.state().q;
+    if (newton.solve(target) == StaticsStatus::kOk) {
+      if (target == 1.0) return;
+      reached = target;
+      continue;
+    }
+    if (result.status == StaticsStatus::kFreeMotionUnderLoad || bisections == options.max_bisections) {
+      result.message = fmt::format("at {:.4g} of the loads (stepped onto the nonlinear bodies; {:.4g} held, "
+                                   "after {} halvings of the step): {}",
+                                   target, reached, bisections, result.message);
+      return;
+    }
+    residual.set_q(q0);
+    result.status = StaticsStatus::kOk;
+    increment *= 0.5;
+    ++bisections;
+  }
+}
+
 }  // namespace
 
 const char* to_string(StaticsStatus status) {
@@ -195,117 +402,17 @@ const char* to_string(StaticsStatus status) {
 
 StaticsResult solve_statics(const Model& model, const ConstraintPartition& partition,
                             const State& start, const StaticsOptions& options) {
+  LIMBER_DEMAND(options.load_increments >= 1 && options.max_bisections >= 0);
   EquilibriumResidual residual(model, partition, start);
-  const int nv = residual.nv(), nc = residual.nc();
   StaticsResult result;
-  residual.evaluate();
-  // Multipliers that balance the forces as well as the joints can: Newton starts near them.
-  Eigen::VectorXd lambda = nc > 0 ? minimum_norm_solve(residual.G().transpose(), residual.Q(),
-                                                       kRedundancyThreshold)
-                                  : Eigen::VectorXd();
-  const auto stacked = [&](const Eigen::VectorXd& force) {
-    Eigen::VectorXd F(nv + nc);
-    F << force, residual.g();
-    return F;
-  };
-  const auto record = [&](const Eigen::VectorXd& force) {
-    result.force_scale = std::max({result.force_scale, residual.Q().cwiseAbs().maxCoeff(),
-                                   (residual.G().transpose() * lambda).cwiseAbs().maxCoeff()});
-    result.force_residual = force.cwiseAbs().maxCoeff();
-    result.constraint_residual = nc > 0 ? residual.g().cwiseAbs().maxCoeff() : 0.0;
-  };
-  Eigen::VectorXd force = residual.force(lambda);
-  record(force);
-  for (result.iterations = 0;; ++result.iterations) {
-    // The Newton matrix [∂r/∂ξ  −G_iᵀ; G_i  0], equilibrated, and its SVD.
-    const Eigen::MatrixXd K_force = residual.force_derivative(lambda);
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nv + nc, nv + nc);
-    J.topLeftCorner(nv, nv) = K_force;
-    J.topRightCorner(nv, nc) = -residual.G().transpose();
-    J.bottomLeftCorner(nc, nv) = residual.G();
-    Eigen::VectorXd D_r, D_c;
-    equilibrate(J, D_r, D_c);
-    const Eigen::MatrixXd J_s = D_r.asDiagonal() * J * D_c.asDiagonal();
-    const Eigen::BDCSVD<Eigen::MatrixXd> svd(J_s, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    const Eigen::VectorXd& sigma = svd.singularValues();
-    const double cut = kFreeMotionThreshold * (sigma.size() > 0 ? sigma(0) : 0.0);
-    const Eigen::VectorXd F = stacked(force);
-    const Eigen::VectorXd b = -(D_r.asDiagonal() * F);
-
-    // Free motions: what load acts along each (the left vector's generalized force). A loaded
-    // one whose singular value is not zero to rounding is a soft direction: solved along.
-    result.free_motions.clear();
-    const double allowed = kFreeLoadFraction * result.force_scale;
-    std::vector<bool> solve_along(static_cast<std::size_t>(sigma.size()), false);
-    for (Eigen::Index i = 0; i < sigma.size(); ++i) {
-      solve_along[static_cast<std::size_t>(i)] = sigma(i) > cut;
-      if (sigma(i) > cut) continue;
-      const Eigen::VectorXd w = D_r.asDiagonal() * svd.matrixU().col(i);
-      const Eigen::VectorXd m = D_c.asDiagonal() * svd.matrixV().col(i);
-      const double w_scale = w.head(nv).cwiseAbs().maxCoeff();
-      const double load = w_scale > 0.0 ? std::abs(w.dot(F)) / w_scale : 0.0;
-      const Eigen::VectorXd motion = m.head(nv);
-      if (motion.cwiseAbs().maxCoeff() == 0.0) continue;  // a dependent multiplier, not a motion
-      // A real load along the motion is what is left of the residual once Newton has balanced
-      // the rest; a computed null vector's error δ only shows δ ‖F‖ of it.
-      const bool loaded = load > allowed && load >= kFreeLoadShare * result.force_residual;
-      if (loaded && sigma(i) > kZeroStiffness * sigma(0)) {
-        solve_along[static_cast<std::size_t>(i)] = true;
-        continue;
-      }
-      result.free_motions.push_back({describe_motion(model, residual.state(), motion), load});
-      if (loaded) {
-        result.status = StaticsStatus::kFreeMotionUnderLoad;
-        result.state = residual.state();
-        result.lambda = lambda;
-        result.message = fmt::format(
-            "static equilibrium: a load meets no stiffness: {} freely, and the applied loads "
-            "push along that motion (generalized force {:.3g}); hold it with a joint, a spring or "
-            "a driver, or remove the load",
-            result.free_motions.back().description, load);
-        return result;
-      }
-    }
-    if (result.force_residual <= options.force_tolerance * result.force_scale &&
-        result.constraint_residual <= options.constraint_tolerance) {
-      result.unstable_directions = count_unstable_directions(K_force, residual.G());
-      break;
-    }
-    if (result.iterations == options.max_iterations) {
-      result.status = StaticsStatus::kNotConverged;
-      result.message = fmt::format(
-          "static equilibrium not found in {} Newton iterations: force residual {:.3g} of the "
-          "largest force {:.3g}, constraint residual {:.3g}; the loads may exceed what the "
-          "mechanism can carry (a snap-through), or the start is far from any equilibrium",
-          options.max_iterations, result.force_residual, result.force_scale, result.constraint_residual);
-      break;
-    }
-
-    // The minimum-norm Newton step: free motions stay where they are.
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(nv + nc);
-    for (Eigen::Index i = 0; i < sigma.size(); ++i) {
-      if (solve_along[static_cast<std::size_t>(i)]) y += svd.matrixV().col(i) * (svd.matrixU().col(i).dot(b) / sigma(i));
-    }
-    const Eigen::VectorXd step = D_c.asDiagonal() * y;
-
-    // Backtracking on the scaled residual norm.
-    const Eigen::VectorXd q0 = residual.state().q;
-    const Eigen::VectorXd lambda0 = lambda;
-    const double merit0 = b.norm();
-    double alpha = 1.0;
-    for (int halving = 0;; ++halving) {
-      residual.set_q(residual.moved(q0, alpha * step.head(nv)));
-      lambda = lambda0 + alpha * step.tail(nc);
-      residual.evaluate();
-      force = residual.force(lambda);
-      const double merit = (D_r.asDiagonal() * stacked(force)).norm();
-      if (merit <= (1.0 - 1e-4 * alpha) * merit0 || halving == kLineSearchHalvings) break;
-      alpha *= 0.5;
-    }
-    record(force);
+  NewtonIteration newton(model, residual, options, result);
+  if (model.nonlinear_bodies.empty()) {
+    newton.solve(1.0);
+  } else {
+    step_loads(residual, newton, options, result);
   }
   result.state = residual.state();
-  result.lambda = lambda;
+  result.lambda = newton.lambda();
   return result;
 }
 

@@ -9,7 +9,10 @@
 // scaled residual (Nocedal & Wright, Numerical Optimization, §3.1 and §11.2). The tangent
 // matrix −∂(Q − Gᵀλ)/∂ξ is formed by central differences of the residual (its error O(ε²),
 // ε = 1e-6), so every force element, the geometric stiffness of the joints (∂(Gᵀλ)/∂ξ) and
-// follower loads are in it without a derivative of their own.
+// follower loads are in it without a derivative of their own; the beams of nonlinear bodies
+// bring their exact tangent (nonlinear_body.h), and their node bodies are differenced only
+// where a marker sits (nothing else acting on them at rest turns with them). With a nonlinear
+// body the loads are stepped on (StaticsOptions::load_increments).
 //
 // Free motions. A mechanism may move freely at rest (a floating satellite, an unloaded crank):
 // the Newton matrix [K Gᵀ; G 0] is singular along those motions. The matrix is equilibrated
@@ -40,9 +43,17 @@ namespace limber::multibody {
 inline constexpr double kFreeMotionThreshold = 1e-9;
 
 struct StaticsOptions {
-  double force_tolerance = 1e-9;       // ‖Q − Gᵀλ‖∞ ≤ this × the largest force in Q or Gᵀλ
+  // ‖Q − Gᵀλ‖∞ ≤ this × the largest force in Q or Gᵀλ, or (nonlinear bodies) ≤ the beams'
+  // rounding, a tenth of nonlinear_beam::BeamStructure::force_roundoff
+  double force_tolerance = 1e-9;
   double constraint_tolerance = 1e-10; // max |g| [m or rad]
-  int max_iterations = 50;
+  int max_iterations = 50;              // Newton iterations (per load increment)
+  // With a nonlinear body, the loads (every force but its beams': gravity, springs, point
+  // loads, ...) are stepped on in this many equal increments (≥ 1) from the start, each solved
+  // from the last equilibrium, and a failed increment is halved up to max_bisections times:
+  // Newton from the straight beam does not reach a large deflection in one step.
+  int load_increments = 10;
+  int max_bisections = 6;
 };
 
 enum class StaticsStatus { kOk, kNotConverged, kFreeMotionUnderLoad };
@@ -58,7 +69,7 @@ struct FreeMotion {
 struct StaticsResult {
   StaticsStatus status = StaticsStatus::kOk;
   std::string message;        // on failure: why, in words (names the free motion)
-  int iterations = 0;
+  int iterations = 0;         // Newton iterations (over every load increment)
   State state;                // the equilibrium (v = 0), or the last iterate
   Eigen::VectorXd lambda;     // multipliers of partition.independent at `state`
   double force_residual = 0.0;       // ‖Q − Gᵀλ‖∞ at the end [N, N·m]
@@ -72,7 +83,7 @@ struct StaticsResult {
 
 // Solves for the equilibrium from `start` (assembled: g ≈ 0 there) at time start.t, with the
 // hinge limits in the modes start.engaged. Numerical failures are returned (status, message),
-// never thrown.
+// never thrown. Precondition (DEMAND): load_increments ≥ 1, max_bisections ≥ 0.
 StaticsResult solve_statics(const Model& model, const ConstraintPartition& partition,
                             const State& start, const StaticsOptions& options = {});
 

@@ -49,17 +49,12 @@ void check_nonlinear_bodies(const multibody::Model& model, const io::RunSettings
   if (model.nonlinear_bodies.empty()) return;
   const std::string& name = model.nonlinear_bodies.front().name;
   // IDA's matrix of differences would take a residual per coordinate of every node (hundreds);
-  // its structured matrix carries the beams' coupled stiffness (ggl_equations.h). The statics
-  // solver has none.
+  // its structured matrix carries the beams' coupled stiffness (ggl_equations.h).
   if (settings.integrator.method == integrate::Method::kIda &&
       settings.integrator.ida_newton_matrix != integrate::IdaNewtonMatrix::kStructured) {
     throw InputError(fmt::format("nonlinear body \"{}\": expected 'newton_matrix: structured' with integrator "
                                  "ida (its matrix of differences would take a residual per node coordinate), "
                                  "got differences", name));
-  }
-  if (settings.start == io::StartKind::kStatics) {
-    throw InputError(fmt::format("nonlinear body \"{}\": expected run start: assembly (a static start of a "
-                                 "nonlinear body is not available yet), got statics", name));
   }
 }
 

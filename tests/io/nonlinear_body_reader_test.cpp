@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <utility>
+#include <variant>
 
 #include "input_error_matchers.h"
 #include "nonlinear_beam/beam_structure.h"
@@ -95,6 +96,28 @@ TEST(NonlinearBodyReader, NodesBecomeBodiesJointsLandOnThemAndNoModesAreComputed
   EXPECT_EQ(arm.deflection_probe->chord_end, 10);
 }
 
+// Force elements and acceleration probes on its nodes act on the node bodies: a marker there is
+// the node body's origin (NodesBecomeBodies… above), a probe at a node is that origin.
+TEST(NonlinearBodyReader, ForceElementsAndProbesLandOnNodeBodies) {
+  const std::string text = kCase +
+                           "forces:\n  spring: {type: tsda, marker_i: end, marker_j: face, stiffness: 100}\n"
+                           "  push: {type: point_load, marker: end, force: [0, 0, -1]}\n"
+                           "acceleration_probes:\n  tip: {body: arm, node: tip}\n  at_end: {marker: end}\n";
+  const Case input = read_case_text(text, "test.yaml");
+  const multibody::Model model = build_mechanism(input, reduce_case(input, ReductionScope::kMechanismBodies)).model;
+  const int tip_body = model.nonlinear_bodies[0].node_bodies[10];
+  ASSERT_EQ(model.forces.size(), 2u);
+  const auto& spring = std::get<multibody::Tsda>(model.forces[0]);
+  EXPECT_EQ(model.markers[static_cast<std::size_t>(spring.marker_i)].body, tip_body);
+  EXPECT_EQ(model.markers[static_cast<std::size_t>(std::get<multibody::PointLoad>(model.forces[1]).marker)].body, tip_body);
+  ASSERT_EQ(model.acceleration_probes.size(), 2u);
+  for (const multibody::AccelerationProbe& probe : model.acceleration_probes) {
+    EXPECT_EQ(probe.body, tip_body) << probe.name;
+    EXPECT_TRUE(probe.p_B.isZero()) << probe.name;
+    EXPECT_EQ(probe.node, -1) << probe.name;
+  }
+}
+
 TEST(NonlinearBodyReader, RayleighDampingReachesTheBodyAndNoKeyLeavesItUndamped) {
   const auto damping_of = [](const std::string& text) {
     const Case input = read_case_text(text, "test.yaml");
@@ -128,11 +151,6 @@ TEST(NonlinearBodyReader, WhatItCannotHaveFailsAtItsKey) {
   EXPECT_TRUE(fails_at(text, location_of(text, "[0.01, 0.02]\n"), "expected 'damping: 0' or"));
   text = edited("    position: [0.5, 0, 0]\n", "    position: [0.5, 0, 0]\n    damping: {rayleigh: [-1, 0]}\n");
   EXPECT_TRUE(fails_at(text, location_of(text, "-1"), "-1"));
-  // Force elements and acceleration probes on its nodes.
-  text = kCase + "forces:\n  spring: {type: tsda, marker_i: end, marker_j: face, stiffness: 100}\n";
-  EXPECT_TRUE(fails_at(text, location_of(text, "{type: tsda"), "TSDA \"spring\": expected its markers on rigid or modal bodies"));
-  text = kCase + "acceleration_probes:\n  tip: {body: arm, node: tip}\n";
-  EXPECT_TRUE(fails_at(text, location_of(text, "arm, node", 1), "got nonlinear body \"arm\""));
   // Holding it during assembly.
   text = kCase + "assembly:\n  held: [{body: arm, component: x}]\n";
   EXPECT_TRUE(fails_at(text, location_of(text, "arm, component"), "got nonlinear body 'arm'"));
