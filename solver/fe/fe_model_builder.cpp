@@ -8,7 +8,9 @@
 #include <cmath>
 #include <set>
 
+#include "fe/beam_element.h"
 #include "fe/multipoint_constraints.h"
+#include "fe/shell_element.h"
 #include "fe/shell_triangle.h"
 
 namespace limber::fe {
@@ -43,6 +45,61 @@ void check_material(const Material& material, const std::string& owner,
 
 std::string vector_text(const Eigen::Vector3d& v) {
   return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z());
+}
+
+// The magnitudes an element's or a point's stiffness and mass may take (SI units): material and
+// section values at extreme magnitudes (E, rho, A, I, J, a thickness, a spring constant, a mass)
+// otherwise overflow the matrices or vanish from them. A rho of 1e-300 left subnormal masses that
+// made LAPACK print "DLASCL parameter number 4 had an illegal value" (issue 31). With diagonal
+// entries of at most 1e300, sums over the few elements at a node stay finite.
+constexpr double kSmallestMatrixEntry = 1e-300;
+constexpr double kLargestMatrixEntry = 1e300;
+
+// What a shell's matrices are made of (the advice of their range errors).
+constexpr const char* kShellStiffnessValues =
+    "E, nu, the thickness and its ratios against the size";
+constexpr const char* kShellMassValues =
+    "rho, the thickness and the non-structural mass against the size";
+
+bool within_matrix_range(double magnitude) {
+  return magnitude >= kSmallestMatrixEntry && magnitude <= kLargestMatrixEntry;
+}
+
+// "uz at node 101".
+std::string dof_text(const FeModel& model, int dof) {
+  return fmt::format("{} at node {}", kDofNames[dof % kDofsPerNode],
+                     model.node_ids[static_cast<std::size_t>(dof / kDofsPerNode)]);
+}
+
+// The DOF indices of `nodes`, node-major (an element matrix's rows).
+template <std::size_t N>
+std::vector<int> element_dofs(const std::array<int, N>& nodes) {
+  std::vector<int> dofs;
+  for (int node : nodes) {
+    for (int k = 0; k < kDofsPerNode; ++k) dofs.push_back(node * kDofsPerNode + k);
+  }
+  return dofs;
+}
+
+// Throws unless every entry of `matrix` (rows and columns on `dofs`) is finite and every diagonal
+// entry lies within the range above; zero is allowed when `zero_allowed` (a spring or a mass
+// matrix need not act on all its DOFs). `advice` says which input values to check.
+void demand_matrix_in_range(const FeModel& model, const Eigen::MatrixXd& matrix,
+                            const std::vector<int>& dofs, bool zero_allowed,
+                            const std::string& what, const std::string& advice,
+                            const SourceLocation& where) {
+  for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
+    const double entry = matrix(i, i);
+    const bool ok = matrix.row(i).allFinite() &&
+                    (within_matrix_range(std::abs(entry)) || (zero_allowed && entry == 0.0));
+    if (!ok) {
+      throw InputError(fmt::format("{}: expected diagonal entries within 1e-300 to 1e300 (SI units), "
+                                   "got {:.6g} at {}; check {}",
+                                   what, entry,
+                                   dof_text(model, dofs[static_cast<std::size_t>(i)]), advice),
+                       where);
+    }
+  }
 }
 
 }  // namespace
@@ -135,6 +192,17 @@ void FeModelBuilder::add_beam(const BeamElement& element, const SourceLocation& 
                                  id0, id1, vector_text(axis / length), vector_text(v)),
                      where);
   }
+
+  const BeamElementMatrices matrices =
+      beam_element_matrices(model_.node_positions[element.nodes[0]],
+                            model_.node_positions[element.nodes[1]], v,
+                            model_.beam_properties[element.property]);
+  const std::string name = fmt::format("beam {}-{}", id0, id1);
+  const std::vector<int> dofs = element_dofs(element.nodes);
+  demand_matrix_in_range(model_, matrices.stiffness, dofs, false, name + " stiffness",
+                         "E, nu and the section (A, Iy, Iz, J) against the length", where);
+  demand_matrix_in_range(model_, matrices.mass, dofs, false, name + " mass",
+                         "rho and the section (A, Iy, Iz) against the length", where);
   model_.beams.push_back(element);
 }
 
@@ -183,6 +251,19 @@ void FeModelBuilder::add_shell(const ShellElement& element, const SourceLocation
                        where);
     }
   }
+
+  // The element matrices (a warp the flat element rejects is an error here, at the element).
+  ShellElementMatrices matrices;
+  try {
+    matrices = shell_element_matrices(p, model_.shell_properties[element.property]);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", name, error.message()), where);
+  }
+  const std::vector<int> dofs = element_dofs(element.nodes);
+  demand_matrix_in_range(model_, matrices.stiffness, dofs, false, name + " stiffness",
+                         kShellStiffnessValues, where);
+  demand_matrix_in_range(model_, matrices.mass, dofs, false, name + " mass", kShellMassValues,
+                         where);
   model_.shells.push_back(element);
 }
 
@@ -214,6 +295,18 @@ void FeModelBuilder::add_triangle(const ShellTriangle& element, const SourceLoca
                                  longest > 0.0 ? twice_area / (longest * longest) : 0.0),
                      where);
   }
+
+  ShellTriangleMatrices matrices;
+  try {
+    matrices = shell_triangle_matrices(p, model_.shell_properties[element.property]);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", name, error.message()), where);
+  }
+  const std::vector<int> dofs = element_dofs(element.nodes);
+  demand_matrix_in_range(model_, matrices.stiffness, dofs, false, name + " stiffness",
+                         kShellStiffnessValues, where);
+  demand_matrix_in_range(model_, matrices.mass, dofs, false, name + " mass", kShellMassValues,
+                         where);
   model_.triangles.push_back(element);
 }
 
@@ -246,6 +339,11 @@ void FeModelBuilder::add_point_mass(const PointMass& point_mass, const SourceLoc
                                  id, lowest),
                      where);
   }
+  Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(kDofsPerNode, kDofsPerNode);
+  matrix.diagonal().head<3>().setConstant(point_mass.mass);
+  matrix.bottomRightCorner<3, 3>() = inertia;
+  demand_matrix_in_range(model_, matrix, element_dofs(std::array<int, 1>{point_mass.node}), true,
+                         fmt::format("point mass at node {}", id), "its mass and inertia", where);
   model_.point_masses.push_back(point_mass);
 }
 
@@ -261,16 +359,6 @@ void FeModelBuilder::add_node_set(const std::string& name, const std::vector<int
   for (int node : nodes) demand_node(node, "node set member", where);
   model_.node_sets.emplace(name, nodes);
 }
-
-namespace {
-
-// "uz at node 101".
-std::string dof_text(const FeModel& model, int dof) {
-  return fmt::format("{} at node {}", kDofNames[dof % kDofsPerNode],
-                     model.node_ids[static_cast<std::size_t>(dof / kDofsPerNode)]);
-}
-
-}  // namespace
 
 void FeModelBuilder::add_dof_matrix(const DofMatrix& matrix, const std::string& what,
                                     const SourceLocation& where, std::vector<DofMatrix>& into) {
@@ -290,6 +378,8 @@ void FeModelBuilder::add_dof_matrix(const DofMatrix& matrix, const std::string& 
     }
   }
   if (!matrix.values.allFinite()) throw InputError(what + ": expected finite values", where);
+  demand_matrix_in_range(model_, matrix.values, matrix.dofs, true, what,
+                         "its stiffness or mass values", where);
   const double largest = matrix.values.cwiseAbs().maxCoeff();
   // 1e-9: the round-off of a matrix assembled from a few products, far below a real asymmetry.
   if ((matrix.values - matrix.values.transpose()).cwiseAbs().maxCoeff() > 1e-9 * largest) {

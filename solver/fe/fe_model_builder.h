@@ -26,21 +26,21 @@ class FeModelBuilder {
   int add_shell_property(const ShellProperty& property, const SourceLocation& where = {});
 
   // Elements by node index. Throw on unknown nodes or properties, zero length, an orientation
-  // parallel to the axis (sine of the angle < 1e-6), or a degenerate quad: repeated nodes,
-  // zero area, or a corner that is not convex about the mean normal. (Warp is checked by
-  // shell_element_matrices at assembly.)
+  // parallel to the axis (sine of the angle < 1e-6), a degenerate quad (repeated nodes, zero
+  // area, a corner not convex about the mean normal, a warp), or element matrices with a diagonal
+  // entry outside 1e-300 to 1e300 (materials and sections at extreme magnitudes, issue 31).
   void add_beam(const BeamElement& element, const SourceLocation& where = {});
   void add_shell(const ShellElement& element, const SourceLocation& where = {});
   // Throws on unknown nodes or property, repeated nodes, or a sliver (shell_triangle.h's
   // shape ratio below kMinTriangleShapeRatio).
   void add_triangle(const ShellTriangle& element, const SourceLocation& where = {});
 
-  // Throws on an unknown node, a negative or non-finite mass [kg], or an inertia [kg m^2]
-  // that is not symmetric positive semi-definite.
+  // Throws on an unknown node, a negative or non-finite mass [kg], an inertia [kg m^2] not
+  // symmetric positive semi-definite, or a non-zero mass or inertia outside 1e-300 to 1e300.
   void add_point_mass(const PointMass& point_mass, const SourceLocation& where = {});
   // A stiffness or mass matrix on DOFs (fe_model.h, DofMatrix). Throw on unknown or repeated
-  // DOFs, a size mismatch, non-finite values, or a matrix that is not symmetric positive
-  // semi-definite (relative tolerance 1e-9 of its largest entry). `what` names the element.
+  // DOFs, a size mismatch, non-finite values, a non-zero diagonal entry outside 1e-300 to 1e300,
+  // or a matrix not symmetric positive semi-definite (1e-9 of its largest entry). `what` names it.
   void add_dof_stiffness(const DofMatrix& matrix, const std::string& what,
                          const SourceLocation& where = {});
   void add_dof_mass(const DofMatrix& matrix, const std::string& what,
