@@ -9,10 +9,10 @@
 // scaled residual (Nocedal & Wright, Numerical Optimization, §3.1 and §11.2). The tangent
 // matrix −∂(Q − Gᵀλ)/∂ξ is formed by central differences of the residual (its error O(ε²),
 // ε = 1e-6), so every force element, the geometric stiffness of the joints (∂(Gᵀλ)/∂ξ) and
-// follower loads are in it without a derivative of their own; the beams of nonlinear bodies
-// bring their exact tangent (nonlinear_body.h), and their node bodies are differenced only
-// where a marker sits (nothing else acting on them at rest turns with them). With a nonlinear
-// body the loads are stepped on (StaticsOptions::load_increments).
+// follower loads are in it without a derivative of their own, the beams of nonlinear bodies
+// too (differenced with the rest; their exact tangent, nonlinear_body.h, is not used here).
+// With a nonlinear body the loads are stepped on (StaticsOptions::load_increments); large
+// deflections do not converge yet (docs/nonlinear-beams.md, "Statics with a nonlinear body").
 //
 // Free motions. A mechanism may move freely at rest (a floating satellite, an unloaded crank):
 // the Newton matrix [K Gᵀ; G 0] is singular along those motions. The matrix is equilibrated
