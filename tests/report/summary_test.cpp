@@ -174,6 +174,15 @@ TEST(Summary, PeaksAccuracyAndReleasesOfAKnownRun) {
   EXPECT_TRUE(d.accuracy[1].passed());
   EXPECT_FALSE(d.accuracy[2].passed());  // drift 0.0025 above 0.001
 
+  // An IDA run stores its local error as 0 (IDA has no second estimate, docs/integrators.md):
+  // the digest leaves that row out instead of showing 0 against the threshold.
+  run.solver_attributes.emplace_back("integrator", "ida");
+  const RunDigest ida = digest_run(run);
+  ASSERT_EQ(ida.accuracy.size(), 2u);
+  EXPECT_EQ(ida.accuracy[0].name, "energy balance");
+  EXPECT_EQ(ida.accuracy[1].name, "constraint drift");
+  run.solver_attributes.pop_back();
+
   // The joint's peak |F| is the largest |G(t_k)| over the samples, at its time.
   ASSERT_EQ(d.peaks.size(), 1u);
   double peak = 0.0, at = 0.0;
