@@ -102,6 +102,25 @@ void demand_matrix_in_range(const FeModel& model, const Eigen::MatrixXd& matrix,
   }
 }
 
+// A shell's (quad's or triangle's) matrices from `compute`, its errors named by the element,
+// each matrix held to the range above.
+template <std::size_t N, typename Compute>
+void demand_shell_matrices_in_range(const FeModel& model, const std::array<int, N>& nodes,
+                                    const std::string& name, Compute compute,
+                                    const SourceLocation& where) {
+  decltype(compute()) matrices;
+  try {
+    matrices = compute();
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", name, error.message()), where);
+  }
+  const std::vector<int> dofs = element_dofs(nodes);
+  demand_matrix_in_range(model, matrices.stiffness, dofs, false, name + " stiffness",
+                         kShellStiffnessValues, where);
+  demand_matrix_in_range(model, matrices.mass, dofs, false, name + " mass", kShellMassValues,
+                         where);
+}
+
 }  // namespace
 
 void FeModelBuilder::demand_node(int node, const char* what, const SourceLocation& where) const {
@@ -253,17 +272,9 @@ void FeModelBuilder::add_shell(const ShellElement& element, const SourceLocation
   }
 
   // The element matrices (a warp the flat element rejects is an error here, at the element).
-  ShellElementMatrices matrices;
-  try {
-    matrices = shell_element_matrices(p, model_.shell_properties[element.property]);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", name, error.message()), where);
-  }
-  const std::vector<int> dofs = element_dofs(element.nodes);
-  demand_matrix_in_range(model_, matrices.stiffness, dofs, false, name + " stiffness",
-                         kShellStiffnessValues, where);
-  demand_matrix_in_range(model_, matrices.mass, dofs, false, name + " mass", kShellMassValues,
-                         where);
+  demand_shell_matrices_in_range(
+      model_, element.nodes, name,
+      [&] { return shell_element_matrices(p, model_.shell_properties[element.property]); }, where);
   model_.shells.push_back(element);
 }
 
@@ -296,17 +307,9 @@ void FeModelBuilder::add_triangle(const ShellTriangle& element, const SourceLoca
                      where);
   }
 
-  ShellTriangleMatrices matrices;
-  try {
-    matrices = shell_triangle_matrices(p, model_.shell_properties[element.property]);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", name, error.message()), where);
-  }
-  const std::vector<int> dofs = element_dofs(element.nodes);
-  demand_matrix_in_range(model_, matrices.stiffness, dofs, false, name + " stiffness",
-                         kShellStiffnessValues, where);
-  demand_matrix_in_range(model_, matrices.mass, dofs, false, name + " mass", kShellMassValues,
-                         where);
+  demand_shell_matrices_in_range(
+      model_, element.nodes, name,
+      [&] { return shell_triangle_matrices(p, model_.shell_properties[element.property]); }, where);
   model_.triangles.push_back(element);
 }
 
